@@ -1,0 +1,138 @@
+use bevy_ecs::prelude::*;
+use glam::Vec3;
+
+/// How translations and mouse drags move the camera.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum CameraMode {
+    /// Translate along u, v, n; rotate about them.
+    #[default]
+    Free,
+    /// Keep the look-at point fixed: sideways moves orbit it, forward moves approach it.
+    LookAt,
+}
+
+impl CameraMode {
+    pub const ALL: [CameraMode; 2] = [CameraMode::Free, CameraMode::LookAt];
+
+    pub fn name(self) -> &'static str {
+        match self {
+            CameraMode::Free => "free",
+            CameraMode::LookAt => "look_at",
+        }
+    }
+}
+
+/// The virtual camera of the assignment: a centre of projection, an orthonormal right-handed
+/// frame (u right, v up, n pointing backwards, away from what it sees), the two fields of view
+/// in degrees and the clipping distances. `target` is the look-at point: on the -n axis, at the
+/// distance orbiting keeps.
+#[derive(Component, Clone, Copy, Debug, PartialEq)]
+pub struct Camera {
+    pub position: Vec3,
+    pub u: Vec3,
+    pub v: Vec3,
+    pub n: Vec3,
+    pub target: Vec3,
+    pub hfov: f32,
+    pub vfov: f32,
+    pub near: f32,
+    pub far: f32,
+    pub mode: CameraMode,
+}
+
+impl Default for Camera {
+    /// The assignment's initial camera: at the origin, u = x, v = y, n = z, both fields of view 60°.
+    fn default() -> Self {
+        Self {
+            position: Vec3::ZERO,
+            u: Vec3::X,
+            v: Vec3::Y,
+            n: Vec3::Z,
+            target: Vec3::NEG_Z,
+            hfov: 60.0,
+            vfov: 60.0,
+            near: 0.1,
+            far: 100.0,
+            mode: CameraMode::Free,
+        }
+    }
+}
+
+impl Camera {
+    /// Re-aims the camera at `target` from `position`, keeping `up` as close to v as it can.
+    /// Returns `None` when the pose is degenerate (target on the camera, or up along the view).
+    pub fn looking_at(mut self, position: Vec3, target: Vec3, up: Vec3) -> Option<Self> {
+        let n = (position - target).try_normalize()?;
+        let u = up.cross(n).try_normalize()?;
+        self.position = position;
+        self.target = target;
+        self.n = n;
+        self.u = u;
+        self.v = n.cross(u);
+        Some(self)
+    }
+
+    /// Distance from the centre of projection to the look-at point.
+    pub fn distance(&self) -> f32 {
+        self.position.distance(self.target)
+    }
+}
+
+/// The framed pose the camera returns to on reset (set when a model loads).
+#[derive(Component, Clone, Copy, Debug, PartialEq)]
+pub struct CameraHome(pub Camera);
+
+/// How fast input moves the camera. Translations scale with the model's size, so a 2-unit cube
+/// and a 1200-unit cow feel the same.
+#[derive(Resource, Clone, Copy, Debug, PartialEq)]
+pub struct CameraSpeeds {
+    /// Model radii per second while a move key is held.
+    pub move_speed: f32,
+    /// Degrees per pixel of mouse drag, and degrees per second × 60 for held rotate keys.
+    pub rotate_speed: f32,
+    /// Radius of the loaded model's bounding sphere: the unit `move_speed` is measured in.
+    pub model_radius: f32,
+}
+
+impl Default for CameraSpeeds {
+    fn default() -> Self {
+        Self {
+            move_speed: 1.0,
+            rotate_speed: 0.25,
+            model_radius: 1.0,
+        }
+    }
+}
+
+/// One request to change the camera; the input system emits them, the camera system applies them.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum CameraAction {
+    /// World units along the camera's own axes (in look-at mode, u and v orbit the target and n
+    /// approaches it).
+    Translate { u: f32, v: f32, n: f32 },
+    /// Radians about the camera's own axes: pitch about u, yaw about v, roll about n (in look-at
+    /// mode, pitch and yaw orbit the target).
+    Rotate { pitch: f32, yaw: f32, roll: f32 },
+    /// Radians around the look-at point, in any mode: yaw about v, pitch about u.
+    Orbit { yaw: f32, pitch: f32 },
+    /// Multiplies tan(fov/2) of both fields of view (below 1 zooms in).
+    Zoom { factor: f32 },
+    /// Back to the framed pose.
+    Reset,
+    /// Free ↔ look-at.
+    ToggleMode,
+}
+
+/// This frame's camera actions, drained by the camera system.
+#[derive(Resource, Default, Debug, Clone)]
+pub struct CameraActions(pub Vec<CameraAction>);
+
+/// What framing a newly loaded model must respect: an explicit pose (position, target, up) from
+/// the config replaces the framed one, and pinned near/far distances replace the ones that
+/// follow the model's size.
+#[derive(Resource, Clone, Copy, Debug, Default, PartialEq)]
+pub struct Framing {
+    pub pose: Option<[Vec3; 3]>,
+    pub near: Option<f32>,
+    pub far: Option<f32>,
+}

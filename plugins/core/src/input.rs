@@ -1,0 +1,71 @@
+use std::collections::{BTreeMap, BTreeSet};
+
+use bevy_ecs::prelude::*;
+use glam::Vec2;
+
+/// Raw input for this frame, in window-system-neutral names: keys are lower-case names such as
+/// `"w"`, `"space"`, `"tab"`, `"shift"`. The viewer fills it from winit; tests fill it by hand.
+#[derive(Resource, Clone, Debug, Default)]
+pub struct InputState {
+    /// Keys held down now.
+    pub held: BTreeSet<String>,
+    /// Keys that went down this frame (with the modifiers held at the time), e.g. `"shift+d"`.
+    pub pressed: Vec<String>,
+    /// Mouse movement while the button was held this frame, pixels (x right, y down).
+    pub drag: Vec2,
+    /// Scroll this frame, in lines (positive away from the user).
+    pub scroll: f32,
+    /// Seconds since the last frame.
+    pub dt: f32,
+}
+
+impl InputState {
+    /// Clears the per-frame parts; held keys stay held.
+    pub fn end_frame(&mut self) {
+        self.pressed.clear();
+        self.drag = Vec2::ZERO;
+        self.scroll = 0.0;
+    }
+}
+
+/// Which key does what: action name → key name (e.g. `"forward" → "w"`, `"phong" → "shift+p"`).
+#[derive(Resource, Clone, Debug, PartialEq, Eq)]
+pub struct InputBindings(pub BTreeMap<String, String>);
+
+impl InputBindings {
+    /// Every bindable action with its default key.
+    pub const DEFAULTS: [(&'static str, &'static str); 17] = [
+        ("forward", "w"),
+        ("back", "s"),
+        ("left", "a"),
+        ("right", "d"),
+        ("up", "r"),
+        ("down", "f"),
+        ("roll_left", "z"),
+        ("roll_right", "x"),
+        ("pitch_up", "up"),
+        ("pitch_down", "down"),
+        ("yaw_left", "left"),
+        ("yaw_right", "right"),
+        ("reset", "space"),
+        ("toggle_mode", "tab"),
+        ("original_color", "shift+d"),
+        ("phong", "shift+p"),
+        ("gouraud", "shift+g"),
+    ];
+
+    pub fn key(&self, action: &str) -> Option<&str> {
+        self.0.get(action).map(String::as_str)
+    }
+}
+
+impl Default for InputBindings {
+    fn default() -> Self {
+        Self(
+            Self::DEFAULTS
+                .iter()
+                .map(|(a, k)| (a.to_string(), k.to_string()))
+                .collect(),
+        )
+    }
+}

@@ -1,0 +1,107 @@
+use bevy_ecs::prelude::*;
+use glam::Vec3;
+
+/// Defines a config-facing enum with its snake_case names in one place.
+macro_rules! named_enum {
+    ($(#[$meta:meta])* $name:ident { $($(#[$vmeta:meta])* $variant:ident = $text:literal),+ $(,)? }) => {
+        $(#[$meta])*
+        #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+        pub enum $name { $($(#[$vmeta])* $variant),+ }
+
+        impl $name {
+            pub const ALL: &'static [$name] = &[$($name::$variant),+];
+
+            pub fn name(self) -> &'static str {
+                match self { $($name::$variant => $text),+ }
+            }
+
+            pub fn from_name(text: &str) -> Option<Self> {
+                Self::ALL.iter().copied().find(|v| v.name() == text)
+            }
+        }
+    };
+}
+
+named_enum!(
+    /// glPolygonMode: what each surviving triangle becomes.
+    RenderMode { Points = "points", Wireframe = "wireframe", Solid = "solid" }
+);
+named_enum!(
+    /// glFrontFace: which winding, as seen on screen, faces the camera.
+    FrontFace { Ccw = "ccw", Cw = "cw" }
+);
+named_enum!(
+    /// How Close2GL clips against the view volume.
+    Clipping {
+        /// The assignment's rule: drop a triangle when any vertex is outside |x|,|y|,|z| <= w.
+        Simple = "simple",
+        /// Cut triangles against the view volume in clip space, as a GPU does.
+        Full = "full"
+    }
+);
+named_enum!(
+    /// The reference renderer's lighting (Close2GL is always flat colour).
+    Shading {
+        None = "none",
+        GouraudAd = "gouraud_ad",
+        GouraudAds = "gouraud_ads",
+        Phong = "phong"
+    }
+);
+
+/// One set of switches for both views.
+#[derive(Resource, Clone, Copy, Debug, PartialEq)]
+pub struct RenderSettings {
+    pub mode: RenderMode,
+    pub front_face: FrontFace,
+    pub backface_culling: bool,
+    pub clipping: Clipping,
+    /// The model's colour, RGB in 0..1.
+    pub color: Vec3,
+    pub shading: Shading,
+    /// The background both views clear to.
+    pub background: Vec3,
+}
+
+impl Default for RenderSettings {
+    fn default() -> Self {
+        Self {
+            mode: RenderMode::Solid,
+            front_face: FrontFace::Ccw,
+            backface_culling: true,
+            clipping: Clipping::Full,
+            color: Vec3::new(0.85, 0.65, 0.25),
+            shading: Shading::None,
+            background: Vec3::new(0.08, 0.08, 0.1),
+        }
+    }
+}
+
+/// The lighting of the shading lecture (002): I = Ia·ka + f_att·Il·(kd·cosθ + ks·cosⁿα), with
+/// f_att = min(1 / (c0 + c1·d + c2·d²), 1). The light is given in world coordinates.
+#[derive(Resource, Clone, Copy, Debug, PartialEq)]
+pub struct Lighting {
+    pub light_position: Vec3,
+    pub ia: Vec3,
+    pub il: Vec3,
+    pub ka: f32,
+    pub kd: f32,
+    pub ks: f32,
+    pub shininess: f32,
+    pub attenuation: [f32; 3],
+}
+
+impl Default for Lighting {
+    fn default() -> Self {
+        Self {
+            light_position: Vec3::new(10.0, 10.0, 3.0),
+            ia: Vec3::new(0.3, 1.0, 0.3),
+            il: Vec3::ONE,
+            ka: 0.3,
+            kd: 0.8,
+            ks: 0.5,
+            shininess: 10.0,
+            attenuation: [0.01, 0.001, 0.0],
+        }
+    }
+}

@@ -1,0 +1,32 @@
+//! One module per subcommand; each parses its own arguments and returns a [`CliError`].
+
+pub mod bench;
+pub mod render;
+pub mod run;
+pub mod scene;
+pub mod stats;
+
+use std::process::ExitCode;
+
+/// A failure the user caused (exit 2: bad model, bad config, bad argument) or one the machine
+/// caused (exit 1: no GPU adapter, an unwritable output).
+#[derive(Debug)]
+pub enum CliError {
+    Input(String),
+    Runtime(String),
+}
+
+/// Prints the one-line error and maps it to the process exit code.
+pub fn exit(result: Result<(), CliError>) -> ExitCode {
+    match result {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(CliError::Input(message)) => {
+            eprintln!("close2gl: {message}");
+            ExitCode::from(2)
+        }
+        Err(CliError::Runtime(message)) => {
+            eprintln!("close2gl: {message}");
+            ExitCode::from(1)
+        }
+    }
+}

@@ -1,0 +1,89 @@
+use std::path::{Path, PathBuf};
+
+use toml::{Table, Value};
+
+use super::{Config, keys};
+
+/// Reads the configuration: `file` if given, else `./config.toml` if present, else the defaults;
+/// then applies each `section.key=value` override in order. Errors name the file and line or the
+/// key, and what was expected there.
+pub fn load(file: Option<&Path>, overrides: &[String]) -> Result<Config, String> {
+    let mut config = Config::default();
+    let file = file.map(Path::to_path_buf).or_else(|| {
+        let local = PathBuf::from("config.toml");
+        local.is_file().then_some(local)
+    });
+    if let Some(file) = &file {
+        apply_file(&mut config, file)?;
+    }
+    for item in overrides {
+        apply_override(&mut config, item)?;
+    }
+    check(&config)?;
+    Ok(config)
+}
+
+fn apply_file(config: &mut Config, file: &Path) -> Result<(), String> {
+    let name = file.display();
+    let text = std::fs::read_to_string(file).map_err(|e| format!("{name}: cannot read: {e}"))?;
+    let table: Table = text.parse().map_err(|e: toml::de::Error| {
+        let line = e.span().map(|s| text[..s.start].lines().count().max(1)).unwrap_or(1);
+        format!("{name}:{line}: {}", e.message())
+    })?;
+    let base = file.parent().unwrap_or(Path::new("."));
+    for (section, body) in &table {
+        let Value::Table(body) = body else {
+            return Err(format!("{name}: {section}: expected a [{section}] section"));
+        };
+        for (key, value) in body {
+            keys::set(config, section, key, value, base)
+                .map_err(|e| format!("{name}: {section}.{key}: {e}"))?;
+        }
+    }
+    Ok(())
+}
+
+/// `section.key=value`, the value parsed as TOML; a bare word is taken as a string.
+fn apply_override(config: &mut Config, item: &str) -> Result<(), String> {
+    let malformed = || format!("--set {item}: expected section.key=value");
+    let (path, raw) = item.split_once('=').ok_or_else(malformed)?;
+    let (section, key) = path.trim().split_once('.').ok_or_else(malformed)?;
+    let value = format!("v = {raw}")
+        .parse::<Table>()
+        .ok()
+        .and_then(|mut t| t.remove("v"))
+        .unwrap_or_else(|| Value::String(raw.trim().to_string()));
+    keys::set(config, section, key, &value, Path::new("."))
+        .map_err(|e| format!("--set {section}.{key}: {e}"))
+}
+
+/// Rules that tie two keys together.
+fn check(config: &Config) -> Result<(), String> {
+    let camera = &config.camera;
+    if let (Some(near), Some(far)) = (camera.near, camera.far)
+        && near >= far
+    {
+        return Err(format!(
+            "camera.near: expected a distance below camera.far ({far}), found {near}"
+        ));
+    }
+    if let Some(pose) = camera.pose() {
+        let view = pose.target - pose.position;
+        if view.length_squared() == 0.0 {
+            return Err("camera.target: expected a point other than camera.position".into());
+        }
+        if view.cross(pose.up).length_squared() == 0.0 {
+            return Err("camera.up: expected a direction not parallel to the view direction".into());
+        }
+    }
+    Ok(())
+}
+
+/// `WxH` → (width, height), each in 1..=16384.
+pub fn parse_size(text: &str) -> Result<(u32, u32), String> {
+    let bad = || format!("--size {text}: expected WIDTHxHEIGHT, each 1..=16384, e.g. 800x600");
+    let (w, h) = text.split_once(['x', 'X']).ok_or_else(bad)?;
+    let w: u32 = w.trim().parse().map_err(|_| bad())?;
+    let h: u32 = h.trim().parse().map_err(|_| bad())?;
+    if (1..=16384).contains(&w) && (1..=16384).contains(&h) { Ok((w, h)) } else { Err(bad()) }
+}

@@ -1,0 +1,36 @@
+//! The `close2gl` command line: the interactive viewer and its headless tools.
+
+use std::process::ExitCode;
+
+use clap::{Parser, Subcommand};
+use close2gl::commands::{self, bench, render, run, stats};
+
+#[derive(Parser)]
+#[command(name = "close2gl", version, about = "The geometry half of the OpenGL pipeline, done by hand and shown beside the GPU's.")]
+struct Cli {
+    #[command(subcommand)]
+    command: Option<Command>,
+    #[command(flatten)]
+    run: run::RunArgs,
+}
+
+#[derive(Subcommand)]
+enum Command {
+    /// Run the Close2GL pipeline once, headless, and print its counts as JSON.
+    Stats(stats::StatsArgs),
+    /// Render both views offscreen to PNGs with a parity report.
+    Render(render::RenderArgs),
+    /// Time the Close2GL geometry stage against the straightforward version.
+    Bench(bench::BenchArgs),
+}
+
+fn main() -> ExitCode {
+    let cli = Cli::parse();
+    let result = match cli.command {
+        None => run::run(cli.run),
+        Some(Command::Stats(args)) => stats::run(args),
+        Some(Command::Render(args)) => render::run(args),
+        Some(Command::Bench(args)) => bench::run(args),
+    };
+    commands::exit(result)
+}
