@@ -1,6 +1,9 @@
 //! `close2gl stats`: the Close2GL pipeline once, headless; its counts as one JSON object.
 
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
+
+use close2gl_core::{Close2glFrame, ModelStatus};
+use serde_json::json;
 
 use super::CliError;
 use super::scene::{SceneArgs, viewport};
@@ -17,6 +20,40 @@ pub struct StatsArgs {
     pub dump: Option<PathBuf>,
 }
 
-pub fn run(_args: StatsArgs) -> Result<(), CliError> {
-    Err(CliError::Runtime("stats: not built yet".into()))
+pub fn run(args: StatsArgs) -> Result<(), CliError> {
+    let config = args.scene.config()?;
+    let viewport = viewport(args.size.as_deref(), &config)?;
+    let app = crate::build_app(&config, viewport).map_err(CliError::Input)?;
+    let world = app.world();
+    for warning in &world.resource::<ModelStatus>().warnings {
+        eprintln!("close2gl: warning: {warning}");
+    }
+    let frame = world.resource::<Close2glFrame>();
+    if let Some(path) = &args.dump {
+        dump(frame, path)
+            .map_err(|e| CliError::Input(format!("{}: cannot write: {e}", path.display())))?;
+    }
+    let mut report = json!(frame.counts);
+    report["bounds_px"] = json!(frame.bounds_px());
+    println!("{report}");
+    Ok(())
+}
+
+/// The 2D buffer as JSON (when the file ends in .json) or as CSV, one vertex a line.
+fn dump(frame: &Close2glFrame, path: &Path) -> std::io::Result<()> {
+    let text = if path.extension().is_some_and(|e| e.eq_ignore_ascii_case("json")) {
+        json!({
+            "topology": frame.topology,
+            "viewport": [frame.viewport.width, frame.viewport.height],
+            "vertices": frame.vertices,
+        })
+        .to_string()
+    } else {
+        let mut csv = String::from("x,y\n");
+        for [x, y] in &frame.vertices {
+            csv.push_str(&format!("{x},{y}\n"));
+        }
+        csv
+    };
+    std::fs::write(path, text)
 }

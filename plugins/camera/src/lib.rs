@@ -1,0 +1,56 @@
+//! The camera plugin. It owns framing (on every newly loaded `Mesh`, the `Camera` is placed to
+//! show the whole model, honouring the `Framing` resource's explicit pose and pinned planes, and
+//! that pose is stored as `CameraHome`; `CameraSpeeds::model_radius` follows the model's size)
+//! and camera motion (it drains `CameraActions` into the `Camera`: translations along u, v, n,
+//! rotations about them, orbits of the look-at point, zoom, reset, mode toggle).
+
+pub mod framing;
+pub mod motion;
+
+use bevy_ecs::prelude::*;
+use close2gl_core::{
+    App, Camera, CameraActions, CameraHome, CameraSpeeds, Framing, Mesh, Plugin, Update,
+};
+
+pub struct CameraPlugin;
+
+impl Plugin for CameraPlugin {
+    fn build(&self, app: &mut App) {
+        app.init_resource::<CameraActions>()
+            .init_resource::<CameraSpeeds>()
+            .init_resource::<Framing>()
+            .add_systems(Update, (frame_new_model, apply_camera_actions).chain());
+    }
+}
+
+/// Frames the camera on a model that just arrived and remembers the pose for reset.
+pub fn frame_new_model(
+    mut commands: Commands,
+    mesh: Single<Ref<Mesh>>,
+    camera: Single<(Entity, &mut Camera)>,
+    framing: Res<Framing>,
+    mut speeds: ResMut<CameraSpeeds>,
+) {
+    if !mesh.is_changed() {
+        return;
+    }
+    let (centre, radius) = mesh.bounding_sphere();
+    let (entity, mut camera) = camera.into_inner();
+    *camera = framing::frame(centre, radius, &camera, &framing);
+    speeds.model_radius = radius.max(f32::MIN_POSITIVE);
+    commands.entity(entity).insert(CameraHome(*camera));
+}
+
+/// Applies this frame's camera actions, in order.
+pub fn apply_camera_actions(
+    mut actions: ResMut<CameraActions>,
+    camera: Single<(&mut Camera, Option<&CameraHome>)>,
+) {
+    if actions.0.is_empty() {
+        return;
+    }
+    let (mut camera, home) = camera.into_inner();
+    for action in actions.0.drain(..) {
+        motion::apply(&mut camera, action, home.map(|h| &h.0));
+    }
+}

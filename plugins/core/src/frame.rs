@@ -61,7 +61,12 @@ impl Close2glFrame {
         let mut it = self.vertices.iter();
         let first = it.next()?;
         Some(it.fold([first[0], first[1], first[0], first[1]], |b, p| {
-            [b[0].min(p[0]), b[1].min(p[1]), b[2].max(p[0]), b[3].max(p[1])]
+            [
+                b[0].min(p[0]),
+                b[1].min(p[1]),
+                b[2].max(p[0]),
+                b[3].max(p[1]),
+            ]
         }))
     }
 }

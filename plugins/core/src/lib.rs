@@ -13,7 +13,7 @@ mod mesh;
 mod model;
 mod settings;
 
-pub use app::{App, frame_schedules, Plugin, PostUpdate, PreUpdate, Render, Startup, Update};
+pub use app::{App, Plugin, PostUpdate, PreUpdate, Render, Startup, Update, frame_schedules};
 pub use camera::{
     Camera, CameraAction, CameraActions, CameraHome, CameraMode, CameraSpeeds, Framing,
 };

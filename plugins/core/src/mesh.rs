@@ -33,7 +33,11 @@ impl Mesh {
             return Err(format!("normal {p} is not finite"));
         }
         let count = self.positions.len() as u32;
-        if let Some(t) = self.triangles.iter().position(|t| t.iter().any(|&i| i >= count)) {
+        if let Some(t) = self
+            .triangles
+            .iter()
+            .position(|t| t.iter().any(|&i| i >= count))
+        {
             return Err(format!("triangle {t} indexes a vertex that does not exist"));
         }
         Ok(())

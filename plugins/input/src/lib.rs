@@ -1,0 +1,89 @@
+//! The input plugin. It owns the mapping from raw input to intent: it reads `InputState` (keys
+//! held and pressed, mouse drag, scroll, frame time), `InputBindings` and `CameraSpeeds`, and
+//! writes `CameraActions` (moves scaled by the model's size, rotations, zoom, reset, mode toggle)
+//! and, for the lecture's Shift+D / Shift+P / Shift+G keys, `RenderSettings::shading`. It knows
+//! no window system: the viewer fills `InputState`, and so can a test.
+
+use bevy_ecs::prelude::*;
+use close2gl_core::{
+    App, CameraAction, CameraActions, CameraSpeeds, InputBindings, InputState, Plugin, PreUpdate,
+    RenderSettings, Shading,
+};
+
+pub struct InputPlugin;
+
+impl Plugin for InputPlugin {
+    fn build(&self, app: &mut App) {
+        app.init_resource::<InputState>()
+            .init_resource::<InputBindings>()
+            .init_resource::<CameraActions>()
+            .init_resource::<CameraSpeeds>()
+            .init_resource::<RenderSettings>()
+            .add_systems(PreUpdate, map_input);
+    }
+}
+
+/// A long stall (a window drag, a breakpoint) must not fling the camera away.
+const MAX_DT: f32 = 0.1;
+/// Held rotate keys turn this many times `rotate_speed` degrees per second.
+const KEY_ROTATE_RATE: f32 = 360.0;
+/// Each scroll line scales tan(fov/2) by this.
+const ZOOM_PER_LINE: f32 = 0.9;
+
+pub fn map_input(
+    input: Res<InputState>,
+    bindings: Res<InputBindings>,
+    speeds: Res<CameraSpeeds>,
+    mut actions: ResMut<CameraActions>,
+    mut settings: ResMut<RenderSettings>,
+) {
+    let dt = input.dt.clamp(0.0, MAX_DT);
+    // Held keys move the camera only without Shift, which belongs to the shading keys.
+    let held = |action: &str| {
+        !input.held.contains("shift")
+            && bindings
+                .key(action)
+                .is_some_and(|key| input.held.contains(key))
+    };
+    let axis = |plus: &str, minus: &str| f32::from(held(plus)) - f32::from(held(minus));
+
+    let step = speeds.move_speed * speeds.model_radius * dt;
+    let (u, v, n) = (
+        axis("right", "left") * step,
+        axis("up", "down") * step,
+        axis("back", "forward") * step,
+    );
+    if (u, v, n) != (0.0, 0.0, 0.0) {
+        actions.0.push(CameraAction::Translate { u, v, n });
+    }
+
+    let turn = (speeds.rotate_speed * KEY_ROTATE_RATE * dt).to_radians();
+    let per_pixel = speeds.rotate_speed.to_radians();
+    let pitch = axis("pitch_up", "pitch_down") * turn - input.drag.y * per_pixel;
+    let yaw = axis("yaw_left", "yaw_right") * turn - input.drag.x * per_pixel;
+    let roll = axis("roll_left", "roll_right") * turn;
+    if (pitch, yaw, roll) != (0.0, 0.0, 0.0) {
+        actions.0.push(CameraAction::Rotate { pitch, yaw, roll });
+    }
+
+    if input.scroll != 0.0 {
+        actions.0.push(CameraAction::Zoom {
+            factor: ZOOM_PER_LINE.powf(input.scroll),
+        });
+    }
+
+    for pressed in &input.pressed {
+        let is = |action: &str| bindings.key(action) == Some(pressed.as_str());
+        if is("reset") {
+            actions.0.push(CameraAction::Reset);
+        } else if is("toggle_mode") {
+            actions.0.push(CameraAction::ToggleMode);
+        } else if is("original_color") {
+            settings.shading = Shading::None;
+        } else if is("phong") {
+            settings.shading = Shading::Phong;
+        } else if is("gouraud") {
+            settings.shading = Shading::GouraudAds;
+        }
+    }
+}

@@ -1,0 +1,94 @@
+//! The Close2GL frame for big meshes. Same stage, same output as the textbook path, but each
+//! unique vertex is transformed once (the mesh is indexed), and both the vertices and the
+//! triangles are processed in parallel chunks whose outputs are joined in order, so the 2D buffer
+//! is the same whatever the thread count. All buffers live in [`FastPipeline`] and are reused:
+//! a steady frame allocates nothing.
+
+use bevy_ecs::prelude::Resource;
+use close2gl_core::{Camera, Close2glFrame, Mesh, RenderSettings, StageCounts, Viewport};
+use rayon::prelude::*;
+
+use crate::matrices::projection_modelview;
+use crate::stage::{Corner, Stage, process};
+use crate::tally;
+
+/// Vertices and triangles per parallel task: big enough to amortise scheduling, small enough to
+/// balance two cores when one side of the model is clipped away.
+const VERTEX_CHUNK: usize = 16 * 1024;
+const TRIANGLE_CHUNK: usize = 16 * 1024;
+
+/// One task's share of the output.
+#[derive(Default)]
+struct Chunk {
+    vertices: Vec<[f32; 2]>,
+    counts: StageCounts,
+}
+
+/// The reusable buffers of the fast path.
+#[derive(Resource, Default)]
+pub struct FastPipeline {
+    corners: Vec<Corner>,
+    chunks: Vec<Chunk>,
+}
+
+impl FastPipeline {
+    /// Fills `frame` exactly as [`crate::textbook::run`] would.
+    pub fn run(
+        &mut self,
+        mesh: &Mesh,
+        camera: &Camera,
+        settings: &RenderSettings,
+        viewport: Viewport,
+        frame: &mut Close2glFrame,
+    ) {
+        let pm = projection_modelview(camera);
+        let stage = Stage::new(settings, viewport);
+
+        // Transform every unique vertex once.
+        self.corners
+            .resize(mesh.positions.len(), Corner::new(pm.w_axis, &stage));
+        self.corners
+            .par_chunks_mut(VERTEX_CHUNK)
+            .zip(mesh.positions.par_chunks(VERTEX_CHUNK))
+            .for_each(|(corners, positions)| {
+                for (corner, p) in corners.iter_mut().zip(positions) {
+                    *corner = Corner::new(pm * p.extend(1.0), &stage);
+                }
+            });
+
+        // Clip, divide, map, cull and emit the triangles, chunk by chunk.
+        let corners = &self.corners;
+        let tasks = mesh.triangles.len().div_ceil(TRIANGLE_CHUNK);
+        self.chunks.resize_with(tasks, Chunk::default);
+        self.chunks
+            .par_iter_mut()
+            .zip(mesh.triangles.par_chunks(TRIANGLE_CHUNK))
+            .for_each(|(chunk, triangles)| {
+                chunk.vertices.clear();
+                chunk.counts = StageCounts::default();
+                for triangle in triangles {
+                    let c = triangle.map(|i| corners[i as usize]);
+                    tally(&mut chunk.counts, process(&c, &stage, &mut chunk.vertices));
+                }
+            });
+
+        // Join the chunks in mesh order.
+        let chunks = &self.chunks[..tasks];
+        frame.vertices.clear();
+        frame
+            .vertices
+            .reserve(chunks.iter().map(|c| c.vertices.len()).sum());
+        let mut counts = StageCounts::default();
+        for chunk in chunks {
+            frame.vertices.extend_from_slice(&chunk.vertices);
+            counts.triangles_in += chunk.counts.triangles_in;
+            counts.clipped += chunk.counts.clipped;
+            counts.culled += chunk.counts.culled;
+            counts.drawn += chunk.counts.drawn;
+            counts.output_primitives += chunk.counts.output_primitives;
+        }
+        frame.topology = stage.topology();
+        frame.viewport = viewport;
+        frame.counts = counts;
+    }
+}

@@ -1,0 +1,142 @@
+//! The three matrices of the assignment, written out entry by entry: glam only holds the numbers.
+//! Each is given row by row, as in the textbook, and transposed into glam's column-major storage.
+
+use close2gl_core::Camera;
+use glam::Mat4;
+
+/// A matrix from its rows, so the code below reads like the printed matrices.
+fn from_rows(rows: [[f32; 4]; 4]) -> Mat4 {
+    Mat4::from_cols_array_2d(&rows).transpose()
+}
+
+/// M: world → camera coordinates, from the camera's u, v, n and centre of projection c
+/// (Hill, matrix 7.2, with the corrected 1 in the corner): rows u, v, n, and d = -c·(u, v, n).
+pub fn modelview(camera: &Camera) -> Mat4 {
+    let (u, v, n, c) = (camera.u, camera.v, camera.n, camera.position);
+    from_rows([
+        [u.x, u.y, u.z, -c.dot(u)],
+        [v.x, v.y, v.z, -c.dot(v)],
+        [n.x, n.y, n.z, -c.dot(n)],
+        [0.0, 0.0, 0.0, 1.0],
+    ])
+}
+
+/// The window of the near plane, recovered from the two fields of view:
+/// right = near·tan(hfov/2), top = near·tan(vfov/2), left = -right, bottom = -top.
+pub fn frustum_bounds(hfov_deg: f32, vfov_deg: f32, near: f32) -> (f32, f32, f32, f32) {
+    let right = near * (hfov_deg.to_radians() * 0.5).tan();
+    let top = near * (vfov_deg.to_radians() * 0.5).tan();
+    (-right, right, -top, top)
+}
+
+/// P: camera coordinates → clip coordinates (the OpenGL red book's glFrustum matrix), mapping the
+/// view volume to the normalized cube |x|, |y|, |z| <= w.
+pub fn projection(hfov_deg: f32, vfov_deg: f32, near: f32, far: f32) -> Mat4 {
+    let (l, r, b, t) = frustum_bounds(hfov_deg, vfov_deg, near);
+    let (n, f) = (near, far);
+    from_rows([
+        [2.0 * n / (r - l), 0.0, (r + l) / (r - l), 0.0],
+        [0.0, 2.0 * n / (t - b), (t + b) / (t - b), 0.0],
+        [0.0, 0.0, -(f + n) / (f - n), -2.0 * f * n / (f - n)],
+        [0.0, 0.0, -1.0, 0.0],
+    ])
+}
+
+/// V: the normalized image plane [-1, 1]² → window pixels [0, width] × [0, height]. The window's
+/// origin is its top-left corner with y growing downwards (as every window system and wgpu count
+/// pixels), so y is scaled by -height/2: the top of the image plane (+1) lands on row 0.
+pub fn viewport(width: f32, height: f32) -> Mat4 {
+    from_rows([
+        [width / 2.0, 0.0, 0.0, width / 2.0],
+        [0.0, -height / 2.0, 0.0, height / 2.0],
+        [0.0, 0.0, 1.0, 0.0],
+        [0.0, 0.0, 0.0, 1.0],
+    ])
+}
+
+/// The camera's P·M (why not M·P? M acts first on the point, so it stands on the right).
+pub fn projection_modelview(camera: &Camera) -> Mat4 {
+    projection(camera.hfov, camera.vfov, camera.near, camera.far) * modelview(camera)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use glam::camera::rh::proj::opengl;
+    use glam::{Vec3, Vec4};
+
+    fn assert_close(a: Mat4, b: Mat4) {
+        let (a, b) = (a.to_cols_array(), b.to_cols_array());
+        for (x, y) in a.iter().zip(&b) {
+            assert!((x - y).abs() <= 1e-5 * (1.0 + y.abs()), "{a:?}\n!=\n{b:?}");
+        }
+    }
+
+    fn camera_at(position: Vec3, target: Vec3, up: Vec3) -> Camera {
+        Camera::default()
+            .looking_at(position, target, up)
+            .expect("a valid pose")
+    }
+
+    #[test]
+    fn modelview_matches_glam_look_at() {
+        for (eye, target, up) in [
+            (Vec3::new(0.0, 0.0, 5.0), Vec3::ZERO, Vec3::Y),
+            (
+                Vec3::new(3.0, -2.0, 7.0),
+                Vec3::new(1.0, 1.0, -1.0),
+                Vec3::Y,
+            ),
+            (
+                Vec3::new(440.0, -224.0, 1500.0),
+                Vec3::new(440.0, -224.0, 63.0),
+                Vec3::new(0.3, 1.0, 0.1),
+            ),
+        ] {
+            let camera = camera_at(eye, target, up);
+            assert_close(
+                modelview(&camera),
+                glam::camera::rh::view::look_at_mat4(eye, target, up),
+            );
+        }
+    }
+
+    #[test]
+    fn projection_matches_glam_perspective_and_frustum() {
+        for (hfov, vfov, near, far) in [
+            (60.0f32, 60.0f32, 0.1, 100.0),
+            (90.0, 45.0, 1.0, 3000.0),
+            (20.0, 150.0, 0.01, 5.0),
+        ] {
+            let aspect = (hfov.to_radians() / 2.0).tan() / (vfov.to_radians() / 2.0).tan();
+            let p = projection(hfov, vfov, near, far);
+            assert_close(p, opengl::perspective(vfov.to_radians(), aspect, near, far));
+            let (l, r, b, t) = frustum_bounds(hfov, vfov, near);
+            assert_close(p, opengl::frustum(l, r, b, t, near, far));
+        }
+    }
+
+    #[test]
+    fn viewport_maps_the_image_plane_corners_to_the_window_corners() {
+        let v = viewport(640.0, 480.0);
+        assert_eq!(
+            v * Vec4::new(-1.0, 1.0, 0.0, 1.0),
+            Vec4::new(0.0, 0.0, 0.0, 1.0)
+        );
+        assert_eq!(
+            v * Vec4::new(1.0, -1.0, 0.0, 1.0),
+            Vec4::new(640.0, 480.0, 0.0, 1.0)
+        );
+        assert_eq!(
+            v * Vec4::new(0.0, 0.0, 0.5, 1.0),
+            Vec4::new(320.0, 240.0, 0.5, 1.0)
+        );
+    }
+
+    #[test]
+    fn the_default_camera_sees_down_minus_z() {
+        let camera = Camera::default();
+        let clip = projection_modelview(&camera) * Vec4::new(0.0, 0.0, -1.0, 1.0);
+        assert!(clip.w > 0.0 && clip.z.abs() <= clip.w);
+    }
+}

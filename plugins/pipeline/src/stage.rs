@@ -1,0 +1,181 @@
+//! One triangle's journey after the transform by P·M, read top to bottom as in the textbook:
+//! clip, divide by w, map to the viewport, cull, emit. Both the textbook path and the fast path
+//! send every triangle through [`process`], so they cannot disagree on what a triangle becomes.
+
+use close2gl_core::{Clipping, FrontFace, RenderMode, RenderSettings, Topology, Viewport};
+use glam::{Mat4, Vec4};
+
+use crate::clip::{Outcode, Polygon, clip_polygon, clip_segment, outcode};
+use crate::matrices;
+
+/// What stays the same for every triangle of a frame.
+#[derive(Clone, Copy, Debug)]
+pub struct Stage {
+    pub mode: RenderMode,
+    pub clipping: Clipping,
+    /// The front face when backface culling is on.
+    pub culling: Option<FrontFace>,
+    pub viewport: Mat4,
+}
+
+impl Stage {
+    pub fn new(settings: &RenderSettings, viewport: Viewport) -> Self {
+        Self {
+            mode: settings.mode,
+            clipping: settings.clipping,
+            culling: settings.backface_culling.then_some(settings.front_face),
+            viewport: matrices::viewport(viewport.width as f32, viewport.height as f32),
+        }
+    }
+
+    pub fn topology(&self) -> Topology {
+        match self.mode {
+            RenderMode::Points => Topology::Points,
+            RenderMode::Wireframe => Topology::Lines,
+            RenderMode::Solid => Topology::Triangles,
+        }
+    }
+}
+
+/// A vertex after P·M: its clip coordinates, the planes it is outside of, and (only when it is
+/// inside, so the division is safe) its window position.
+#[derive(Clone, Copy, Debug)]
+pub struct Corner {
+    pub clip: Vec4,
+    pub code: Outcode,
+    pub window: [f32; 2],
+}
+
+impl Corner {
+    pub fn new(clip: Vec4, stage: &Stage) -> Self {
+        let code = outcode(clip);
+        let window = if code == 0 {
+            to_window(clip, &stage.viewport)
+        } else {
+            [f32::NAN; 2]
+        };
+        Self { clip, code, window }
+    }
+}
+
+/// The perspective division, then V.
+pub fn to_window(clip: Vec4, viewport: &Mat4) -> [f32; 2] {
+    let ndc = Vec4::new(clip.x / clip.w, clip.y / clip.w, clip.z / clip.w, 1.0);
+    let window = *viewport * ndc;
+    [window.x, window.y]
+}
+
+/// What happened to a triangle.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Fate {
+    Clipped,
+    Culled,
+    /// Drawn as this many points, lines or triangles.
+    Drawn(usize),
+}
+
+/// Clip, divide, map, cull and emit one triangle into `out`.
+pub fn process(corners: &[Corner; 3], stage: &Stage, out: &mut Vec<[f32; 2]>) -> Fate {
+    let outside_any = corners[0].code | corners[1].code | corners[2].code;
+    if outside_any == 0 {
+        // Trivially inside: the corners' window positions are already known.
+        let window = [corners[0].window, corners[1].window, corners[2].window];
+        if is_culled(&window, stage.culling) {
+            return Fate::Culled;
+        }
+        return Fate::Drawn(emit_inside(&window, stage.mode, out));
+    }
+    let outside_all = corners[0].code & corners[1].code & corners[2].code;
+    if stage.clipping == Clipping::Simple || outside_all != 0 {
+        return Fate::Clipped;
+    }
+    let triangle = Polygon::triangle(corners[0].clip, corners[1].clip, corners[2].clip);
+    let piece = clip_polygon(&triangle, outside_any);
+    let mut window = [[0.0; 2]; crate::clip::MAX_POLYGON];
+    for (w, p) in window.iter_mut().zip(piece.vertices()) {
+        *w = to_window(*p, &stage.viewport);
+    }
+    let window = &window[..piece.len];
+    if window.is_empty() || window.iter().flatten().any(|x| !x.is_finite()) {
+        return Fate::Clipped;
+    }
+    if is_culled(window, stage.culling) {
+        return Fate::Culled;
+    }
+    Fate::Drawn(match stage.mode {
+        RenderMode::Solid => emit_fan(window, out),
+        RenderMode::Wireframe => emit_clipped_edges(corners, stage, out),
+        RenderMode::Points => emit_inside_corners(corners, out),
+    })
+}
+
+/// Twice the signed area (the red book's formula). Window y grows downwards, so a polygon that
+/// looks counter-clockwise on screen has a negative area here.
+fn signed_area(window: &[[f32; 2]]) -> f32 {
+    let mut area = 0.0;
+    for (i, a) in window.iter().enumerate() {
+        let b = window[(i + 1) % window.len()];
+        area += a[0] * b[1] - b[0] * a[1];
+    }
+    area
+}
+
+fn is_culled(window: &[[f32; 2]], culling: Option<FrontFace>) -> bool {
+    let Some(front) = culling else { return false };
+    let area = signed_area(window);
+    let front_facing = match front {
+        FrontFace::Ccw => area < 0.0,
+        FrontFace::Cw => area > 0.0,
+    };
+    !front_facing
+}
+
+fn emit_inside(window: &[[f32; 2]; 3], mode: RenderMode, out: &mut Vec<[f32; 2]>) -> usize {
+    match mode {
+        RenderMode::Solid => {
+            out.extend_from_slice(window);
+            1
+        }
+        RenderMode::Wireframe => {
+            out.extend_from_slice(&[
+                window[0], window[1], window[1], window[2], window[2], window[0],
+            ]);
+            3
+        }
+        RenderMode::Points => {
+            out.extend_from_slice(window);
+            3
+        }
+    }
+}
+
+fn emit_fan(window: &[[f32; 2]], out: &mut Vec<[f32; 2]>) -> usize {
+    for i in 1..window.len() - 1 {
+        out.extend_from_slice(&[window[0], window[i], window[i + 1]]);
+    }
+    window.len() - 2
+}
+
+/// A GPU draws a clipped polygon in line mode as its original edges, cut by the view volume; the
+/// edges clipping adds are not drawn. So each edge is clipped as a segment.
+fn emit_clipped_edges(corners: &[Corner; 3], stage: &Stage, out: &mut Vec<[f32; 2]>) -> usize {
+    let mut lines = 0;
+    for i in 0..3 {
+        let (a, b) = (corners[i].clip, corners[(i + 1) % 3].clip);
+        if let Some((a, b)) = clip_segment(a, b) {
+            let (a, b) = (to_window(a, &stage.viewport), to_window(b, &stage.viewport));
+            if a.iter().chain(&b).all(|x| x.is_finite()) {
+                out.extend_from_slice(&[a, b]);
+                lines += 1;
+            }
+        }
+    }
+    lines
+}
+
+/// Points are not cut: a corner is drawn when it is inside the view volume.
+fn emit_inside_corners(corners: &[Corner; 3], out: &mut Vec<[f32; 2]>) -> usize {
+    let before = out.len();
+    out.extend(corners.iter().filter(|c| c.code == 0).map(|c| c.window));
+    out.len() - before
+}

@@ -1,0 +1,31 @@
+//! The straightforward Close2GL frame: for each triangle, transform its three vertices by P·M and
+//! send it down the stage. Slow (shared vertices are transformed once per triangle) and easy to
+//! check; the fast path must produce exactly its output.
+
+use close2gl_core::{Camera, Close2glFrame, Mesh, RenderSettings, StageCounts, Viewport};
+
+use crate::matrices::projection_modelview;
+use crate::stage::{Corner, Stage, process};
+use crate::tally;
+
+/// Fills `frame` with the 2D buffer and counts for this camera, mesh, settings and viewport.
+pub fn run(
+    mesh: &Mesh,
+    camera: &Camera,
+    settings: &RenderSettings,
+    viewport: Viewport,
+    frame: &mut Close2glFrame,
+) {
+    let pm = projection_modelview(camera);
+    let stage = Stage::new(settings, viewport);
+    let mut counts = StageCounts::default();
+    frame.vertices.clear();
+    for triangle in &mesh.triangles {
+        let corners =
+            triangle.map(|i| Corner::new(pm * mesh.positions[i as usize].extend(1.0), &stage));
+        tally(&mut counts, process(&corners, &stage, &mut frame.vertices));
+    }
+    frame.topology = stage.topology();
+    frame.viewport = viewport;
+    frame.counts = counts;
+}
