@@ -19,18 +19,15 @@ const PLANES: [fn(Vec4) -> f32; 6] = [
 
 /// Which planes `p` is outside of; 0 means inside the view volume. A point with w <= 0 is
 /// always outside (it is at or behind the centre of projection), even where every plane test
-/// would pass for w = 0.
+/// would pass for w = 0. Written out plane by plane (rather than looping over [`PLANES`]) because
+/// it runs once per vertex of every frame.
 pub fn outcode(p: Vec4) -> Outcode {
-    let mut code = 0;
-    for (bit, plane) in PLANES.iter().enumerate() {
-        if plane(p) < 0.0 {
-            code |= 1 << bit;
-        }
-    }
-    if p.w <= 0.0 {
-        code |= 1 << 4;
-    }
-    code
+    (p.w + p.x < 0.0) as Outcode
+        | ((p.w - p.x < 0.0) as Outcode) << 1
+        | ((p.w + p.y < 0.0) as Outcode) << 2
+        | ((p.w - p.y < 0.0) as Outcode) << 3
+        | ((p.w + p.z < 0.0 || p.w <= 0.0) as Outcode) << 4
+        | ((p.w - p.z < 0.0) as Outcode) << 5
 }
 
 /// The most vertices a triangle can have after cutting by six planes (3 + 6).

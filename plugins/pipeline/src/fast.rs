@@ -6,10 +6,12 @@
 
 use bevy_ecs::prelude::Resource;
 use close2gl_core::{Camera, Close2glFrame, Mesh, RenderSettings, StageCounts, Viewport};
+use glam::Vec4;
 use rayon::prelude::*;
 
+use crate::clip::Outcode;
 use crate::matrices::projection_modelview;
-use crate::stage::{Corner, Stage, process};
+use crate::stage::{Stage, corner, process};
 use crate::tally;
 
 /// Vertices and triangles per parallel task: big enough to amortise scheduling, small enough to
@@ -25,9 +27,13 @@ struct Chunk {
 }
 
 /// The reusable buffers of the fast path.
+/// Per-vertex data is kept as structure-of-arrays: the common trivially-inside triangle reads
+/// only three outcodes and three window positions.
 #[derive(Resource, Default)]
 pub struct FastPipeline {
-    corners: Vec<Corner>,
+    clip: Vec<Vec4>,
+    codes: Vec<Outcode>,
+    window: Vec<[f32; 2]>,
     chunks: Vec<Chunk>,
 }
 
@@ -45,19 +51,24 @@ impl FastPipeline {
         let stage = Stage::new(settings, viewport);
 
         // Transform every unique vertex once.
-        self.corners
-            .resize(mesh.positions.len(), Corner::new(pm.w_axis, &stage));
-        self.corners
+        let vertices = mesh.positions.len();
+        self.clip.resize(vertices, Vec4::ZERO);
+        self.codes.resize(vertices, 0);
+        self.window.resize(vertices, [0.0; 2]);
+        self.clip
             .par_chunks_mut(VERTEX_CHUNK)
+            .zip(self.codes.par_chunks_mut(VERTEX_CHUNK))
+            .zip(self.window.par_chunks_mut(VERTEX_CHUNK))
             .zip(mesh.positions.par_chunks(VERTEX_CHUNK))
-            .for_each(|(corners, positions)| {
-                for (corner, p) in corners.iter_mut().zip(positions) {
-                    *corner = Corner::new(pm * p.extend(1.0), &stage);
+            .for_each(|(((clip, codes), window), positions)| {
+                for (i, p) in positions.iter().enumerate() {
+                    clip[i] = pm * p.extend(1.0);
+                    (codes[i], window[i]) = corner(clip[i], &stage);
                 }
             });
 
         // Clip, divide, map, cull and emit the triangles, chunk by chunk.
-        let corners = &self.corners;
+        let (clip, codes, window) = (&self.clip, &self.codes, &self.window);
         let tasks = mesh.triangles.len().div_ceil(TRIANGLE_CHUNK);
         self.chunks.resize_with(tasks, Chunk::default);
         self.chunks
@@ -67,8 +78,15 @@ impl FastPipeline {
                 chunk.vertices.clear();
                 chunk.counts = StageCounts::default();
                 for triangle in triangles {
-                    let c = triangle.map(|i| corners[i as usize]);
-                    tally(&mut chunk.counts, process(&c, &stage, &mut chunk.vertices));
+                    let [a, b, c] = triangle.map(|i| i as usize);
+                    let fate = process(
+                        [codes[a], codes[b], codes[c]],
+                        [window[a], window[b], window[c]],
+                        || [clip[a], clip[b], clip[c]],
+                        &stage,
+                        &mut chunk.vertices,
+                    );
+                    tally(&mut chunk.counts, fate);
                 }
             });
 

@@ -37,24 +37,14 @@ impl Stage {
     }
 }
 
-/// A vertex after P·M: its clip coordinates, the planes it is outside of, and (only when it is
-/// inside, so the division is safe) its window position.
-#[derive(Clone, Copy, Debug)]
-pub struct Corner {
-    pub clip: Vec4,
-    pub code: Outcode,
-    pub window: [f32; 2],
-}
-
-impl Corner {
-    pub fn new(clip: Vec4, stage: &Stage) -> Self {
-        let code = outcode(clip);
-        let window = if code == 0 {
-            to_window(clip, &stage.viewport)
-        } else {
-            [f32::NAN; 2]
-        };
-        Self { clip, code, window }
+/// A vertex after P·M: the planes it is outside of, and (only when it is inside, so the division
+/// is safe) its window position.
+pub fn corner(clip: Vec4, stage: &Stage) -> (Outcode, [f32; 2]) {
+    let code = outcode(clip);
+    if code == 0 {
+        (code, to_window(clip, &stage.viewport))
+    } else {
+        (code, [f32::NAN; 2])
     }
 }
 
@@ -74,43 +64,52 @@ pub enum Fate {
     Drawn(usize),
 }
 
-/// Clip, divide, map, cull and emit one triangle into `out`.
-pub fn process(corners: &[Corner; 3], stage: &Stage, out: &mut Vec<[f32; 2]>) -> Fate {
-    let outside_any = corners[0].code | corners[1].code | corners[2].code;
+/// Clip, divide, map, cull and emit one triangle into `out`, given its corners' outcodes and
+/// window positions (from [`corner`]). The clip coordinates are asked for only when the triangle
+/// straddles the view volume's border: most triangles of a big mesh never need them.
+pub fn process(
+    codes: [Outcode; 3],
+    window: [[f32; 2]; 3],
+    clip: impl FnOnce() -> [Vec4; 3],
+    stage: &Stage,
+    out: &mut Vec<[f32; 2]>,
+) -> Fate {
+    let outside_any = codes[0] | codes[1] | codes[2];
     if outside_any == 0 {
         // Trivially inside: the corners' window positions are already known.
-        let window = [corners[0].window, corners[1].window, corners[2].window];
         if is_culled(&window, stage.culling) {
             return Fate::Culled;
         }
         return Fate::Drawn(emit_inside(&window, stage.mode, out));
     }
-    let outside_all = corners[0].code & corners[1].code & corners[2].code;
+    let outside_all = codes[0] & codes[1] & codes[2];
     if stage.clipping == Clipping::Simple || outside_all != 0 {
         return Fate::Clipped;
     }
-    let triangle = Polygon::triangle(corners[0].clip, corners[1].clip, corners[2].clip);
+    let clip = clip();
+    let triangle = Polygon::triangle(clip[0], clip[1], clip[2]);
     let piece = clip_polygon(&triangle, outside_any);
-    let mut window = [[0.0; 2]; crate::clip::MAX_POLYGON];
-    for (w, p) in window.iter_mut().zip(piece.vertices()) {
+    let mut piece_window = [[0.0; 2]; crate::clip::MAX_POLYGON];
+    for (w, p) in piece_window.iter_mut().zip(piece.vertices()) {
         *w = to_window(*p, &stage.viewport);
     }
-    let window = &window[..piece.len];
-    if window.is_empty() || window.iter().flatten().any(|x| !x.is_finite()) {
+    let piece_window = &piece_window[..piece.len];
+    if piece_window.is_empty() || piece_window.iter().flatten().any(|x| !x.is_finite()) {
         return Fate::Clipped;
     }
-    if is_culled(window, stage.culling) {
+    if is_culled(piece_window, stage.culling) {
         return Fate::Culled;
     }
     Fate::Drawn(match stage.mode {
-        RenderMode::Solid => emit_fan(window, out),
-        RenderMode::Wireframe => emit_clipped_edges(corners, stage, out),
-        RenderMode::Points => emit_inside_corners(corners, out),
+        RenderMode::Solid => emit_fan(piece_window, out),
+        RenderMode::Wireframe => emit_clipped_edges(&clip, stage, out),
+        RenderMode::Points => emit_inside_corners(codes, window, out),
     })
 }
 
 /// Twice the signed area (the red book's formula). Window y grows downwards, so a polygon that
-/// looks counter-clockwise on screen has a negative area here.
+/// looks counter-clockwise on screen has a negative area here. (Triangles, the common case, use
+/// the cross product of two edges: the same sign, fewer operations.)
 fn signed_area(window: &[[f32; 2]]) -> f32 {
     let mut area = 0.0;
     for (i, a) in window.iter().enumerate() {
@@ -122,7 +121,10 @@ fn signed_area(window: &[[f32; 2]]) -> f32 {
 
 fn is_culled(window: &[[f32; 2]], culling: Option<FrontFace>) -> bool {
     let Some(front) = culling else { return false };
-    let area = signed_area(window);
+    let area = match window {
+        [a, b, c] => (b[0] - a[0]) * (c[1] - a[1]) - (c[0] - a[0]) * (b[1] - a[1]),
+        polygon => signed_area(polygon),
+    };
     let front_facing = match front {
         FrontFace::Ccw => area < 0.0,
         FrontFace::Cw => area > 0.0,
@@ -158,10 +160,10 @@ fn emit_fan(window: &[[f32; 2]], out: &mut Vec<[f32; 2]>) -> usize {
 
 /// A GPU draws a clipped polygon in line mode as its original edges, cut by the view volume; the
 /// edges clipping adds are not drawn. So each edge is clipped as a segment.
-fn emit_clipped_edges(corners: &[Corner; 3], stage: &Stage, out: &mut Vec<[f32; 2]>) -> usize {
+fn emit_clipped_edges(clip: &[Vec4; 3], stage: &Stage, out: &mut Vec<[f32; 2]>) -> usize {
     let mut lines = 0;
     for i in 0..3 {
-        let (a, b) = (corners[i].clip, corners[(i + 1) % 3].clip);
+        let (a, b) = (clip[i], clip[(i + 1) % 3]);
         if let Some((a, b)) = clip_segment(a, b) {
             let (a, b) = (to_window(a, &stage.viewport), to_window(b, &stage.viewport));
             if a.iter().chain(&b).all(|x| x.is_finite()) {
@@ -174,8 +176,12 @@ fn emit_clipped_edges(corners: &[Corner; 3], stage: &Stage, out: &mut Vec<[f32; 
 }
 
 /// Points are not cut: a corner is drawn when it is inside the view volume.
-fn emit_inside_corners(corners: &[Corner; 3], out: &mut Vec<[f32; 2]>) -> usize {
+fn emit_inside_corners(
+    codes: [Outcode; 3],
+    window: [[f32; 2]; 3],
+    out: &mut Vec<[f32; 2]>,
+) -> usize {
     let before = out.len();
-    out.extend(corners.iter().filter(|c| c.code == 0).map(|c| c.window));
+    out.extend((0..3).filter(|&i| codes[i] == 0).map(|i| window[i]));
     out.len() - before
 }

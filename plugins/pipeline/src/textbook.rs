@@ -5,7 +5,7 @@
 use close2gl_core::{Camera, Close2glFrame, Mesh, RenderSettings, StageCounts, Viewport};
 
 use crate::matrices::projection_modelview;
-use crate::stage::{Corner, Stage, process};
+use crate::stage::{Stage, corner, process};
 use crate::tally;
 
 /// Fills `frame` with the 2D buffer and counts for this camera, mesh, settings and viewport.
@@ -21,9 +21,12 @@ pub fn run(
     let mut counts = StageCounts::default();
     frame.vertices.clear();
     for triangle in &mesh.triangles {
-        let corners =
-            triangle.map(|i| Corner::new(pm * mesh.positions[i as usize].extend(1.0), &stage));
-        tally(&mut counts, process(&corners, &stage, &mut frame.vertices));
+        let clip = triangle.map(|i| pm * mesh.positions[i as usize].extend(1.0));
+        let corners = clip.map(|c| corner(c, &stage));
+        let codes = corners.map(|(code, _)| code);
+        let window = corners.map(|(_, window)| window);
+        let fate = process(codes, window, || clip, &stage, &mut frame.vertices);
+        tally(&mut counts, fate);
     }
     frame.topology = stage.topology();
     frame.viewport = viewport;
