@@ -1,0 +1,42 @@
+//! The Close2GL geometry stage (transform, full clipping, divide, viewport, cull, 2D buffer) on
+//! spheres of 8 k (the course's cow), 100 k and 1 M triangles, and the straightforward baseline
+//! on the same meshes. `cargo bench` runs it; `close2gl bench` gives the same figures as JSON.
+
+use close2gl::commands::bench::{baseline, sphere_grid};
+use close2gl::config::Config;
+use close2gl::core::{Camera, Close2glFrame, Mesh, ModelSource, PrimitiveKind, Viewport};
+use close2gl::pipeline::FastPipeline;
+use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};
+
+fn scene(triangles: usize) -> (Mesh, Camera, Config) {
+    let mut config = Config::default();
+    config.model = ModelSource::Primitive(PrimitiveKind::Sphere);
+    (config.primitives.sphere_stacks, config.primitives.sphere_slices) = sphere_grid(triangles);
+    let mut app = close2gl::build_app(&config, Viewport { width: 1280, height: 720 }).expect("a sphere");
+    let world = app.world_mut();
+    let mesh = world.query::<&Mesh>().single(world).expect("mesh").clone();
+    let camera = *world.query::<&Camera>().single(world).expect("camera");
+    (mesh, camera, config)
+}
+
+fn geometry_stage(c: &mut Criterion) {
+    let viewport = Viewport { width: 1280, height: 720 };
+    let mut group = c.benchmark_group("close2gl");
+    group.sample_size(20);
+    for size in [8_000, 100_000, 1_000_000] {
+        let (mesh, camera, config) = scene(size);
+        group.throughput(Throughput::Elements(mesh.triangles.len() as u64));
+        let mut pipeline = FastPipeline::default();
+        let mut frame = Close2glFrame::default();
+        group.bench_function(BenchmarkId::new("fast", size), |b| {
+            b.iter(|| pipeline.run(&mesh, &camera, &config.render, viewport, &mut frame))
+        });
+        group.bench_function(BenchmarkId::new("baseline", size), |b| {
+            b.iter(|| baseline::frame(&mesh, &camera, &config.render, viewport))
+        });
+    }
+    group.finish();
+}
+
+criterion_group!(benches, geometry_stage);
+criterion_main!(benches);

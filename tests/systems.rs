@@ -1,0 +1,226 @@
+//! The ECS systems on a headless World: a test inserts resources, sends input, runs the
+//! schedules and asserts. No window, no GPU.
+
+use close2gl::camera::CameraPlugin;
+use close2gl::core::glam::{Vec2, Vec3};
+use close2gl::core::{
+    App, Camera, CameraAction, CameraActions, CameraHome, CameraMode, Clipping, Close2glFrame,
+    FrontFace, InputState, Mesh, RenderMode, RenderSettings, Shading, Viewport,
+};
+use close2gl::input::InputPlugin;
+use close2gl::pipeline::Close2glPlugin;
+
+/// A closed 2-unit cube centred on the origin, every face counter-clockwise seen from outside.
+fn cube() -> Mesh {
+    let positions: Vec<Vec3> = (0..8)
+        .map(|i| Vec3::new([-1.0, 1.0][i & 1], [-1.0, 1.0][(i >> 1) & 1], [-1.0, 1.0][i >> 2]))
+        .collect();
+    let quads = [[0, 2, 3, 1], [4, 5, 7, 6], [0, 1, 5, 4], [2, 6, 7, 3], [0, 4, 6, 2], [1, 3, 7, 5]];
+    let triangles = quads.iter().flat_map(|[a, b, c, d]| [[*a, *b, *c], [*a, *c, *d]]).collect();
+    Mesh { name: "cube".into(), normals: positions.clone(), positions, triangles }
+}
+
+fn app_with(mesh: Mesh, settings: RenderSettings) -> App {
+    let mut app = App::new();
+    app.insert_resource(settings)
+        .insert_resource(Viewport { width: 640, height: 480 })
+        .add_plugins(InputPlugin)
+        .add_plugins(CameraPlugin)
+        .add_plugins(Close2glPlugin);
+    app.world_mut().spawn(Camera::default());
+    app.world_mut().spawn(mesh);
+    app.update();
+    app
+}
+
+fn camera(app: &mut App) -> Camera {
+    *app.world_mut().query::<&Camera>().single(app.world()).expect("one camera")
+}
+
+fn frame(app: &App) -> &Close2glFrame {
+    app.world().resource::<Close2glFrame>()
+}
+
+/// Holds `keys` for one frame of `dt` seconds.
+fn hold(app: &mut App, keys: &[&str], dt: f32) {
+    let mut input = app.world_mut().resource_mut::<InputState>();
+    input.held = keys.iter().map(|k| k.to_string()).collect();
+    input.dt = dt;
+    app.update();
+    let mut input = app.world_mut().resource_mut::<InputState>();
+    input.held.clear();
+    input.end_frame();
+}
+
+fn press(app: &mut App, key: &str) {
+    app.world_mut().resource_mut::<InputState>().pressed.push(key.into());
+    app.update();
+    app.world_mut().resource_mut::<InputState>().end_frame();
+}
+
+fn close(a: Vec3, b: Vec3) -> bool {
+    (a - b).length() < 1e-4 * (1.0 + b.length())
+}
+
+#[test]
+fn loading_frames_the_model_from_plus_z() {
+    let mut app = app_with(cube(), RenderSettings::default());
+    let c = camera(&mut app);
+    assert_eq!((c.u, c.v, c.n), (Vec3::X, Vec3::Y, Vec3::Z));
+    assert_eq!(c.target, Vec3::ZERO);
+    // The bounding sphere (radius √3) fits the 60° fields of view exactly.
+    assert!((c.position.z - 3f32.sqrt() / 30f32.to_radians().sin()).abs() < 1e-4);
+    let bounds = frame(&app).bounds_px().expect("the cube is drawn");
+    assert!(bounds[0] > 0.0 && bounds[2] < 640.0 && bounds[1] > 0.0 && bounds[3] < 480.0);
+}
+
+#[test]
+fn w_moves_along_minus_n() {
+    let mut app = app_with(cube(), RenderSettings::default());
+    let before = camera(&mut app);
+    hold(&mut app, &["w"], 0.05);
+    let after = camera(&mut app);
+    let moved = after.position - before.position;
+    assert!(moved.length() > 0.0);
+    assert!(close(moved.normalize(), -before.n), "moved along {moved}");
+    assert_eq!((after.u, after.v, after.n), (before.u, before.v, before.n));
+}
+
+#[test]
+fn after_a_yaw_w_follows_the_new_n() {
+    let mut app = app_with(cube(), RenderSettings::default());
+    app.world_mut().resource_mut::<InputState>().drag = Vec2::new(120.0, 0.0);
+    app.update();
+    app.world_mut().resource_mut::<InputState>().end_frame();
+    let turned = camera(&mut app);
+    assert!(!close(turned.n, Vec3::Z), "the drag turned the camera");
+    assert!((turned.u.dot(turned.n)).abs() < 1e-5 && (turned.u.cross(turned.v) - turned.n).length() < 1e-5);
+    hold(&mut app, &["w"], 0.05);
+    let moved = camera(&mut app).position - turned.position;
+    assert!(close(moved.normalize(), -turned.n), "moved along {moved}, n = {}", turned.n);
+}
+
+#[test]
+fn orbiting_keeps_the_look_at_point_and_the_distance() {
+    let mut app = app_with(cube(), RenderSettings::default());
+    press(&mut app, "tab");
+    let start = camera(&mut app);
+    assert_eq!(start.mode, CameraMode::LookAt);
+    for keys in [["d"], ["r"], ["a"], ["f"]] {
+        hold(&mut app, &keys, 0.05);
+    }
+    app.world_mut().resource_mut::<CameraActions>().0.push(CameraAction::Orbit { yaw: 0.7, pitch: -0.3 });
+    app.update();
+    let end = camera(&mut app);
+    assert!(!close(end.position, start.position));
+    assert_eq!(end.target, start.target);
+    assert!((end.distance() - start.distance()).abs() < 1e-4 * start.distance());
+    assert!(close(end.n, (end.position - end.target).normalize()), "still looking at the target");
+}
+
+#[test]
+fn reset_returns_to_the_framed_pose() {
+    let mut app = app_with(cube(), RenderSettings::default());
+    let home = app.world_mut().query::<&CameraHome>().single(app.world()).expect("framed").0;
+    hold(&mut app, &["w", "d", "z"], 0.05);
+    app.world_mut().resource_mut::<InputState>().drag = Vec2::new(-40.0, 25.0);
+    app.update();
+    assert_ne!(camera(&mut app).position, home.position);
+    press(&mut app, "space");
+    let c = camera(&mut app);
+    assert_eq!((c.position, c.u, c.v, c.n, c.target), (home.position, home.u, home.v, home.n, home.target));
+}
+
+#[test]
+fn scroll_zooms_both_fields_of_view_keeping_their_ratio() {
+    let mut app = app_with(cube(), RenderSettings::default());
+    let before = camera(&mut app);
+    app.world_mut().resource_mut::<InputState>().scroll = 3.0;
+    app.update();
+    let after = camera(&mut app);
+    assert!(after.hfov < before.hfov && after.vfov < before.vfov);
+}
+
+#[test]
+fn the_lecture_keys_switch_shading() {
+    let mut app = app_with(cube(), RenderSettings::default());
+    let shading = |app: &App| app.world().resource::<RenderSettings>().shading;
+    press(&mut app, "shift+p");
+    assert_eq!(shading(&app), Shading::Phong);
+    press(&mut app, "shift+g");
+    assert_eq!(shading(&app), Shading::GouraudAds);
+    press(&mut app, "shift+d");
+    assert_eq!(shading(&app), Shading::None);
+}
+
+#[test]
+fn cw_and_ccw_partition_a_closed_cube() {
+    let pose = |app: &mut App| {
+        let mut q = app.world_mut().query::<&mut Camera>();
+        let mut c = q.single_mut(app.world_mut()).expect("camera");
+        *c = c.looking_at(Vec3::new(3.0, 2.5, 4.0), Vec3::ZERO, Vec3::Y).expect("pose");
+    };
+    let mut drawn = Vec::new();
+    for front_face in [FrontFace::Ccw, FrontFace::Cw] {
+        let mut app = app_with(cube(), RenderSettings { front_face, ..RenderSettings::default() });
+        pose(&mut app);
+        app.update();
+        let counts = frame(&app).counts;
+        assert_eq!(counts.clipped, 0);
+        assert_eq!(counts.drawn + counts.culled, 12);
+        drawn.push(counts.drawn);
+    }
+    assert_eq!(drawn, [6, 6], "three faces face the camera, three face away");
+}
+
+/// One triangle crossing the near plane: two corners in front of the camera, one behind it.
+fn triangle_through_the_near_plane(clipping: Clipping) -> Close2glFrame {
+    let mesh = Mesh {
+        name: "one".into(),
+        positions: vec![Vec3::new(-1.0, -1.0, -2.0), Vec3::new(1.0, -1.0, -2.0), Vec3::new(0.0, 0.5, 5.0)],
+        normals: vec![Vec3::Y; 3],
+        triangles: vec![[0, 1, 2]],
+    };
+    let settings = RenderSettings { clipping, backface_culling: false, ..RenderSettings::default() };
+    let mut app = app_with(mesh, settings);
+    let mut q = app.world_mut().query::<&mut Camera>();
+    *q.single_mut(app.world_mut()).expect("camera") = Camera { near: 0.5, far: 50.0, ..Camera::default() };
+    app.update();
+    frame(&app).clone()
+}
+
+#[test]
+fn the_near_plane_cuts_a_triangle_in_full_mode_and_drops_it_in_simple_mode() {
+    let full = triangle_through_the_near_plane(Clipping::Full);
+    assert_eq!((full.counts.clipped, full.counts.drawn), (0, 1));
+    // The cut leaves a quad (two triangles): the near plane crosses two edges.
+    assert_eq!(full.counts.output_primitives, 2);
+    assert_eq!(full.vertices.len(), 6);
+    for [x, y] in &full.vertices {
+        assert!((0.0..=640.0).contains(x) && (0.0..=480.0).contains(y), "({x}, {y})");
+    }
+    let simple = triangle_through_the_near_plane(Clipping::Simple);
+    assert_eq!((simple.counts.clipped, simple.counts.drawn), (1, 0));
+    assert!(simple.vertices.is_empty());
+}
+
+#[test]
+fn a_resize_changes_the_viewport_mapping() {
+    let mut app = app_with(cube(), RenderSettings::default());
+    let big = frame(&app).bounds_px().expect("drawn");
+    *app.world_mut().resource_mut::<Viewport>() = Viewport { width: 320, height: 240 };
+    app.update();
+    let small = frame(&app).bounds_px().expect("drawn");
+    for (b, s) in big.iter().zip(&small) {
+        assert!((b / 2.0 - s).abs() < 1e-3, "{big:?} vs {small:?}");
+    }
+}
+
+#[test]
+fn each_mode_emits_its_primitives() {
+    for (mode, per_triangle) in [(RenderMode::Solid, 3), (RenderMode::Wireframe, 6), (RenderMode::Points, 3)] {
+        let app = app_with(cube(), RenderSettings { mode, ..RenderSettings::default() });
+        let f = frame(&app);
+        assert_eq!(f.vertices.len(), f.counts.drawn * per_triangle, "{mode:?}");
+    }
+}
