@@ -12,19 +12,22 @@ pub fn frame(centre: Vec3, radius: f32, lens: &Camera, framing: &Framing) -> Cam
     let half_fov = lens.hfov.min(lens.vfov).to_radians() * 0.5;
     let distance = radius / half_fov.sin();
 
-    let framed = Camera {
-        near: (0.5 * (distance - radius)).max(distance * 1e-3),
-        far: 4.0 * (distance + radius),
-        ..*lens
-    };
     let [position, target, up] =
         framing
             .pose
             .unwrap_or([centre + Vec3::Z * distance, centre, Vec3::Y]);
-    let mut camera = framed
+    // The clipping planes hug the model as seen from where the camera really is; from inside the
+    // model, near shrinks to a small fraction of its size.
+    let seen_from = position.distance(centre);
+    let lens = Camera {
+        near: (0.5 * (seen_from - radius)).max(radius * 1e-3),
+        far: 4.0 * (seen_from + radius),
+        ..*lens
+    };
+    let mut camera = lens
         .looking_at(position, target, up)
-        .or_else(|| framed.looking_at(centre + Vec3::Z * distance, centre, Vec3::Y))
-        .unwrap_or(framed);
+        .or_else(|| lens.looking_at(centre + Vec3::Z * distance, centre, Vec3::Y))
+        .unwrap_or(lens);
     pin_clipping_planes(&mut camera, framing);
     camera
 }
@@ -75,6 +78,27 @@ mod tests {
         };
         let camera = frame(Vec3::ZERO, 1.0, &lens, &Framing::default());
         assert!((camera.position.z - 1.0 / 15f32.to_radians().sin()).abs() < 1e-4);
+    }
+
+    #[test]
+    fn planes_follow_an_explicit_pose_even_from_inside_the_model() {
+        for position in [Vec3::new(0.0, 0.0, 100.0), Vec3::new(0.1, 0.0, 0.0)] {
+            let framing = Framing {
+                pose: Some([position, Vec3::ZERO, Vec3::Y]),
+                ..Framing::default()
+            };
+            let camera = frame(Vec3::ZERO, 1.0, &Camera::default(), &framing);
+            assert!(camera.near > 0.0 && camera.near < camera.far);
+            assert!(
+                camera.far > position.length() + 1.0,
+                "the whole model is before far"
+            );
+            assert!(
+                camera.near < (position.length() - 1.0).max(0.01),
+                "near = {}",
+                camera.near
+            );
+        }
     }
 
     #[test]
