@@ -1,0 +1,170 @@
+//! The Close2GL view: draws the 2D buffer the Close2GL system wrote, through a pass-through
+//! pipeline (pixels to NDC, one flat colour; no depth, no culling, no 3D transform).
+
+use bytemuck::{Pod, Zeroable};
+use close2gl_core::{Close2glFrame, Topology};
+use glam::Vec3;
+
+/// The uniform block of close2gl.wgsl.
+#[repr(C)]
+#[derive(Clone, Copy, Pod, Zeroable)]
+struct FrameUniforms {
+    size: [f32; 2],
+    _pad: [f32; 2],
+    color: [f32; 4],
+}
+
+pub(crate) struct Close2glView {
+    shader: wgpu::ShaderModule,
+    layout: wgpu::PipelineLayout,
+    color_format: wgpu::TextureFormat,
+    uniforms: wgpu::Buffer,
+    bind_group: wgpu::BindGroup,
+    /// Points, lines, triangles: made when first needed.
+    pipelines: [Option<wgpu::RenderPipeline>; 3],
+    /// Grows by doubling, so a steady frame allocates nothing.
+    vertices: wgpu::Buffer,
+    vertex_count: u32,
+    topology: Topology,
+}
+
+fn slot(topology: Topology) -> usize {
+    match topology {
+        Topology::Points => 0,
+        Topology::Lines => 1,
+        Topology::Triangles => 2,
+    }
+}
+
+const VERTEX_SIZE: u64 = size_of::<[f32; 2]>() as u64;
+
+impl Close2glView {
+    pub(crate) fn new(device: &wgpu::Device, color_format: wgpu::TextureFormat) -> Self {
+        let shader = device.create_shader_module(wgpu::include_wgsl!("close2gl.wgsl"));
+        let uniforms = device.create_buffer(&wgpu::BufferDescriptor {
+            label: Some("close2gl uniforms"),
+            size: size_of::<FrameUniforms>() as u64,
+            usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
+            mapped_at_creation: false,
+        });
+        let (bind_group_layout, bind_group) = crate::uniform_binding(
+            device,
+            "close2gl",
+            &uniforms,
+            wgpu::ShaderStages::VERTEX_FRAGMENT,
+        );
+        let layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
+            label: Some("close2gl"),
+            bind_group_layouts: &[Some(&bind_group_layout)],
+            immediate_size: 0,
+        });
+        Self {
+            shader,
+            layout,
+            color_format,
+            uniforms,
+            bind_group,
+            pipelines: [None, None, None],
+            vertices: vertex_buffer(device, 1024 * VERTEX_SIZE),
+            vertex_count: 0,
+            topology: Topology::Triangles,
+        }
+    }
+
+    /// Uploads the 2D buffer (growing the GPU buffer by doubling when it does not fit) and the
+    /// uniforms, and makes sure the pipeline for its topology exists.
+    pub(crate) fn update(
+        &mut self,
+        device: &wgpu::Device,
+        queue: &wgpu::Queue,
+        frame: &Close2glFrame,
+        color: Vec3,
+    ) {
+        let bytes: &[u8] = bytemuck::cast_slice(&frame.vertices);
+        let needed = bytes.len() as u64;
+        if needed > self.vertices.size() {
+            let mut size = self.vertices.size();
+            while size < needed {
+                size *= 2;
+            }
+            self.vertices = vertex_buffer(device, size);
+        }
+        if !bytes.is_empty() {
+            queue.write_buffer(&self.vertices, 0, bytes);
+        }
+        self.vertex_count = frame.vertices.len() as u32;
+        self.topology = frame.topology;
+        let uniforms = FrameUniforms {
+            size: [
+                frame.viewport.width.max(1) as f32,
+                frame.viewport.height.max(1) as f32,
+            ],
+            _pad: [0.0; 2],
+            color: color.extend(1.0).to_array(),
+        };
+        queue.write_buffer(&self.uniforms, 0, bytemuck::bytes_of(&uniforms));
+        let slot = slot(frame.topology);
+        if self.pipelines[slot].is_none() {
+            self.pipelines[slot] = Some(self.create_pipeline(device, frame.topology));
+        }
+    }
+
+    pub(crate) fn draw(&self, pass: &mut wgpu::RenderPass<'_>) {
+        let Some(pipeline) = &self.pipelines[slot(self.topology)] else {
+            return;
+        };
+        if self.vertex_count == 0 {
+            return;
+        }
+        pass.set_pipeline(pipeline);
+        pass.set_bind_group(0, &self.bind_group, &[]);
+        pass.set_vertex_buffer(0, self.vertices.slice(..));
+        pass.draw(0..self.vertex_count, 0..1);
+    }
+
+    fn create_pipeline(&self, device: &wgpu::Device, topology: Topology) -> wgpu::RenderPipeline {
+        let attributes = wgpu::vertex_attr_array![0 => Float32x2];
+        device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
+            label: Some("close2gl"),
+            layout: Some(&self.layout),
+            vertex: wgpu::VertexState {
+                module: &self.shader,
+                entry_point: Some("vs_main"),
+                compilation_options: Default::default(),
+                buffers: &[Some(wgpu::VertexBufferLayout {
+                    array_stride: VERTEX_SIZE,
+                    step_mode: wgpu::VertexStepMode::Vertex,
+                    attributes: &attributes,
+                })],
+            },
+            primitive: wgpu::PrimitiveState {
+                topology: match topology {
+                    Topology::Points => wgpu::PrimitiveTopology::PointList,
+                    Topology::Lines => wgpu::PrimitiveTopology::LineList,
+                    Topology::Triangles => wgpu::PrimitiveTopology::TriangleList,
+                },
+                cull_mode: None,
+                ..Default::default()
+            },
+            depth_stencil: None,
+            multisample: Default::default(),
+            fragment: Some(wgpu::FragmentState {
+                module: &self.shader,
+                entry_point: Some("fs_main"),
+                compilation_options: Default::default(),
+                targets: &[Some(self.color_format.into())],
+            }),
+            multiview_mask: None,
+            cache: None,
+        })
+    }
+}
+
+fn vertex_buffer(device: &wgpu::Device, size: u64) -> wgpu::Buffer {
+    device.create_buffer(&wgpu::BufferDescriptor {
+        label: Some("close2gl vertices"),
+        size,
+        usage: wgpu::BufferUsages::VERTEX | wgpu::BufferUsages::COPY_DST,
+        mapped_at_creation: false,
+    })
+}

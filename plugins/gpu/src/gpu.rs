@@ -1,0 +1,124 @@
+//! The one wgpu device every view and every window shares.
+
+use bevy_ecs::prelude::*;
+
+/// The wgpu instance, adapter, device and queue every view shares (a Resource). Cloning is cheap:
+/// wgpu's handles are reference-counted, so tests create one and hand copies to many apps.
+#[derive(Resource, Clone, Debug)]
+pub struct Gpu {
+    pub instance: wgpu::Instance,
+    pub adapter: wgpu::Adapter,
+    pub device: wgpu::Device,
+    pub queue: wgpu::Queue,
+}
+
+/// The optional features the reference renderer uses when the adapter has them: they are what
+/// make glPolygonMode's lines and points possible.
+const WANTED_FEATURES: wgpu::Features =
+    wgpu::Features::POLYGON_MODE_LINE.union(wgpu::Features::POLYGON_MODE_POINT);
+
+impl Gpu {
+    /// No window: `backends` picks Vulkan, GL, ... (`WGPU_BACKEND` in the environment is ignored
+    /// so that the caller's choice is the one used). Fails with a message saying what to install
+    /// when no adapter exists.
+    pub fn headless(backends: wgpu::Backends) -> Result<Gpu, String> {
+        let mut descriptor = wgpu::InstanceDescriptor::new_without_display_handle_from_env();
+        descriptor.backends = backends;
+        let instance = wgpu::Instance::new(descriptor);
+        let adapter = pollster::block_on(instance.request_adapter(&wgpu::RequestAdapterOptions {
+            power_preference: wgpu::PowerPreference::HighPerformance,
+            ..Default::default()
+        }))
+        .map_err(|_| no_adapter(backends))?;
+        Self::with_adapter(instance, adapter)
+    }
+
+    /// For windows: the caller made the instance (with a display handle) and a surface; the
+    /// adapter chosen can present to it.
+    pub fn for_surface(
+        instance: wgpu::Instance,
+        surface: &wgpu::Surface<'_>,
+    ) -> Result<Gpu, String> {
+        let adapter = pollster::block_on(instance.request_adapter(&wgpu::RequestAdapterOptions {
+            power_preference: wgpu::PowerPreference::HighPerformance,
+            compatible_surface: Some(surface),
+            ..Default::default()
+        }))
+        .map_err(|_| no_adapter(wgpu::Backends::all()))?;
+        Self::with_adapter(instance, adapter)
+    }
+
+    fn with_adapter(instance: wgpu::Instance, adapter: wgpu::Adapter) -> Result<Gpu, String> {
+        let (device, queue) = pollster::block_on(adapter.request_device(&wgpu::DeviceDescriptor {
+            label: Some("close2gl"),
+            required_features: adapter.features() & WANTED_FEATURES,
+            // Everything the adapter offers: big viewports need its real texture size limit.
+            required_limits: adapter.limits(),
+            ..Default::default()
+        }))
+        .map_err(|e| {
+            format!(
+                "the GPU adapter {} refused to open a device: {e}",
+                adapter.get_info().name
+            )
+        })?;
+        Ok(Gpu {
+            instance,
+            adapter,
+            device,
+            queue,
+        })
+    }
+
+    /// The adapter's name, e.g. "llvmpipe (LLVM 15.0.6, 256 bits)".
+    pub fn adapter_name(&self) -> String {
+        self.adapter.get_info().name
+    }
+
+    /// The backend in use, e.g. "vulkan" or "gl".
+    pub fn backend_name(&self) -> String {
+        self.adapter.get_info().backend.to_str().to_string()
+    }
+}
+
+fn no_adapter(backends: wgpu::Backends) -> String {
+    format!(
+        "no GPU adapter found for {}: install a Vulkan driver, e.g. `apt-get install \
+         mesa-vulkan-drivers` (Mesa's lavapipe runs without a GPU)",
+        backend_names(backends)
+    )
+}
+
+/// "vulkan|gl" for the flags set, in the order wgpu lists them.
+fn backend_names(backends: wgpu::Backends) -> String {
+    let names: Vec<&str> = [
+        (wgpu::Backends::VULKAN, "vulkan"),
+        (wgpu::Backends::GL, "gl"),
+        (wgpu::Backends::METAL, "metal"),
+        (wgpu::Backends::DX12, "dx12"),
+        (wgpu::Backends::BROWSER_WEBGPU, "webgpu"),
+    ]
+    .into_iter()
+    .filter(|(flag, _)| backends.contains(*flag))
+    .map(|(_, name)| name)
+    .collect();
+    if names.is_empty() {
+        "no backend".into()
+    } else {
+        names.join("|")
+    }
+}
+
+/// Parses `--backend`: vulkan, gl, metal, dx12 or all.
+pub fn parse_backends(name: &str) -> Result<wgpu::Backends, String> {
+    match name {
+        "vulkan" => Ok(wgpu::Backends::VULKAN),
+        "gl" => Ok(wgpu::Backends::GL),
+        "metal" => Ok(wgpu::Backends::METAL),
+        "dx12" => Ok(wgpu::Backends::DX12),
+        "all" => Ok(wgpu::Backends::all()),
+        other => Err(format!(
+            "unknown backend \"{other}\": expected vulkan, gl, metal, dx12 or all"
+        )),
+    }
+}

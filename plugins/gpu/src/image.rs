@@ -1,0 +1,77 @@
+//! An RGBA8 image, as read back from the GPU, and its PNG encoding.
+
+use std::fs::File;
+use std::io::{BufReader, BufWriter};
+use std::path::Path;
+
+/// Rows from the top, pixels left to right, RGBA 8 bits per channel (not sRGB-encoded: the
+/// bytes are the colour values the shaders wrote, times 255).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Image {
+    pub width: u32,
+    pub height: u32,
+    pub pixels: Vec<[u8; 4]>,
+}
+
+impl Image {
+    pub fn filled(width: u32, height: u32, color: [u8; 4]) -> Image {
+        Image {
+            width,
+            height,
+            pixels: vec![color; width as usize * height as usize],
+        }
+    }
+
+    pub fn pixel(&self, x: u32, y: u32) -> [u8; 4] {
+        self.pixels[y as usize * self.width as usize + x as usize]
+    }
+
+    /// Writes an 8-bit RGBA PNG; the error names the file.
+    pub fn write_png(&self, path: &Path) -> Result<(), String> {
+        let fail = |e: &dyn std::fmt::Display| format!("{}: cannot write: {e}", path.display());
+        let file = File::create(path).map_err(|e| fail(&e))?;
+        let mut encoder = png::Encoder::new(BufWriter::new(file), self.width, self.height);
+        encoder.set_color(png::ColorType::Rgba);
+        encoder.set_depth(png::BitDepth::Eight);
+        let mut writer = encoder.write_header().map_err(|e| fail(&e))?;
+        writer
+            .write_image_data(self.pixels.as_flattened())
+            .map_err(|e| fail(&e))?;
+        writer.finish().map_err(|e| fail(&e))
+    }
+
+    /// Reads an 8-bit RGB or RGBA PNG (what [`Image::write_png`] and most tools write).
+    pub fn read_png(path: &Path) -> Result<Image, String> {
+        let fail = |e: &dyn std::fmt::Display| format!("{}: cannot read PNG: {e}", path.display());
+        let file = File::open(path).map_err(|e| fail(&e))?;
+        let mut reader = png::Decoder::new(BufReader::new(file))
+            .read_info()
+            .map_err(|e| fail(&e))?;
+        let size = reader
+            .output_buffer_size()
+            .ok_or_else(|| fail(&"the image is too large"))?;
+        let mut bytes = vec![0; size];
+        let info = reader.next_frame(&mut bytes).map_err(|e| fail(&e))?;
+        let bytes = &bytes[..info.buffer_size()];
+        let pixels: Vec<[u8; 4]> = match (info.color_type, info.bit_depth) {
+            (png::ColorType::Rgba, png::BitDepth::Eight) => bytes
+                .chunks_exact(4)
+                .map(|p| [p[0], p[1], p[2], p[3]])
+                .collect(),
+            (png::ColorType::Rgb, png::BitDepth::Eight) => bytes
+                .chunks_exact(3)
+                .map(|p| [p[0], p[1], p[2], 255])
+                .collect(),
+            (color, depth) => {
+                return Err(fail(&format!(
+                    "expected 8-bit RGB or RGBA, found {color:?} at {depth:?}"
+                )));
+            }
+        };
+        Ok(Image {
+            width: info.width,
+            height: info.height,
+            pixels,
+        })
+    }
+}

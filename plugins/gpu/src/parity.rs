@@ -1,0 +1,92 @@
+//! How far the two views agree: coverage (the pixels that differ from the background colour),
+//! the pixels whose coverage differs, and a diff image that shows them.
+
+use glam::Vec3;
+
+use crate::Image;
+
+/// A colour in 0..1 as the 8-bit value a UNORM target stores for it (round to nearest).
+pub fn to_rgb8(color: Vec3) -> [u8; 3] {
+    color
+        .to_array()
+        .map(|c| (c.clamp(0.0, 1.0) * 255.0).round() as u8)
+}
+
+/// Which pixels differ from the background colour (alpha ignored).
+pub fn coverage(image: &Image, background: [u8; 3]) -> Vec<bool> {
+    image.pixels.iter().map(|p| p[..3] != background).collect()
+}
+
+/// The coverage of two images of one scene compared.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Comparison {
+    /// Pixels covered in one image and not in the other.
+    pub mismatched_pixels: usize,
+    /// Pixels covered in either image.
+    pub covered_pixels: usize,
+    /// Covered in the first image only, and in the second only.
+    pub only_first: usize,
+    pub only_second: usize,
+    /// 1 - mismatched / covered; 0 when neither image covers any pixel, so that an empty or
+    /// off-screen model cannot score high.
+    pub coverage_agreement: f64,
+}
+
+impl Comparison {
+    pub fn new(first: &[bool], second: &[bool]) -> Comparison {
+        let (mut only_first, mut only_second, mut covered) = (0, 0, 0);
+        for (&a, &b) in first.iter().zip(second) {
+            covered += usize::from(a || b);
+            only_first += usize::from(a && !b);
+            only_second += usize::from(b && !a);
+        }
+        let mismatched = only_first + only_second;
+        let coverage_agreement = if covered == 0 {
+            0.0
+        } else {
+            1.0 - mismatched as f64 / covered as f64
+        };
+        Comparison {
+            mismatched_pixels: mismatched,
+            covered_pixels: covered,
+            only_first,
+            only_second,
+            coverage_agreement,
+        }
+    }
+
+    /// Compares the coverage of two images of the same size against one background colour.
+    pub fn of_images(first: &Image, second: &Image, background: [u8; 3]) -> Comparison {
+        Comparison::new(&coverage(first, background), &coverage(second, background))
+    }
+}
+
+/// Covered only in the reference: magenta. Covered only in Close2GL: green.
+pub const ONLY_REFERENCE: [u8; 4] = [255, 0, 255, 255];
+pub const ONLY_CLOSE2GL: [u8; 4] = [0, 255, 0, 255];
+
+/// The reference faded three quarters of the way to white, with the pixels whose coverage
+/// differs painted [`ONLY_REFERENCE`] or [`ONLY_CLOSE2GL`].
+pub fn diff_image(reference: &Image, close2gl: &Image, background: [u8; 3]) -> Image {
+    let pixels = reference
+        .pixels
+        .iter()
+        .zip(&close2gl.pixels)
+        .map(|(r, c)| {
+            let (in_r, in_c) = (r[..3] != background, c[..3] != background);
+            match (in_r, in_c) {
+                (true, false) => ONLY_REFERENCE,
+                (false, true) => ONLY_CLOSE2GL,
+                _ => {
+                    let fade = |x: u8| ((x as u16 + 3 * 255) / 4) as u8;
+                    [fade(r[0]), fade(r[1]), fade(r[2]), 255]
+                }
+            }
+        })
+        .collect();
+    Image {
+        width: reference.width,
+        height: reference.height,
+        pixels,
+    }
+}

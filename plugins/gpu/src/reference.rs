@@ -1,0 +1,322 @@
+//! The reference renderer: the mesh drawn by the GPU from glam's own camera matrices, with depth
+//! test, glPolygonMode-style points / wireframe / solid, culling, and the four shading modes.
+
+use std::collections::HashMap;
+
+use bytemuck::{Pod, Zeroable};
+use close2gl_core::{Camera, FrontFace, Lighting, Mesh, RenderMode, RenderSettings, Shading};
+use glam::camera::rh::proj::directx::perspective;
+use glam::camera::rh::view::look_at_mat4;
+use glam::{Mat4, Vec3};
+use wgpu::util::DeviceExt;
+
+use crate::DEPTH_FORMAT;
+
+/// The camera's view and projection from glam's own functions, deliberately independent of
+/// Close2GL's hand-written matrices so that agreement between the views means something. The
+/// projection's aspect comes from the two fields of view, not from the window, as in Close2GL;
+/// depth maps to wgpu's 0..1 (glam's right-handed look-at and WebGPU perspective).
+pub fn camera_matrices(camera: &Camera) -> (Mat4, Mat4) {
+    let view = look_at_mat4(camera.position, camera.position - camera.n, camera.v);
+    let half_h = (camera.hfov.to_radians() * 0.5).tan();
+    let half_v = (camera.vfov.to_radians() * 0.5).tan();
+    let projection = perspective(
+        camera.vfov.to_radians(),
+        half_h / half_v,
+        camera.near,
+        camera.far,
+    );
+    (view, projection)
+}
+
+/// The uniform block of reference.wgsl, field for field.
+#[repr(C)]
+#[derive(Clone, Copy, Pod, Zeroable)]
+struct Uniforms {
+    view_projection: [[f32; 4]; 4],
+    modelview: [[f32; 4]; 4],
+    normal_matrix: [[f32; 4]; 4],
+    light: [f32; 4],
+    ambient: [f32; 4],
+    intensity: [f32; 4],
+    color: [f32; 4],
+    material: [f32; 4],
+    attenuation: [f32; 4],
+}
+
+impl Uniforms {
+    fn new(camera: &Camera, settings: &RenderSettings, lighting: &Lighting) -> Self {
+        let (view, projection) = camera_matrices(camera);
+        let light = view.transform_point3(lighting.light_position);
+        let [c0, c1, c2] = lighting.attenuation;
+        Self {
+            view_projection: (projection * view).to_cols_array_2d(),
+            modelview: view.to_cols_array_2d(),
+            normal_matrix: view.inverse().transpose().to_cols_array_2d(),
+            light: light.extend(1.0).to_array(),
+            ambient: (lighting.ia * lighting.ka).extend(1.0).to_array(),
+            intensity: lighting.il.extend(1.0).to_array(),
+            color: settings.color.extend(1.0).to_array(),
+            material: [lighting.kd, lighting.ks, lighting.shininess, 0.0],
+            attenuation: [c0, c1, c2, 0.0],
+        }
+    }
+}
+
+/// What makes one reference pipeline differ from another.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+struct PipelineKey {
+    shading: Shading,
+    mode: RenderMode,
+    backface_culling: bool,
+    front_face: FrontFace,
+}
+
+impl PipelineKey {
+    fn new(settings: &RenderSettings) -> Self {
+        Self {
+            shading: settings.shading,
+            mode: settings.mode,
+            backface_culling: settings.backface_culling,
+            front_face: settings.front_face,
+        }
+    }
+}
+
+/// The mesh on the GPU: positions and normals interleaved, and a u32 index buffer.
+struct GpuMesh {
+    vertices: wgpu::Buffer,
+    indices: wgpu::Buffer,
+    index_count: u32,
+    generation: u64,
+}
+
+/// Interleaved vertex: position then normal.
+#[repr(C)]
+#[derive(Clone, Copy, Pod, Zeroable)]
+struct Vertex {
+    position: [f32; 3],
+    normal: [f32; 3],
+}
+
+pub(crate) struct Reference {
+    shader: wgpu::ShaderModule,
+    layout: wgpu::PipelineLayout,
+    color_format: wgpu::TextureFormat,
+    features: wgpu::Features,
+    uniforms: wgpu::Buffer,
+    bind_group: wgpu::BindGroup,
+    /// One pipeline per (shading, polygon mode, culling, front face), made the first time that
+    /// combination is drawn: building all 48 up front would cost seconds on a software GPU.
+    pipelines: HashMap<PipelineKey, wgpu::RenderPipeline>,
+    current: Option<PipelineKey>,
+    mesh: Option<GpuMesh>,
+}
+
+impl Reference {
+    pub(crate) fn new(device: &wgpu::Device, color_format: wgpu::TextureFormat) -> Self {
+        let shader = device.create_shader_module(wgpu::include_wgsl!("reference.wgsl"));
+        let uniforms = device.create_buffer(&wgpu::BufferDescriptor {
+            label: Some("reference uniforms"),
+            size: size_of::<Uniforms>() as u64,
+            usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
+            mapped_at_creation: false,
+        });
+        let (bind_group_layout, bind_group) = crate::uniform_binding(
+            device,
+            "reference",
+            &uniforms,
+            wgpu::ShaderStages::VERTEX_FRAGMENT,
+        );
+        let layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
+            label: Some("reference"),
+            bind_group_layouts: &[Some(&bind_group_layout)],
+            immediate_size: 0,
+        });
+        Self {
+            shader,
+            layout,
+            color_format,
+            features: device.features(),
+            uniforms,
+            bind_group,
+            pipelines: HashMap::new(),
+            current: None,
+            mesh: None,
+        }
+    }
+
+    /// Uploads the mesh when its generation is not the one on the GPU.
+    pub(crate) fn upload_mesh(&mut self, device: &wgpu::Device, mesh: &Mesh, generation: u64) {
+        if self
+            .mesh
+            .as_ref()
+            .is_some_and(|m| m.generation == generation)
+        {
+            return;
+        }
+        let vertices: Vec<Vertex> = mesh
+            .positions
+            .iter()
+            .zip(&mesh.normals)
+            .map(|(p, n)| Vertex {
+                position: p.to_array(),
+                normal: n.to_array(),
+            })
+            .collect();
+        let vertices = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
+            label: Some("reference vertices"),
+            contents: bytemuck::cast_slice(&vertices),
+            usage: wgpu::BufferUsages::VERTEX,
+        });
+        let indices = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
+            label: Some("reference indices"),
+            contents: bytemuck::cast_slice(&mesh.triangles),
+            usage: wgpu::BufferUsages::INDEX,
+        });
+        self.mesh = Some(GpuMesh {
+            vertices,
+            indices,
+            index_count: mesh.triangles.len() as u32 * 3,
+            generation,
+        });
+    }
+
+    /// Writes the uniforms and makes sure the pipeline for the settings exists.
+    pub(crate) fn update(
+        &mut self,
+        device: &wgpu::Device,
+        queue: &wgpu::Queue,
+        camera: &Camera,
+        settings: &RenderSettings,
+        lighting: &Lighting,
+    ) {
+        let uniforms = Uniforms::new(camera, settings, lighting);
+        queue.write_buffer(&self.uniforms, 0, bytemuck::bytes_of(&uniforms));
+        let key = PipelineKey::new(settings);
+        if !self.pipelines.contains_key(&key) {
+            let pipeline = self.create_pipeline(device, key);
+            self.pipelines.insert(key, pipeline);
+        }
+        self.current = Some(key);
+    }
+
+    pub(crate) fn draw(&self, pass: &mut wgpu::RenderPass<'_>) {
+        let (Some(mesh), Some(key)) = (&self.mesh, self.current) else {
+            return;
+        };
+        pass.set_pipeline(&self.pipelines[&key]);
+        pass.set_bind_group(0, &self.bind_group, &[]);
+        pass.set_vertex_buffer(0, mesh.vertices.slice(..));
+        pass.set_index_buffer(mesh.indices.slice(..), wgpu::IndexFormat::Uint32);
+        pass.draw_indexed(0..mesh.index_count, 0, 0..1);
+    }
+
+    /// What this adapter cannot draw as asked, if anything.
+    pub(crate) fn limitations(&self) -> Option<String> {
+        let mut missing = Vec::new();
+        if !self.features.contains(wgpu::Features::POLYGON_MODE_LINE) {
+            missing.push("wireframe drawn solid (the adapter lacks POLYGON_MODE_LINE)");
+        }
+        if !self.features.contains(wgpu::Features::POLYGON_MODE_POINT) {
+            missing.push(
+                "points drawn as a point list, without culling (the adapter lacks \
+                 POLYGON_MODE_POINT)",
+            );
+        }
+        (!missing.is_empty()).then(|| missing.join("; "))
+    }
+
+    /// glPolygonMode as wgpu's polygon mode, or the nearest thing the adapter can draw.
+    fn primitive_state(&self, key: PipelineKey) -> wgpu::PrimitiveState {
+        let (topology, polygon_mode) = match key.mode {
+            RenderMode::Solid => (
+                wgpu::PrimitiveTopology::TriangleList,
+                wgpu::PolygonMode::Fill,
+            ),
+            RenderMode::Wireframe if self.features.contains(wgpu::Features::POLYGON_MODE_LINE) => (
+                wgpu::PrimitiveTopology::TriangleList,
+                wgpu::PolygonMode::Line,
+            ),
+            RenderMode::Wireframe => (
+                wgpu::PrimitiveTopology::TriangleList,
+                wgpu::PolygonMode::Fill,
+            ),
+            RenderMode::Points if self.features.contains(wgpu::Features::POLYGON_MODE_POINT) => (
+                wgpu::PrimitiveTopology::TriangleList,
+                wgpu::PolygonMode::Point,
+            ),
+            RenderMode::Points => (wgpu::PrimitiveTopology::PointList, wgpu::PolygonMode::Fill),
+        };
+        wgpu::PrimitiveState {
+            topology,
+            front_face: match key.front_face {
+                FrontFace::Ccw => wgpu::FrontFace::Ccw,
+                FrontFace::Cw => wgpu::FrontFace::Cw,
+            },
+            cull_mode: key.backface_culling.then_some(wgpu::Face::Back),
+            polygon_mode,
+            ..Default::default()
+        }
+    }
+
+    fn create_pipeline(&self, device: &wgpu::Device, key: PipelineKey) -> wgpu::RenderPipeline {
+        let (gouraud, phong, specular) = match key.shading {
+            Shading::None => (0.0, 0.0, 0.0),
+            Shading::GouraudAd => (1.0, 0.0, 0.0),
+            Shading::GouraudAds => (1.0, 0.0, 1.0),
+            Shading::Phong => (0.0, 1.0, 1.0),
+        };
+        let constants = [
+            ("GOURAUD", gouraud),
+            ("PHONG", phong),
+            ("SPECULAR", specular),
+        ];
+        let options = wgpu::PipelineCompilationOptions {
+            constants: &constants,
+            ..Default::default()
+        };
+        let attributes = wgpu::vertex_attr_array![0 => Float32x3, 1 => Float32x3];
+        device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
+            label: Some("reference"),
+            layout: Some(&self.layout),
+            vertex: wgpu::VertexState {
+                module: &self.shader,
+                entry_point: Some("vs_main"),
+                compilation_options: options.clone(),
+                buffers: &[Some(wgpu::VertexBufferLayout {
+                    array_stride: size_of::<Vertex>() as u64,
+                    step_mode: wgpu::VertexStepMode::Vertex,
+                    attributes: &attributes,
+                })],
+            },
+            primitive: self.primitive_state(key),
+            depth_stencil: Some(wgpu::DepthStencilState {
+                format: DEPTH_FORMAT,
+                depth_write_enabled: Some(true),
+                depth_compare: Some(wgpu::CompareFunction::Less),
+                stencil: Default::default(),
+                bias: Default::default(),
+            }),
+            multisample: Default::default(),
+            fragment: Some(wgpu::FragmentState {
+                module: &self.shader,
+                entry_point: Some("fs_main"),
+                compilation_options: options,
+                targets: &[Some(self.color_format.into())],
+            }),
+            multiview_mask: None,
+            cache: None,
+        })
+    }
+}
+
+/// The background colour as wgpu's clear colour.
+pub fn clear_color(background: Vec3) -> wgpu::Color {
+    wgpu::Color {
+        r: background.x as f64,
+        g: background.y as f64,
+        b: background.z as f64,
+        a: 1.0,
+    }
+}

@@ -1,0 +1,81 @@
+// The reference renderer: one source for every shading mode. The mode is chosen by the
+// pipeline-overridable constants below, not by a branch: each mode gets its own pipeline built
+// from this source, the compiler folds the unused terms away, and no fragment pays for a mode it
+// is not in (nor for a uniform-controlled branch).
+
+// 1: light at the vertices and interpolate the intensity (Gouraud).
+override GOURAUD: f32 = 0.0;
+// 1: interpolate the normal and light every fragment (Phong).
+override PHONG: f32 = 0.0;
+// 0: ambient + diffuse only (Gouraud AD); 1: with the specular term.
+override SPECULAR: f32 = 1.0;
+
+struct Uniforms {
+    // clip <- world (the model matrix is the identity: world coordinates are the file's).
+    view_projection: mat4x4<f32>,
+    // eye <- world, and its inverse transpose for the normals.
+    modelview: mat4x4<f32>,
+    normal_matrix: mat4x4<f32>,
+    // The light's position in eye space.
+    light: vec4<f32>,
+    // Ia * ka.
+    ambient: vec4<f32>,
+    // Il.
+    intensity: vec4<f32>,
+    // The user's colour.
+    color: vec4<f32>,
+    // kd, ks, shininess.
+    material: vec4<f32>,
+    // c0, c1, c2 of f_att = min(1 / (c0 + c1 d + c2 d^2), 1).
+    attenuation: vec4<f32>,
+}
+
+@group(0) @binding(0) var<uniform> u: Uniforms;
+
+struct Varyings {
+    @builtin(position) clip: vec4<f32>,
+    @location(0) eye: vec3<f32>,
+    @location(1) normal: vec3<f32>,
+    @location(2) gouraud: vec3<f32>,
+}
+
+// Normalises without producing NaN for a zero vector (a degenerate normal, a light on a vertex).
+fn safe_normalize(x: vec3<f32>) -> vec3<f32> {
+    return x * inverseSqrt(max(dot(x, x), 1e-30));
+}
+
+// I = Ia ka + f_att Il (kd max(N.L, 0) + ks max(V.R, 0)^n), in eye space.
+fn illumination(eye: vec3<f32>, normal: vec3<f32>) -> vec3<f32> {
+    let n = safe_normalize(normal);
+    let to_light = u.light.xyz - eye;
+    let d = length(to_light);
+    let l = safe_normalize(to_light);
+    let v = safe_normalize(-eye);
+    let r = reflect(-l, n);
+    let c = u.attenuation;
+    let f_att = min(1.0 / (c.x + c.y * d + c.z * d * d), 1.0);
+    let diffuse = u.material.x * max(dot(n, l), 0.0);
+    let specular = SPECULAR * u.material.y * pow(max(dot(v, r), 1e-20), u.material.z);
+    return u.ambient.rgb + f_att * u.intensity.rgb * (diffuse + specular);
+}
+
+@vertex
+fn vs_main(@location(0) position: vec3<f32>, @location(1) normal: vec3<f32>) -> Varyings {
+    let world = vec4<f32>(position, 1.0);
+    let eye = (u.modelview * world).xyz;
+    let n = (u.normal_matrix * vec4<f32>(normal, 0.0)).xyz;
+    var out: Varyings;
+    out.clip = u.view_projection * world;
+    out.eye = eye;
+    out.normal = n;
+    out.gouraud = GOURAUD * illumination(eye, n);
+    return out;
+}
+
+@fragment
+fn fs_main(in: Varyings) -> @location(0) vec4<f32> {
+    // lit is 0 for flat colour, 1 for any lighting: the colour is the user's times the light.
+    let lit = GOURAUD + PHONG;
+    let light = in.gouraud + PHONG * illumination(in.eye, in.normal);
+    return vec4<f32>(u.color.rgb * mix(vec3<f32>(1.0), light, lit), 1.0);
+}

@@ -1,0 +1,69 @@
+//! The `Render` systems: upload what changed from the ECS world into [`Views`].
+
+use bevy_ecs::prelude::*;
+use close2gl_core::{
+    App, Camera, Close2glFrame, Lighting, Mesh, ModelStatus, Plugin, Render, RenderSettings,
+};
+
+use crate::reference::clear_color;
+use crate::{Gpu, Views};
+
+/// Adds the `Render` systems that upload what changed: the mesh again only when
+/// `ModelStatus.generation` changes; the reference uniforms from `Camera`, `RenderSettings` and
+/// `Lighting`; the Close2GL 2D buffer from `Close2glFrame`. They run once the `Gpu` and `Views`
+/// resources exist (inserted by whoever owns the target), so a window may arrive late.
+pub struct GpuPlugin;
+
+impl Plugin for GpuPlugin {
+    fn build(&self, app: &mut App) {
+        app.init_resource::<ModelStatus>()
+            .init_resource::<Lighting>()
+            .init_resource::<RenderSettings>()
+            .init_resource::<Close2glFrame>()
+            .add_systems(
+                Render,
+                (upload_mesh, upload_reference, upload_close2gl)
+                    .chain()
+                    .run_if(resource_exists::<Gpu>.and_then(resource_exists::<Views>)),
+            );
+    }
+}
+
+fn upload_mesh(
+    gpu: Res<Gpu>,
+    mesh: Single<&Mesh>,
+    status: Res<ModelStatus>,
+    mut views: ResMut<Views>,
+) {
+    views
+        .reference
+        .upload_mesh(&gpu.device, &mesh, status.generation);
+}
+
+/// Every frame: the uniforms are a few hundred bytes, cheaper than tracking what moved.
+fn upload_reference(
+    gpu: Res<Gpu>,
+    camera: Single<&Camera>,
+    settings: Res<RenderSettings>,
+    lighting: Res<Lighting>,
+    mut views: ResMut<Views>,
+) {
+    views.background = clear_color(settings.background);
+    views
+        .reference
+        .update(&gpu.device, &gpu.queue, &camera, &settings, &lighting);
+}
+
+/// Only when the frame, the colour or the views changed: the 2D buffer can be megabytes.
+fn upload_close2gl(
+    gpu: Res<Gpu>,
+    frame: Res<Close2glFrame>,
+    settings: Res<RenderSettings>,
+    mut views: ResMut<Views>,
+) {
+    if frame.is_changed() || settings.is_changed() || views.is_added() {
+        views
+            .close2gl
+            .update(&gpu.device, &gpu.queue, &frame, settings.color);
+    }
+}
