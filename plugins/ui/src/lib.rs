@@ -1,0 +1,76 @@
+//! The control panel: an egui side panel over the ECS world, in four sections. Model reads
+//! `ModelStatus` and `Mesh` and writes `ModelRequest` (a path, a primitive, a reload). Render
+//! reads and writes `RenderSettings`. Camera reads and writes the `Camera` component and
+//! `CameraSpeeds`, and pushes `CameraAction::Reset` into `CameraActions`. Stats reads
+//! `Close2glFrame` and [`ViewStats`] (frame times, the adapter's name and limitations, which the
+//! viewer fills). It knows no window system or GPU: the viewer hands it an `egui::Ui` and the
+//! world, and so can a test.
+
+mod camera;
+mod model;
+mod render;
+mod stats;
+
+use bevy_ecs::prelude::*;
+use close2gl_core::{App, Plugin};
+
+pub use stats::{FrameTimer, ViewStats};
+
+/// Width of the side panel, in points.
+pub const PANEL_WIDTH: f32 = 290.0;
+
+pub struct UiPlugin;
+
+impl Plugin for UiPlugin {
+    fn build(&self, app: &mut App) {
+        app.init_resource::<PanelState>()
+            .init_resource::<ViewStats>();
+    }
+}
+
+/// What the panel remembers between frames that belongs to no other resource.
+#[derive(Resource, Debug, Default)]
+pub struct PanelState {
+    /// The model path being typed.
+    pub path: String,
+    /// The `ModelStatus::generation` the path field was last filled from.
+    pub path_generation: u64,
+    /// Change hfov and vfov together.
+    pub lock_fov: bool,
+}
+
+/// Shows the panel at the right of `ui` and returns the rectangle left for the views, in points.
+pub fn show(ui: &mut egui::Ui, world: &mut World) -> egui::Rect {
+    world.init_resource::<PanelState>();
+    world.init_resource::<ViewStats>();
+    egui::Panel::right("close2gl_panel")
+        .resizable(false)
+        .exact_size(PANEL_WIDTH)
+        .show(ui, |ui| {
+            egui::ScrollArea::vertical().show(ui, |ui| sections(ui, world));
+        });
+    ui.available_rect_before_wrap()
+}
+
+fn sections(ui: &mut egui::Ui, world: &mut World) {
+    egui::CollapsingHeader::new("Model")
+        .default_open(true)
+        .show(ui, |ui| model::section(ui, world));
+    egui::CollapsingHeader::new("Render")
+        .default_open(true)
+        .show(ui, |ui| render::section(ui, world));
+    egui::CollapsingHeader::new("Camera")
+        .default_open(true)
+        .show(ui, |ui| camera::section(ui, world));
+    egui::CollapsingHeader::new("Stats")
+        .default_open(true)
+        .show(ui, |ui| stats::section(ui, world));
+}
+
+/// Writes `edited` back to the resource only when it differs, so that an idle panel does not
+/// mark the resource changed every frame.
+fn write_if_changed<R: Resource + PartialEq + Clone>(world: &mut World, edited: &R) {
+    if world.get_resource::<R>() != Some(edited) {
+        world.insert_resource(edited.clone());
+    }
+}

@@ -1,0 +1,109 @@
+use bevy_ecs::prelude::*;
+use close2gl_core::{Camera, CameraAction, CameraActions, CameraMode, CameraSpeeds};
+
+use crate::PanelState;
+
+/// Fields of view the sliders offer, degrees (the camera's zoom keeps to the same range).
+const FOV_RANGE: std::ops::RangeInclusive<f32> = 0.5..=170.0;
+
+/// Mode, hfov and vfov (locked together or not), near, far, speeds, and reset.
+pub fn section(ui: &mut egui::Ui, world: &mut World) {
+    let mut cameras = world.query::<&mut Camera>();
+    let Ok(camera) = cameras.single(world) else {
+        return;
+    };
+    let original = *camera;
+    let mut edited = original;
+    lens(
+        ui,
+        &mut edited,
+        &mut world.resource_mut::<PanelState>().lock_fov,
+    );
+    if edited != original
+        && let Ok(mut camera) = cameras.single_mut(world)
+    {
+        *camera = edited;
+    }
+
+    if let Some(mut speeds) = world.get_resource::<CameraSpeeds>().copied() {
+        egui::Grid::new("speed_grid").num_columns(2).show(ui, |ui| {
+            ui.label("Move speed");
+            ui.add(
+                egui::DragValue::new(&mut speeds.move_speed)
+                    .speed(0.01)
+                    .range(0.01..=100.0)
+                    .suffix(" radii/s"),
+            );
+            ui.end_row();
+            ui.label("Rotate speed");
+            ui.add(
+                egui::DragValue::new(&mut speeds.rotate_speed)
+                    .speed(0.005)
+                    .range(0.01..=10.0)
+                    .suffix(" °/px"),
+            );
+            ui.end_row();
+        });
+        crate::write_if_changed(world, &speeds);
+    }
+
+    ui.horizontal(|ui| {
+        if ui.button("Reset").clicked() {
+            world
+                .get_resource_or_init::<CameraActions>()
+                .0
+                .push(CameraAction::Reset);
+        }
+        ui.weak(format!(
+            "eye ({:.2}, {:.2}, {:.2})",
+            edited.position.x, edited.position.y, edited.position.z
+        ));
+    });
+}
+
+fn lens(ui: &mut egui::Ui, camera: &mut Camera, lock: &mut bool) {
+    ui.horizontal(|ui| {
+        ui.label("Mode");
+        for mode in CameraMode::ALL {
+            ui.selectable_value(&mut camera.mode, mode, mode.name());
+        }
+    });
+    ui.checkbox(lock, "Lock hfov and vfov");
+    let before = (camera.hfov, camera.vfov);
+    ui.add(
+        egui::Slider::new(&mut camera.hfov, FOV_RANGE)
+            .text("hfov")
+            .suffix("°"),
+    );
+    ui.add(
+        egui::Slider::new(&mut camera.vfov, FOV_RANGE)
+            .text("vfov")
+            .suffix("°"),
+    );
+    if *lock {
+        // The one that moved drags the other by the same number of degrees.
+        let delta = (camera.hfov - before.0) + (camera.vfov - before.1);
+        camera.hfov = (before.0 + delta).clamp(*FOV_RANGE.start(), *FOV_RANGE.end());
+        camera.vfov = (before.1 + delta).clamp(*FOV_RANGE.start(), *FOV_RANGE.end());
+    }
+    egui::Grid::new("planes_grid")
+        .num_columns(2)
+        .show(ui, |ui| {
+            // Speeds proportional to the value: planes range from 1e-4 to 1e6 between models.
+            let (near, far) = (camera.near, camera.far);
+            ui.label("Near");
+            ui.add(
+                egui::DragValue::new(&mut camera.near)
+                    .speed(near * 0.01)
+                    .range(f32::MIN_POSITIVE..=far * 0.999),
+            );
+            ui.end_row();
+            ui.label("Far");
+            ui.add(
+                egui::DragValue::new(&mut camera.far)
+                    .speed(far * 0.01)
+                    .range(near * 1.001..=f32::MAX),
+            );
+            ui.end_row();
+        });
+}

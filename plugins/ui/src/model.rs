@@ -1,0 +1,62 @@
+use bevy_ecs::prelude::*;
+use close2gl_core::{Mesh, ModelRequest, ModelSource, ModelStatus, PrimitiveKind};
+
+use crate::PanelState;
+
+/// A path field with Load, a button per primitive, Reload, and what the last load said.
+pub fn section(ui: &mut egui::Ui, world: &mut World) {
+    let status = world
+        .get_resource::<ModelStatus>()
+        .cloned()
+        .unwrap_or_default();
+    let mut request = None;
+    {
+        let mut state = world.resource_mut::<PanelState>();
+        // A new model (dropped, picked, reloaded) shows its path in the field.
+        if state.path_generation != status.generation {
+            state.path_generation = status.generation;
+            if let Some(ModelSource::File(path)) = &status.source {
+                state.path = path.display().to_string();
+            }
+        }
+        ui.horizontal(|ui| {
+            let field = egui::TextEdit::singleline(&mut state.path)
+                .hint_text(".in or .obj file")
+                .desired_width(ui.available_width() - 50.0);
+            let entered =
+                ui.add(field).lost_focus() && ui.input(|i| i.key_pressed(egui::Key::Enter));
+            if (ui.button("Load").clicked() || entered) && !state.path.trim().is_empty() {
+                request = Some(ModelSource::parse(state.path.trim()));
+            }
+        });
+    }
+    ui.horizontal_wrapped(|ui| {
+        for kind in PrimitiveKind::ALL {
+            if ui.button(kind.name()).clicked() {
+                request = Some(ModelSource::Primitive(kind));
+            }
+        }
+    });
+    ui.horizontal(|ui| {
+        if ui
+            .add_enabled(status.source.is_some(), egui::Button::new("Reload"))
+            .clicked()
+        {
+            request = status.source.clone();
+        }
+        let mut meshes = world.query::<&Mesh>();
+        if let Ok(mesh) = meshes.single(world) {
+            ui.weak(format!("{}: {} triangles", mesh.name, mesh.triangles.len()));
+        }
+    });
+    ui.small("Drop a .in or .obj file on the window to open it.");
+    if let Some(error) = &status.error {
+        ui.colored_label(ui.visuals().error_fg_color, error);
+    }
+    for warning in &status.warnings {
+        ui.colored_label(ui.visuals().warn_fg_color, warning);
+    }
+    if request.is_some() {
+        world.insert_resource(ModelRequest(request));
+    }
+}

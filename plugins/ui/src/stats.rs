@@ -1,0 +1,123 @@
+use std::collections::VecDeque;
+use std::time::{Duration, Instant};
+
+use bevy_ecs::prelude::*;
+use close2gl_core::Close2glFrame;
+
+/// What the viewer measured, for the Stats section: one timer per view, the adapter, and what
+/// the adapter cannot do.
+#[derive(Resource, Debug, Default)]
+pub struct ViewStats {
+    pub adapter: String,
+    pub limitations: Option<String>,
+    pub reference: FrameTimer,
+    pub close2gl: FrameTimer,
+}
+
+/// The frames of the last second: when each started and how long it took.
+#[derive(Debug, Default)]
+pub struct FrameTimer {
+    frames: VecDeque<(Instant, Duration)>,
+}
+
+impl FrameTimer {
+    const WINDOW: Duration = Duration::from_secs(1);
+
+    pub fn record(&mut self, start: Instant, took: Duration) {
+        self.frames.push_back((start, took));
+        while self
+            .frames
+            .front()
+            .is_some_and(|(t, _)| start.duration_since(*t) > Self::WINDOW)
+        {
+            self.frames.pop_front();
+        }
+    }
+
+    /// Frames per second over the last second's frames; `None` below two frames (the viewer
+    /// draws on demand, so an idle second has no rate).
+    pub fn fps(&self) -> Option<f64> {
+        let (first, _) = self.frames.front()?;
+        let (last, _) = self.frames.back()?;
+        let span = last.duration_since(*first).as_secs_f64();
+        (self.frames.len() >= 2 && span > 0.0).then(|| (self.frames.len() - 1) as f64 / span)
+    }
+
+    /// Mean time a frame of this view took, milliseconds.
+    pub fn mean_ms(&self) -> Option<f64> {
+        let total: Duration = self.frames.iter().map(|(_, took)| *took).sum();
+        (!self.frames.is_empty()).then(|| total.as_secs_f64() * 1e3 / self.frames.len() as f64)
+    }
+}
+
+/// FPS and frame time of each view, the Close2GL stage counts and time, the adapter.
+pub fn section(ui: &mut egui::Ui, world: &mut World) {
+    let stats = world.resource::<ViewStats>();
+    egui::Grid::new("stats_grid").num_columns(3).show(ui, |ui| {
+        ui.label("");
+        ui.label("FPS");
+        ui.label("frame ms");
+        ui.end_row();
+        for (name, timer) in [
+            ("Reference", &stats.reference),
+            ("Close2GL", &stats.close2gl),
+        ] {
+            ui.label(name);
+            ui.monospace(number(timer.fps(), 1));
+            ui.monospace(number(timer.mean_ms(), 2));
+            ui.end_row();
+        }
+    });
+    if let Some(frame) = world.get_resource::<Close2glFrame>() {
+        let c = frame.counts;
+        egui::Grid::new("counts_grid")
+            .num_columns(2)
+            .show(ui, |ui| {
+                for (name, value) in [
+                    ("Triangles in", c.triangles_in),
+                    ("Clipped", c.clipped),
+                    ("Culled", c.culled),
+                    ("Drawn", c.drawn),
+                    ("2D primitives", c.output_primitives),
+                ] {
+                    ui.label(name);
+                    ui.monospace(value.to_string());
+                    ui.end_row();
+                }
+                ui.label("Geometry stage");
+                ui.monospace(format!("{:.2} ms", frame.stage_ms));
+                ui.end_row();
+            });
+    }
+    ui.small("Frame times: encode + GPU work of each view, waited on.");
+    ui.label(format!("Adapter: {}", stats.adapter));
+    if let Some(limits) = &stats.limitations {
+        ui.colored_label(ui.visuals().warn_fg_color, limits);
+    }
+}
+
+fn number(value: Option<f64>, decimals: usize) -> String {
+    value.map_or_else(|| "–".to_string(), |v| format!("{v:.decimals$}"))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn fps_counts_the_frames_of_the_last_second() {
+        let mut timer = FrameTimer::default();
+        let t0 = Instant::now();
+        assert_eq!(timer.fps(), None);
+        for i in 0..=20 {
+            timer.record(t0 + Duration::from_millis(50 * i), Duration::from_millis(4));
+        }
+        // 21 frames 50 ms apart, the oldest ones past one second dropped: 20 fps.
+        let fps = timer.fps().unwrap_or_default();
+        assert!((fps - 20.0).abs() < 1e-6, "fps {fps}");
+        assert!((timer.mean_ms().unwrap_or_default() - 4.0).abs() < 1e-9);
+        timer.record(t0 + Duration::from_secs(10), Duration::from_millis(8));
+        assert_eq!(timer.fps(), None, "a lone frame after a pause has no rate");
+        assert_eq!(timer.mean_ms(), Some(8.0));
+    }
+}
