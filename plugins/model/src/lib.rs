@@ -1,0 +1,117 @@
+//! The model plugin. It owns turning a `ModelSource` into a `Mesh`: the course's `.in` triangle
+//! files (every variant of /shared/spec/tri-format.md), Wavefront `.obj` files through tobj, and
+//! the shading lecture's primitives (box, sphere, torus, cone, cylinder) with exact normals. Its
+//! system reads and takes the `ModelRequest` resource, reads `PrimitiveParams`, replaces the one
+//! `Mesh` component (spawning it if there is none) and writes `ModelStatus`. A load that fails
+//! leaves the previous mesh untouched and only sets `ModelStatus::error`. Framing the camera on
+//! the new mesh is the camera plugin's job (it watches `Changed<Mesh>`).
+
+mod diagnostics;
+mod in_format;
+mod mesh_builder;
+mod obj;
+mod primitives;
+
+use std::path::Path;
+
+use bevy_ecs::prelude::*;
+use close2gl_core::{
+    App, Mesh, ModelRequest, ModelSource, ModelStatus, Plugin, PrimitiveParams, Update,
+};
+
+pub use in_format::parse_in;
+pub use obj::parse_obj;
+pub use primitives::primitive;
+
+/// A mesh ready to show, and what the loader noticed but forgave (e.g. a header that lies about
+/// its triangle count).
+#[derive(Clone, Debug, PartialEq)]
+pub struct LoadedModel {
+    pub mesh: Mesh,
+    pub warnings: Vec<String>,
+}
+
+/// Loads a `.in` or `.obj` file (chosen by extension, case-insensitive) or builds a primitive.
+/// Every error is one line naming the file (and the line, where the format allows).
+pub fn load(source: &ModelSource, params: &PrimitiveParams) -> Result<LoadedModel, String> {
+    match source {
+        ModelSource::Primitive(kind) => primitive(*kind, params).map(|mesh| LoadedModel {
+            mesh,
+            warnings: Vec::new(),
+        }),
+        ModelSource::File(path) => load_file(path),
+    }
+}
+
+fn load_file(path: &Path) -> Result<LoadedModel, String> {
+    let label = path.display().to_string();
+    let extension = path
+        .extension()
+        .and_then(|e| e.to_str())
+        .map(str::to_ascii_lowercase);
+    let parse = match extension.as_deref() {
+        Some("in") => parse_in,
+        Some("obj") => parse_obj,
+        _ => {
+            return Err(format!(
+                "{label}: unsupported model file: expected a .in or .obj file \
+                 (or a primitive: box, sphere, torus, cone, cylinder)"
+            ));
+        }
+    };
+    let bytes = std::fs::read(path).map_err(|e| format!("{label}: cannot read: {e}"))?;
+    // Invalid UTF-8 becomes U+FFFD, so the parser reports it at its line like any other garbage.
+    let text = String::from_utf8_lossy(&bytes);
+    parse(&text, &label)
+}
+
+/// The name a mesh gets when its file does not give one: the file's stem.
+fn file_stem(label: &str) -> String {
+    Path::new(label)
+        .file_stem()
+        .map(|s| s.to_string_lossy().into_owned())
+        .unwrap_or_default()
+}
+
+/// Adds the model-loading system; see the crate docs.
+pub struct ModelPlugin;
+
+impl Plugin for ModelPlugin {
+    fn build(&self, app: &mut App) {
+        app.init_resource::<ModelRequest>()
+            .init_resource::<ModelStatus>()
+            .init_resource::<PrimitiveParams>()
+            .add_systems(Update, load_requested_model);
+    }
+}
+
+/// Serves a pending `ModelRequest`: on success the mesh is replaced in place (so `Changed<Mesh>`
+/// fires) and the status moves to the new source; on failure only the error is recorded.
+pub fn load_requested_model(
+    mut commands: Commands,
+    mut request: ResMut<ModelRequest>,
+    params: Res<PrimitiveParams>,
+    mut status: ResMut<ModelStatus>,
+    mut meshes: Query<&mut Mesh>,
+) {
+    let Some(source) = request.0.take() else {
+        return;
+    };
+    match load(&source, &params) {
+        Ok(loaded) => {
+            match meshes.iter_mut().next() {
+                Some(mut mesh) => *mesh = loaded.mesh,
+                None => {
+                    commands.spawn(loaded.mesh);
+                }
+            }
+            *status = ModelStatus {
+                source: Some(source),
+                warnings: loaded.warnings,
+                error: None,
+                generation: status.generation + 1,
+            };
+        }
+        Err(message) => status.error = Some(message),
+    }
+}

@@ -1,0 +1,346 @@
+//! The course's `.in` triangle format (/shared/spec/tri-format.md): a header, material blocks,
+//! an optional `Texture =` line, a free comment line, then four records per triangle. Layout
+//! is tolerated (runs of spaces, `\r\n`, blank lines, any keyword case, a missing final newline);
+//! content is not (every number finite, every record complete, material indices in range).
+
+use glam::Vec3;
+
+use crate::diagnostics::expected;
+use crate::mesh_builder::MeshBuilder;
+use crate::{LoadedModel, file_stem};
+
+/// Parses the text of a `.in` file; `label` names the file in messages and warnings.
+pub fn parse_in(text: &str, label: &str) -> Result<LoadedModel, String> {
+    let mut records = Records::new(text, label);
+    let mut warnings = Vec::new();
+
+    let (_, name) = records.key_value("Object name", "Object name = <name>")?;
+    let header_triangles = records.count("# triangles", "# triangles = <N>")?;
+    let material_count = records.count("Material count", "Material count = <M>")?;
+    // Counted, never allocated from: a lying header only makes the loop meet the vertices early.
+    let mut materials = MaterialCheck::default();
+    for _ in 0..material_count {
+        materials.block(&mut records)?;
+    }
+    warnings.extend(materials.warnings(label));
+    let layout = VertexLayout {
+        texture: records.texture()?,
+        material_count,
+    };
+    records.skip_comment();
+
+    let name = if name.is_empty() {
+        file_stem(label)
+    } else {
+        name.to_string()
+    };
+    let mut builder = MeshBuilder::new(name);
+    let mut orientation = Orientation::default();
+    let mut triangles: u64 = 0;
+    // A file without triangles fails in the first pass, at the v0 it expected.
+    loop {
+        let corners = layout.triangle(&mut records)?;
+        orientation.add(corners, &mut builder)?;
+        triangles += 1;
+        if records.peek().is_none() {
+            break;
+        }
+    }
+
+    if triangles != header_triangles {
+        warnings.push(format!(
+            "{label}: header says {header_triangles} triangles, found {triangles}"
+        ));
+    }
+    warnings.extend(orientation.warnings(label));
+    Ok(LoadedModel {
+        mesh: builder.finish(),
+        warnings,
+    })
+}
+
+/// One non-blank line, trimmed, with its 1-based number.
+#[derive(Clone, Copy)]
+struct Record<'a> {
+    line: usize,
+    text: &'a str,
+}
+
+/// The file's non-blank lines, in order.
+struct Records<'a> {
+    lines: std::iter::Enumerate<std::str::Split<'a, char>>,
+    peeked: Option<Record<'a>>,
+    /// Line number of the last record handed out, so "end of file" can say where it was met.
+    last_line: usize,
+    label: &'a str,
+}
+
+impl<'a> Records<'a> {
+    fn new(text: &'a str, label: &'a str) -> Self {
+        let text = text.strip_prefix('\u{feff}').unwrap_or(text);
+        Self {
+            lines: text.split('\n').enumerate(),
+            peeked: None,
+            last_line: 0,
+            label,
+        }
+    }
+
+    fn peek(&mut self) -> Option<Record<'a>> {
+        if self.peeked.is_none() {
+            self.peeked = self
+                .lines
+                .by_ref()
+                .map(|(i, text)| Record {
+                    line: i + 1,
+                    text: text.trim(),
+                })
+                .find(|r| !r.text.is_empty());
+        }
+        self.peeked
+    }
+
+    fn next(&mut self) -> Option<Record<'a>> {
+        let record = self.peek();
+        self.peeked = None;
+        if let Some(r) = record {
+            self.last_line = r.line;
+        }
+        record
+    }
+
+    /// The next record, which must exist: the end of the file is an error naming `what`.
+    fn expect(&mut self, what: &str) -> Result<Record<'a>, String> {
+        self.next()
+            .ok_or_else(|| expected(self.label, self.last_line + 1, what, None))
+    }
+
+    fn error(&self, record: Record, what: &str) -> String {
+        expected(self.label, record.line, what, Some(record.text))
+    }
+
+    /// The value of a `key = value` record; the key is compared ignoring case and spaces.
+    fn key_value(&mut self, key: &str, what: &str) -> Result<(Record<'a>, &'a str), String> {
+        let record = self.expect(what)?;
+        match record.text.split_once('=') {
+            Some((k, value)) if same_key(k, key) => Ok((record, value.trim())),
+            _ => Err(self.error(record, what)),
+        }
+    }
+
+    /// A `key = <count>` header record.
+    fn count(&mut self, key: &str, what: &str) -> Result<u64, String> {
+        let (record, value) = self.key_value(key, what)?;
+        value.parse().map_err(|_| self.error(record, what))
+    }
+
+    /// The optional `Texture = YES|NO` record: whether `<s> <t>` follow each vertex, or `None`
+    /// when the file does not say.
+    fn texture(&mut self) -> Result<Option<bool>, String> {
+        const WHAT: &str = "Texture = YES|NO";
+        match self.peek() {
+            Some(r)
+                if r.text
+                    .split_once('=')
+                    .is_some_and(|(k, _)| same_key(k, "Texture")) =>
+            {
+                let (_, value) = self.key_value("Texture", WHAT)?;
+                if value.eq_ignore_ascii_case("yes") {
+                    Ok(Some(true))
+                } else if value.eq_ignore_ascii_case("no") {
+                    Ok(Some(false))
+                } else {
+                    Err(self.error(r, WHAT))
+                }
+            }
+            _ => Ok(None),
+        }
+    }
+
+    /// The comment line before the first triangle is optional and its wording free: anything
+    /// that is not the first `v0` record is taken for it.
+    fn skip_comment(&mut self) {
+        if let Some(r) = self.peek()
+            && !r
+                .text
+                .split_whitespace()
+                .next()
+                .is_some_and(|w| w.eq_ignore_ascii_case("v0"))
+        {
+            self.next();
+        }
+    }
+
+    /// The numbers of a `keywords n1 n2 ...` record, which must have one of `counts` numbers,
+    /// all finite.
+    fn numbers(
+        &mut self,
+        keywords: &[&str],
+        counts: &[usize],
+        what: &str,
+    ) -> Result<(Record<'a>, Vec<f32>), String> {
+        let record = self.expect(what)?;
+        let mut words = record.text.split_whitespace();
+        let keywords_match = keywords
+            .iter()
+            .all(|k| words.next().is_some_and(|w| w.eq_ignore_ascii_case(k)));
+        let values: Option<Vec<f32>> = keywords_match
+            .then(|| words.map(|w| w.parse().ok()).collect())
+            .flatten();
+        match values {
+            Some(v) if counts.contains(&v.len()) => {
+                if v.iter().all(|x| x.is_finite()) {
+                    Ok((record, v))
+                } else {
+                    Err(format!(
+                        "{} (numbers must be finite)",
+                        self.error(record, what)
+                    ))
+                }
+            }
+            _ => Err(self.error(record, what)),
+        }
+    }
+}
+
+fn same_key(text: &str, key: &str) -> bool {
+    let squeeze = |s: &str| s.chars().filter(|c| !c.is_whitespace()).collect::<String>();
+    squeeze(text).eq_ignore_ascii_case(&squeeze(key))
+}
+
+/// Checks the material blocks, whose colours the app does not use (it shows one user-picked
+/// colour) but which must still be well formed. Values out of range are forgiven with a warning.
+#[derive(Default)]
+struct MaterialCheck {
+    /// The first record with a colour outside 0..1 or a negative shine.
+    out_of_range: Option<usize>,
+}
+
+impl MaterialCheck {
+    fn block(&mut self, records: &mut Records) -> Result<(), String> {
+        for (keywords, what) in [
+            (["ambient", "color"], "ambient color r g b"),
+            (["diffuse", "color"], "diffuse color r g b"),
+            (["specular", "color"], "specular color r g b"),
+        ] {
+            let (record, rgb) = records.numbers(&keywords, &[3], what)?;
+            if rgb.iter().any(|c| !(0.0..=1.0).contains(c)) {
+                self.out_of_range.get_or_insert(record.line);
+            }
+        }
+        let (record, shine) = records.numbers(&["material", "shine"], &[1], "material shine s")?;
+        if shine[0] < 0.0 {
+            self.out_of_range.get_or_insert(record.line);
+        }
+        Ok(())
+    }
+
+    fn warnings(&self, label: &str) -> Option<String> {
+        self.out_of_range.map(|line| {
+            format!("{label}:{line}: material value out of range (colours 0..1, shine >= 0); ignored, the model is drawn in the chosen colour")
+        })
+    }
+}
+
+/// What each vertex record holds after its position and normal.
+struct VertexLayout {
+    /// `Some(true)` when `<s> <t>` follow, `None` when the file has no `Texture =` line (then
+    /// either form is accepted).
+    texture: Option<bool>,
+    material_count: u64,
+}
+
+/// One triangle as the file gives it: corners in file winding and the face normal.
+struct FileTriangle {
+    positions: [Vec3; 3],
+    normals: [Vec3; 3],
+    face_normal: Vec3,
+}
+
+impl VertexLayout {
+    fn triangle(&self, records: &mut Records) -> Result<FileTriangle, String> {
+        let (counts, st): (&[usize], &str) = match self.texture {
+            Some(true) => (&[9], " s t"),
+            Some(false) => (&[7], ""),
+            None => (&[7, 9], " [s t]"),
+        };
+        let mut positions = [Vec3::ZERO; 3];
+        let mut normals = [Vec3::ZERO; 3];
+        for (k, tag) in ["v0", "v1", "v2"].into_iter().enumerate() {
+            let what = format!("{tag} x y z nx ny nz material{st}");
+            let (record, v) = records.numbers(&[tag], counts, &what)?;
+            let material = v[6];
+            if material.fract() != 0.0
+                || material < 0.0
+                || f64::from(material) >= self.material_count as f64
+            {
+                return Err(format!(
+                    "{} (the material index must be a whole number below the material count, {})",
+                    records.error(record, &what),
+                    self.material_count
+                ));
+            }
+            positions[k] = Vec3::new(v[0], v[1], v[2]);
+            normals[k] = Vec3::new(v[3], v[4], v[5]);
+        }
+        let (_, n) = records.numbers(&["face", "normal"], &[3], "face normal nx ny nz")?;
+        Ok(FileTriangle {
+            positions,
+            normals,
+            face_normal: Vec3::new(n[0], n[1], n[2]),
+        })
+    }
+}
+
+/// Orients vertex normals by the face normal and the winding, which the spec makes the ground
+/// truth, and counts what it had to correct.
+#[derive(Default)]
+struct Orientation {
+    flipped: usize,
+    face_against_winding: usize,
+}
+
+impl Orientation {
+    fn add(&mut self, t: FileTriangle, builder: &mut MeshBuilder) -> Result<(), String> {
+        let [a, b, c] = t.positions;
+        let geometric = (b - a).cross(c - a).try_normalize();
+        let face = t.face_normal.try_normalize();
+        if let (Some(f), Some(g)) = (face, geometric)
+            && f.dot(g) < 0.0
+        {
+            self.face_against_winding += 1;
+        }
+        let reference = face.or(geometric);
+        let mut corners = [0; 3];
+        for (k, corner) in corners.iter_mut().enumerate() {
+            let mut normal = t.normals[k].try_normalize().or(reference);
+            if let (Some(n), Some(r)) = (normal, reference)
+                && n.dot(r) < 0.0
+            {
+                normal = Some(-n);
+                self.flipped += 1;
+            }
+            // Only a zero-area triangle with no usable normal gets here: it has no side to
+            // show, so any unit vector will do.
+            *corner = builder.vertex(t.positions[k], normal.unwrap_or(Vec3::Z))?;
+        }
+        builder.triangle(corners);
+        Ok(())
+    }
+
+    fn warnings(&self, label: &str) -> impl Iterator<Item = String> {
+        let flipped = (self.flipped > 0).then(|| {
+            format!(
+                "{label}: {} vertex normals pointed against their face normal and were flipped",
+                self.flipped
+            )
+        });
+        let against = (self.face_against_winding > 0).then(|| {
+            format!(
+                "{label}: {} face normals point against their triangle's winding",
+                self.face_against_winding
+            )
+        });
+        flipped.into_iter().chain(against)
+    }
+}

@@ -1,0 +1,70 @@
+use std::collections::HashMap;
+
+use close2gl_core::Mesh;
+use glam::Vec3;
+
+/// Builds an indexed mesh from triangle corners, giving identical (position, normal) pairs one
+/// index so that a shared corner is transformed once per frame, not once per triangle.
+pub(crate) struct MeshBuilder {
+    mesh: Mesh,
+    index: HashMap<[u32; 6], u32>,
+}
+
+impl MeshBuilder {
+    pub(crate) fn new(name: String) -> Self {
+        Self {
+            mesh: Mesh {
+                name,
+                ..Mesh::default()
+            },
+            index: HashMap::new(),
+        }
+    }
+
+    /// The index of the vertex (`position`, `normal`), added if it is new. Exact f32 bits are
+    /// compared, except that -0.0 and 0.0 are the same corner.
+    pub(crate) fn vertex(&mut self, position: Vec3, normal: Vec3) -> Result<u32, String> {
+        let (position, normal) = (position + 0.0, normal + 0.0);
+        let key = [
+            position.x.to_bits(),
+            position.y.to_bits(),
+            position.z.to_bits(),
+            normal.x.to_bits(),
+            normal.y.to_bits(),
+            normal.z.to_bits(),
+        ];
+        if let Some(&i) = self.index.get(&key) {
+            return Ok(i);
+        }
+        let i = u32::try_from(self.mesh.positions.len())
+            .map_err(|_| "more vertices than 32-bit indices can address".to_string())?;
+        self.mesh.positions.push(position);
+        self.mesh.normals.push(normal);
+        self.index.insert(key, i);
+        Ok(i)
+    }
+
+    pub(crate) fn triangle(&mut self, corners: [u32; 3]) {
+        self.mesh.triangles.push(corners);
+    }
+
+    pub(crate) fn finish(self) -> Mesh {
+        self.mesh
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn identical_corners_share_an_index_and_different_normals_do_not() {
+        let mut b = MeshBuilder::new("t".into());
+        let a = b.vertex(Vec3::ZERO, Vec3::Z).unwrap();
+        let again = b.vertex(Vec3::new(-0.0, 0.0, 0.0), Vec3::Z).unwrap();
+        let other_normal = b.vertex(Vec3::ZERO, Vec3::X).unwrap();
+        assert_eq!(a, again);
+        assert_ne!(a, other_normal);
+        assert_eq!(b.finish().positions.len(), 2);
+    }
+}
