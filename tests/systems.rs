@@ -177,7 +177,7 @@ fn cw_and_ccw_partition_a_closed_cube() {
 fn triangle_through_the_near_plane(clipping: Clipping) -> Close2glFrame {
     let mesh = Mesh {
         name: "one".into(),
-        positions: vec![Vec3::new(-1.0, -1.0, -2.0), Vec3::new(1.0, -1.0, -2.0), Vec3::new(0.0, 0.5, 5.0)],
+        positions: vec![Vec3::new(-0.3, -0.3, -2.0), Vec3::new(0.3, -0.3, -2.0), Vec3::new(0.0, 0.1, 5.0)],
         normals: vec![Vec3::Y; 3],
         triangles: vec![[0, 1, 2]],
     };
@@ -193,7 +193,8 @@ fn triangle_through_the_near_plane(clipping: Clipping) -> Close2glFrame {
 fn the_near_plane_cuts_a_triangle_in_full_mode_and_drops_it_in_simple_mode() {
     let full = triangle_through_the_near_plane(Clipping::Full);
     assert_eq!((full.counts.clipped, full.counts.drawn), (0, 1));
-    // The cut leaves a quad (two triangles): the near plane crosses two edges.
+    // The cut leaves a quad (two triangles): the near plane crosses two edges, and the narrow
+    // triangle stays within the side planes.
     assert_eq!(full.counts.output_primitives, 2);
     assert_eq!(full.vertices.len(), 6);
     for [x, y] in &full.vertices {

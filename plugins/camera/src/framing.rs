@@ -24,10 +24,18 @@ pub fn frame(centre: Vec3, radius: f32, lens: &Camera, framing: &Framing) -> Cam
         far: 4.0 * (seen_from + radius),
         ..*lens
     };
-    let mut camera = lens
-        .looking_at(position, target, up)
-        .or_else(|| lens.looking_at(centre + Vec3::Z * distance, centre, Vec3::Y))
-        .unwrap_or(lens);
+    let from_plus_z = Camera {
+        position: centre + Vec3::Z * distance,
+        target: centre,
+        u: Vec3::X,
+        v: Vec3::Y,
+        n: Vec3::Z,
+        ..lens
+    };
+    let mut camera = match framing.pose {
+        Some(_) => lens.looking_at(position, target, up).unwrap_or(from_plus_z),
+        None => from_plus_z,
+    };
     pin_clipping_planes(&mut camera, framing);
     camera
 }
