@@ -262,7 +262,7 @@ impl VertexLayout {
         let (counts, st): (&[usize], &str) = match self.texture {
             Some(true) => (&[9], " s t"),
             Some(false) => (&[7], ""),
-            None => (&[7, 9], " [s t]"),
+            None => (&[7, 9], ""),
         };
         let mut positions = [Vec3::ZERO; 3];
         let mut normals = [Vec3::ZERO; 3];

@@ -123,11 +123,11 @@ fn check_records(text: &str, label: &str) -> Result<(), String> {
         let keyword = words.next().unwrap_or_default();
         if let Some(kind) = Element::from_keyword(keyword) {
             let (count, what) = kind.record();
-            let finite = words
-                .take(count)
-                .filter(|w| w.parse::<f32>().is_ok_and(f32::is_finite))
-                .count();
-            if finite < count {
+            let numbers: Vec<f32> = words.take(count).map_while(|w| w.parse().ok()).collect();
+            if numbers.len() < count {
+                return Err(error(what, None));
+            }
+            if !numbers.iter().all(|x| x.is_finite()) {
                 return Err(error(what, Some("numbers must be finite".into())));
             }
             seen[kind as usize] += 1;
