@@ -75,3 +75,30 @@ impl Image {
         })
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_png_reads_back_as_written() {
+        let mut image = Image::filled(5, 3, [1, 2, 3, 255]);
+        image.pixels[7] = [250, 0, 128, 255];
+        let path = std::env::temp_dir().join(format!("close2gl-image-{}.png", std::process::id()));
+        image.write_png(&path).unwrap();
+        let read = Image::read_png(&path).unwrap();
+        std::fs::remove_file(&path).unwrap();
+        assert_eq!(read, image);
+        assert_eq!(read.pixel(2, 1), [250, 0, 128, 255]);
+    }
+
+    #[test]
+    fn a_file_that_is_not_a_png_is_an_error_naming_it() {
+        let path =
+            std::env::temp_dir().join(format!("close2gl-not-png-{}.png", std::process::id()));
+        std::fs::write(&path, b"not a png").unwrap();
+        let error = Image::read_png(&path).unwrap_err();
+        std::fs::remove_file(&path).unwrap();
+        assert!(error.starts_with(&path.display().to_string()), "{error}");
+    }
+}

@@ -90,3 +90,64 @@ pub fn diff_image(reference: &Image, close2gl: &Image, background: [u8; 3]) -> I
         pixels,
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const BG: [u8; 3] = [20, 20, 26];
+
+    fn image(covered: &[bool]) -> Image {
+        let mut image = Image::filled(covered.len() as u32, 1, [BG[0], BG[1], BG[2], 255]);
+        for (p, &c) in image.pixels.iter_mut().zip(covered) {
+            if c {
+                *p = [200, 100, 50, 255];
+            }
+        }
+        image
+    }
+
+    #[test]
+    fn agreement_counts_mismatches_over_pixels_covered_in_either() {
+        let a = image(&[true, true, true, false, false]);
+        let b = image(&[true, true, false, true, false]);
+        let c = Comparison::of_images(&a, &b, BG);
+        assert_eq!(
+            (c.only_first, c.only_second, c.mismatched_pixels),
+            (1, 1, 2)
+        );
+        assert_eq!(c.covered_pixels, 4);
+        assert!((c.coverage_agreement - 0.5).abs() < 1e-12);
+    }
+
+    #[test]
+    fn nothing_covered_scores_zero_and_identical_coverage_scores_one() {
+        let empty = image(&[false; 4]);
+        assert_eq!(
+            Comparison::of_images(&empty, &empty, BG).coverage_agreement,
+            0.0
+        );
+        let full = image(&[true, false, true, true]);
+        assert_eq!(
+            Comparison::of_images(&full, &full, BG).coverage_agreement,
+            1.0
+        );
+    }
+
+    #[test]
+    fn the_diff_paints_each_side_and_fades_the_rest() {
+        let a = image(&[true, true, false, false]);
+        let b = image(&[true, false, true, false]);
+        let diff = diff_image(&a, &b, BG);
+        assert_eq!(diff.pixels[1], ONLY_REFERENCE);
+        assert_eq!(diff.pixels[2], ONLY_CLOSE2GL);
+        assert_eq!(diff.pixels[0], [241, 216, 203, 255]);
+        assert_eq!(diff.pixels[3][..3], [196, 196, 197]);
+    }
+
+    #[test]
+    fn colours_round_like_a_unorm_target() {
+        assert_eq!(to_rgb8(Vec3::new(0.0, 1.0, 0.5)), [0, 255, 128]);
+        assert_eq!(to_rgb8(Vec3::new(0.08, 0.08, 0.1)), [20, 20, 26]);
+    }
+}

@@ -84,10 +84,18 @@ impl PipelineKey {
 }
 
 /// The mesh on the GPU: positions and normals interleaved, and a u32 index buffer.
+///
+/// Triangles of (nearly) zero area (repeated or collinear corners, as at a UV sphere's poles,
+/// where sin(π) in f32 leaves the pole's copies 1e-7 apart) come last in the index buffer. They
+/// have no facing: OpenGL counts a zero-area polygon as a back face, so glCullFace removes it,
+/// while on a GPU the facing of such a sliver is rounding noise (lavapipe draws the corners and
+/// edges of some of them in point and line mode). Drawing only `culled_index_count` indices when
+/// culling is on gives OpenGL's answer on every adapter; in fill mode they cover no pixel.
 struct GpuMesh {
     vertices: wgpu::Buffer,
     indices: wgpu::Buffer,
     index_count: u32,
+    culled_index_count: u32,
     generation: u64,
 }
 
@@ -98,6 +106,10 @@ struct Vertex {
     position: [f32; 3],
     normal: [f32; 3],
 }
+
+/// Twice a triangle's area over its longest edge squared, below which it counts as zero: such a
+/// triangle is at most 1e-5 as tall as it is long, a line for any rasteriser.
+const DEGENERATE: f32 = 1e-5;
 
 pub(crate) struct Reference {
     shader: wgpu::ShaderModule,
@@ -169,15 +181,28 @@ impl Reference {
             contents: bytemuck::cast_slice(&vertices),
             usage: wgpu::BufferUsages::VERTEX,
         });
+        let has_area = |t: &&[u32; 3]| {
+            let [a, b, c] = t.map(|i| mesh.positions[i as usize]);
+            let longest = (b - a)
+                .length_squared()
+                .max((c - b).length_squared())
+                .max((a - c).length_squared());
+            (b - a).cross(c - a).length() > DEGENERATE * longest
+        };
+        let (mut triangles, degenerate): (Vec<[u32; 3]>, Vec<[u32; 3]>) =
+            mesh.triangles.iter().partition(has_area);
+        let culled_index_count = triangles.len() as u32 * 3;
+        triangles.extend(degenerate);
         let indices = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
             label: Some("reference indices"),
-            contents: bytemuck::cast_slice(&mesh.triangles),
+            contents: bytemuck::cast_slice(&triangles),
             usage: wgpu::BufferUsages::INDEX,
         });
         self.mesh = Some(GpuMesh {
             vertices,
             indices,
-            index_count: mesh.triangles.len() as u32 * 3,
+            index_count: triangles.len() as u32 * 3,
+            culled_index_count,
             generation,
         });
     }
@@ -209,7 +234,12 @@ impl Reference {
         pass.set_bind_group(0, &self.bind_group, &[]);
         pass.set_vertex_buffer(0, mesh.vertices.slice(..));
         pass.set_index_buffer(mesh.indices.slice(..), wgpu::IndexFormat::Uint32);
-        pass.draw_indexed(0..mesh.index_count, 0, 0..1);
+        let count = if key.backface_culling {
+            mesh.culled_index_count
+        } else {
+            mesh.index_count
+        };
+        pass.draw_indexed(0..count, 0, 0..1);
     }
 
     /// What this adapter cannot draw as asked, if anything.
