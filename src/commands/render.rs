@@ -1,10 +1,174 @@
-//! Placeholder until the render command lands.
+//! `close2gl render`: both views offscreen, with exactly the systems and draw calls the windows
+//! use, written as reference.png, close2gl.png, diff.png and report.json.
+
+use std::f32::consts::TAU;
+use std::path::{Path, PathBuf};
+
+use bevy_ecs::prelude::DetectChangesMut;
+use close2gl_core::{Camera, CameraAction, CameraActions, ModelStatus};
+use close2gl_gpu::parity::{Comparison, diff_image};
+use close2gl_gpu::{Gpu, OffscreenPlugin, Snapshot, parse_backends, render_offscreen};
+use serde_json::{Value, json};
 
 use super::CliError;
+use super::scene::{SceneArgs, viewport};
 
 #[derive(clap::Args, Debug, Default)]
-pub struct RenderArgs {}
+pub struct RenderArgs {
+    #[command(flatten)]
+    pub scene: SceneArgs,
+    /// The directory the images and report.json are written to (created when missing).
+    #[arg(long, value_name = "DIR")]
+    pub out: PathBuf,
+    /// The size of each view, WIDTHxHEIGHT (default: the configured window size).
+    #[arg(long, value_name = "WxH")]
+    pub size: Option<String>,
+    /// Frames rendered per pose; the report gives the median times.
+    #[arg(long, value_name = "N", default_value_t = 1)]
+    pub frames: u32,
+    /// N poses, turning 360/N degrees about the look-at point each time (yaw about v); images
+    /// are numbered (reference_000.png, ...) and report.json is an array, one report per pose.
+    #[arg(long, value_name = "N")]
+    pub orbit: Option<u32>,
+    /// vulkan, gl, metal, dx12 or all (default: the platform's primary backends, no GL).
+    #[arg(long, value_name = "NAME")]
+    pub backend: Option<String>,
+}
 
-pub fn run(_args: RenderArgs) -> Result<(), CliError> {
-    Err(CliError::Runtime("the render command is not built yet".into()))
+pub fn run(args: RenderArgs) -> Result<(), CliError> {
+    if args.frames == 0 {
+        return Err(CliError::Input(
+            "render: --frames must be at least 1".into(),
+        ));
+    }
+    if args.orbit == Some(0) {
+        return Err(CliError::Input("render: --orbit must be at least 1".into()));
+    }
+    let backends = match &args.backend {
+        Some(name) => {
+            parse_backends(name).map_err(|e| CliError::Input(format!("render: --backend: {e}")))?
+        }
+        None => close2gl_gpu::wgpu::Backends::PRIMARY,
+    };
+    let config = args.scene.config()?;
+    let viewport = viewport(args.size.as_deref(), &config)?;
+    let mut app = crate::build_app(&config, viewport).map_err(CliError::Input)?;
+    for warning in &app.world().resource::<ModelStatus>().warnings {
+        eprintln!("close2gl: warning: {warning}");
+    }
+    let gpu = Gpu::headless(backends).map_err(CliError::Runtime)?;
+    app.add_plugins(OffscreenPlugin(gpu.clone()));
+    std::fs::create_dir_all(&args.out).map_err(|e| {
+        CliError::Runtime(format!(
+            "{}: cannot create the directory: {e}",
+            args.out.display()
+        ))
+    })?;
+
+    let poses = args.orbit.unwrap_or(1);
+    let mut reports = Vec::new();
+    for pose in 0..poses {
+        if pose > 0 {
+            let step = TAU / poses as f32;
+            app.world_mut()
+                .resource_mut::<CameraActions>()
+                .0
+                .push(CameraAction::Orbit {
+                    yaw: step,
+                    pitch: 0.0,
+                });
+        }
+        let (snapshot, reference_ms, close2gl_ms) = render_frames(&mut app, args.frames)?;
+        let suffix = args
+            .orbit
+            .map(|_| format!("_{pose:03}"))
+            .unwrap_or_default();
+        let mut report = write_pose(&args.out, &suffix, &snapshot, &gpu)?;
+        report["reference_ms"] = json!(reference_ms);
+        report["close2gl_ms"] = json!(close2gl_ms);
+        report["frames"] = json!(args.frames);
+        if args.orbit.is_some() {
+            report["pose"] = json!(pose);
+            report["yaw_degrees"] = json!(360.0 * pose as f64 / poses as f64);
+        }
+        reports.push(report);
+    }
+    let report = match args.orbit {
+        Some(_) => Value::Array(reports),
+        None => reports.swap_remove(0),
+    };
+    let path = args.out.join("report.json");
+    let text = serde_json::to_string_pretty(&report)
+        .map_err(|e| CliError::Runtime(format!("cannot encode the report: {e}")))?;
+    std::fs::write(&path, text + "\n").map_err(|e| unwritable(&path, e))?;
+    println!("{report}");
+    Ok(())
+}
+
+/// Renders `frames` frames of the current pose; returns the last one and the median times.
+/// Every frame after the first marks the camera changed so the Close2GL stage really runs again.
+fn render_frames(
+    app: &mut close2gl_core::App,
+    frames: u32,
+) -> Result<(Snapshot, f64, f64), CliError> {
+    let mut reference_ms = Vec::new();
+    let mut close2gl_ms = Vec::new();
+    let mut last = None;
+    for frame in 0..frames {
+        if frame > 0 {
+            let world = app.world_mut();
+            if let Ok(mut camera) = world.query::<&mut Camera>().single_mut(world) {
+                camera.set_changed();
+            }
+        }
+        let snapshot = render_offscreen(app).map_err(CliError::Runtime)?;
+        reference_ms.push(snapshot.reference_ms);
+        close2gl_ms.push(snapshot.close2gl_ms);
+        last = Some(snapshot);
+    }
+    let snapshot = last.ok_or_else(|| CliError::Runtime("no frame was rendered".into()))?;
+    Ok((snapshot, median(reference_ms), median(close2gl_ms)))
+}
+
+fn median(mut values: Vec<f64>) -> f64 {
+    values.sort_by(f64::total_cmp);
+    let mid = values.len() / 2;
+    if values.len() % 2 == 1 {
+        values[mid]
+    } else {
+        (values[mid - 1] + values[mid]) / 2.0
+    }
+}
+
+/// Writes the three images of one pose and returns its report; the caller adds the times.
+fn write_pose(dir: &Path, suffix: &str, snapshot: &Snapshot, gpu: &Gpu) -> Result<Value, CliError> {
+    let comparison =
+        Comparison::of_images(&snapshot.reference, &snapshot.close2gl, snapshot.background);
+    let diff = diff_image(&snapshot.reference, &snapshot.close2gl, snapshot.background);
+    let names = ["reference", "close2gl", "diff"].map(|n| format!("{n}{suffix}.png"));
+    for (image, name) in [&snapshot.reference, &snapshot.close2gl, &diff]
+        .iter()
+        .zip(&names)
+    {
+        image
+            .write_png(&dir.join(name))
+            .map_err(CliError::Runtime)?;
+    }
+    Ok(json!({
+        "adapter": gpu.adapter_name(),
+        "backend": gpu.backend_name(),
+        "size": [snapshot.reference.width, snapshot.reference.height],
+        "coverage_agreement": comparison.coverage_agreement,
+        "mismatched_pixels": comparison.mismatched_pixels,
+        "covered_pixels": comparison.covered_pixels,
+        "reference_only_pixels": comparison.only_first,
+        "close2gl_only_pixels": comparison.only_second,
+        "background": snapshot.background,
+        "stats": snapshot.counts,
+        "images": {"reference": names[0], "close2gl": names[1], "diff": names[2]},
+    }))
+}
+
+fn unwritable(path: &Path, e: std::io::Error) -> CliError {
+    CliError::Runtime(format!("{}: cannot write: {e}", path.display()))
 }

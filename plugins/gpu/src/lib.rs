@@ -22,6 +22,8 @@ pub use offscreen::{OFFSCREEN_FORMAT, OffscreenPlugin, Snapshot, render_offscree
 pub use reference::{camera_matrices, clear_color};
 pub use systems::GpuPlugin;
 pub use views::Views;
+/// Re-exported so that users of this crate name the same wgpu types.
+pub use wgpu;
 
 /// The depth attachment format the reference view's pass must use.
 pub const DEPTH_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Depth32Float;
