@@ -26,23 +26,21 @@ pub fn section(ui: &mut egui::Ui, world: &mut World) {
     }
 
     if let Some(mut speeds) = world.get_resource::<CameraSpeeds>().copied() {
-        egui::Grid::new("speed_grid").num_columns(2).show(ui, |ui| {
-            ui.label("Move speed");
+        ui.horizontal(|ui| {
+            ui.label("Move");
             ui.add(
                 egui::DragValue::new(&mut speeds.move_speed)
                     .speed(0.01)
                     .range(0.01..=100.0)
                     .suffix(" radii/s"),
             );
-            ui.end_row();
-            ui.label("Rotate speed");
+            ui.label("Rotate");
             ui.add(
                 egui::DragValue::new(&mut speeds.rotate_speed)
                     .speed(0.005)
                     .range(0.01..=10.0)
                     .suffix(" °/px"),
             );
-            ui.end_row();
         });
         crate::write_if_changed(world, &speeds);
     }
@@ -86,24 +84,20 @@ fn lens(ui: &mut egui::Ui, camera: &mut Camera, lock: &mut bool) {
         camera.hfov = (before.0 + delta).clamp(*FOV_RANGE.start(), *FOV_RANGE.end());
         camera.vfov = (before.1 + delta).clamp(*FOV_RANGE.start(), *FOV_RANGE.end());
     }
-    egui::Grid::new("planes_grid")
-        .num_columns(2)
-        .show(ui, |ui| {
-            // Speeds proportional to the value: planes range from 1e-4 to 1e6 between models.
-            let (near, far) = (camera.near, camera.far);
-            ui.label("Near");
-            ui.add(
-                egui::DragValue::new(&mut camera.near)
-                    .speed(near * 0.01)
-                    .range(f32::MIN_POSITIVE..=far * 0.999),
-            );
-            ui.end_row();
-            ui.label("Far");
-            ui.add(
-                egui::DragValue::new(&mut camera.far)
-                    .speed(far * 0.01)
-                    .range(near * 1.001..=f32::MAX),
-            );
-            ui.end_row();
-        });
+    // Speeds proportional to the value: the planes range from 1e-4 to 1e6 between models.
+    let (near, far) = (camera.near, camera.far);
+    ui.horizontal(|ui| {
+        ui.label("Near");
+        ui.add(
+            egui::DragValue::new(&mut camera.near)
+                .speed(near * 0.01)
+                .range(f32::MIN_POSITIVE..=far * 0.999),
+        );
+        ui.label("Far");
+        ui.add(
+            egui::DragValue::new(&mut camera.far)
+                .speed(far * 0.01)
+                .range(near * 1.001..=f32::MAX),
+        );
+    });
 }

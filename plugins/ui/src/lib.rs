@@ -16,7 +16,7 @@ use close2gl_core::{App, Plugin};
 
 pub use stats::{FrameTimer, ViewStats};
 
-/// Width of the side panel, in points.
+/// Initial width of the side panel (the user may drag its edge), in points.
 pub const PANEL_WIDTH: f32 = 290.0;
 
 pub struct UiPlugin;
@@ -43,13 +43,19 @@ pub struct PanelState {
 pub fn show(ui: &mut egui::Ui, world: &mut World) -> egui::Rect {
     world.init_resource::<PanelState>();
     world.init_resource::<ViewStats>();
-    egui::Panel::right("close2gl_panel")
+    let panel = egui::Panel::right("close2gl_panel")
         .resizable(false)
         .exact_size(PANEL_WIDTH)
         .show(ui, |ui| {
-            egui::ScrollArea::vertical().show(ui, |ui| sections(ui, world));
-        });
-    ui.available_rect_before_wrap()
+            egui::ScrollArea::vertical()
+                .auto_shrink([false, false])
+                .show(ui, |ui| sections(ui, world));
+        })
+        .response
+        .rect;
+    let mut views = ui.max_rect();
+    views.max.x = views.max.x.min(panel.min.x);
+    views
 }
 
 fn sections(ui: &mut egui::Ui, world: &mut World) {

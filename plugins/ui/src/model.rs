@@ -21,7 +21,7 @@ pub fn section(ui: &mut egui::Ui, world: &mut World) {
         }
         ui.horizontal(|ui| {
             let field = egui::TextEdit::singleline(&mut state.path)
-                .hint_text(".in or .obj file")
+                .hint_text(".in or .obj file, or drop one here")
                 .desired_width(ui.available_width() - 50.0);
             let entered =
                 ui.add(field).lost_focus() && ui.input(|i| i.key_pressed(egui::Key::Enter));
@@ -36,20 +36,22 @@ pub fn section(ui: &mut egui::Ui, world: &mut World) {
                 request = Some(ModelSource::Primitive(kind));
             }
         }
-    });
-    ui.horizontal(|ui| {
         if ui
             .add_enabled(status.source.is_some(), egui::Button::new("Reload"))
             .clicked()
         {
             request = status.source.clone();
         }
-        let mut meshes = world.query::<&Mesh>();
-        if let Ok(mesh) = meshes.single(world) {
-            ui.weak(format!("{}: {} triangles", mesh.name, mesh.triangles.len()));
-        }
     });
-    ui.small("Drop a .in or .obj file on the window to open it.");
+    let mut meshes = world.query::<&Mesh>();
+    if let Ok(mesh) = meshes.single(world) {
+        ui.weak(format!(
+            "{}: {} triangles, {} vertices",
+            mesh.name,
+            mesh.triangles.len(),
+            mesh.positions.len()
+        ));
+    }
     if let Some(error) = &status.error {
         ui.colored_label(ui.visuals().error_fg_color, error);
     }

@@ -8,56 +8,55 @@ pub fn section(ui: &mut egui::Ui, world: &mut World) {
     let Some(mut settings) = world.get_resource::<RenderSettings>().copied() else {
         return;
     };
-    egui::Grid::new("render_grid")
-        .num_columns(2)
-        .show(ui, |ui| {
-            ui.label("Mode");
-            choice(ui, &mut settings.mode, RenderMode::ALL, RenderMode::name);
-            ui.end_row();
-            ui.label("Front face");
-            choice(
-                ui,
-                &mut settings.front_face,
-                FrontFace::ALL,
-                FrontFace::name,
-            );
-            ui.end_row();
-            ui.label("Clipping");
-            choice(ui, &mut settings.clipping, Clipping::ALL, Clipping::name);
-            ui.end_row();
-            ui.label("Shading");
-            egui::ComboBox::from_id_salt("shading")
-                .selected_text(settings.shading.name())
-                .show_ui(ui, |ui| {
-                    for &shading in Shading::ALL {
-                        ui.selectable_value(&mut settings.shading, shading, shading.name());
-                    }
-                });
-            ui.end_row();
-            ui.label("Colour");
-            color(ui, &mut settings.color);
-            ui.end_row();
-            ui.label("Background");
-            color(ui, &mut settings.background);
-            ui.end_row();
-        });
+    ui.horizontal(|ui| {
+        ui.label("Mode");
+        choice(ui, &mut settings.mode, RenderMode::ALL, RenderMode::name);
+    });
+    ui.horizontal(|ui| {
+        ui.label("Front face");
+        choice(
+            ui,
+            &mut settings.front_face,
+            FrontFace::ALL,
+            FrontFace::name,
+        );
+    });
     ui.checkbox(&mut settings.backface_culling, "Backface culling");
-    ui.small("Shading applies to the reference view; Close2GL draws flat colour.");
+    ui.horizontal(|ui| {
+        ui.label("Clipping");
+        choice(ui, &mut settings.clipping, Clipping::ALL, Clipping::name);
+    });
+    ui.horizontal(|ui| {
+        ui.label("Shading");
+        egui::ComboBox::from_id_salt("shading")
+            .selected_text(settings.shading.name())
+            .show_ui(ui, |ui| {
+                for &shading in Shading::ALL {
+                    ui.selectable_value(&mut settings.shading, shading, shading.name());
+                }
+            })
+            .response
+            .on_hover_text("The reference view's lighting; Close2GL draws flat colour.");
+    });
+    ui.horizontal(|ui| {
+        ui.label("Colour");
+        color(ui, &mut settings.color);
+        ui.label("Background");
+        color(ui, &mut settings.background);
+    });
     crate::write_if_changed(world, &settings);
 }
 
-/// One selectable button per option, in a row.
+/// One selectable button per option.
 fn choice<T: Copy + PartialEq>(
     ui: &mut egui::Ui,
     value: &mut T,
     options: &[T],
     name: fn(T) -> &'static str,
 ) {
-    ui.horizontal(|ui| {
-        for &option in options {
-            ui.selectable_value(value, option, name(option));
-        }
-    });
+    for &option in options {
+        ui.selectable_value(value, option, name(option));
+    }
 }
 
 fn color(ui: &mut egui::Ui, value: &mut Vec3) {

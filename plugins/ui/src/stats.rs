@@ -56,7 +56,8 @@ pub fn section(ui: &mut egui::Ui, world: &mut World) {
     egui::Grid::new("stats_grid").num_columns(3).show(ui, |ui| {
         ui.label("");
         ui.label("FPS");
-        ui.label("frame ms");
+        ui.label("frame ms")
+            .on_hover_text("Recording plus the GPU's work for the view, waited on.");
         ui.end_row();
         for (name, timer) in [
             ("Reference", &stats.reference),
@@ -71,25 +72,26 @@ pub fn section(ui: &mut egui::Ui, world: &mut World) {
     if let Some(frame) = world.get_resource::<Close2glFrame>() {
         let c = frame.counts;
         egui::Grid::new("counts_grid")
-            .num_columns(2)
+            .num_columns(4)
             .show(ui, |ui| {
-                for (name, value) in [
-                    ("Triangles in", c.triangles_in),
-                    ("Clipped", c.clipped),
-                    ("Culled", c.culled),
-                    ("Drawn", c.drawn),
-                    ("2D primitives", c.output_primitives),
-                ] {
-                    ui.label(name);
-                    ui.monospace(value.to_string());
+                let rows = [
+                    [("Triangles in", c.triangles_in), ("Clipped", c.clipped)],
+                    [("Culled", c.culled), ("Drawn", c.drawn)],
+                ];
+                for row in rows {
+                    for (name, value) in row {
+                        ui.label(name);
+                        ui.monospace(value.to_string());
+                    }
                     ui.end_row();
                 }
-                ui.label("Geometry stage");
+                ui.label("2D primitives");
+                ui.monospace(c.output_primitives.to_string());
+                ui.label("Geometry");
                 ui.monospace(format!("{:.2} ms", frame.stage_ms));
                 ui.end_row();
             });
     }
-    ui.small("Frame times: encode + GPU work of each view, waited on.");
     ui.label(format!("Adapter: {}", stats.adapter));
     if let Some(limits) = &stats.limitations {
         ui.colored_label(ui.visuals().warn_fg_color, limits);

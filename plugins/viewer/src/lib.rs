@@ -1,0 +1,69 @@
+//! The interactive viewer: winit windows with wgpu surfaces, the egui control panel, and the
+//! event loop that drives the app. It owns the windows (one split window, or a "Reference
+//! (wgpu)" and a "Close2GL" window), turns window events into `InputState` (keys, drags,
+//! scroll) and dropped files into `ModelRequest`, keeps `Viewport` equal to the Close2GL view's
+//! size, runs one app frame per redraw, and draws both views and the panel. It inserts the `Gpu`
+//! and `Views` resources the GPU plugin's upload systems need, and fills `ViewStats`. Redraws
+//! are on demand (input, held keys, the panel's own animations), so an idle viewer sleeps.
+
+mod draw;
+mod gui;
+mod handler;
+pub mod input;
+pub mod layout;
+mod screenshot;
+mod surface;
+
+use std::path::PathBuf;
+
+use close2gl_core::{App, Plugin};
+use winit::event_loop::{ControlFlow, EventLoop};
+
+/// How the two views are laid out.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Layout {
+    /// One window: reference left, Close2GL right, the panel at the side.
+    #[default]
+    Split,
+    /// Two OS windows, "Reference (wgpu)" (with the panel) and "Close2GL".
+    Windows,
+}
+
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct ViewerOptions {
+    pub layout: Layout,
+    /// Inner size of the window (split), or of both windows together (windows), in pixels.
+    pub width: u32,
+    pub height: u32,
+    /// Save the window's frame as PNG after `exit_after_frames` frames, then exit. In the
+    /// windows layout the two windows are saved side by side in one image.
+    pub screenshot: Option<PathBuf>,
+    /// Exit after drawing this many frames (drawing continuously until then).
+    pub exit_after_frames: Option<u32>,
+}
+
+/// Adds the GPU upload systems and the panel's resources, and makes `app.run()` open the
+/// windows and run the event loop until they close.
+pub struct ViewerPlugin(pub ViewerOptions);
+
+impl Plugin for ViewerPlugin {
+    fn build(&self, app: &mut App) {
+        app.add_plugins(close2gl_gpu::GpuPlugin)
+            .add_plugins(close2gl_ui::UiPlugin);
+        let options = self.0.clone();
+        app.set_runner(move |app| run(app, options));
+    }
+}
+
+/// Opens the windows and runs `app` until they close (or the screenshot is taken).
+pub fn run(app: App, options: ViewerOptions) -> Result<(), String> {
+    let event_loop = EventLoop::new().map_err(|e| {
+        format!("cannot open a window: {e} (no display? set DISPLAY, or run under Xvfb)")
+    })?;
+    event_loop.set_control_flow(ControlFlow::Wait);
+    let mut viewer = handler::Viewer::new(app, options, &event_loop);
+    event_loop
+        .run_app(&mut viewer)
+        .map_err(|e| format!("the window system failed: {e}"))?;
+    viewer.finish()
+}

@@ -1,0 +1,113 @@
+//! Records the views into a window's texture, one timed submission per view.
+
+use std::time::{Duration, Instant};
+
+use close2gl_gpu::{Gpu, Views};
+use close2gl_ui::ViewStats;
+
+use crate::layout::PixelRect;
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum View {
+    Reference,
+    Close2gl,
+}
+
+/// A view and where it goes in its window.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Placed {
+    pub view: View,
+    pub rect: PixelRect,
+}
+
+/// Clears `target` to the background and draws `placed` into it. Each view is its own
+/// submission, waited on, so that its time covers the GPU's work as well as the recording;
+/// the times go to `stats` when given.
+pub fn draw_views(
+    gpu: &Gpu,
+    views: &Views,
+    target: &wgpu::TextureView,
+    depth: &wgpu::TextureView,
+    placed: &[Placed],
+    mut stats: Option<&mut ViewStats>,
+) {
+    let mut load = wgpu::LoadOp::Clear(views.clear_color());
+    if placed.is_empty() {
+        submit(gpu, target, None, load, |_| ());
+    }
+    for p in placed {
+        let start = Instant::now();
+        let rect = p.rect;
+        let set_viewport = |pass: &mut wgpu::RenderPass<'_>| {
+            pass.set_viewport(
+                rect.x as f32,
+                rect.y as f32,
+                rect.width as f32,
+                rect.height as f32,
+                0.0,
+                1.0,
+            );
+        };
+        match p.view {
+            View::Reference => submit(gpu, target, Some(depth), load, |pass| {
+                set_viewport(pass);
+                views.draw_reference(pass);
+            }),
+            View::Close2gl => submit(gpu, target, None, load, |pass| {
+                set_viewport(pass);
+                views.draw_close2gl(pass);
+            }),
+        }
+        load = wgpu::LoadOp::Load;
+        if let Some(stats) = stats.as_deref_mut() {
+            let timer = match p.view {
+                View::Reference => &mut stats.reference,
+                View::Close2gl => &mut stats.close2gl,
+            };
+            timer.record(start, start.elapsed());
+        }
+    }
+}
+
+/// One pass into `target` (with a cleared depth buffer when given), submitted and waited on.
+fn submit(
+    gpu: &Gpu,
+    target: &wgpu::TextureView,
+    depth: Option<&wgpu::TextureView>,
+    load: wgpu::LoadOp<wgpu::Color>,
+    record: impl FnOnce(&mut wgpu::RenderPass<'_>),
+) {
+    let mut encoder = gpu.device.create_command_encoder(&Default::default());
+    {
+        let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
+            label: Some("view"),
+            color_attachments: &[Some(wgpu::RenderPassColorAttachment {
+                view: target,
+                depth_slice: None,
+                resolve_target: None,
+                ops: wgpu::Operations {
+                    load,
+                    store: wgpu::StoreOp::Store,
+                },
+            })],
+            depth_stencil_attachment: depth.map(|view| wgpu::RenderPassDepthStencilAttachment {
+                view,
+                depth_ops: Some(wgpu::Operations {
+                    load: wgpu::LoadOp::Clear(1.0),
+                    store: wgpu::StoreOp::Discard,
+                }),
+                stencil_ops: None,
+            }),
+            timestamp_writes: None,
+            occlusion_query_set: None,
+            multiview_mask: None,
+        });
+        record(&mut pass);
+    }
+    gpu.queue.submit([encoder.finish()]);
+    // A failed wait means a lost device; the next surface acquire reports it.
+    let _ = gpu.device.poll(wgpu::PollType::Wait {
+        submission_index: None,
+        timeout: Some(Duration::from_secs(5)),
+    });
+}

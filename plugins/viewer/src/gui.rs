@@ -1,0 +1,134 @@
+//! egui in a winit window drawn by wgpu: events in, the panel over the world, paint out.
+
+use std::time::Duration;
+
+use bevy_ecs::world::World;
+use close2gl_gpu::Gpu;
+use winit::window::Window;
+
+pub struct Gui {
+    pub ctx: egui::Context,
+    state: egui_winit::State,
+    renderer: egui_wgpu::Renderer,
+}
+
+/// One panel frame, ready to paint.
+pub struct GuiFrame {
+    /// What the panel left for the views, in points.
+    pub views_area: egui::Rect,
+    pub pixels_per_point: f32,
+    /// When egui wants to draw again by itself (a blinking cursor, an animation).
+    pub repaint_delay: Duration,
+    paint: Vec<egui::ClippedPrimitive>,
+    textures: egui::TexturesDelta,
+    screen: egui_wgpu::ScreenDescriptor,
+}
+
+impl Gui {
+    pub fn new(gpu: &Gpu, window: &Window, format: wgpu::TextureFormat) -> Self {
+        let ctx = egui::Context::default();
+        let max_texture_side = gpu.device.limits().max_texture_dimension_2d as usize;
+        let state = egui_winit::State::new(
+            ctx.clone(),
+            egui::ViewportId::ROOT,
+            window,
+            Some(window.scale_factor() as f32),
+            None,
+            Some(max_texture_side),
+        );
+        let renderer =
+            egui_wgpu::Renderer::new(&gpu.device, format, egui_wgpu::RendererOptions::default());
+        Self {
+            ctx,
+            state,
+            renderer,
+        }
+    }
+
+    pub fn on_event(
+        &mut self,
+        window: &Window,
+        event: &winit::event::WindowEvent,
+    ) -> egui_winit::EventResponse {
+        self.state.on_window_event(window, event)
+    }
+
+    /// Runs the control panel over `world`.
+    pub fn run(&mut self, window: &Window, world: &mut World) -> GuiFrame {
+        let input = self.state.take_egui_input(window);
+        let mut views_area = egui::Rect::NOTHING;
+        let output = self
+            .ctx
+            .run_ui(input, |ui| views_area = close2gl_ui::show(ui, world));
+        self.state
+            .handle_platform_output(window, output.platform_output);
+        let repaint_delay = output
+            .viewport_output
+            .get(&egui::ViewportId::ROOT)
+            .map_or(Duration::MAX, |v| v.repaint_delay);
+        let size = window.inner_size();
+        GuiFrame {
+            views_area,
+            pixels_per_point: output.pixels_per_point,
+            repaint_delay,
+            paint: self.ctx.tessellate(output.shapes, output.pixels_per_point),
+            textures: output.textures_delta,
+            screen: egui_wgpu::ScreenDescriptor {
+                size_in_pixels: [size.width, size.height],
+                pixels_per_point: output.pixels_per_point,
+            },
+        }
+    }
+
+    /// Uploads the frame's new textures (the font atlas, first).
+    pub fn upload_textures(&mut self, gpu: &Gpu, frame: &mut GuiFrame) {
+        for (id, deltas) in frame.textures.set.drain() {
+            for delta in &deltas {
+                self.renderer
+                    .update_texture(&gpu.device, &gpu.queue, id, delta);
+            }
+        }
+    }
+
+    /// Records the panel over what `target` already shows, and submits it.
+    pub fn paint(&mut self, gpu: &Gpu, frame: &GuiFrame, target: &wgpu::TextureView) {
+        let mut encoder = gpu.device.create_command_encoder(&Default::default());
+        let buffers = self.renderer.update_buffers(
+            &gpu.device,
+            &gpu.queue,
+            &mut encoder,
+            &frame.paint,
+            &frame.screen,
+        );
+        {
+            let mut pass = encoder
+                .begin_render_pass(&wgpu::RenderPassDescriptor {
+                    label: Some("panel"),
+                    color_attachments: &[Some(wgpu::RenderPassColorAttachment {
+                        view: target,
+                        depth_slice: None,
+                        resolve_target: None,
+                        ops: wgpu::Operations {
+                            load: wgpu::LoadOp::Load,
+                            store: wgpu::StoreOp::Store,
+                        },
+                    })],
+                    depth_stencil_attachment: None,
+                    timestamp_writes: None,
+                    occlusion_query_set: None,
+                    multiview_mask: None,
+                })
+                .forget_lifetime();
+            self.renderer.render(&mut pass, &frame.paint, &frame.screen);
+        }
+        gpu.queue
+            .submit(buffers.into_iter().chain([encoder.finish()]));
+    }
+
+    /// Frees the textures egui is done with, once the frame has been painted.
+    pub fn free_textures(&mut self, frame: &mut GuiFrame) {
+        for id in frame.textures.free.drain() {
+            self.renderer.free_texture(&id);
+        }
+    }
+}

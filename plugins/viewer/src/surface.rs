@@ -1,0 +1,149 @@
+//! A window and the wgpu surface that presents it: configure, resize, acquire (reconfiguring
+//! when the surface is outdated, recreating it when lost), and the depth buffer the reference
+//! view needs.
+
+use std::sync::Arc;
+
+use close2gl_gpu::{DEPTH_FORMAT, Gpu};
+use winit::window::Window;
+
+pub struct WindowSurface {
+    pub window: Arc<Window>,
+    surface: wgpu::Surface<'static>,
+    config: wgpu::SurfaceConfiguration,
+    depth: Option<wgpu::TextureView>,
+}
+
+impl WindowSurface {
+    pub fn create_surface(
+        instance: &wgpu::Instance,
+        window: &Arc<Window>,
+    ) -> Result<wgpu::Surface<'static>, String> {
+        instance
+            .create_surface(window.clone())
+            .map_err(|e| format!("cannot draw into the window: {e}"))
+    }
+
+    /// Configures `surface` for `window`. `format` is the colour format every view uses: `None`
+    /// lets the first window choose (linear 8-bit when offered, as offscreen rendering uses, so
+    /// that windows and `close2gl render` show the same colours); later windows must offer it.
+    pub fn new(
+        gpu: &Gpu,
+        window: Arc<Window>,
+        surface: wgpu::Surface<'static>,
+        format: Option<wgpu::TextureFormat>,
+    ) -> Result<Self, String> {
+        let caps = surface.get_capabilities(&gpu.adapter);
+        let format = match format {
+            Some(format) if caps.formats.contains(&format) => format,
+            Some(format) => {
+                return Err(format!(
+                    "the second window cannot show {format:?}, the first window's colour format"
+                ));
+            }
+            None => caps
+                .formats
+                .iter()
+                .copied()
+                .find(|f| !f.is_srgb())
+                .or(caps.formats.first().copied())
+                .ok_or("the GPU adapter cannot present to this window")?,
+        };
+        let size = window.inner_size();
+        let config = wgpu::SurfaceConfiguration {
+            usage: wgpu::TextureUsages::RENDER_ATTACHMENT,
+            format,
+            width: size.width,
+            height: size.height,
+            present_mode: wgpu::PresentMode::AutoVsync,
+            desired_maximum_frame_latency: 2,
+            alpha_mode: caps.alpha_modes[0],
+            view_formats: vec![],
+            color_space: wgpu::SurfaceColorSpace::Auto,
+        };
+        let mut this = Self {
+            window,
+            surface,
+            config,
+            depth: None,
+        };
+        this.configure(gpu);
+        Ok(this)
+    }
+
+    pub fn format(&self) -> wgpu::TextureFormat {
+        self.config.format
+    }
+
+    /// The configured size; 0x0 while minimised.
+    pub fn size(&self) -> (u32, u32) {
+        (self.config.width, self.config.height)
+    }
+
+    pub fn resize(&mut self, gpu: &Gpu, width: u32, height: u32) {
+        if (width, height) != self.size() {
+            self.config.width = width;
+            self.config.height = height;
+            self.configure(gpu);
+        }
+    }
+
+    /// A minimised window has no pixels: it is left unconfigured and skipped.
+    fn configure(&mut self, gpu: &Gpu) {
+        if self.config.width == 0 || self.config.height == 0 {
+            self.depth = None;
+            return;
+        }
+        self.surface.configure(&gpu.device, &self.config);
+        let depth = gpu.device.create_texture(&wgpu::TextureDescriptor {
+            label: Some("window depth"),
+            size: wgpu::Extent3d {
+                width: self.config.width,
+                height: self.config.height,
+                depth_or_array_layers: 1,
+            },
+            mip_level_count: 1,
+            sample_count: 1,
+            dimension: wgpu::TextureDimension::D2,
+            format: DEPTH_FORMAT,
+            usage: wgpu::TextureUsages::RENDER_ATTACHMENT,
+            view_formats: &[],
+        });
+        self.depth = Some(depth.create_view(&Default::default()));
+    }
+
+    /// The depth buffer, the window's size; `None` while minimised.
+    pub fn depth(&self) -> Option<&wgpu::TextureView> {
+        self.depth.as_ref()
+    }
+
+    /// The next texture to draw into, or `None` when there is nothing to draw this time
+    /// (minimised, occluded, a timeout): the caller skips the frame.
+    pub fn acquire(&mut self, gpu: &Gpu) -> Result<Option<wgpu::SurfaceTexture>, String> {
+        if self.depth.is_none() {
+            return Ok(None);
+        }
+        for _attempt in 0..2 {
+            match self.surface.get_current_texture() {
+                wgpu::CurrentSurfaceTexture::Success(texture) => return Ok(Some(texture)),
+                wgpu::CurrentSurfaceTexture::Suboptimal(texture) => {
+                    // Give it back and take one that fits the window.
+                    drop(texture);
+                    self.configure(gpu);
+                }
+                wgpu::CurrentSurfaceTexture::Timeout | wgpu::CurrentSurfaceTexture::Occluded => {
+                    return Ok(None);
+                }
+                wgpu::CurrentSurfaceTexture::Outdated => self.configure(gpu),
+                wgpu::CurrentSurfaceTexture::Lost => {
+                    self.surface = Self::create_surface(&gpu.instance, &self.window)?;
+                    self.configure(gpu);
+                }
+                wgpu::CurrentSurfaceTexture::Validation => {
+                    return Err("the window's surface failed wgpu's validation".into());
+                }
+            }
+        }
+        Ok(None)
+    }
+}
