@@ -1,0 +1,118 @@
+//! A steady frame of the fast path allocates nothing: every buffer is reused. Counted with a
+//! global allocator that tallies every allocation on every thread (rayon's workers included).
+
+use std::alloc::{GlobalAlloc, Layout, System};
+use std::sync::atomic::{AtomicUsize, Ordering};
+
+use close2gl_core::glam::Vec3;
+use close2gl_core::{Camera, Clipping, Close2glFrame, Mesh, RenderMode, RenderSettings, Viewport};
+use close2gl_pipeline::FastPipeline;
+
+struct Counting;
+
+static ALLOCATIONS: AtomicUsize = AtomicUsize::new(0);
+
+// SAFETY: forwards to the system allocator unchanged; only counts.
+unsafe impl GlobalAlloc for Counting {
+    unsafe fn alloc(&self, layout: Layout) -> *mut u8 {
+        ALLOCATIONS.fetch_add(1, Ordering::Relaxed);
+        // SAFETY: the caller upholds GlobalAlloc's contract, which System shares.
+        unsafe { System.alloc(layout) }
+    }
+    unsafe fn dealloc(&self, ptr: *mut u8, layout: Layout) {
+        // SAFETY: as above.
+        unsafe { System.dealloc(ptr, layout) }
+    }
+    unsafe fn realloc(&self, ptr: *mut u8, layout: Layout, new_size: usize) -> *mut u8 {
+        ALLOCATIONS.fetch_add(1, Ordering::Relaxed);
+        // SAFETY: as above.
+        unsafe { System.realloc(ptr, layout, new_size) }
+    }
+}
+
+#[global_allocator]
+static GLOBAL: Counting = Counting;
+
+/// A grid of quads big enough to be split across threads, seen so that some triangles straddle
+/// the near and side planes (the clipping path runs too).
+fn grid(n: u32) -> Mesh {
+    let positions: Vec<Vec3> = (0..=n)
+        .flat_map(|i| {
+            (0..=n).map(move |j| {
+                Vec3::new(
+                    i as f32 / n as f32 * 4.0 - 2.0,
+                    -0.5,
+                    j as f32 / n as f32 * -8.0 + 1.0,
+                )
+            })
+        })
+        .collect();
+    let at = |i: u32, j: u32| i * (n + 1) + j;
+    let triangles = (0..n)
+        .flat_map(|i| {
+            (0..n).flat_map(move |j| {
+                [
+                    [at(i, j), at(i + 1, j), at(i + 1, j + 1)],
+                    [at(i, j), at(i + 1, j + 1), at(i, j + 1)],
+                ]
+            })
+        })
+        .collect();
+    Mesh {
+        name: "grid".into(),
+        normals: vec![Vec3::Y; positions.len()],
+        positions,
+        triangles,
+    }
+}
+
+#[test]
+fn a_steady_frame_allocates_nothing() {
+    let mesh = grid(300);
+    let camera = Camera {
+        near: 0.3,
+        far: 20.0,
+        ..Camera::default()
+    };
+    let viewport = Viewport {
+        width: 800,
+        height: 600,
+    };
+    let mut pipeline = FastPipeline::default();
+    let mut frame = Close2glFrame::default();
+    let before = ALLOCATIONS.load(Ordering::SeqCst);
+    pipeline.run(
+        &mesh,
+        &camera,
+        &RenderSettings::default(),
+        viewport,
+        &mut frame,
+    );
+    assert!(
+        ALLOCATIONS.load(Ordering::SeqCst) > before,
+        "the counter sees a first frame's buffers"
+    );
+    for mode in [RenderMode::Solid, RenderMode::Wireframe, RenderMode::Points] {
+        let settings = RenderSettings {
+            mode,
+            clipping: Clipping::Full,
+            backface_culling: false,
+            ..RenderSettings::default()
+        };
+        // Two warm-up frames size every buffer (and start rayon's pool).
+        pipeline.run(&mesh, &camera, &settings, viewport, &mut frame);
+        pipeline.run(&mesh, &camera, &settings, viewport, &mut frame);
+        assert!(
+            frame.counts.clipped > 0 && frame.counts.drawn > 0,
+            "{:?}",
+            frame.counts
+        );
+        let before = ALLOCATIONS.load(Ordering::SeqCst);
+        pipeline.run(&mesh, &camera, &settings, viewport, &mut frame);
+        let allocated = ALLOCATIONS.load(Ordering::SeqCst) - before;
+        assert_eq!(
+            allocated, 0,
+            "{mode:?}: a steady frame allocated {allocated} times"
+        );
+    }
+}
