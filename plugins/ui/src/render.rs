@@ -59,9 +59,11 @@ fn choice<T: Copy + PartialEq>(
     }
 }
 
+/// The colour's bytes are what the views write to the screen, so the swatch shows them as they
+/// are (egui's RGB button would take them for linear values and show them brighter).
 fn color(ui: &mut egui::Ui, value: &mut Vec3) {
-    let mut rgb = value.to_array();
-    if ui.color_edit_button_rgb(&mut rgb).changed() {
-        *value = Vec3::from(rgb);
+    let mut srgb = value.to_array().map(|c| (c * 255.0).round() as u8);
+    if ui.color_edit_button_srgb(&mut srgb).changed() {
+        *value = Vec3::from(srgb.map(|c| c as f32 / 255.0));
     }
 }
