@@ -1,0 +1,515 @@
+//! Parity: the reference view (the GPU drawing the mesh from glam's matrices) and the Close2GL
+//! view (the GPU drawing Close2GL's 2D buffer) must cover the same pixels, on a real adapter,
+//! over a matrix of scenes × poses × front faces × modes. A failure names the diff image written
+//! under target/parity/<case>/. No adapter is a failure with a message, never a silent pass.
+
+use std::fmt::Write as _;
+use std::path::{Path, PathBuf};
+use std::sync::OnceLock;
+
+use close2gl::config;
+use close2gl::core::glam::{Vec3, Vec4};
+use close2gl::core::{
+    App, Camera, CameraSpeeds, Clipping, FrontFace, Mesh, ModelStatus, RenderMode, RenderSettings,
+    Viewport,
+};
+use close2gl_gpu::parity::{Comparison, coverage, diff_image};
+use close2gl_gpu::{Gpu, OffscreenPlugin, Snapshot, camera_matrices, render_offscreen};
+
+fn gpu() -> Gpu {
+    static GPU: OnceLock<Result<Gpu, String>> = OnceLock::new();
+    match GPU.get_or_init(|| Gpu::headless(close2gl_gpu::wgpu::Backends::PRIMARY)) {
+        Ok(gpu) => gpu.clone(),
+        Err(e) => panic!("the parity tests need a GPU adapter: {e}"),
+    }
+}
+
+/// target/parity, next to the other build products.
+fn parity_dir() -> PathBuf {
+    Path::new(env!("CARGO_TARGET_TMPDIR"))
+        .parent()
+        .expect("the target directory")
+        .join("parity")
+}
+
+/// The scene for `model` with `overrides`, read from an empty config file so that the
+/// repository's config.toml cannot change what is tested.
+fn scene(model: &str, overrides: &[&str], viewport: Viewport) -> App {
+    let empty = parity_dir().join("empty.toml");
+    std::fs::create_dir_all(parity_dir()).expect("create target/parity");
+    if !empty.is_file() {
+        std::fs::write(&empty, "").expect("write target/parity/empty.toml");
+    }
+    let mut overrides: Vec<String> = overrides.iter().map(|s| s.to_string()).collect();
+    overrides.push(format!("model.path={}", toml_string(model)));
+    if close2gl::core::PrimitiveKind::from_name(model).is_some() {
+        overrides.push(format!("model.primitive={model}"));
+    }
+    let config = config::load(Some(&empty), &overrides).expect("a valid test config");
+    let mut app = close2gl::build_app(&config, viewport).expect("the scene loads");
+    app.add_plugins(OffscreenPlugin(gpu()));
+    app
+}
+
+fn toml_string(text: &str) -> String {
+    format!("\"{}\"", text.replace('\\', "\\\\").replace('"', "\\\""))
+}
+
+fn camera(app: &mut App) -> &mut Camera {
+    let world = app.world_mut();
+    world
+        .query::<&mut Camera>()
+        .single_mut(world)
+        .expect("one camera")
+        .into_inner()
+}
+
+fn settings(app: &mut App) -> &mut RenderSettings {
+    app.world_mut()
+        .resource_mut::<RenderSettings>()
+        .into_inner()
+}
+
+fn model_radius(app: &App) -> f32 {
+    app.world().resource::<CameraSpeeds>().model_radius
+}
+
+/// A camera pose, applied to the framed camera.
+struct Pose {
+    name: &'static str,
+    /// Whether the near or far plane cuts the model's triangles.
+    cuts: bool,
+    apply: fn(&mut App),
+}
+
+const POSES: &[Pose] = &[
+    Pose {
+        name: "framed",
+        cuts: false,
+        apply: |_| {},
+    },
+    Pose {
+        // The near plane through the front half of the model.
+        name: "near_cut",
+        cuts: true,
+        apply: |app| {
+            let c = camera(app);
+            c.near = 0.8 * c.distance();
+        },
+    },
+    Pose {
+        // The far plane through the front half of the model. (Not through its centre: there a
+        // sphere's silhouette edges lie in the far plane, and whether a pixel on them survives
+        // is rounding in both views.)
+        name: "far_cut",
+        cuts: true,
+        apply: |app| {
+            let radius = model_radius(app);
+            let c = camera(app);
+            c.far = c.distance() - 0.5 * radius;
+        },
+    },
+    Pose {
+        // At the look-at point, the model's centre: faces are seen from behind, so culling is off.
+        name: "inside",
+        cuts: true,
+        apply: |app| {
+            let radius = model_radius(app);
+            let c = camera(app);
+            c.position = c.target;
+            c.near = 0.01 * radius;
+            settings(app).backface_culling = false;
+        },
+    },
+    Pose {
+        name: "wide_short",
+        cuts: false,
+        apply: |app| {
+            let c = camera(app);
+            (c.hfov, c.vfov) = (150.0, 20.0);
+        },
+    },
+    Pose {
+        name: "narrow_tall",
+        cuts: false,
+        apply: |app| {
+            let c = camera(app);
+            (c.hfov, c.vfov) = (20.0, 150.0);
+        },
+    },
+    Pose {
+        name: "unequal_fov",
+        cuts: false,
+        apply: |app| {
+            let c = camera(app);
+            (c.hfov, c.vfov) = (90.0, 45.0);
+        },
+    },
+    Pose {
+        name: "wide_window",
+        cuts: false,
+        apply: |app| {
+            *app.world_mut().resource_mut::<Viewport>() = Viewport {
+                width: 320,
+                height: 120,
+            };
+        },
+    },
+    Pose {
+        name: "tall_window",
+        cuts: false,
+        apply: |app| {
+            *app.world_mut().resource_mut::<Viewport>() = Viewport {
+                width: 100,
+                height: 240,
+            };
+        },
+    },
+];
+
+const SIZE: Viewport = Viewport {
+    width: 160,
+    height: 120,
+};
+
+const MODES: [RenderMode; 3] = [RenderMode::Solid, RenderMode::Wireframe, RenderMode::Points];
+
+fn threshold(mode: RenderMode) -> f64 {
+    match mode {
+        RenderMode::Solid => 0.999,
+        RenderMode::Wireframe | RenderMode::Points => 0.99,
+    }
+}
+
+/// Writes a case's images under target/parity/<case>/ and returns the diff's path.
+fn write_case(case: &str, snapshot: &Snapshot) -> PathBuf {
+    let dir = parity_dir().join(case);
+    std::fs::create_dir_all(&dir).expect("create the case directory");
+    let diff = diff_image(&snapshot.reference, &snapshot.close2gl, snapshot.background);
+    for (image, name) in [
+        (&snapshot.reference, "reference.png"),
+        (&snapshot.close2gl, "close2gl.png"),
+        (&diff, "diff.png"),
+    ] {
+        image
+            .write_png(&dir.join(name))
+            .expect("write a parity image");
+    }
+    dir.join("diff.png")
+}
+
+/// Which (pose, mode) pairs a test covers.
+type Selection = fn(&Pose, RenderMode) -> bool;
+
+/// Every pair but points cut by the near or far plane.
+fn all_but_cut_points(pose: &Pose, mode: RenderMode) -> bool {
+    !(pose.cuts && mode == RenderMode::Points)
+}
+
+/// Renders the selected poses × modes × both front faces of `model`, flat colour and full
+/// clipping; returns the failures, one line each. A pose whose every variant shows nothing is a
+/// failure too: it would prove nothing.
+fn check_scene(label: &str, model: &str, overrides: &[&str], selection: Selection) -> String {
+    let mut failures = String::new();
+    for pose in POSES {
+        if !MODES.iter().any(|&mode| selection(pose, mode)) {
+            continue;
+        }
+        let mut app = scene(model, overrides, SIZE);
+        (pose.apply)(&mut app);
+        let mut covered_any = false;
+        for front_face in [FrontFace::Ccw, FrontFace::Cw] {
+            for mode in MODES.into_iter().filter(|&mode| selection(pose, mode)) {
+                let s = settings(&mut app);
+                (s.front_face, s.mode) = (front_face, mode);
+                let snapshot = render_offscreen(&mut app).expect("render");
+                let c = Comparison::of_images(
+                    &snapshot.reference,
+                    &snapshot.close2gl,
+                    snapshot.background,
+                );
+                covered_any |= c.covered_pixels > 0;
+                let agrees = if c.covered_pixels == 0 {
+                    // Both empty (e.g. only back faces in view): nothing to disagree about.
+                    true
+                } else {
+                    c.coverage_agreement >= threshold(mode)
+                };
+                if !agrees {
+                    let case = format!(
+                        "{label}_{}_{}_{}",
+                        pose.name,
+                        front_face.name(),
+                        mode.name()
+                    );
+                    let diff = write_case(&case, &snapshot);
+                    let _ = writeln!(
+                        failures,
+                        "{case}: coverage agreement {:.5} < {} ({} of {} pixels differ: {} \
+                         reference only, {} Close2GL only); see {}",
+                        c.coverage_agreement,
+                        threshold(mode),
+                        c.mismatched_pixels,
+                        c.covered_pixels,
+                        c.only_first,
+                        c.only_second,
+                        diff.display()
+                    );
+                }
+            }
+        }
+        if !covered_any {
+            let _ = writeln!(
+                failures,
+                "{label}_{}: no variant covers a single pixel",
+                pose.name
+            );
+        }
+    }
+    failures
+}
+
+fn assert_scenes(scenes: &[(&str, &str, &[&str])], selection: Selection) {
+    let failures: String = scenes
+        .iter()
+        .map(|(label, model, overrides)| check_scene(label, model, overrides, selection))
+        .collect();
+    assert!(failures.is_empty(), "the views disagree:\n{failures}");
+}
+
+#[test]
+fn the_primitives_agree_in_every_pose_front_face_and_mode() {
+    assert_scenes(
+        &[
+            ("box", "box", &[]),
+            ("sphere", "sphere", &[]),
+            ("torus", "torus", &[]),
+            ("cone", "cone", &[]),
+            ("cylinder", "cylinder", &[]),
+        ],
+        all_but_cut_points,
+    );
+}
+
+/// Points where the near or far plane cuts triangles. A GPU in point mode draws the corners of
+/// the clipped polygon that begin a piece of an original edge (OpenGL's edge-flag rule; lavapipe
+/// does the same): an edge a→b entering the view volume adds the point where it enters. So the
+/// Close2GL points must include those entry points, not only the corners inside the volume.
+#[test]
+fn points_cut_by_the_near_or_far_plane_agree() {
+    assert_scenes(
+        &[("sphere", "sphere", &[]), ("torus", "torus", &[])],
+        |pose, mode| pose.cuts && mode == RenderMode::Points,
+    );
+}
+
+#[test]
+fn tiny_huge_and_far_away_models_agree() {
+    let far = far_away_sphere();
+    assert_scenes(
+        &[
+            (
+                "tiny",
+                "sphere",
+                &[
+                    "primitives.sphere_radius=0.0005",
+                    "primitives.sphere_stacks=12",
+                ],
+            ),
+            (
+                "huge",
+                "torus",
+                &[
+                    "primitives.torus_r0=35000.0",
+                    "primitives.torus_r1=15000.0",
+                    "primitives.torus_n0=24",
+                    "primitives.torus_n1=12",
+                ],
+            ),
+            ("far_away", far.to_str().expect("a UTF-8 path"), &[]),
+        ],
+        all_but_cut_points,
+    );
+}
+
+/// A UV sphere of radius 50 centred at (5000, -3000, 2000), as an .obj without normals (the
+/// loader computes them), written under target/parity.
+fn far_away_sphere() -> PathBuf {
+    let (stacks, slices, radius) = (12, 24, 50.0f32);
+    let centre = Vec3::new(5000.0, -3000.0, 2000.0);
+    let mut obj = String::from("# a sphere far from the origin\n");
+    for i in 0..=stacks {
+        let theta = std::f32::consts::PI * i as f32 / stacks as f32;
+        for j in 0..slices {
+            let phi = std::f32::consts::TAU * j as f32 / slices as f32;
+            let p = centre
+                + radius
+                    * Vec3::new(
+                        theta.sin() * phi.cos(),
+                        theta.cos(),
+                        -theta.sin() * phi.sin(),
+                    );
+            let _ = writeln!(obj, "v {} {} {}", p.x, p.y, p.z);
+        }
+    }
+    for i in 0..stacks {
+        for j in 0..slices {
+            let index = |i: usize, j: usize| i * slices + j % slices + 1;
+            let (a, b, c, d) = (
+                index(i, j),
+                index(i + 1, j),
+                index(i + 1, j + 1),
+                index(i, j + 1),
+            );
+            let _ = writeln!(obj, "f {a} {b} {c}\nf {a} {c} {d}");
+        }
+    }
+    let path = parity_dir().join("far_away_sphere.obj");
+    std::fs::create_dir_all(parity_dir()).expect("create target/parity");
+    std::fs::write(&path, obj).expect("write the far-away model");
+    path
+}
+
+#[test]
+fn a_resize_keeps_the_views_in_agreement() {
+    let mut app = scene("torus", &[], SIZE);
+    render_offscreen(&mut app).expect("render");
+    for size in [(240, 90), (90, 240), (161, 119)] {
+        *app.world_mut().resource_mut::<Viewport>() = Viewport {
+            width: size.0,
+            height: size.1,
+        };
+        let snapshot = render_offscreen(&mut app).expect("render");
+        assert_eq!((snapshot.close2gl.width, snapshot.close2gl.height), size);
+        let c = Comparison::of_images(&snapshot.reference, &snapshot.close2gl, snapshot.background);
+        if c.coverage_agreement < 0.999 {
+            let diff = write_case(&format!("resized_{}x{}", size.0, size.1), &snapshot);
+            panic!("after a resize to {size:?}: {c:?}; see {}", diff.display());
+        }
+    }
+}
+
+/// Whether a triangle has a corner outside the view volume, by the reference renderer's matrices
+/// (glam's, not Close2GL's): the triangles the assignment's simple rule drops. The volume is
+/// shrunk by 1e-4 of w so that a corner on the border, which rounding may put on either side in
+/// Close2GL's own arithmetic, counts as touching it.
+fn touches_the_border(clip: &[Vec4; 3]) -> bool {
+    clip.iter().any(|c| {
+        let w = c.w * (1.0 - 1e-4);
+        !(c.w > 0.0 && c.x.abs() <= w && c.y.abs() <= w && c.z >= c.w * 1e-4 && c.z <= w)
+    })
+}
+
+/// Simple clipping drops whole triangles that touch the frustum's border, so its coverage must be
+/// a subset of full clipping's, and every pixel only full clipping covers must be covered by
+/// those border triangles alone (drawn with full clipping). In a framed pose nothing touches the
+/// border and the two must be identical.
+#[test]
+fn simple_clipping_differs_from_full_only_at_the_frustum_borders() {
+    let mut differing_total = 0;
+    for model in ["torus", "box", "cylinder"] {
+        for pose in POSES {
+            for mode in [RenderMode::Solid, RenderMode::Wireframe] {
+                let mut app = scene(model, &[], SIZE);
+                (pose.apply)(&mut app);
+                settings(&mut app).mode = mode;
+                let case = format!("simple_{model}_{}_{}", pose.name, mode.name());
+                let full = render_offscreen(&mut app).expect("render");
+                settings(&mut app).clipping = Clipping::Simple;
+                let simple = render_offscreen(&mut app).expect("render");
+
+                // The border triangles alone, drawn with full clipping.
+                let saved = *camera(&mut app);
+                let (view, projection) = camera_matrices(&saved);
+                let world = app.world_mut();
+                let mut mesh = world
+                    .query::<&mut Mesh>()
+                    .single_mut(world)
+                    .expect("a mesh");
+                let border: Vec<[u32; 3]> = mesh
+                    .triangles
+                    .iter()
+                    .copied()
+                    .filter(|t| {
+                        let clip =
+                            t.map(|i| projection * view * mesh.positions[i as usize].extend(1.0));
+                        touches_the_border(&clip)
+                    })
+                    .collect();
+                let border_count = border.len();
+                mesh.triangles = border;
+                app.world_mut().resource_mut::<ModelStatus>().generation += 1;
+                settings(&mut app).clipping = Clipping::Full;
+                // A new mesh is framed again: run that frame, then put the pose back.
+                app.update();
+                *camera(&mut app) = saved;
+                let edges = if border_count == 0 {
+                    None
+                } else {
+                    Some(render_offscreen(&mut app).expect("render"))
+                };
+
+                let bg = full.background;
+                let (full_px, simple_px) =
+                    (coverage(&full.close2gl, bg), coverage(&simple.close2gl, bg));
+                let border_px = edges.as_ref().map(|e| coverage(&e.close2gl, bg));
+                let mut extra = 0;
+                let mut unexplained = 0;
+                for (i, (&f, &s)) in full_px.iter().zip(&simple_px).enumerate() {
+                    assert!(
+                        f || !s,
+                        "{case}: simple clipping covers pixel {i} that full clipping does not \
+                         (see {})",
+                        write_case(&case, &simple).display()
+                    );
+                    if f && !s {
+                        extra += 1;
+                        unexplained += usize::from(!border_px.as_ref().is_some_and(|b| b[i]));
+                    }
+                }
+                if border_count == 0 {
+                    assert_eq!(
+                        full.close2gl, simple.close2gl,
+                        "{case}: no triangle touches the border, yet the clipping modes differ"
+                    );
+                }
+                if unexplained > 0 {
+                    let dir = parity_dir().join(&case);
+                    std::fs::create_dir_all(&dir).expect("create the case directory");
+                    let images = [
+                        ("full", Some(&full)),
+                        ("simple", Some(&simple)),
+                        ("border", edges.as_ref()),
+                    ];
+                    for (name, snapshot) in images {
+                        if let Some(snapshot) = snapshot {
+                            let path = dir.join(format!("{name}.png"));
+                            snapshot
+                                .close2gl
+                                .write_png(&path)
+                                .expect("write a parity image");
+                        }
+                    }
+                    panic!(
+                        "{case}: {unexplained} of the {extra} pixels only full clipping covers \
+                         are not covered by the {border_count} triangles touching the border \
+                         (Close2GL images: {})",
+                        dir.display()
+                    );
+                }
+                if pose.name == "framed" {
+                    assert_eq!(
+                        border_count, 0,
+                        "{case}: the framed model touches the border"
+                    );
+                }
+                differing_total += extra;
+            }
+        }
+    }
+    // The poses that cut the model must make the modes differ somewhere, or this proves nothing.
+    assert!(
+        differing_total > 1000,
+        "only {differing_total} pixels differ between simple and full clipping"
+    );
+}
