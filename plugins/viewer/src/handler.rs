@@ -397,6 +397,15 @@ impl ApplicationHandler for Viewer {
         }
         // What the panel takes is not the camera's: the pointer over the panel, keys while a
         // field has focus.
+        if let WindowEvent::RedrawRequested = event {
+            // Not for egui: it would ask for another redraw, forever.
+            if is_main {
+                self.redraw(event_loop);
+            } else {
+                windows.main.window.request_redraw();
+            }
+            return;
+        }
         let (panel_pointer, panel_keys) = if is_main {
             let response = windows.gui.on_event(&windows.main.window, &event);
             if response.repaint {
@@ -417,11 +426,6 @@ impl ApplicationHandler for Viewer {
                 return;
             }
             WindowEvent::Resized(size) => windows.resized(id, size),
-            WindowEvent::RedrawRequested => {
-                if is_main {
-                    return self.redraw(event_loop);
-                }
-            }
             WindowEvent::KeyboardInput { event, .. } => {
                 let pressed = event.state == ElementState::Pressed;
                 if !(pressed && panel_keys) {

@@ -19,9 +19,13 @@ impl WindowSurface {
         instance: &wgpu::Instance,
         window: &Arc<Window>,
     ) -> Result<wgpu::Surface<'static>, String> {
-        instance
-            .create_surface(window.clone())
-            .map_err(|e| format!("cannot draw into the window: {e}"))
+        instance.create_surface(window.clone()).map_err(|e| {
+            format!(
+                "cannot draw into the window ({e}): no GPU backend can present here; install \
+                     a Vulkan driver, e.g. `apt-get install mesa-vulkan-drivers` (Mesa's lavapipe \
+                     runs without a GPU)"
+            )
+        })
     }
 
     /// Configures `surface` for `window`. `format` is the colour format every view uses: `None`
