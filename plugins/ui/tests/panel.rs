@@ -1,7 +1,8 @@
 //! The panel driven the way a user drives it, without a window: egui runs headless over a real
 //! App, widgets are found by their accessibility labels and clicked or set through AccessKit
-//! action requests, and the test checks the change lands in the resources the render systems
-//! read (and, through the real Close2GL system, in the 2D frame).
+//! action requests, and the tests check the change lands in the resources the render systems
+//! read: through the real Close2GL system into the 2D frame, and through the real GPU views
+//! (offscreen, on whatever adapter wgpu finds: Mesa's lavapipe without a GPU) into both images.
 
 use close2gl_core::bevy_ecs::prelude::*;
 use close2gl_core::glam::Vec3;
@@ -259,4 +260,37 @@ fn the_views_get_the_window_beside_the_panel_whatever_it_shows() {
     h.frame(Vec::new());
     h.frame(Vec::new());
     assert_eq!(h.views, views, "a long error wraps inside the panel");
+}
+
+#[test]
+fn panel_changes_reach_both_gpu_views() {
+    let gpu = close2gl_gpu::Gpu::headless(wgpu::Backends::all()).unwrap_or_else(|e| panic!("{e}"));
+    let mut h = Harness::new();
+    h.app.add_plugins(close2gl_gpu::OffscreenPlugin(gpu));
+    let covered = |h: &mut Harness| {
+        let shot = close2gl_gpu::render_offscreen(&mut h.app).unwrap_or_else(|e| panic!("{e}"));
+        let count = |image| {
+            close2gl_gpu::parity::coverage(image, shot.background)
+                .into_iter()
+                .filter(|&c| c)
+                .count()
+        };
+        (count(&shot.reference), count(&shot.close2gl))
+    };
+    assert_eq!(
+        covered(&mut h),
+        (0, 0),
+        "the back face is culled in both views"
+    );
+
+    h.click(Role::CheckBox, "Backface culling");
+    let solid = covered(&mut h);
+    assert!(solid.0 > 1000 && solid.1 > 1000, "solid: {solid:?} pixels");
+
+    h.click(Role::Button, "wireframe");
+    let wire = covered(&mut h);
+    assert!(
+        wire.0 > 0 && wire.1 > 0 && wire.0 * 4 < solid.0 && wire.1 * 4 < solid.1,
+        "wireframe {wire:?} against solid {solid:?} pixels"
+    );
 }
