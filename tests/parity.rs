@@ -513,3 +513,97 @@ fn simple_clipping_differs_from_full_only_at_the_frustum_borders() {
         "only {differing_total} pixels differ between simple and full clipping"
     );
 }
+
+/// `close2gl render` as a user runs it: the report's agreement must be the one the PNGs give.
+#[test]
+fn the_render_command_reports_what_its_images_show() {
+    let out = parity_dir().join("cli_render");
+    let _ = std::fs::remove_dir_all(&out);
+    let empty = parity_dir().join("empty.toml");
+    std::fs::create_dir_all(parity_dir()).expect("create target/parity");
+    std::fs::write(&empty, "").expect("write target/parity/empty.toml");
+    let run = |extra: &[&str]| {
+        std::process::Command::new(env!("CARGO_BIN_EXE_close2gl"))
+            .args(["render", "torus", "--size", "160x120", "--config"])
+            .arg(&empty)
+            .arg("--out")
+            .arg(&out)
+            .args(extra)
+            .output()
+            .expect("run close2gl")
+    };
+    let output = run(&["--set", "render.mode=wireframe", "--frames", "3"]);
+    assert!(
+        output.status.success(),
+        "{}",
+        String::from_utf8_lossy(&output.stderr)
+    );
+    let text = std::fs::read_to_string(out.join("report.json")).expect("report.json");
+    let report: serde_json::Value = serde_json::from_str(&text).expect("valid JSON");
+    let image = |name: &str| close2gl_gpu::Image::read_png(&out.join(name)).expect("a PNG");
+    let (reference, close2gl) = (image("reference.png"), image("close2gl.png"));
+    let diff = image("diff.png");
+    let background = to_background(&report["background"]);
+    let c = Comparison::of_images(&reference, &close2gl, background);
+    assert_eq!(report["mismatched_pixels"], c.mismatched_pixels);
+    assert_eq!(report["coverage_agreement"], c.coverage_agreement);
+    assert_eq!(report["size"], serde_json::json!([160, 120]));
+    assert_eq!((diff.width, diff.height), (160, 120));
+    assert!(
+        c.covered_pixels > 500 && c.coverage_agreement >= 0.99,
+        "{c:?}"
+    );
+    for key in ["adapter", "backend", "reference_ms", "close2gl_ms"] {
+        assert!(!report[key].is_null(), "report.json lacks {key}: {text}");
+    }
+    for key in [
+        "triangles_in",
+        "clipped",
+        "culled",
+        "drawn",
+        "output_primitives",
+    ] {
+        assert!(
+            report["stats"][key].is_u64(),
+            "report.json lacks stats.{key}: {text}"
+        );
+    }
+
+    let output = run(&["--orbit", "3", "--set", "model.primitive=box"]);
+    assert!(
+        output.status.success(),
+        "{}",
+        String::from_utf8_lossy(&output.stderr)
+    );
+    let text = std::fs::read_to_string(out.join("report.json")).expect("report.json");
+    let reports: serde_json::Value = serde_json::from_str(&text).expect("valid JSON");
+    assert_eq!(reports.as_array().map(Vec::len), Some(3), "{text}");
+    for pose in 0..3 {
+        for name in ["reference", "close2gl", "diff"] {
+            assert!(out.join(format!("{name}_{pose:03}.png")).is_file());
+        }
+    }
+
+    for bad in [
+        &["--frames", "0"][..],
+        &["--backend", "glide"],
+        &["--orbit", "0"],
+    ] {
+        let output = run(bad);
+        assert_eq!(output.status.code(), Some(2), "{bad:?}");
+        let stderr = String::from_utf8_lossy(&output.stderr);
+        let message: Vec<&str> = stderr
+            .lines()
+            .filter(|l| l.starts_with("close2gl:"))
+            .collect();
+        assert_eq!(message.len(), 1, "{bad:?}: {stderr}");
+    }
+}
+
+fn to_background(value: &serde_json::Value) -> [u8; 3] {
+    let channel = |i: usize| value[i].as_u64().and_then(|c| u8::try_from(c).ok());
+    match (channel(0), channel(1), channel(2)) {
+        (Some(r), Some(g), Some(b)) => [r, g, b],
+        _ => panic!("report.json has no background colour: {value}"),
+    }
+}
