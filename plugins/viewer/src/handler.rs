@@ -177,8 +177,7 @@ impl Viewer {
         let drawn = windows.draw(
             self.app.world_mut(),
             &gui_frame,
-            &main_views,
-            &close2gl_views,
+            [&main_views, &close2gl_views],
             capture,
         );
         windows.gui.free_textures(&mut gui_frame);
@@ -274,14 +273,28 @@ impl Windows {
         &mut self,
         world: &mut bevy_ecs::world::World,
         gui: &GuiFrame,
-        main_views: &[Placed],
-        close2gl_views: &[Placed],
+        placed: [&[Placed]; 2],
         capture: bool,
     ) -> Result<Option<close2gl_gpu::Image>, String> {
-        let views = world
-            .remove_resource::<Views>()
-            .ok_or("the views are gone")?;
-        let mut stats = world.resource_mut::<ViewStats>();
+        // Taken out for the frame, so that the views can be borrowed from the world beside it
+        // (`Views` must stay put: its upload systems watch when it was added).
+        let mut stats = world.remove_resource::<ViewStats>().unwrap_or_default();
+        let result = match world.get_resource::<Views>() {
+            Some(views) => self.draw_with(views, &mut stats, gui, placed, capture),
+            None => Err("the GPU views are gone".into()),
+        };
+        world.insert_resource(stats);
+        result
+    }
+
+    fn draw_with(
+        &mut self,
+        views: &Views,
+        stats: &mut ViewStats,
+        gui: &GuiFrame,
+        [main_views, close2gl_views]: [&[Placed]; 2],
+        capture: bool,
+    ) -> Result<Option<close2gl_gpu::Image>, String> {
         let gpu = &self.gpu;
         let mut shots = Vec::new();
         {
@@ -290,13 +303,13 @@ impl Windows {
             let mut draw_main = |target: &wgpu::TextureView,
                                  depth: &wgpu::TextureView,
                                  stats: Option<&mut ViewStats>| {
-                draw_views(gpu, &views, target, depth, main_views, stats);
+                draw_views(gpu, views, target, depth, main_views, stats);
                 gui_renderer.paint(gpu, gui, target);
             };
             if let Some(texture) = main.acquire(gpu)? {
                 let target = texture.texture.create_view(&Default::default());
                 if let Some(depth) = main.depth() {
-                    draw_main(&target, depth, Some(&mut stats));
+                    draw_main(&target, depth, Some(&mut *stats));
                 }
                 gpu.queue.present(texture);
             }
@@ -311,25 +324,17 @@ impl Windows {
             if let Some(texture) = window.acquire(gpu)? {
                 let target = texture.texture.create_view(&Default::default());
                 if let Some(depth) = window.depth() {
-                    draw_views(
-                        gpu,
-                        &views,
-                        &target,
-                        depth,
-                        close2gl_views,
-                        Some(&mut stats),
-                    );
+                    draw_views(gpu, views, &target, depth, close2gl_views, Some(stats));
                 }
                 gpu.queue.present(texture);
             }
             if capture && let Some(depth) = window.depth() {
                 let (w, h) = window.size();
                 shots.push(screenshot::capture(gpu, window.format(), w, h, |target| {
-                    draw_views(gpu, &views, target, depth, close2gl_views, None)
+                    draw_views(gpu, views, target, depth, close2gl_views, None)
                 })?);
             }
         }
-        world.insert_resource(views);
         Ok(capture.then(|| screenshot::side_by_side(&shots)))
     }
 
