@@ -17,6 +17,10 @@ const PLANES: [fn(Vec4) -> f32; 6] = [
     |p| p.w - p.z, // far:    z <=  w
 ];
 
+/// The near plane's bit: the one plane a GPU must cut geometrically, since dividing by w needs
+/// w > 0 (the others it may apply per pixel: the viewport's edges and the depth range).
+pub const NEAR: Outcode = 1 << 4;
+
 /// Which planes `p` is outside of; 0 means inside the view volume. A point with w <= 0 is
 /// always outside (it is at or behind the centre of projection), even where every plane test
 /// would pass for w = 0. Written out plane by plane (rather than looping over [`PLANES`]) because
@@ -33,10 +37,14 @@ pub fn outcode(p: Vec4) -> Outcode {
 /// The most vertices a triangle can have after cutting by six planes (3 + 6).
 pub const MAX_POLYGON: usize = 9;
 
-/// A convex polygon in clip space, kept on the stack: clipping allocates nothing.
+/// A convex polygon in clip space, kept on the stack: clipping allocates nothing. `original[i]`
+/// says whether the edge from vertex i to vertex i + 1 is part of one of the triangle's own edges
+/// (OpenGL's edge flag) rather than an edge the clipping planes added: a GPU draws only those in
+/// line mode, and only their starting vertices in point mode.
 #[derive(Clone, Copy, Debug)]
 pub struct Polygon {
     pub points: [Vec4; MAX_POLYGON],
+    pub original: [bool; MAX_POLYGON],
     pub len: usize,
 }
 
@@ -44,21 +52,28 @@ impl Polygon {
     pub fn triangle(a: Vec4, b: Vec4, c: Vec4) -> Self {
         let mut points = [Vec4::ZERO; MAX_POLYGON];
         points[..3].copy_from_slice(&[a, b, c]);
-        Self { points, len: 3 }
+        Self {
+            points,
+            original: [true; MAX_POLYGON],
+            len: 3,
+        }
     }
 
     pub fn vertices(&self) -> &[Vec4] {
         &self.points[..self.len]
     }
 
-    fn push(&mut self, p: Vec4) {
+    fn push(&mut self, p: Vec4, original: bool) {
         self.points[self.len] = p;
+        self.original[self.len] = original;
         self.len += 1;
     }
 }
 
 /// Sutherland–Hodgman: cuts the polygon by every plane named in `planes`, in turn. The result
-/// may be empty (fewer than 3 vertices) when the polygon lies outside.
+/// may be empty (fewer than 3 vertices) when the polygon lies outside. Where an edge leaves the
+/// volume, the new vertex starts an edge along the plane (not original); where an edge comes
+/// back in, the new vertex starts what remains of the outside vertex's edge.
 pub fn clip_polygon(polygon: &Polygon, planes: Outcode) -> Polygon {
     let mut current = *polygon;
     for (bit, plane) in PLANES.iter().enumerate() {
@@ -67,15 +82,16 @@ pub fn clip_polygon(polygon: &Polygon, planes: Outcode) -> Polygon {
         }
         let input = current;
         current.len = 0;
-        let points = input.vertices();
-        for (i, &a) in points.iter().enumerate() {
-            let b = points[(i + 1) % points.len()];
+        for i in 0..input.len {
+            let (a, b) = (input.points[i], input.points[(i + 1) % input.len]);
             let (da, db) = (plane(a), plane(b));
             if da >= 0.0 {
-                current.push(a);
+                current.push(a, input.original[i]);
             }
             if (da >= 0.0) != (db >= 0.0) {
-                current.push(a + (b - a) * (da / (da - db)));
+                let cut = a + (b - a) * (da / (da - db));
+                let leaving = da >= 0.0;
+                current.push(cut, !leaving && input.original[i]);
             }
         }
     }
@@ -83,24 +99,6 @@ pub fn clip_polygon(polygon: &Polygon, planes: Outcode) -> Polygon {
         current.len = 0;
     }
     current
-}
-
-/// Liang–Barsky in clip space: the part of segment a→b inside the view volume, or `None`.
-/// Wireframes clip each edge as a line, as a GPU clips the edges of a polygon drawn as lines.
-pub fn clip_segment(a: Vec4, b: Vec4) -> Option<(Vec4, Vec4)> {
-    let (mut t0, mut t1) = (0.0f32, 1.0f32);
-    for plane in PLANES {
-        let (da, db) = (plane(a), plane(b));
-        if da < 0.0 && db < 0.0 {
-            return None;
-        }
-        if da < 0.0 {
-            t0 = t0.max(da / (da - db));
-        } else if db < 0.0 {
-            t1 = t1.min(da / (da - db));
-        }
-    }
-    (t0 <= t1).then(|| (a + (b - a) * t0, a + (b - a) * t1))
 }
 
 #[cfg(test)]
@@ -152,15 +150,15 @@ mod tests {
     }
 
     #[test]
-    fn segments_are_cut_at_the_planes() {
-        let (a, b) = clip_segment(
-            Vec4::new(-3.0, 0.0, 0.0, 1.0),
-            Vec4::new(3.0, 0.0, 0.0, 1.0),
-        )
-        .expect("crosses the volume");
-        assert!((a.x + 1.0).abs() < 1e-6 && (b.x - 1.0).abs() < 1e-6);
-        assert!(
-            clip_segment(Vec4::new(2.0, 0.0, 0.0, 1.0), Vec4::new(3.0, 2.0, 0.0, 1.0)).is_none()
+    fn edges_added_by_clipping_are_not_original() {
+        // Corner 2 is behind the near plane: the edge between the two cut points lies on the
+        // plane, every other edge is what is left of the triangle's own edges.
+        let t = Polygon::triangle(
+            Vec4::new(-0.5, 0.0, 0.0, 1.0),
+            Vec4::new(0.5, 0.0, 0.0, 1.0),
+            Vec4::new(0.0, 0.5, -3.0, 1.0),
         );
+        let clipped = clip_polygon(&t, outcode(t.points[2]));
+        assert_eq!(&clipped.original[..4], &[true, true, false, true]);
     }
 }

@@ -5,7 +5,7 @@
 use close2gl_core::{Clipping, FrontFace, RenderMode, RenderSettings, Topology, Viewport};
 use glam::{Mat4, Vec4};
 
-use crate::clip::{Outcode, Polygon, clip_polygon, clip_segment, outcode};
+use crate::clip::{NEAR, Outcode, Polygon, clip_polygon, outcode};
 use crate::matrices;
 
 /// What stays the same for every triangle of a frame.
@@ -102,8 +102,8 @@ pub fn process(
     }
     Fate::Drawn(match stage.mode {
         RenderMode::Solid => emit_fan(piece_window, out),
-        RenderMode::Wireframe => emit_clipped_edges(&clip, stage, out),
-        RenderMode::Points => emit_inside_corners(codes, window, out),
+        RenderMode::Wireframe => emit_original_edges(piece_window, &piece.original, out),
+        RenderMode::Points => emit_points(&triangle, outside_any, stage, out),
     })
 }
 
@@ -158,30 +158,35 @@ fn emit_fan(window: &[[f32; 2]], out: &mut Vec<[f32; 2]>) -> usize {
     window.len() - 2
 }
 
-/// A GPU draws a clipped polygon in line mode as its original edges, cut by the view volume; the
-/// edges clipping adds are not drawn. So each edge is clipped as a segment.
-fn emit_clipped_edges(clip: &[Vec4; 3], stage: &Stage, out: &mut Vec<[f32; 2]>) -> usize {
-    let mut lines = 0;
-    for i in 0..3 {
-        let (a, b) = (clip[i], clip[(i + 1) % 3]);
-        if let Some((a, b)) = clip_segment(a, b) {
-            let (a, b) = (to_window(a, &stage.viewport), to_window(b, &stage.viewport));
-            if a.iter().chain(&b).all(|x| x.is_finite()) {
-                out.extend_from_slice(&[a, b]);
-                lines += 1;
-            }
+/// A GPU draws a clipped polygon in line mode as what is left of the triangle's own edges; the
+/// edges clipping added along the planes are not drawn.
+fn emit_original_edges(window: &[[f32; 2]], original: &[bool], out: &mut Vec<[f32; 2]>) -> usize {
+    let before = out.len();
+    for (i, a) in window.iter().enumerate() {
+        if original[i] {
+            out.extend_from_slice(&[*a, window[(i + 1) % window.len()]]);
         }
     }
-    lines
+    (out.len() - before) / 2
 }
 
-/// Points are not cut: a corner is drawn when it is inside the view volume.
-fn emit_inside_corners(
-    codes: [Outcode; 3],
-    window: [[f32; 2]; 3],
+/// In point mode, a GPU draws the vertices that start one of the triangle's own edges once the
+/// near plane has cut it: its corners, and the points where an edge comes back in front of the
+/// near plane. Every other plane applies to each point alone (a point outside the viewport or
+/// the depth range is dropped), so no vertex is made on them.
+fn emit_points(
+    triangle: &Polygon,
+    outside: Outcode,
+    stage: &Stage,
     out: &mut Vec<[f32; 2]>,
 ) -> usize {
+    let near_cut = clip_polygon(triangle, outside & NEAR);
     let before = out.len();
-    out.extend((0..3).filter(|&i| codes[i] == 0).map(|i| window[i]));
+    for (p, original) in near_cut.vertices().iter().zip(near_cut.original) {
+        // Points made on the near plane are inside it by construction, whatever the rounding.
+        if original && outcode(*p) & !NEAR == 0 {
+            out.push(to_window(*p, &stage.viewport));
+        }
+    }
     out.len() - before
 }
