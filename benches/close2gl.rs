@@ -11,8 +11,18 @@ use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_m
 fn scene(triangles: usize) -> (Mesh, Camera, Config) {
     let mut config = Config::default();
     config.model = ModelSource::Primitive(PrimitiveKind::Sphere);
-    (config.primitives.sphere_stacks, config.primitives.sphere_slices) = sphere_grid(triangles);
-    let mut app = close2gl::build_app(&config, Viewport { width: 1280, height: 720 }).expect("a sphere");
+    (
+        config.primitives.sphere_stacks,
+        config.primitives.sphere_slices,
+    ) = sphere_grid(triangles);
+    let mut app = close2gl::build_app(
+        &config,
+        Viewport {
+            width: 1280,
+            height: 720,
+        },
+    )
+    .expect("a sphere");
     let world = app.world_mut();
     let mesh = world.query::<&Mesh>().single(world).expect("mesh").clone();
     let camera = *world.query::<&Camera>().single(world).expect("camera");
@@ -20,7 +30,10 @@ fn scene(triangles: usize) -> (Mesh, Camera, Config) {
 }
 
 fn geometry_stage(c: &mut Criterion) {
-    let viewport = Viewport { width: 1280, height: 720 };
+    let viewport = Viewport {
+        width: 1280,
+        height: 720,
+    };
     let mut group = c.benchmark_group("close2gl");
     group.sample_size(20);
     for size in [8_000, 100_000, 1_000_000] {

@@ -7,7 +7,10 @@
 use close2gl::DefaultPlugins;
 use close2gl::config::Config;
 use close2gl::core::bevy_ecs::prelude::*;
-use close2gl::core::{App, CameraAction, CameraActions, Close2glFrame, ModelSource, Plugin, PostUpdate, PrimitiveKind, Update, Viewport};
+use close2gl::core::{
+    App, CameraAction, CameraActions, Close2glFrame, ModelSource, Plugin, PostUpdate,
+    PrimitiveKind, Update, Viewport,
+};
 
 /// Turns the camera around the look-at point by `step` radians a frame.
 struct Orbit {
@@ -21,17 +24,26 @@ impl Plugin for Orbit {
     fn build(&self, app: &mut App) {
         app.insert_resource(OrbitStep(self.step))
             .add_systems(Update, orbit)
-            .add_systems(PostUpdate, report.after(close2gl::pipeline::close2gl_system));
+            .add_systems(
+                PostUpdate,
+                report.after(close2gl::pipeline::close2gl_system),
+            );
     }
 }
 
 fn orbit(step: Res<OrbitStep>, mut actions: ResMut<CameraActions>) {
-    actions.0.push(CameraAction::Orbit { yaw: step.0, pitch: 0.0 });
+    actions.0.push(CameraAction::Orbit {
+        yaw: step.0,
+        pitch: 0.0,
+    });
 }
 
 fn report(frame: Res<Close2glFrame>) {
     let c = frame.counts;
-    println!("drawn {:5}  culled {:5}  clipped {:5}", c.drawn, c.culled, c.clipped);
+    println!(
+        "drawn {:5}  culled {:5}  clipped {:5}",
+        c.drawn, c.culled, c.clipped
+    );
 }
 
 fn main() -> Result<(), String> {
@@ -40,8 +52,16 @@ fn main() -> Result<(), String> {
         ..Config::default()
     };
     // build_app adds DefaultPlugins; adding them again is a no-op, shown here for the pattern.
-    let mut app = close2gl::build_app(&config, Viewport { width: 640, height: 480 })?;
-    app.add_plugins(DefaultPlugins).add_plugins(Orbit { step: std::f32::consts::TAU / 12.0 });
+    let mut app = close2gl::build_app(
+        &config,
+        Viewport {
+            width: 640,
+            height: 480,
+        },
+    )?;
+    app.add_plugins(DefaultPlugins).add_plugins(Orbit {
+        step: std::f32::consts::TAU / 12.0,
+    });
     for _ in 0..12 {
         app.update();
     }
