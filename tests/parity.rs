@@ -74,6 +74,19 @@ fn model_radius(app: &App) -> f32 {
     app.world().resource::<CameraSpeeds>().model_radius
 }
 
+/// The distances along the view direction of the model's nearest and farthest vertices.
+fn depth_range(app: &mut App) -> (f32, f32) {
+    let c = *camera(app);
+    let world = app.world_mut();
+    let mesh = world.query::<&Mesh>().single(world).expect("a mesh");
+    mesh.positions
+        .iter()
+        .map(|p| (*p - c.position).dot(-c.n))
+        .fold((f32::INFINITY, f32::NEG_INFINITY), |(lo, hi), d| {
+            (lo.min(d), hi.max(d))
+        })
+}
+
 /// A camera pose, applied to the framed camera.
 struct Pose {
     name: &'static str,
@@ -89,24 +102,23 @@ const POSES: &[Pose] = &[
         apply: |_| {},
     },
     Pose {
-        // The near plane through the front half of the model.
+        // The near plane 40 % of the way into the model's depth.
         name: "near_cut",
         cuts: true,
         apply: |app| {
-            let c = camera(app);
-            c.near = 0.8 * c.distance();
+            let (nearest, farthest) = depth_range(app);
+            camera(app).near = nearest + 0.4 * (farthest - nearest);
         },
     },
     Pose {
-        // The far plane through the front half of the model. (Not through its centre: there a
+        // The far plane 60 % of the way into the model's depth. (Not at its centre: there a
         // sphere's silhouette edges lie in the far plane, and whether a pixel on them survives
         // is rounding in both views.)
         name: "far_cut",
         cuts: true,
         apply: |app| {
-            let radius = model_radius(app);
-            let c = camera(app);
-            c.far = c.distance() - 0.5 * radius;
+            let (nearest, farthest) = depth_range(app);
+            camera(app).far = nearest + 0.6 * (farthest - nearest);
         },
     },
     Pose {
@@ -327,6 +339,20 @@ fn tiny_huge_and_far_away_models_agree() {
                 ],
             ),
             ("far_away", far.to_str().expect("a UTF-8 path"), &[]),
+        ],
+        all_but_cut_points,
+    );
+}
+
+#[test]
+fn the_bundled_models_agree_in_every_pose_front_face_and_mode() {
+    let asset = |name: &str| format!("{}/assets/{name}", env!("CARGO_MANIFEST_DIR"));
+    let (knot, cube, far) = (asset("knot.obj"), asset("cube.in"), asset("far_away.in"));
+    assert_scenes(
+        &[
+            ("knot", knot.as_str(), &[]),
+            ("cube", cube.as_str(), &[]),
+            ("far_away_in", far.as_str(), &[]),
         ],
         all_but_cut_points,
     );
