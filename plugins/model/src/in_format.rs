@@ -9,6 +9,8 @@ use crate::diagnostics::expected;
 use crate::mesh_builder::MeshBuilder;
 use crate::{LoadedModel, file_stem};
 
+const VERTEX_TAGS: [&str; 3] = ["v0", "v1", "v2"];
+
 /// Parses the text of a `.in` file; `label` names the file in messages and warnings.
 pub fn parse_in(text: &str, label: &str) -> Result<LoadedModel, String> {
     let mut records = Records::new(text, label);
@@ -23,10 +25,7 @@ pub fn parse_in(text: &str, label: &str) -> Result<LoadedModel, String> {
         materials.block(&mut records)?;
     }
     warnings.extend(materials.warnings(label));
-    let layout = VertexLayout {
-        texture: records.texture()?,
-        material_count,
-    };
+    let layout = VertexLayout::new(records.texture()?, material_count);
     records.skip_comment();
 
     let name = if name.is_empty() {
@@ -165,7 +164,7 @@ impl<'a> Records<'a> {
                 .text
                 .split_whitespace()
                 .next()
-                .is_some_and(|w| w.eq_ignore_ascii_case("v0"))
+                .is_some_and(|w| w.eq_ignore_ascii_case(VERTEX_TAGS[0]))
         {
             self.next();
         }
@@ -244,10 +243,27 @@ impl MaterialCheck {
 
 /// What each vertex record holds after its position and normal.
 struct VertexLayout {
-    /// `Some(true)` when `<s> <t>` follow, `None` when the file has no `Texture =` line (then
-    /// either form is accepted).
-    texture: Option<bool>,
+    /// How many numbers a vertex record has: 9 when `<s> <t>` follow (`Texture = YES`), 7 when
+    /// not; either when the file has no `Texture =` line.
+    counts: &'static [usize],
+    /// The expected form of the v0, v1 and v2 records, for errors.
+    forms: [String; 3],
     material_count: u64,
+}
+
+impl VertexLayout {
+    fn new(texture: Option<bool>, material_count: u64) -> Self {
+        let (counts, st): (&'static [usize], &str) = match texture {
+            Some(true) => (&[9], " s t"),
+            Some(false) => (&[7], ""),
+            None => (&[7, 9], ""),
+        };
+        Self {
+            counts,
+            forms: VERTEX_TAGS.map(|tag| format!("{tag} x y z nx ny nz material{st}")),
+            material_count,
+        }
+    }
 }
 
 /// One triangle as the file gives it: corners in file winding and the face normal.
@@ -259,16 +275,10 @@ struct FileTriangle {
 
 impl VertexLayout {
     fn triangle(&self, records: &mut Records) -> Result<FileTriangle, String> {
-        let (counts, st): (&[usize], &str) = match self.texture {
-            Some(true) => (&[9], " s t"),
-            Some(false) => (&[7], ""),
-            None => (&[7, 9], ""),
-        };
         let mut positions = [Vec3::ZERO; 3];
         let mut normals = [Vec3::ZERO; 3];
-        for (k, tag) in ["v0", "v1", "v2"].into_iter().enumerate() {
-            let what = format!("{tag} x y z nx ny nz material{st}");
-            let (record, v) = records.numbers(&[tag], counts, &what)?;
+        for (k, (tag, what)) in VERTEX_TAGS.iter().zip(&self.forms).enumerate() {
+            let (record, v) = records.numbers(&[tag], self.counts, what)?;
             let material = v[6];
             if material.fract() != 0.0
                 || material < 0.0
@@ -276,7 +286,7 @@ impl VertexLayout {
             {
                 return Err(format!(
                     "{} (the material index must be a whole number below the material count, {})",
-                    records.error(record, &what),
+                    records.error(record, what),
                     self.material_count
                 ));
             }
