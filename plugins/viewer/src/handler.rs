@@ -400,8 +400,6 @@ impl ApplicationHandler for Viewer {
         if !is_main && windows.window_mut(id).is_none() {
             return;
         }
-        // What the panel takes is not the camera's: the pointer over the panel, keys while a
-        // field has focus.
         if let WindowEvent::RedrawRequested = event {
             // Not for egui: it would ask for another redraw, forever.
             if is_main {
@@ -411,17 +409,20 @@ impl ApplicationHandler for Viewer {
             }
             return;
         }
-        let (panel_pointer, panel_keys) = if is_main {
+        // What the panel takes is not the camera's: the pointer over the panel, keys while a
+        // text field has focus. Other key presses never reach egui, which would otherwise move
+        // its focus on Tab and click the focused button on Space: those keys are the camera's.
+        let panel_keys = is_main && windows.gui.ctx.egui_wants_keyboard_input();
+        let camera_key = matches!(&event, WindowEvent::KeyboardInput { event, .. }
+            if event.state == ElementState::Pressed && !panel_keys);
+        let panel_pointer = if is_main && !camera_key {
             let response = windows.gui.on_event(&windows.main.window, &event);
             if response.repaint {
                 windows.main.window.request_redraw();
             }
-            (
-                response.consumed,
-                windows.gui.ctx.egui_wants_keyboard_input(),
-            )
+            response.consumed
         } else {
-            (false, false)
+            false
         };
         let world = self.app.world_mut();
         let mut redraw = true;
