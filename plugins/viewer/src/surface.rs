@@ -12,6 +12,8 @@ pub struct WindowSurface {
     surface: wgpu::Surface<'static>,
     config: wgpu::SurfaceConfiguration,
     depth: Option<wgpu::TextureView>,
+    /// The last texture was suboptimal: configure again before the next one.
+    stale: bool,
 }
 
 impl WindowSurface {
@@ -70,6 +72,7 @@ impl WindowSurface {
             surface,
             config,
             depth: None,
+            stale: false,
         };
         this.configure(gpu);
         Ok(this)
@@ -127,13 +130,16 @@ impl WindowSurface {
         if self.depth.is_none() {
             return Ok(None);
         }
+        if std::mem::take(&mut self.stale) {
+            self.configure(gpu);
+        }
         for _attempt in 0..2 {
             match self.surface.get_current_texture() {
                 wgpu::CurrentSurfaceTexture::Success(texture) => return Ok(Some(texture)),
                 wgpu::CurrentSurfaceTexture::Suboptimal(texture) => {
-                    // Give it back and take one that fits the window.
-                    drop(texture);
-                    self.configure(gpu);
+                    // Show it; the next frame gets a surface that fits the window again.
+                    self.stale = true;
+                    return Ok(Some(texture));
                 }
                 wgpu::CurrentSurfaceTexture::Timeout | wgpu::CurrentSurfaceTexture::Occluded => {
                     return Ok(None);
