@@ -616,3 +616,25 @@ fn to_background(value: &serde_json::Value) -> [u8; 3] {
         _ => panic!("report.json has no background colour: {value}"),
     }
 }
+
+/// The thresholds catch drift: one view rendered a degree of orbit away from the other fails the
+/// solid threshold by far, while the two views of one pose pass it.
+#[test]
+fn a_one_degree_drift_between_the_views_fails_the_threshold() {
+    let knot = format!("{}/assets/knot.obj", env!("CARGO_MANIFEST_DIR"));
+    let mut app = scene(&knot, &[], SIZE);
+    let before = render_offscreen(&mut app).expect("render");
+    app.world_mut()
+        .resource_mut::<close2gl::core::CameraActions>()
+        .0
+        .push(close2gl::core::CameraAction::Orbit {
+            yaw: 1f32.to_radians(),
+            pitch: 0.0,
+        });
+    let after = render_offscreen(&mut app).expect("render");
+    let bg = before.background;
+    let same = Comparison::of_images(&before.reference, &before.close2gl, bg);
+    let drifted = Comparison::of_images(&before.reference, &after.close2gl, bg);
+    assert!(same.coverage_agreement >= 0.999, "{same:?}");
+    assert!(drifted.coverage_agreement < 0.99, "{drifted:?}");
+}

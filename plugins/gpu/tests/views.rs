@@ -293,3 +293,50 @@ fn a_viewport_larger_than_the_adapter_allows_is_an_error_not_a_panic() {
     let error = render_offscreen(&mut app).expect_err("too large");
     assert!(error.contains(&format!("{}x8", max + 1)), "{error}");
 }
+
+/// A device without the polygon-mode features still draws every mode, and says what it draws
+/// instead.
+#[test]
+fn without_polygon_modes_the_views_say_what_they_draw_instead() {
+    let full = gpu();
+    let instance = full.instance.clone();
+    let adapter = pollster::block_on(instance.request_adapter(&Default::default()))
+        .expect("the adapter found before");
+    let (device, queue) = pollster::block_on(adapter.request_device(&Default::default()))
+        .expect("a device without optional features");
+    let bare = Gpu {
+        instance,
+        adapter,
+        device,
+        queue,
+    };
+    assert!(close2gl_gpu::Views::new(&full, close2gl_gpu::OFFSCREEN_FORMAT).limitations().is_none());
+    let limitations = close2gl_gpu::Views::new(&bare, close2gl_gpu::OFFSCREEN_FORMAT)
+        .limitations()
+        .expect("limitations named");
+    assert!(limitations.contains("POLYGON_MODE_LINE"), "{limitations}");
+    assert!(limitations.contains("POLYGON_MODE_POINT"), "{limitations}");
+    for mode in [RenderMode::Wireframe, RenderMode::Points] {
+        let mut app = App::new();
+        app.insert_resource(RenderSettings {
+            mode,
+            ..Default::default()
+        })
+        .insert_resource(SMALL)
+        .insert_resource(ModelStatus {
+            generation: 1,
+            ..Default::default()
+        })
+        .add_plugins(Close2glPlugin)
+        .add_plugins(OffscreenPlugin(bare.clone()));
+        app.world_mut()
+            .spawn(camera_at(Vec3::new(0.3, 0.5, 3.0), Vec3::ZERO));
+        app.world_mut().spawn(sphere(Vec3::ZERO, 1.0, 16, 32));
+        let snapshot = render_offscreen(&mut app).expect("render");
+        let covered = coverage(&snapshot.reference, snapshot.background)
+            .into_iter()
+            .filter(|c| *c)
+            .count();
+        assert!(covered > 100, "{mode:?}: the fallback drew {covered} pixels");
+    }
+}
