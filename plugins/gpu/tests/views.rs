@@ -310,7 +310,11 @@ fn without_polygon_modes_the_views_say_what_they_draw_instead() {
         device,
         queue,
     };
-    assert!(close2gl_gpu::Views::new(&full, close2gl_gpu::OFFSCREEN_FORMAT).limitations().is_none());
+    assert!(
+        close2gl_gpu::Views::new(&full, close2gl_gpu::OFFSCREEN_FORMAT)
+            .limitations()
+            .is_none()
+    );
     let limitations = close2gl_gpu::Views::new(&bare, close2gl_gpu::OFFSCREEN_FORMAT)
         .limitations()
         .expect("limitations named");
@@ -337,6 +341,9 @@ fn without_polygon_modes_the_views_say_what_they_draw_instead() {
             .into_iter()
             .filter(|c| *c)
             .count();
-        assert!(covered > 100, "{mode:?}: the fallback drew {covered} pixels");
+        assert!(
+            covered > 100,
+            "{mode:?}: the fallback drew {covered} pixels"
+        );
     }
 }
