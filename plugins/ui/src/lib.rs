@@ -16,7 +16,7 @@ use close2gl_core::{App, Plugin};
 
 pub use stats::{FrameTimer, ViewStats};
 
-/// Initial width of the side panel (the user may drag its edge), in points.
+/// Width of the side panel, its margins included, in points.
 pub const PANEL_WIDTH: f32 = 290.0;
 
 pub struct UiPlugin;
