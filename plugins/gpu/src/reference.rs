@@ -158,13 +158,15 @@ impl Reference {
         }
     }
 
-    /// Uploads the mesh when its generation is not the one on the GPU.
+    /// Uploads the mesh when its generation is not the one on the GPU and it is valid.
     pub(crate) fn upload_mesh(&mut self, device: &wgpu::Device, mesh: &Mesh, generation: u64) {
-        if self
+        // An invalid mesh never reaches the GPU (the model plugin refuses it too): the previous
+        // one stays.
+        let current = self
             .mesh
             .as_ref()
-            .is_some_and(|m| m.generation == generation)
-        {
+            .is_some_and(|m| m.generation == generation);
+        if current || mesh.validate().is_err() {
             return;
         }
         let vertices: Vec<Vertex> = mesh
