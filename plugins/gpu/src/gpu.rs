@@ -89,14 +89,13 @@ fn no_adapter(backends: wgpu::Backends) -> String {
     )
 }
 
-/// "vulkan|gl" for the flags set, in the order wgpu lists them.
+/// "vulkan|gl" for the native backends among the flags set.
 fn backend_names(backends: wgpu::Backends) -> String {
     let names: Vec<&str> = [
         (wgpu::Backends::VULKAN, "vulkan"),
         (wgpu::Backends::GL, "gl"),
         (wgpu::Backends::METAL, "metal"),
         (wgpu::Backends::DX12, "dx12"),
-        (wgpu::Backends::BROWSER_WEBGPU, "webgpu"),
     ]
     .into_iter()
     .filter(|(flag, _)| backends.contains(*flag))
