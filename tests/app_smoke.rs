@@ -30,7 +30,7 @@ impl Xvfb {
                     &format!(":{number}"),
                     "-screen",
                     "0",
-                    "1280x800x24",
+                    "1920x1080x24",
                     "-nolisten",
                     "tcp",
                 ])

@@ -13,15 +13,20 @@ use super::{Config, Layout};
 
 /// Sets `section.key` from a TOML value. `base` is the directory relative model paths start from.
 /// The error says what was expected, without the key (the caller adds file and key).
-pub fn set(config: &mut Config, section: &str, key: &str, value: &Value, base: &Path) -> Result<(), String> {
+pub fn set(
+    config: &mut Config,
+    section: &str,
+    key: &str,
+    value: &Value,
+    base: &Path,
+) -> Result<(), String> {
     let c = config;
     match (section, key) {
         ("model", "path") => c.model = ModelSource::File(base.join(string(value)?)),
         ("model", "primitive") => {
             let name = string(value)?;
-            let kind = PrimitiveKind::from_name(name).ok_or_else(|| {
-                one_of(PrimitiveKind::ALL.iter().map(|p| p.name()), name)
-            })?;
+            let kind = PrimitiveKind::from_name(name)
+                .ok_or_else(|| one_of(PrimitiveKind::ALL.iter().map(|p| p.name()), name))?;
             c.model = ModelSource::Primitive(kind);
         }
 
@@ -32,15 +37,25 @@ pub fn set(config: &mut Config, section: &str, key: &str, value: &Value, base: &
         ("camera", "vfov") => c.camera.vfov = fov(value)?,
         ("camera", "near") => c.camera.near = Some(positive(value)?),
         ("camera", "far") => c.camera.far = Some(positive(value)?),
-        ("camera", "mode") => c.camera.mode = named(value, CameraMode::ALL.iter().map(|m| (m.name(), *m)))?,
+        ("camera", "mode") => {
+            c.camera.mode = named(value, CameraMode::ALL.iter().map(|m| (m.name(), *m)))?
+        }
         ("camera", "move_speed") => c.camera.speeds.move_speed = positive(value)?,
         ("camera", "rotate_speed") => c.camera.speeds.rotate_speed = positive(value)?,
 
-        ("render", "mode") => c.render.mode = named(value, RenderMode::ALL.iter().map(|m| (m.name(), *m)))?,
-        ("render", "front_face") => c.render.front_face = named(value, FrontFace::ALL.iter().map(|m| (m.name(), *m)))?,
+        ("render", "mode") => {
+            c.render.mode = named(value, RenderMode::ALL.iter().map(|m| (m.name(), *m)))?
+        }
+        ("render", "front_face") => {
+            c.render.front_face = named(value, FrontFace::ALL.iter().map(|m| (m.name(), *m)))?
+        }
         ("render", "backface_culling") => c.render.backface_culling = boolean(value)?,
-        ("render", "clipping") => c.render.clipping = named(value, Clipping::ALL.iter().map(|m| (m.name(), *m)))?,
-        ("render", "shading") => c.render.shading = named(value, Shading::ALL.iter().map(|m| (m.name(), *m)))?,
+        ("render", "clipping") => {
+            c.render.clipping = named(value, Clipping::ALL.iter().map(|m| (m.name(), *m)))?
+        }
+        ("render", "shading") => {
+            c.render.shading = named(value, Shading::ALL.iter().map(|m| (m.name(), *m)))?
+        }
         ("render", "color") => c.render.color = color(value)?,
         ("render", "background") => c.render.background = color(value)?,
 
@@ -70,7 +85,12 @@ pub fn set(config: &mut Config, section: &str, key: &str, value: &Value, base: &
 
         ("window", "width") => c.window.width = pixels(value)?,
         ("window", "height") => c.window.height = pixels(value)?,
-        ("window", "layout") => c.window.layout = named(value, [("split", Layout::Split), ("windows", Layout::Windows)])?,
+        ("window", "layout") => {
+            c.window.layout = named(
+                value,
+                [("split", Layout::Split), ("windows", Layout::Windows)],
+            )?
+        }
 
         ("input", action) if c.input.0.contains_key(action) => {
             let key = string(value)?;
@@ -99,7 +119,11 @@ fn number(value: &Value) -> Result<f32, String> {
 
 fn in_range(value: &Value, ok: impl Fn(f32) -> bool, range: &str) -> Result<f32, String> {
     let x = number(value)?;
-    if ok(x) { Ok(x) } else { Err(format!("expected a number {range}, found {x}")) }
+    if ok(x) {
+        Ok(x)
+    } else {
+        Err(format!("expected a number {range}, found {x}"))
+    }
 }
 
 fn fov(value: &Value) -> Result<f32, String> {
@@ -151,7 +175,10 @@ fn one_of<'a>(names: impl Iterator<Item = &'a str>, found: &str) -> String {
     format!("expected one of {}, found \"{found}\"", names.join(", "))
 }
 
-fn named<T: Copy>(value: &Value, options: impl IntoIterator<Item = (&'static str, T)> + Clone) -> Result<T, String> {
+fn named<T: Copy>(
+    value: &Value,
+    options: impl IntoIterator<Item = (&'static str, T)> + Clone,
+) -> Result<T, String> {
     let text = string(value)?;
     options
         .clone()
@@ -161,9 +188,16 @@ fn named<T: Copy>(value: &Value, options: impl IntoIterator<Item = (&'static str
         .ok_or_else(|| one_of(options.into_iter().map(|(n, _)| n), text))
 }
 
-fn triple(value: &Value, item: impl Fn(&Value) -> Result<f32, String>, what: &str) -> Result<[f32; 3], String> {
+fn triple(
+    value: &Value,
+    item: impl Fn(&Value) -> Result<f32, String>,
+    what: &str,
+) -> Result<[f32; 3], String> {
     let wrong = || format!("expected {what}, found {value}");
-    let array = value.as_array().filter(|a| a.len() == 3).ok_or_else(wrong)?;
+    let array = value
+        .as_array()
+        .filter(|a| a.len() == 3)
+        .ok_or_else(wrong)?;
     let mut out = [0.0; 3];
     for (slot, v) in out.iter_mut().zip(array) {
         *slot = item(v).map_err(|e| format!("{} ({e})", wrong()))?;
@@ -180,7 +214,11 @@ fn positive_vec3(value: &Value) -> Result<Vec3, String> {
 }
 
 fn nonzero(v: Vec3) -> Result<Vec3, String> {
-    if v.length_squared() > 0.0 { Ok(v) } else { Err("expected a non-zero vector".into()) }
+    if v.length_squared() > 0.0 {
+        Ok(v)
+    } else {
+        Err("expected a non-zero vector".into())
+    }
 }
 
 fn color(value: &Value) -> Result<Vec3, String> {
@@ -189,5 +227,9 @@ fn color(value: &Value) -> Result<Vec3, String> {
 
 fn attenuation(value: &Value) -> Result<[f32; 3], String> {
     let a = triple(value, non_negative, "[c0, c1, c2], each >= 0")?;
-    if a.iter().any(|&c| c > 0.0) { Ok(a) } else { Err("expected [c0, c1, c2] not all zero".into()) }
+    if a.iter().any(|&c| c > 0.0) {
+        Ok(a)
+    } else {
+        Err("expected [c0, c1, c2] not all zero".into())
+    }
 }

@@ -27,7 +27,10 @@ fn apply_file(config: &mut Config, file: &Path) -> Result<(), String> {
     let name = file.display();
     let text = std::fs::read_to_string(file).map_err(|e| format!("{name}: cannot read: {e}"))?;
     let table: Table = text.parse().map_err(|e: toml::de::Error| {
-        let line = e.span().map(|s| text[..s.start].lines().count().max(1)).unwrap_or(1);
+        let line = e
+            .span()
+            .map(|s| text[..s.start].lines().count().max(1))
+            .unwrap_or(1);
         format!("{name}:{line}: {}", e.message())
     })?;
     let base = file.parent().unwrap_or(Path::new("."));
@@ -73,7 +76,9 @@ fn check(config: &Config) -> Result<(), String> {
             return Err("camera.target: expected a point other than camera.position".into());
         }
         if view.cross(pose.up).length_squared() == 0.0 {
-            return Err("camera.up: expected a direction not parallel to the view direction".into());
+            return Err(
+                "camera.up: expected a direction not parallel to the view direction".into(),
+            );
         }
     }
     Ok(())
@@ -85,5 +90,9 @@ pub fn parse_size(text: &str) -> Result<(u32, u32), String> {
     let (w, h) = text.split_once(['x', 'X']).ok_or_else(bad)?;
     let w: u32 = w.trim().parse().map_err(|_| bad())?;
     let h: u32 = h.trim().parse().map_err(|_| bad())?;
-    if (1..=16384).contains(&w) && (1..=16384).contains(&h) { Ok((w, h)) } else { Err(bad()) }
+    if (1..=16384).contains(&w) && (1..=16384).contains(&h) {
+        Ok((w, h))
+    } else {
+        Err(bad())
+    }
 }

@@ -8,8 +8,7 @@ use std::path::PathBuf;
 
 use close2gl_core::glam::Vec3;
 use close2gl_core::{
-    CameraMode, CameraSpeeds, InputBindings, Lighting, ModelSource, PrimitiveParams,
-    RenderSettings,
+    CameraMode, CameraSpeeds, InputBindings, Lighting, ModelSource, PrimitiveParams, RenderSettings,
 };
 
 pub use load::{load, parse_size};
@@ -83,9 +82,10 @@ impl Default for Config {
             render: RenderSettings::default(),
             lighting: Lighting::default(),
             primitives: PrimitiveParams::default(),
+            // Two square 700-pixel views beside the panel: with hfov = vfov nothing is stretched.
             window: WindowConfig {
-                width: 1280,
-                height: 720,
+                width: 1690,
+                height: 700,
                 layout: Layout::Split,
             },
             input: InputBindings::default(),

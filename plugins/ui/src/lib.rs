@@ -58,6 +58,25 @@ pub fn show(ui: &mut egui::Ui, world: &mut World) -> egui::Rect {
     views
 }
 
+/// Names the views in their top-left corners: the reference on the left of `area` and, when the
+/// two views share it (the split layout), Close2GL on the right.
+pub fn label_views(ui: &egui::Ui, area: egui::Rect, shared: bool) {
+    let mut labels = vec![(area.left_top(), "Reference (wgpu)")];
+    if shared {
+        labels.push((area.center_top(), "Close2GL"));
+    }
+    let painter = ui.painter();
+    for (corner, text) in labels {
+        painter.text(
+            corner + egui::vec2(10.0, 8.0),
+            egui::Align2::LEFT_TOP,
+            text,
+            egui::FontId::proportional(14.0),
+            ui.visuals().weak_text_color(),
+        );
+    }
+}
+
 fn sections(ui: &mut egui::Ui, world: &mut World) {
     egui::CollapsingHeader::new("Model")
         .default_open(true)

@@ -53,13 +53,14 @@ impl Gui {
         self.state.on_window_event(window, event)
     }
 
-    /// Runs the control panel over `world`.
-    pub fn run(&mut self, window: &Window, world: &mut World) -> GuiFrame {
+    /// Runs the control panel over `world`; `both_views` when this window shows both views.
+    pub fn run(&mut self, window: &Window, world: &mut World, both_views: bool) -> GuiFrame {
         let input = self.state.take_egui_input(window);
         let mut views_area = egui::Rect::NOTHING;
-        let output = self
-            .ctx
-            .run_ui(input, |ui| views_area = close2gl_ui::show(ui, world));
+        let output = self.ctx.run_ui(input, |ui| {
+            views_area = close2gl_ui::show(ui, world);
+            close2gl_ui::label_views(ui, views_area, both_views);
+        });
         self.state
             .handle_platform_output(window, output.platform_output);
         let repaint_delay = output

@@ -155,14 +155,17 @@ impl Viewer {
         };
         let now = Instant::now();
         let world = self.app.world_mut();
+        // The first frame of a hold has no previous moving frame to measure from: it counts as
+        // one nominal frame, so that a quick tap still moves the camera a little.
         world.resource_mut::<InputState>().dt = if self.moving {
             now.duration_since(self.last_frame).as_secs_f32()
         } else {
-            0.0
+            1.0 / 60.0
         };
         self.last_frame = now;
 
-        let mut gui_frame = windows.gui.run(&windows.main.window, world);
+        let both_views = windows.close2gl.is_none();
+        let mut gui_frame = windows.gui.run(&windows.main.window, world, both_views);
         windows.gui.upload_textures(&windows.gpu, &mut gui_frame);
         let (main_views, close2gl_views, viewport) = windows.layout(&gui_frame);
         if let Some(viewport) = viewport
