@@ -249,16 +249,23 @@ impl Windows {
             Some(close2gl) => {
                 let (w, h) = close2gl.size();
                 let own = PixelRect::whole(w, h);
-                let main = (!area.is_empty()).then_some(Placed {
+                // The reference view never grows past the Close2GL window's size, so the two
+                // views match even before (or without) the window manager honouring the resize.
+                let reference = PixelRect {
+                    width: area.width.min(w),
+                    height: area.height.min(h),
+                    ..area
+                };
+                let main = (!reference.is_empty()).then_some(Placed {
                     view: View::Reference,
-                    rect: area,
+                    rect: reference,
                 });
                 let other = (!own.is_empty()).then_some(Placed {
                     view: View::Close2gl,
                     rect: own,
                 });
-                // The Close2GL window sets the size; the reference view is kept the same size by
-                // resizing the windows together (see `resized`).
+                // The Close2GL window sets the size; the windows are also resized together (see
+                // `resized`).
                 let viewport = (!own.is_empty())
                     .then(|| own.size())
                     .or(main.map(|p| p.rect.size()));
