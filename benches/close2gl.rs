@@ -9,8 +9,10 @@ use close2gl::pipeline::FastPipeline;
 use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};
 
 fn scene(triangles: usize) -> (Mesh, Camera, Config) {
-    let mut config = Config::default();
-    config.model = ModelSource::Primitive(PrimitiveKind::Sphere);
+    let mut config = Config {
+        model: ModelSource::Primitive(PrimitiveKind::Sphere),
+        ..Config::default()
+    };
     (
         config.primitives.sphere_stacks,
         config.primitives.sphere_slices,
