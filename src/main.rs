@@ -6,7 +6,11 @@ use clap::{Parser, Subcommand};
 use close2gl::commands::{self, bench, render, run, stats};
 
 #[derive(Parser)]
-#[command(name = "close2gl", version, about = "The geometry half of the OpenGL pipeline, done by hand and shown beside the GPU's.")]
+#[command(
+    name = "close2gl",
+    version,
+    about = "The geometry half of the OpenGL pipeline, done by hand and shown beside the GPU's."
+)]
 struct Cli {
     #[command(subcommand)]
     command: Option<Command>,

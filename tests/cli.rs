@@ -16,7 +16,11 @@ fn close2gl(args: &[&str]) -> Output {
 
 fn stats(args: &[&str]) -> Value {
     let out = close2gl(&[&["stats"], args].concat());
-    assert!(out.status.success(), "stats {args:?}: {}", String::from_utf8_lossy(&out.stderr));
+    assert!(
+        out.status.success(),
+        "stats {args:?}: {}",
+        String::from_utf8_lossy(&out.stderr)
+    );
     serde_json::from_slice(&out.stdout).expect("one JSON object")
 }
 
@@ -28,21 +32,33 @@ fn temp(name: &str) -> PathBuf {
 
 #[test]
 fn stats_counts_a_box_seen_from_a_corner() {
-    let s = stats(&["box", "--size", "400x300", "--set", "camera.position=[3, 2, 4]"]);
+    let s = stats(&[
+        "box",
+        "--size",
+        "400x300",
+        "--set",
+        "camera.position=[3, 2, 4]",
+    ]);
     assert_eq!(s["triangles_in"], 12);
     assert_eq!(s["clipped"], 0);
     assert_eq!(s["culled"], 6);
     assert_eq!(s["drawn"], 6);
     assert_eq!(s["output_primitives"], 6);
     let b: Vec<f64> = serde_json::from_value(s["bounds_px"].clone()).expect("bounds");
-    assert!(b[0] > 0.0 && b[1] > 0.0 && b[2] < 400.0 && b[3] < 300.0 && b[0] < b[2] && b[1] < b[3], "{b:?}");
+    assert!(
+        b[0] > 0.0 && b[1] > 0.0 && b[2] < 400.0 && b[3] < 300.0 && b[0] < b[2] && b[1] < b[3],
+        "{b:?}"
+    );
 }
 
 #[test]
 fn culling_off_draws_every_triangle_and_cw_draws_the_back() {
     let pose = ["box", "--set", "camera.position=[3, 2, 4]"];
     let off = stats(&[&pose[..], &["--set", "render.backface_culling=false"]].concat());
-    assert_eq!((off["drawn"].as_u64(), off["culled"].as_u64()), (Some(12), Some(0)));
+    assert_eq!(
+        (off["drawn"].as_u64(), off["culled"].as_u64()),
+        (Some(12), Some(0))
+    );
     let cw = stats(&[&pose[..], &["--set", "render.front_face=cw"]].concat());
     assert_eq!(cw["drawn"], 6);
 }
@@ -50,31 +66,76 @@ fn culling_off_draws_every_triangle_and_cw_draws_the_back() {
 #[test]
 fn simple_clipping_drops_what_full_clipping_cuts() {
     // A camera inside the sphere: every triangle near the view's borders is cut.
-    let pose = ["sphere", "--set", "camera.position=[0, 0, 0.5]", "--set", "camera.target=[0, 0, -1]", "--set", "render.backface_culling=false"];
+    let pose = [
+        "sphere",
+        "--set",
+        "camera.position=[0, 0, 0.5]",
+        "--set",
+        "camera.target=[0, 0, -1]",
+        "--set",
+        "render.backface_culling=false",
+    ];
     let full = stats(&[&pose[..], &["--set", "render.clipping=full"]].concat());
     let simple = stats(&[&pose[..], &["--set", "render.clipping=simple"]].concat());
-    assert!(simple["clipped"].as_u64() > full["clipped"].as_u64(), "{simple} vs {full}");
-    assert!(full["output_primitives"].as_u64() > full["drawn"].as_u64(), "cut triangles become several: {full}");
+    assert!(
+        simple["clipped"].as_u64() > full["clipped"].as_u64(),
+        "{simple} vs {full}"
+    );
+    assert!(
+        full["output_primitives"].as_u64() > full["drawn"].as_u64(),
+        "cut triangles become several: {full}"
+    );
 }
 
 #[test]
 fn points_and_wireframe_count_their_primitives() {
-    let points = stats(&["box", "--set", "camera.position=[3, 2, 4]", "--set", "render.mode=points"]);
+    let points = stats(&[
+        "box",
+        "--set",
+        "camera.position=[3, 2, 4]",
+        "--set",
+        "render.mode=points",
+    ]);
     assert_eq!(points["output_primitives"], 18);
-    let lines = stats(&["box", "--set", "camera.position=[3, 2, 4]", "--set", "render.mode=wireframe"]);
+    let lines = stats(&[
+        "box",
+        "--set",
+        "camera.position=[3, 2, 4]",
+        "--set",
+        "render.mode=wireframe",
+    ]);
     assert_eq!(lines["output_primitives"], 18);
 }
 
 #[test]
 fn dump_writes_the_2d_buffer() {
     let json = temp("buffer.json");
-    stats(&["box", "--set", "camera.position=[3, 2, 4]", "--dump", json.to_str().expect("utf-8")]);
-    let dumped: Value = serde_json::from_str(&std::fs::read_to_string(&json).expect("written")).expect("JSON");
+    stats(&[
+        "box",
+        "--set",
+        "camera.position=[3, 2, 4]",
+        "--dump",
+        json.to_str().expect("utf-8"),
+    ]);
+    let dumped: Value =
+        serde_json::from_str(&std::fs::read_to_string(&json).expect("written")).expect("JSON");
     assert_eq!(dumped["topology"], "triangles");
     assert_eq!(dumped["vertices"].as_array().map(Vec::len), Some(18));
     let csv = temp("buffer.csv");
-    stats(&["box", "--set", "camera.position=[3, 2, 4]", "--dump", csv.to_str().expect("utf-8")]);
-    assert_eq!(std::fs::read_to_string(&csv).expect("written").lines().count(), 19);
+    stats(&[
+        "box",
+        "--set",
+        "camera.position=[3, 2, 4]",
+        "--dump",
+        csv.to_str().expect("utf-8"),
+    ]);
+    assert_eq!(
+        std::fs::read_to_string(&csv)
+            .expect("written")
+            .lines()
+            .count(),
+        19
+    );
 }
 
 #[test]
@@ -83,9 +144,15 @@ fn bad_input_is_one_line_and_exit_code_2() {
     std::fs::write(&bad_model, "Object name = X\n# triangles = 1\nMaterial count = 1\nambient color 0 0 0\ndiffuse color 1 1 1\nspecular color 0 0 0\nmaterial shine 0\n-- cols\nv0 1.0 abc 0 0 0 1 0\n").expect("write");
     for (args, expected) in [
         (vec!["stats", "--set", "camera.hfov=200"], "camera.hfov"),
-        (vec!["stats", "--set", "render.colour=[1,1,1]"], "render.colour: unknown key"),
+        (
+            vec!["stats", "--set", "render.colour=[1,1,1]"],
+            "render.colour: unknown key",
+        ),
         (vec!["stats", "no/such/model.obj"], "no/such/model.obj"),
-        (vec!["stats", bad_model.to_str().expect("utf-8")], "bad.in:9:"),
+        (
+            vec!["stats", bad_model.to_str().expect("utf-8")],
+            "bad.in:9:",
+        ),
         (vec!["stats", "--size", "0x10"], "--size 0x10"),
         (vec!["stats", "model.stl"], "model.stl"),
     ] {

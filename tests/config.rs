@@ -8,7 +8,13 @@ use close2gl::core::{CameraMode, ModelSource, PrimitiveKind, RenderMode};
 
 fn with(overrides: &[&str]) -> Result<Config, String> {
     let overrides: Vec<String> = overrides.iter().map(|s| s.to_string()).collect();
-    load(Some(Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/config.toml"))), &overrides)
+    load(
+        Some(Path::new(concat!(
+            env!("CARGO_MANIFEST_DIR"),
+            "/config.toml"
+        ))),
+        &overrides,
+    )
 }
 
 #[test]
@@ -19,36 +25,74 @@ fn the_documented_config_is_the_default() {
 
 #[test]
 fn overrides_apply_in_order_and_bare_words_are_strings() {
-    let c = with(&["render.mode=points", "render.mode=wireframe", "camera.mode=look_at", "camera.hfov=45", "model.primitive=torus"])
-        .expect("valid overrides");
+    let c = with(&[
+        "render.mode=points",
+        "render.mode=wireframe",
+        "camera.mode=look_at",
+        "camera.hfov=45",
+        "model.primitive=torus",
+    ])
+    .expect("valid overrides");
     assert_eq!(c.render.mode, RenderMode::Wireframe);
     assert_eq!(c.camera.mode, CameraMode::LookAt);
     assert_eq!(c.camera.hfov, 45.0);
     assert_eq!(c.model, ModelSource::Primitive(PrimitiveKind::Torus));
-    let c = with(&["camera.position=[1, 2, 3]", "camera.near=0.5", "camera.far=9"]).expect("a pose");
-    assert_eq!(c.camera.pose().map(|p| p.position.to_array()), Some([1.0, 2.0, 3.0]));
+    let c = with(&[
+        "camera.position=[1, 2, 3]",
+        "camera.near=0.5",
+        "camera.far=9",
+    ])
+    .expect("a pose");
+    assert_eq!(
+        c.camera.pose().map(|p| p.position.to_array()),
+        Some([1.0, 2.0, 3.0])
+    );
 }
 
 #[test]
 fn bad_values_name_the_key_and_the_allowed_range() {
     for (set, expected) in [
-        ("camera.hfov=180", "camera.hfov: expected a number of degrees in (0, 180), found 180"),
-        ("camera.vfov=0", "camera.vfov: expected a number of degrees in (0, 180)"),
+        (
+            "camera.hfov=180",
+            "camera.hfov: expected a number of degrees in (0, 180), found 180",
+        ),
+        (
+            "camera.vfov=0",
+            "camera.vfov: expected a number of degrees in (0, 180)",
+        ),
         ("camera.near=-1", "camera.near: expected a number > 0"),
-        ("render.color=[1, 2, 0]", "render.color: expected [r, g, b], each in 0..1"),
-        ("render.mode=shaded", "render.mode: expected one of \"points\", \"wireframe\", \"solid\", found \"shaded\""),
-        ("render.backface_culling=yes", "render.backface_culling: expected true or false, found string"),
-        ("camera.hfov=wide", "camera.hfov: expected a number, found string"),
+        (
+            "render.color=[1, 2, 0]",
+            "render.color: expected [r, g, b], each in 0..1",
+        ),
+        (
+            "render.mode=shaded",
+            "render.mode: expected one of \"points\", \"wireframe\", \"solid\", found \"shaded\"",
+        ),
+        (
+            "render.backface_culling=yes",
+            "render.backface_culling: expected true or false, found string",
+        ),
+        (
+            "camera.hfov=wide",
+            "camera.hfov: expected a number, found string",
+        ),
         ("camera.zoom=2", "camera.zoom: unknown key"),
         ("nosection=1", "expected section.key=value"),
-        ("window.width=0", "window.width: expected an integer in 1..=16384, found 0"),
+        (
+            "window.width=0",
+            "window.width: expected an integer in 1..=16384, found 0",
+        ),
     ] {
         let error = with(&[set]).expect_err(set);
         assert!(error.contains(expected), "{set}: {error}");
         assert!(!error.contains('\n'), "one line: {error}");
     }
     let error = with(&["camera.near=5", "camera.far=1"]).expect_err("near >= far");
-    assert!(error.contains("camera.near") && error.contains("camera.far"), "{error}");
+    assert!(
+        error.contains("camera.near") && error.contains("camera.far"),
+        "{error}"
+    );
 }
 
 #[test]
@@ -58,7 +102,10 @@ fn a_bad_file_names_the_file_and_line() {
     let file = dir.join("bad.toml");
     for (text, expected) in [
         ("[camera]\nhfov = 60\nvfov = = 3\n", "bad.toml:3:"),
-        ("[render]\nmode = \"solid\"\nsparkle = true\n", "bad.toml: render.sparkle: unknown key"),
+        (
+            "[render]\nmode = \"solid\"\nsparkle = true\n",
+            "bad.toml: render.sparkle: unknown key",
+        ),
         ("[teapot]\nx = 1\n", "bad.toml: teapot.x: unknown key"),
     ] {
         std::fs::write(&file, text).expect("write");

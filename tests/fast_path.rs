@@ -2,12 +2,24 @@
 //! primitives, framed and from poses where the near plane and the view's sides cut the model.
 
 use close2gl::config::Config;
-use close2gl::core::{Camera, Clipping, ModelSource, Close2glFrame, Mesh, RenderMode, RenderSettings, Viewport};
+use close2gl::core::{
+    Camera, Clipping, Close2glFrame, Mesh, ModelSource, RenderMode, RenderSettings, Viewport,
+};
 use close2gl::pipeline::{FastPipeline, textbook};
 
 fn scene(model: &str) -> (Mesh, Camera) {
-    let config = Config { model: ModelSource::parse(model), ..Config::default() };
-    let mut app = close2gl::build_app(&config, Viewport { width: 320, height: 240 }).expect(model);
+    let config = Config {
+        model: ModelSource::parse(model),
+        ..Config::default()
+    };
+    let mut app = close2gl::build_app(
+        &config,
+        Viewport {
+            width: 320,
+            height: 240,
+        },
+    )
+    .expect(model);
     let world = app.world_mut();
     let mesh = world.query::<&Mesh>().single(world).expect("mesh").clone();
     let camera = *world.query::<&Camera>().single(world).expect("camera");
@@ -16,25 +28,52 @@ fn scene(model: &str) -> (Mesh, Camera) {
 
 #[test]
 fn the_fast_path_equals_the_textbook_path_on_real_meshes() {
-    let models = ["assets/knot.obj", "assets/cube.in", "assets/far_away.in", "sphere", "torus", "cone", "cylinder", "box"];
+    let models = [
+        "assets/knot.obj",
+        "assets/cube.in",
+        "assets/far_away.in",
+        "sphere",
+        "torus",
+        "cone",
+        "cylinder",
+        "box",
+    ];
     for model in models {
         let source = match model.contains('/') {
             true => format!("{}/{model}", env!("CARGO_MANIFEST_DIR")),
             false => model.to_string(),
         };
         let (mesh, framed) = scene(&source);
-        let close_up = Camera { position: framed.target + framed.n * framed.distance() * 0.3, ..framed };
-        let inside = Camera { position: framed.target, near: framed.near * 0.01, ..framed };
+        let close_up = Camera {
+            position: framed.target + framed.n * framed.distance() * 0.3,
+            ..framed
+        };
+        let inside = Camera {
+            position: framed.target,
+            near: framed.near * 0.01,
+            ..framed
+        };
         let mut clipped_somewhere = false;
         for camera in [framed, close_up, inside] {
             for mode in [RenderMode::Solid, RenderMode::Wireframe, RenderMode::Points] {
                 for clipping in [Clipping::Full, Clipping::Simple] {
-                    let settings = RenderSettings { mode, clipping, ..RenderSettings::default() };
-                    let viewport = Viewport { width: 640, height: 360 };
+                    let settings = RenderSettings {
+                        mode,
+                        clipping,
+                        ..RenderSettings::default()
+                    };
+                    let viewport = Viewport {
+                        width: 640,
+                        height: 360,
+                    };
                     let (mut slow, mut fast) = (Close2glFrame::default(), Close2glFrame::default());
                     textbook::run(&mesh, &camera, &settings, viewport, &mut slow);
                     FastPipeline::default().run(&mesh, &camera, &settings, viewport, &mut fast);
-                    assert_eq!(slow, fast, "{model} {mode:?} {clipping:?} from {:?}", camera.position);
+                    assert_eq!(
+                        slow, fast,
+                        "{model} {mode:?} {clipping:?} from {:?}",
+                        camera.position
+                    );
                     clipped_somewhere |= slow.counts.clipped > 0;
                 }
             }

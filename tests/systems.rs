@@ -13,17 +13,41 @@ use close2gl::pipeline::Close2glPlugin;
 /// A closed 2-unit cube centred on the origin, every face counter-clockwise seen from outside.
 fn cube() -> Mesh {
     let positions: Vec<Vec3> = (0..8)
-        .map(|i| Vec3::new([-1.0, 1.0][i & 1], [-1.0, 1.0][(i >> 1) & 1], [-1.0, 1.0][i >> 2]))
+        .map(|i| {
+            Vec3::new(
+                [-1.0, 1.0][i & 1],
+                [-1.0, 1.0][(i >> 1) & 1],
+                [-1.0, 1.0][i >> 2],
+            )
+        })
         .collect();
-    let quads = [[0, 2, 3, 1], [4, 5, 7, 6], [0, 1, 5, 4], [2, 6, 7, 3], [0, 4, 6, 2], [1, 3, 7, 5]];
-    let triangles = quads.iter().flat_map(|[a, b, c, d]| [[*a, *b, *c], [*a, *c, *d]]).collect();
-    Mesh { name: "cube".into(), normals: positions.clone(), positions, triangles }
+    let quads = [
+        [0, 2, 3, 1],
+        [4, 5, 7, 6],
+        [0, 1, 5, 4],
+        [2, 6, 7, 3],
+        [0, 4, 6, 2],
+        [1, 3, 7, 5],
+    ];
+    let triangles = quads
+        .iter()
+        .flat_map(|[a, b, c, d]| [[*a, *b, *c], [*a, *c, *d]])
+        .collect();
+    Mesh {
+        name: "cube".into(),
+        normals: positions.clone(),
+        positions,
+        triangles,
+    }
 }
 
 fn app_with(mesh: Mesh, settings: RenderSettings) -> App {
     let mut app = App::new();
     app.insert_resource(settings)
-        .insert_resource(Viewport { width: 640, height: 480 })
+        .insert_resource(Viewport {
+            width: 640,
+            height: 480,
+        })
         .add_plugins(InputPlugin)
         .add_plugins(CameraPlugin)
         .add_plugins(Close2glPlugin);
@@ -34,7 +58,10 @@ fn app_with(mesh: Mesh, settings: RenderSettings) -> App {
 }
 
 fn camera(app: &mut App) -> Camera {
-    *app.world_mut().query::<&Camera>().single(app.world()).expect("one camera")
+    *app.world_mut()
+        .query::<&Camera>()
+        .single(app.world())
+        .expect("one camera")
 }
 
 fn frame(app: &App) -> &Close2glFrame {
@@ -53,7 +80,10 @@ fn hold(app: &mut App, keys: &[&str], dt: f32) {
 }
 
 fn press(app: &mut App, key: &str) {
-    app.world_mut().resource_mut::<InputState>().pressed.push(key.into());
+    app.world_mut()
+        .resource_mut::<InputState>()
+        .pressed
+        .push(key.into());
     app.update();
     app.world_mut().resource_mut::<InputState>().end_frame();
 }
@@ -94,10 +124,17 @@ fn after_a_yaw_w_follows_the_new_n() {
     app.world_mut().resource_mut::<InputState>().end_frame();
     let turned = camera(&mut app);
     assert!(!close(turned.n, Vec3::Z), "the drag turned the camera");
-    assert!((turned.u.dot(turned.n)).abs() < 1e-5 && (turned.u.cross(turned.v) - turned.n).length() < 1e-5);
+    assert!(
+        (turned.u.dot(turned.n)).abs() < 1e-5
+            && (turned.u.cross(turned.v) - turned.n).length() < 1e-5
+    );
     hold(&mut app, &["w"], 0.05);
     let moved = camera(&mut app).position - turned.position;
-    assert!(close(moved.normalize(), -turned.n), "moved along {moved}, n = {}", turned.n);
+    assert!(
+        close(moved.normalize(), -turned.n),
+        "moved along {moved}, n = {}",
+        turned.n
+    );
 }
 
 #[test]
@@ -109,26 +146,43 @@ fn orbiting_keeps_the_look_at_point_and_the_distance() {
     for keys in [["d"], ["r"], ["a"], ["f"]] {
         hold(&mut app, &keys, 0.05);
     }
-    app.world_mut().resource_mut::<CameraActions>().0.push(CameraAction::Orbit { yaw: 0.7, pitch: -0.3 });
+    app.world_mut()
+        .resource_mut::<CameraActions>()
+        .0
+        .push(CameraAction::Orbit {
+            yaw: 0.7,
+            pitch: -0.3,
+        });
     app.update();
     let end = camera(&mut app);
     assert!(!close(end.position, start.position));
     assert_eq!(end.target, start.target);
     assert!((end.distance() - start.distance()).abs() < 1e-4 * start.distance());
-    assert!(close(end.n, (end.position - end.target).normalize()), "still looking at the target");
+    assert!(
+        close(end.n, (end.position - end.target).normalize()),
+        "still looking at the target"
+    );
 }
 
 #[test]
 fn reset_returns_to_the_framed_pose() {
     let mut app = app_with(cube(), RenderSettings::default());
-    let home = app.world_mut().query::<&CameraHome>().single(app.world()).expect("framed").0;
+    let home = app
+        .world_mut()
+        .query::<&CameraHome>()
+        .single(app.world())
+        .expect("framed")
+        .0;
     hold(&mut app, &["w", "d", "z"], 0.05);
     app.world_mut().resource_mut::<InputState>().drag = Vec2::new(-40.0, 25.0);
     app.update();
     assert_ne!(camera(&mut app).position, home.position);
     press(&mut app, "space");
     let c = camera(&mut app);
-    assert_eq!((c.position, c.u, c.v, c.n, c.target), (home.position, home.u, home.v, home.n, home.target));
+    assert_eq!(
+        (c.position, c.u, c.v, c.n, c.target),
+        (home.position, home.u, home.v, home.n, home.target)
+    );
 }
 
 #[test]
@@ -158,11 +212,19 @@ fn cw_and_ccw_partition_a_closed_cube() {
     let pose = |app: &mut App| {
         let mut q = app.world_mut().query::<&mut Camera>();
         let mut c = q.single_mut(app.world_mut()).expect("camera");
-        *c = c.looking_at(Vec3::new(3.0, 2.5, 4.0), Vec3::ZERO, Vec3::Y).expect("pose");
+        *c = c
+            .looking_at(Vec3::new(3.0, 2.5, 4.0), Vec3::ZERO, Vec3::Y)
+            .expect("pose");
     };
     let mut drawn = Vec::new();
     for front_face in [FrontFace::Ccw, FrontFace::Cw] {
-        let mut app = app_with(cube(), RenderSettings { front_face, ..RenderSettings::default() });
+        let mut app = app_with(
+            cube(),
+            RenderSettings {
+                front_face,
+                ..RenderSettings::default()
+            },
+        );
         pose(&mut app);
         app.update();
         let counts = frame(&app).counts;
@@ -170,21 +232,37 @@ fn cw_and_ccw_partition_a_closed_cube() {
         assert_eq!(counts.drawn + counts.culled, 12);
         drawn.push(counts.drawn);
     }
-    assert_eq!(drawn, [6, 6], "three faces face the camera, three face away");
+    assert_eq!(
+        drawn,
+        [6, 6],
+        "three faces face the camera, three face away"
+    );
 }
 
 /// One triangle crossing the near plane: two corners in front of the camera, one behind it.
 fn triangle_through_the_near_plane(clipping: Clipping) -> Close2glFrame {
     let mesh = Mesh {
         name: "one".into(),
-        positions: vec![Vec3::new(-0.3, -0.3, -2.0), Vec3::new(0.3, -0.3, -2.0), Vec3::new(0.0, 0.1, 5.0)],
+        positions: vec![
+            Vec3::new(-0.3, -0.3, -2.0),
+            Vec3::new(0.3, -0.3, -2.0),
+            Vec3::new(0.0, 0.1, 5.0),
+        ],
         normals: vec![Vec3::Y; 3],
         triangles: vec![[0, 1, 2]],
     };
-    let settings = RenderSettings { clipping, backface_culling: false, ..RenderSettings::default() };
+    let settings = RenderSettings {
+        clipping,
+        backface_culling: false,
+        ..RenderSettings::default()
+    };
     let mut app = app_with(mesh, settings);
     let mut q = app.world_mut().query::<&mut Camera>();
-    *q.single_mut(app.world_mut()).expect("camera") = Camera { near: 0.5, far: 50.0, ..Camera::default() };
+    *q.single_mut(app.world_mut()).expect("camera") = Camera {
+        near: 0.5,
+        far: 50.0,
+        ..Camera::default()
+    };
     app.update();
     frame(&app).clone()
 }
@@ -198,7 +276,10 @@ fn the_near_plane_cuts_a_triangle_in_full_mode_and_drops_it_in_simple_mode() {
     assert_eq!(full.counts.output_primitives, 2);
     assert_eq!(full.vertices.len(), 6);
     for [x, y] in &full.vertices {
-        assert!((0.0..=640.0).contains(x) && (0.0..=480.0).contains(y), "({x}, {y})");
+        assert!(
+            (0.0..=640.0).contains(x) && (0.0..=480.0).contains(y),
+            "({x}, {y})"
+        );
     }
     let simple = triangle_through_the_near_plane(Clipping::Simple);
     assert_eq!((simple.counts.clipped, simple.counts.drawn), (1, 0));
@@ -209,7 +290,10 @@ fn the_near_plane_cuts_a_triangle_in_full_mode_and_drops_it_in_simple_mode() {
 fn a_resize_changes_the_viewport_mapping() {
     let mut app = app_with(cube(), RenderSettings::default());
     let big = frame(&app).bounds_px().expect("drawn");
-    *app.world_mut().resource_mut::<Viewport>() = Viewport { width: 320, height: 240 };
+    *app.world_mut().resource_mut::<Viewport>() = Viewport {
+        width: 320,
+        height: 240,
+    };
     app.update();
     let small = frame(&app).bounds_px().expect("drawn");
     for (b, s) in big.iter().zip(&small) {
@@ -219,8 +303,18 @@ fn a_resize_changes_the_viewport_mapping() {
 
 #[test]
 fn each_mode_emits_its_primitives() {
-    for (mode, per_triangle) in [(RenderMode::Solid, 3), (RenderMode::Wireframe, 6), (RenderMode::Points, 3)] {
-        let app = app_with(cube(), RenderSettings { mode, ..RenderSettings::default() });
+    for (mode, per_triangle) in [
+        (RenderMode::Solid, 3),
+        (RenderMode::Wireframe, 6),
+        (RenderMode::Points, 3),
+    ] {
+        let app = app_with(
+            cube(),
+            RenderSettings {
+                mode,
+                ..RenderSettings::default()
+            },
+        );
         let f = frame(&app);
         assert_eq!(f.vertices.len(), f.counts.drawn * per_triangle, "{mode:?}");
     }

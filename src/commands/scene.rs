@@ -22,7 +22,8 @@ pub struct SceneArgs {
 impl SceneArgs {
     /// The configuration with the overrides and the MODEL argument applied.
     pub fn config(&self) -> Result<Config, CliError> {
-        let mut config = config::load(self.config.as_deref(), &self.set).map_err(CliError::Input)?;
+        let mut config =
+            config::load(self.config.as_deref(), &self.set).map_err(CliError::Input)?;
         if let Some(model) = &self.model {
             config.model = ModelSource::parse(model);
         }

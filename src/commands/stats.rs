@@ -41,7 +41,10 @@ pub fn run(args: StatsArgs) -> Result<(), CliError> {
 
 /// The 2D buffer as JSON (when the file ends in .json) or as CSV, one vertex a line.
 fn dump(frame: &Close2glFrame, path: &Path) -> std::io::Result<()> {
-    let text = if path.extension().is_some_and(|e| e.eq_ignore_ascii_case("json")) {
+    let text = if path
+        .extension()
+        .is_some_and(|e| e.eq_ignore_ascii_case("json"))
+    {
         json!({
             "topology": frame.topology,
             "viewport": [frame.viewport.width, frame.viewport.height],

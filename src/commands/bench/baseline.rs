@@ -9,7 +9,12 @@ use close2gl_core::{Camera, FrontFace, Mesh, RenderSettings, Viewport};
 use close2gl_pipeline::matrices::{projection_modelview, viewport as viewport_matrix};
 
 /// One frame; returns the window positions as a flat `[x0, y0, x1, y1, ...]` array.
-pub fn frame(mesh: &Mesh, camera: &Camera, settings: &RenderSettings, viewport: Viewport) -> Vec<f32> {
+pub fn frame(
+    mesh: &Mesh,
+    camera: &Camera,
+    settings: &RenderSettings,
+    viewport: Viewport,
+) -> Vec<f32> {
     let triangles: Vec<[Vec3; 3]> = mesh
         .triangles
         .iter()
@@ -24,7 +29,10 @@ pub fn frame(mesh: &Mesh, camera: &Camera, settings: &RenderSettings, viewport: 
 
     let clipped: Vec<[Vec4; 3]> = transformed
         .into_iter()
-        .filter(|t| t.iter().all(|p| p.w > 0.0 && p.x.abs() <= p.w && p.y.abs() <= p.w && p.z.abs() <= p.w))
+        .filter(|t| {
+            t.iter()
+                .all(|p| p.w > 0.0 && p.x.abs() <= p.w && p.y.abs() <= p.w && p.z.abs() <= p.w)
+        })
         .collect();
 
     let divided: Vec<[Vec3; 3]> = clipped

@@ -6,7 +6,9 @@ pub mod baseline;
 
 use std::time::Instant;
 
-use close2gl_core::{Camera, Clipping, Close2glFrame, Mesh, ModelSource, PrimitiveKind, RenderMode};
+use close2gl_core::{
+    Camera, Clipping, Close2glFrame, Mesh, ModelSource, PrimitiveKind, RenderMode,
+};
 use close2gl_pipeline::FastPipeline;
 use serde_json::json;
 
@@ -33,12 +35,17 @@ pub struct BenchArgs {
 
 pub fn run(args: BenchArgs) -> Result<(), CliError> {
     if args.frames == 0 || args.triangles == 0 {
-        return Err(CliError::Input("bench: --frames and --triangles must be at least 1".into()));
+        return Err(CliError::Input(
+            "bench: --frames and --triangles must be at least 1".into(),
+        ));
     }
     let mut config = args.scene.config()?;
     if args.scene.model.is_none() {
         config.model = ModelSource::Primitive(PrimitiveKind::Sphere);
-        (config.primitives.sphere_stacks, config.primitives.sphere_slices) = sphere_grid(args.triangles);
+        (
+            config.primitives.sphere_stacks,
+            config.primitives.sphere_slices,
+        ) = sphere_grid(args.triangles);
     }
     // The stage the issue measures: solid triangles through full clipping.
     config.render.mode = RenderMode::Solid;
@@ -49,11 +56,16 @@ pub fn run(args: BenchArgs) -> Result<(), CliError> {
     let (mut meshes, mut cameras) = (world.query::<&Mesh>(), world.query::<&Camera>());
     let world = &*world;
     let (Ok(mesh), Ok(camera)) = (meshes.single(world), cameras.single(world)) else {
-        return Err(CliError::Runtime("bench: the scene has no mesh or camera".into()));
+        return Err(CliError::Runtime(
+            "bench: the scene has no mesh or camera".into(),
+        ));
     };
     let settings = config.render;
 
-    let threads = args.threads.unwrap_or_else(rayon::current_num_threads).max(1);
+    let threads = args
+        .threads
+        .unwrap_or_else(rayon::current_num_threads)
+        .max(1);
     let pool = rayon::ThreadPoolBuilder::new()
         .num_threads(threads)
         .build()
@@ -61,7 +73,9 @@ pub fn run(args: BenchArgs) -> Result<(), CliError> {
     let mut pipeline = FastPipeline::default();
     let mut frame = Close2glFrame::default();
     let fast = pool.install(|| {
-        median_ms(args.frames, || pipeline.run(mesh, camera, &settings, viewport, &mut frame))
+        median_ms(args.frames, || {
+            pipeline.run(mesh, camera, &settings, viewport, &mut frame)
+        })
     });
     let slow = median_ms(args.frames, || {
         std::hint::black_box(baseline::frame(mesh, camera, &settings, viewport));
