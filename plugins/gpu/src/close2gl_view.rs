@@ -41,23 +41,11 @@ const VERTEX_SIZE: u64 = size_of::<[f32; 2]>() as u64;
 impl Close2glView {
     pub(crate) fn new(device: &wgpu::Device, color_format: wgpu::TextureFormat) -> Self {
         let shader = device.create_shader_module(wgpu::include_wgsl!("close2gl.wgsl"));
-        let uniforms = device.create_buffer(&wgpu::BufferDescriptor {
-            label: Some("close2gl uniforms"),
-            size: size_of::<FrameUniforms>() as u64,
-            usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
-            mapped_at_creation: false,
-        });
-        let (bind_group_layout, bind_group) = crate::uniform_binding(
-            device,
-            "close2gl",
-            &uniforms,
-            wgpu::ShaderStages::VERTEX_FRAGMENT,
-        );
-        let layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
-            label: Some("close2gl"),
-            bind_group_layouts: &[Some(&bind_group_layout)],
-            immediate_size: 0,
-        });
+        let crate::UniformSetup {
+            buffer: uniforms,
+            bind_group,
+            layout,
+        } = crate::UniformSetup::new(device, "close2gl", size_of::<FrameUniforms>());
         Self {
             shader,
             layout,

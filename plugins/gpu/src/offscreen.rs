@@ -162,36 +162,13 @@ fn draw(
     let start = Instant::now();
     let color_view = color.create_view(&Default::default());
     let depth_view = depth.map(|d| d.create_view(&Default::default()));
-    let mut encoder = gpu.device.create_command_encoder(&Default::default());
-    {
-        let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
-            label: Some("offscreen"),
-            color_attachments: &[Some(wgpu::RenderPassColorAttachment {
-                view: &color_view,
-                depth_slice: None,
-                resolve_target: None,
-                ops: wgpu::Operations {
-                    load: wgpu::LoadOp::Clear(views.clear_color()),
-                    store: wgpu::StoreOp::Store,
-                },
-            })],
-            depth_stencil_attachment: depth_view.as_ref().map(|view| {
-                wgpu::RenderPassDepthStencilAttachment {
-                    view,
-                    depth_ops: Some(wgpu::Operations {
-                        load: wgpu::LoadOp::Clear(1.0),
-                        store: wgpu::StoreOp::Discard,
-                    }),
-                    stencil_ops: None,
-                }
-            }),
-            timestamp_writes: None,
-            occlusion_query_set: None,
-            multiview_mask: None,
-        });
-        record(views, &mut pass);
-    }
-    gpu.queue.submit([encoder.finish()]);
+    crate::submit_pass(
+        gpu,
+        &color_view,
+        depth_view.as_ref(),
+        wgpu::LoadOp::Clear(views.clear_color()),
+        |pass| record(views, pass),
+    );
     // A failed wait means a lost device; the readback that follows reports it.
     let _ = gpu.device.poll(wgpu::PollType::wait_indefinitely());
     start.elapsed().as_secs_f64() * 1e3

@@ -128,23 +128,11 @@ pub(crate) struct Reference {
 impl Reference {
     pub(crate) fn new(device: &wgpu::Device, color_format: wgpu::TextureFormat) -> Self {
         let shader = device.create_shader_module(wgpu::include_wgsl!("reference.wgsl"));
-        let uniforms = device.create_buffer(&wgpu::BufferDescriptor {
-            label: Some("reference uniforms"),
-            size: size_of::<Uniforms>() as u64,
-            usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
-            mapped_at_creation: false,
-        });
-        let (bind_group_layout, bind_group) = crate::uniform_binding(
-            device,
-            "reference",
-            &uniforms,
-            wgpu::ShaderStages::VERTEX_FRAGMENT,
-        );
-        let layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
-            label: Some("reference"),
-            bind_group_layouts: &[Some(&bind_group_layout)],
-            immediate_size: 0,
-        });
+        let crate::UniformSetup {
+            buffer: uniforms,
+            bind_group,
+            layout,
+        } = crate::UniformSetup::new(device, "reference", size_of::<Uniforms>());
         Self {
             shader,
             layout,

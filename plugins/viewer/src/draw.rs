@@ -69,7 +69,8 @@ pub fn draw_views(
     }
 }
 
-/// One pass into `target` (with a cleared depth buffer when given), submitted and waited on.
+/// One pass into `target` (with a cleared depth buffer when given), submitted and waited on, so
+/// that each view's frame time is its own.
 fn submit(
     gpu: &Gpu,
     target: &wgpu::TextureView,
@@ -77,34 +78,7 @@ fn submit(
     load: wgpu::LoadOp<wgpu::Color>,
     record: impl FnOnce(&mut wgpu::RenderPass<'_>),
 ) {
-    let mut encoder = gpu.device.create_command_encoder(&Default::default());
-    {
-        let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
-            label: Some("view"),
-            color_attachments: &[Some(wgpu::RenderPassColorAttachment {
-                view: target,
-                depth_slice: None,
-                resolve_target: None,
-                ops: wgpu::Operations {
-                    load,
-                    store: wgpu::StoreOp::Store,
-                },
-            })],
-            depth_stencil_attachment: depth.map(|view| wgpu::RenderPassDepthStencilAttachment {
-                view,
-                depth_ops: Some(wgpu::Operations {
-                    load: wgpu::LoadOp::Clear(1.0),
-                    store: wgpu::StoreOp::Discard,
-                }),
-                stencil_ops: None,
-            }),
-            timestamp_writes: None,
-            occlusion_query_set: None,
-            multiview_mask: None,
-        });
-        record(&mut pass);
-    }
-    gpu.queue.submit([encoder.finish()]);
+    close2gl_gpu::submit_pass(gpu, target, depth, load, record);
     // A failed wait means a lost device; the next surface acquire reports it.
     let _ = gpu.device.poll(wgpu::PollType::Wait {
         submission_index: None,
