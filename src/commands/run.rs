@@ -3,11 +3,10 @@
 use std::path::PathBuf;
 
 use close2gl_core::ModelStatus;
-use close2gl_viewer::{Layout, ViewerOptions, ViewerPlugin};
+use close2gl_viewer::{ViewerOptions, ViewerPlugin};
 
 use super::CliError;
 use super::scene::{SceneArgs, viewport};
-use crate::config;
 
 /// Frames drawn before `--screenshot` saves one, when `--exit-after-frames` does not say.
 const SCREENSHOT_FRAMES: u32 = 5;
@@ -40,10 +39,7 @@ pub fn run(args: RunArgs) -> Result<(), CliError> {
         .exit_after_frames
         .or(args.screenshot.is_some().then_some(SCREENSHOT_FRAMES));
     app.add_plugins(ViewerPlugin(ViewerOptions {
-        layout: match config.window.layout {
-            config::Layout::Split => Layout::Split,
-            config::Layout::Windows => Layout::Windows,
-        },
+        layout: config.window.layout,
         width: size.width,
         height: size.height,
         screenshot: args.screenshot,

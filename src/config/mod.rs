@@ -10,17 +10,9 @@ use close2gl_core::glam::Vec3;
 use close2gl_core::{
     CameraMode, CameraSpeeds, InputBindings, Lighting, ModelSource, PrimitiveParams, RenderSettings,
 };
+pub use close2gl_viewer::Layout;
 
 pub use load::{load, parse_size};
-
-/// How the viewer lays out the two views.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Layout {
-    /// One window: reference left, Close2GL right, the panel at the side.
-    Split,
-    /// Two OS windows, as the assignment asks; the panel is in the first.
-    Windows,
-}
 
 /// An explicit camera pose; when absent the camera frames the model.
 #[derive(Clone, Copy, Debug, PartialEq)]
