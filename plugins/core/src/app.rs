@@ -77,10 +77,6 @@ impl App {
         self
     }
 
-    pub fn has_plugin<P: Plugin>(&self) -> bool {
-        self.plugins.contains(&TypeId::of::<P>())
-    }
-
     pub fn add_systems<M>(
         &mut self,
         schedule: impl ScheduleLabel,

@@ -97,13 +97,6 @@ impl ModelSource {
             None => ModelSource::File(PathBuf::from(text)),
         }
     }
-
-    pub fn label(&self) -> String {
-        match self {
-            ModelSource::File(path) => path.display().to_string(),
-            ModelSource::Primitive(kind) => kind.name().to_string(),
-        }
-    }
 }
 
 /// Set it to ask the model plugin for a (re)load; the plugin takes it and reports in
