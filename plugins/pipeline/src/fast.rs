@@ -10,7 +10,7 @@ use glam::Vec4;
 use rayon::prelude::*;
 
 use crate::clip::Outcode;
-use crate::matrices::projection_modelview;
+use crate::matrices::ClipTransform;
 use crate::stage::{Stage, corner, process};
 use crate::tally;
 
@@ -47,7 +47,7 @@ impl FastPipeline {
         viewport: Viewport,
         frame: &mut Close2glFrame,
     ) {
-        let pm = projection_modelview(camera);
+        let transform = ClipTransform::new(camera);
         let stage = Stage::new(settings, viewport);
 
         // Transform every unique vertex once.
@@ -62,7 +62,7 @@ impl FastPipeline {
             .zip(mesh.positions.par_chunks(VERTEX_CHUNK))
             .for_each(|(((clip, codes), window), positions)| {
                 for (i, p) in positions.iter().enumerate() {
-                    clip[i] = pm * p.extend(1.0);
+                    clip[i] = transform.apply(*p);
                     (codes[i], window[i]) = corner(clip[i], &stage);
                 }
             });

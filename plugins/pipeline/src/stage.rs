@@ -119,6 +119,22 @@ fn signed_area(window: &[[f32; 2]]) -> f32 {
     area
 }
 
+/// Twice the area over the longest edge squared, at or below which a polygon counts as having
+/// zero area: it is at most 1e-5 as tall as it is long, a line for any rasteriser. A sliver
+/// (a UV sphere's pole, where sin(π) in f32 leaves the pole's copies 1e-7 apart; a face seen
+/// exactly edge-on) gets an area of random sign from rounding, and OpenGL counts a zero-area
+/// polygon as a back face. The reference view draws such triangles the same way.
+const DEGENERATE: f32 = 1e-5;
+
+fn longest_edge_squared(window: &[[f32; 2]]) -> f32 {
+    let mut longest = 0.0f32;
+    for (i, a) in window.iter().enumerate() {
+        let b = window[(i + 1) % window.len()];
+        longest = longest.max((b[0] - a[0]).powi(2) + (b[1] - a[1]).powi(2));
+    }
+    longest
+}
+
 fn is_culled(window: &[[f32; 2]], culling: Option<FrontFace>) -> bool {
     let Some(front) = culling else { return false };
     let area = match window {
@@ -129,7 +145,8 @@ fn is_culled(window: &[[f32; 2]], culling: Option<FrontFace>) -> bool {
         FrontFace::Ccw => area < 0.0,
         FrontFace::Cw => area > 0.0,
     };
-    !front_facing
+    // Only front faces need the size check: most back faces are culled without it.
+    !front_facing || area.abs() <= DEGENERATE * longest_edge_squared(window)
 }
 
 fn emit_inside(window: &[[f32; 2]; 3], mode: RenderMode, out: &mut Vec<[f32; 2]>) -> usize {
@@ -189,4 +206,35 @@ fn emit_points(
         }
     }
     out.len() - before
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_sliver_is_a_back_face_whichever_face_is_front() {
+        // A pole's copies 1e-7 apart: its area's sign is rounding, not geometry.
+        let sliver = [[10.0, 10.0], [60.0, 40.0], [60.0, 40.0 + 1e-5]];
+        let reversed = [sliver[0], sliver[2], sliver[1]];
+        for front in [FrontFace::Ccw, FrontFace::Cw] {
+            assert!(is_culled(&sliver, Some(front)));
+            assert!(is_culled(&reversed, Some(front)));
+        }
+        assert!(
+            !is_culled(&sliver, None),
+            "without culling every triangle is drawn"
+        );
+    }
+
+    #[test]
+    fn a_thin_real_triangle_keeps_its_facing() {
+        // 1 pixel tall over 100 pixels long: thin, but a triangle any rasteriser can fill.
+        let thin = [[0.0, 0.0], [100.0, 0.0], [50.0, 1.0]];
+        let reversed = [thin[0], thin[2], thin[1]];
+        assert_ne!(
+            is_culled(&thin, Some(FrontFace::Ccw)),
+            is_culled(&reversed, Some(FrontFace::Ccw))
+        );
+    }
 }

@@ -4,7 +4,7 @@
 
 use close2gl_core::{Camera, Close2glFrame, Mesh, RenderSettings, StageCounts, Viewport};
 
-use crate::matrices::projection_modelview;
+use crate::matrices::ClipTransform;
 use crate::stage::{Stage, corner, process};
 use crate::tally;
 
@@ -16,12 +16,12 @@ pub fn run(
     viewport: Viewport,
     frame: &mut Close2glFrame,
 ) {
-    let pm = projection_modelview(camera);
+    let transform = ClipTransform::new(camera);
     let stage = Stage::new(settings, viewport);
     let mut counts = StageCounts::default();
     frame.vertices.clear();
     for triangle in &mesh.triangles {
-        let clip = triangle.map(|i| pm * mesh.positions[i as usize].extend(1.0));
+        let clip = triangle.map(|i| transform.apply(mesh.positions[i as usize]));
         let corners = clip.map(|c| corner(c, &stage));
         let codes = corners.map(|(code, _)| code);
         let window = corners.map(|(_, window)| window);
