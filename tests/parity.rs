@@ -306,7 +306,14 @@ fn the_primitives_agree_in_every_pose_front_face_and_mode() {
 
 #[test]
 fn tiny_huge_and_far_away_models_agree() {
-    let far = far_away_sphere();
+    let far = sphere_obj("far_away_sphere", Vec3::new(5000.0, -3000.0, 2000.0), 50.0);
+    // A 4 cm model 1,200 units from the origin: in f32, its distance from the origin leaves it
+    // few digits unless both views work relative to the camera or to the model.
+    let tiny_far = sphere_obj(
+        "tiny_far_away_sphere",
+        Vec3::new(903.7, -736.5, 290.4),
+        0.02,
+    );
     assert_scenes(&[
         (
             "tiny",
@@ -327,6 +334,11 @@ fn tiny_huge_and_far_away_models_agree() {
             ],
         ),
         ("far_away", far.to_str().expect("a UTF-8 path"), &[]),
+        (
+            "tiny_far_away",
+            tiny_far.to_str().expect("a UTF-8 path"),
+            &[],
+        ),
     ]);
 }
 
@@ -341,11 +353,10 @@ fn the_bundled_models_agree_in_every_pose_front_face_and_mode() {
     ]);
 }
 
-/// A UV sphere of radius 50 centred at (5000, -3000, 2000), as an .obj without normals (the
-/// loader computes them), written under target/parity.
-fn far_away_sphere() -> PathBuf {
-    let (stacks, slices, radius) = (12, 24, 50.0f32);
-    let centre = Vec3::new(5000.0, -3000.0, 2000.0);
+/// A UV sphere as an .obj without normals (the loader computes them), written under
+/// target/parity/<name>.obj.
+fn sphere_obj(name: &str, centre: Vec3, radius: f32) -> PathBuf {
+    let (stacks, slices) = (12, 24);
     let mut obj = String::from("# a sphere far from the origin\n");
     for i in 0..=stacks {
         let theta = std::f32::consts::PI * i as f32 / stacks as f32;
@@ -373,9 +384,9 @@ fn far_away_sphere() -> PathBuf {
             let _ = writeln!(obj, "f {a} {b} {c}\nf {a} {c} {d}");
         }
     }
-    let path = parity_dir().join("far_away_sphere.obj");
+    let path = parity_dir().join(format!("{name}.obj"));
     std::fs::create_dir_all(parity_dir()).expect("create target/parity");
-    std::fs::write(&path, obj).expect("write the far-away model");
+    std::fs::write(&path, obj).expect("write a sphere model");
     path
 }
 

@@ -45,9 +45,15 @@ struct Uniforms {
 }
 
 impl Uniforms {
-    fn new(camera: &Camera, settings: &RenderSettings, lighting: &Lighting) -> Self {
-        let (view, projection) = camera_matrices(camera);
-        let light = view.transform_point3(lighting.light_position);
+    /// The uniforms for a mesh uploaded relative to `origin` (see [`GpuMesh::origin`]): the
+    /// camera and the light are moved by the same amount, so eye space is unchanged.
+    fn new(camera: &Camera, settings: &RenderSettings, lighting: &Lighting, origin: Vec3) -> Self {
+        let relative = Camera {
+            position: camera.position - origin,
+            ..*camera
+        };
+        let (view, projection) = camera_matrices(&relative);
+        let light = view.transform_point3(lighting.light_position - origin);
         let [c0, c1, c2] = lighting.attenuation;
         Self {
             view_projection: (projection * view).to_cols_array_2d(),
@@ -92,6 +98,12 @@ impl PipelineKey {
 /// edges of some of them in point and line mode). Drawing only `culled_index_count` indices when
 /// culling is on gives OpenGL's answer on every adapter; in fill mode they cover no pixel.
 struct GpuMesh {
+    /// The centre of the model's bounding box, which the uploaded positions are relative to.
+    /// A view matrix for world coordinates would carry the model's distance from the world
+    /// origin in its translation, and in f32 P·V·p then cancels most of a small model's digits
+    /// when it lies far away; relative to its own centre (as GPU renderers of geographic data
+    /// do) the numbers stay the model's size.
+    origin: Vec3,
     vertices: wgpu::Buffer,
     indices: wgpu::Buffer,
     index_count: u32,
@@ -157,12 +169,13 @@ impl Reference {
         if current || mesh.validate().is_err() {
             return;
         }
+        let origin = mesh.bounding_sphere().0;
         let vertices: Vec<Vertex> = mesh
             .positions
             .iter()
             .zip(&mesh.normals)
             .map(|(p, n)| Vertex {
-                position: p.to_array(),
+                position: (*p - origin).to_array(),
                 normal: n.to_array(),
             })
             .collect();
@@ -189,6 +202,7 @@ impl Reference {
             usage: wgpu::BufferUsages::INDEX,
         });
         self.mesh = Some(GpuMesh {
+            origin,
             vertices,
             indices,
             index_count: triangles.len() as u32 * 3,
@@ -206,7 +220,8 @@ impl Reference {
         settings: &RenderSettings,
         lighting: &Lighting,
     ) {
-        let uniforms = Uniforms::new(camera, settings, lighting);
+        let origin = self.mesh.as_ref().map_or(Vec3::ZERO, |m| m.origin);
+        let uniforms = Uniforms::new(camera, settings, lighting, origin);
         queue.write_buffer(&self.uniforms, 0, bytemuck::bytes_of(&uniforms));
         let key = PipelineKey::new(settings);
         if !self.pipelines.contains_key(&key) {
