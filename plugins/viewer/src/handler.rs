@@ -3,7 +3,7 @@
 
 use std::collections::HashMap;
 use std::sync::Arc;
-use std::time::Instant;
+use std::time::{Duration, Instant};
 
 use close2gl_core::{App, InputState, ModelRequest, ModelSource, Viewport};
 use close2gl_gpu::{Gpu, Views};
@@ -210,6 +210,12 @@ impl Viewer {
             event_loop.exit();
             return;
         }
+        // A window that could not present this frame is drawn again shortly: otherwise the last
+        // camera move before an idle stretch could stay unseen.
+        if windows.missed_frame() {
+            self.repaint_at = now.checked_add(RETRY_MISSED_FRAME);
+            return;
+        }
         // One more frame after the camera stops, so the panel shows where it stopped.
         let again = self.moving
             || was_moving
@@ -222,7 +228,14 @@ impl Viewer {
     }
 }
 
+/// How long to wait before drawing again a frame that a window could not present.
+const RETRY_MISSED_FRAME: Duration = Duration::from_millis(50);
+
 impl Windows {
+    fn missed_frame(&self) -> bool {
+        self.main.missed() || self.close2gl.as_ref().is_some_and(WindowSurface::missed)
+    }
+
     /// Where each view goes, and the `Viewport` they share (`None` while there is no room).
     fn layout(&mut self, gui: &GuiFrame) -> (Vec<Placed>, Vec<Placed>, Option<Viewport>) {
         let (width, height) = self.main.size();

@@ -14,6 +14,9 @@ pub struct WindowSurface {
     depth: Option<wgpu::TextureView>,
     /// The last texture was suboptimal: configure again before the next one.
     stale: bool,
+    /// The last acquire got no texture though the window has pixels (a timeout, occluded): what
+    /// it should have shown is still to be drawn.
+    missed: bool,
 }
 
 impl WindowSurface {
@@ -73,6 +76,7 @@ impl WindowSurface {
             config,
             depth: None,
             stale: false,
+            missed: false,
         };
         this.configure(gpu);
         Ok(this)
@@ -124,9 +128,16 @@ impl WindowSurface {
         self.depth.as_ref()
     }
 
+    /// Whether the last [`Self::acquire`] skipped a frame that a visible window still needs.
+    pub fn missed(&self) -> bool {
+        self.missed
+    }
+
     /// The next texture to draw into, or `None` when there is nothing to draw this time
-    /// (minimised, occluded, a timeout): the caller skips the frame.
+    /// (minimised, occluded, a timeout): the caller skips the frame, and draws again later when
+    /// [`Self::missed`] says so.
     pub fn acquire(&mut self, gpu: &Gpu) -> Result<Option<wgpu::SurfaceTexture>, String> {
+        self.missed = false;
         if self.depth.is_none() {
             return Ok(None);
         }
@@ -142,7 +153,7 @@ impl WindowSurface {
                     return Ok(Some(texture));
                 }
                 wgpu::CurrentSurfaceTexture::Timeout | wgpu::CurrentSurfaceTexture::Occluded => {
-                    return Ok(None);
+                    break;
                 }
                 wgpu::CurrentSurfaceTexture::Outdated => self.configure(gpu),
                 wgpu::CurrentSurfaceTexture::Lost => {
@@ -154,6 +165,7 @@ impl WindowSurface {
                 }
             }
         }
+        self.missed = true;
         Ok(None)
     }
 }
