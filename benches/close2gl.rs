@@ -1,6 +1,8 @@
 //! The Close2GL geometry stage (transform, full clipping, divide, viewport, cull, 2D buffer) on
 //! spheres of 8 k (the course's cow), 100 k and 1 M triangles, and the straightforward baseline
-//! on the same meshes. `cargo bench` runs it; `close2gl bench` gives the same figures as JSON.
+//! on the same meshes; then the 1 M sphere with the near plane cutting through it, where full
+//! clipping cuts thousands of triangles. `cargo bench` runs it; `close2gl bench` gives the framed
+//! figures as JSON.
 
 use close2gl::commands::bench::{baseline, sphere_grid};
 use close2gl::config::Config;
@@ -50,6 +52,16 @@ fn geometry_stage(c: &mut Criterion) {
             b.iter(|| baseline::frame(&mesh, &camera, &config.render, viewport))
         });
     }
+    // The near plane a fifth of the radius into the sphere: its front cap is cut away.
+    let (mesh, mut camera, config) = scene(1_000_000);
+    camera.near = camera.distance() - 0.8 * config.primitives.sphere_radius;
+    group.throughput(Throughput::Elements(mesh.triangles.len() as u64));
+    let mut pipeline = FastPipeline::default();
+    let mut frame = Close2glFrame::default();
+    group.bench_function(BenchmarkId::new("fast_near_cut", 1_000_000), |b| {
+        b.iter(|| pipeline.run(&mesh, &camera, &config.render, viewport, &mut frame))
+    });
+    assert!(frame.counts.clipped > 0, "the near plane cuts the sphere");
     group.finish();
 }
 

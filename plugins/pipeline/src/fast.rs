@@ -6,7 +6,6 @@
 
 use bevy_ecs::prelude::Resource;
 use close2gl_core::{Camera, Close2glFrame, Mesh, RenderSettings, StageCounts, Viewport};
-use glam::Vec4;
 use rayon::prelude::*;
 
 use crate::clip::Outcode;
@@ -28,10 +27,11 @@ struct Chunk {
 
 /// The reusable buffers of the fast path.
 /// Per-vertex data is kept as structure-of-arrays: the common trivially-inside triangle reads
-/// only three outcodes and three window positions.
+/// only three outcodes and three window positions. Clip coordinates are not kept: the few
+/// triangles that straddle the view volume's border transform their corners again, which costs
+/// less than writing and reading back 16 bytes for every vertex.
 #[derive(Resource, Default)]
 pub struct FastPipeline {
-    clip: Vec<Vec4>,
     codes: Vec<Outcode>,
     window: Vec<[f32; 2]>,
     chunks: Vec<Chunk>,
@@ -52,23 +52,20 @@ impl FastPipeline {
 
         // Transform every unique vertex once.
         let vertices = mesh.positions.len();
-        self.clip.resize(vertices, Vec4::ZERO);
         self.codes.resize(vertices, 0);
         self.window.resize(vertices, [0.0; 2]);
-        self.clip
+        self.codes
             .par_chunks_mut(VERTEX_CHUNK)
-            .zip(self.codes.par_chunks_mut(VERTEX_CHUNK))
             .zip(self.window.par_chunks_mut(VERTEX_CHUNK))
             .zip(mesh.positions.par_chunks(VERTEX_CHUNK))
-            .for_each(|(((clip, codes), window), positions)| {
+            .for_each(|((codes, window), positions)| {
                 for (i, p) in positions.iter().enumerate() {
-                    clip[i] = transform.apply(*p);
-                    (codes[i], window[i]) = corner(clip[i], &stage);
+                    (codes[i], window[i]) = corner(transform.apply(*p), &stage);
                 }
             });
 
         // Clip, divide, map, cull and emit the triangles, chunk by chunk.
-        let (clip, codes, window) = (&self.clip, &self.codes, &self.window);
+        let (positions, codes, window) = (&mesh.positions, &self.codes, &self.window);
         let tasks = mesh.triangles.len().div_ceil(TRIANGLE_CHUNK);
         self.chunks.resize_with(tasks, Chunk::default);
         self.chunks
@@ -82,7 +79,7 @@ impl FastPipeline {
                     let fate = process(
                         [codes[a], codes[b], codes[c]],
                         [window[a], window[b], window[c]],
-                        || [clip[a], clip[b], clip[c]],
+                        || [a, b, c].map(|i| transform.apply(positions[i])),
                         &stage,
                         &mut chunk.vertices,
                     );

@@ -66,7 +66,9 @@ pub enum Fate {
 
 /// Clip, divide, map, cull and emit one triangle into `out`, given its corners' outcodes and
 /// window positions (from [`corner`]). The clip coordinates are asked for only when the triangle
-/// straddles the view volume's border: most triangles of a big mesh never need them.
+/// straddles the view volume's border: most triangles of a big mesh never need them. Inlined
+/// into the callers' loops; the cutting is not (see [`cut`]).
+#[inline(always)]
 pub fn process(
     codes: [Outcode; 3],
     window: [[f32; 2]; 3],
@@ -86,7 +88,14 @@ pub fn process(
     if stage.clipping == Clipping::Simple || outside_all != 0 {
         return Fate::Clipped;
     }
-    let clip = clip();
+    cut(clip(), outside_any, stage, out)
+}
+
+/// Clip, divide, map, cull and emit a triangle that straddles the planes in `outside_any`. Kept
+/// out of line: its polygons need a large stack frame that the common, trivially inside
+/// triangle should not pay for.
+#[inline(never)]
+fn cut(clip: [Vec4; 3], outside_any: Outcode, stage: &Stage, out: &mut Vec<[f32; 2]>) -> Fate {
     let triangle = Polygon::triangle(clip[0], clip[1], clip[2]);
     let piece = clip_polygon(&triangle, outside_any);
     let mut piece_window = [[0.0; 2]; crate::clip::MAX_POLYGON];
@@ -135,6 +144,7 @@ fn longest_edge_squared(window: &[[f32; 2]]) -> f32 {
     longest
 }
 
+#[inline(always)]
 fn is_culled(window: &[[f32; 2]], culling: Option<FrontFace>) -> bool {
     let Some(front) = culling else { return false };
     let area = match window {
