@@ -9,7 +9,7 @@ use close2gl_core::{App, InputState, ModelRequest, ModelSource, Viewport};
 use close2gl_gpu::{Gpu, Views};
 use close2gl_ui::ViewStats;
 use winit::application::ApplicationHandler;
-use winit::dpi::PhysicalSize;
+use winit::dpi::{PhysicalPosition, PhysicalSize};
 use winit::event::{ElementState, MouseButton, WindowEvent};
 use winit::event_loop::{ActiveEventLoop, ControlFlow, EventLoop};
 use winit::window::{Window, WindowId};
@@ -84,21 +84,26 @@ impl Viewer {
 
     fn open_windows(&mut self, event_loop: &ActiveEventLoop) -> Result<Windows, String> {
         let (width, height) = (self.options.width, self.options.height);
-        let open = |title: &str, width: u32, height: u32| {
-            let attributes = Window::default_attributes()
-                .with_title(title)
-                .with_inner_size(PhysicalSize::new(width.max(1), height.max(1)));
-            event_loop
-                .create_window(attributes)
-                .map(Arc::new)
-                .map_err(|e| format!("cannot open a window: {e}"))
-        };
+        let open =
+            |title: &str, width: u32, height: u32, position: Option<PhysicalPosition<i32>>| {
+                let mut attributes = Window::default_attributes()
+                    .with_title(title)
+                    .with_inner_size(PhysicalSize::new(width.max(1), height.max(1)));
+                if let Some(position) = position {
+                    attributes = attributes.with_position(position);
+                }
+                event_loop
+                    .create_window(attributes)
+                    .map(Arc::new)
+                    .map_err(|e| format!("cannot open a window: {e}"))
+            };
         let (main_window, close2gl_window) = match self.options.layout {
             Layout::Split => (
                 open(
                     "Close2GL viewer: Reference (wgpu) | Close2GL",
                     width,
                     height,
+                    None,
                 )?,
                 None,
             ),
@@ -108,10 +113,14 @@ impl Viewer {
                     * event_loop
                         .primary_monitor()
                         .map_or(1.0, |m| m.scale_factor())) as u32;
-                (
-                    open("Reference (wgpu)", width / 2 + panel, height)?,
-                    Some(open("Close2GL", width / 2, height)?),
-                )
+                let reference = open("Reference (wgpu)", width / 2 + panel, height, None)?;
+                // Beside the reference window, as the assignment shows its two windows (a window
+                // manager may still place it elsewhere).
+                let beside = reference.outer_position().ok().map(|at| {
+                    PhysicalPosition::new(at.x + reference.outer_size().width as i32, at.y)
+                });
+                let close2gl = open("Close2GL", width / 2, height, beside)?;
+                (reference, Some(close2gl))
             }
         };
         let surface = WindowSurface::create_surface(&self.instance, &main_window)?;
