@@ -82,7 +82,8 @@ fn screenshot(xvfb: &Xvfb, name: &str, args: &[&str]) -> Image {
         .args(args)
         .arg("--screenshot")
         .arg(&file)
-        .args(["--exit-after-frames", "5"])
+        // Ten frames: the two-window layout settles its windows' sizes over the first few.
+        .args(["--exit-after-frames", "10"])
         .current_dir(env!("CARGO_MANIFEST_DIR"))
         .env("DISPLAY", &xvfb.display)
         .env_remove("WAYLAND_DISPLAY")
