@@ -24,6 +24,7 @@ pub use close2gl_core as core;
 pub use close2gl_input as input;
 pub use close2gl_model as model;
 pub use close2gl_pipeline as pipeline;
+pub use close2gl_raster as raster;
 
 use close2gl_core::{
     App, Camera, CameraActions, Close2glFrame, Framing, InputState, ModelRequest, ModelStatus,
@@ -32,7 +33,8 @@ use close2gl_core::{
 
 use config::Config;
 
-/// Everything headless: model loading, input mapping, the camera and the Close2GL pipeline.
+/// Everything headless: model loading, input mapping, the camera, the Close2GL pipeline and its
+/// software rasterizer.
 /// The GPU renderers and the windows are added on top by the commands that need them.
 pub struct DefaultPlugins;
 
@@ -41,7 +43,8 @@ impl Plugin for DefaultPlugins {
         app.add_plugins(close2gl_model::ModelPlugin)
             .add_plugins(close2gl_input::InputPlugin)
             .add_plugins(close2gl_camera::CameraPlugin)
-            .add_plugins(close2gl_pipeline::Close2glPlugin);
+            .add_plugins(close2gl_pipeline::Close2glPlugin)
+            .add_plugins(close2gl_raster::RasterPlugin);
     }
 }
 

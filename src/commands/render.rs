@@ -6,7 +6,7 @@ use std::path::{Path, PathBuf};
 
 use bevy_ecs::prelude::DetectChangesMut;
 use close2gl_core::{Camera, CameraAction, CameraActions, ModelStatus};
-use close2gl_gpu::parity::{Comparison, diff_image};
+use close2gl_gpu::parity::{ColorComparison, Comparison, diff_image};
 use close2gl_gpu::{Gpu, OffscreenPlugin, Snapshot, parse_backends, render_offscreen};
 use serde_json::{Value, json};
 
@@ -144,6 +144,8 @@ fn median(mut values: Vec<f64>) -> f64 {
 fn write_pose(dir: &Path, suffix: &str, snapshot: &Snapshot, gpu: &Gpu) -> Result<Value, CliError> {
     let comparison =
         Comparison::of_images(&snapshot.reference, &snapshot.close2gl, snapshot.background);
+    let colors =
+        ColorComparison::of_images(&snapshot.reference, &snapshot.close2gl, snapshot.background);
     let diff = diff_image(&snapshot.reference, &snapshot.close2gl, snapshot.background);
     let names = ["reference", "close2gl", "diff"].map(|n| format!("{n}{suffix}.png"));
     for (image, name) in [&snapshot.reference, &snapshot.close2gl, &diff]
@@ -163,6 +165,8 @@ fn write_pose(dir: &Path, suffix: &str, snapshot: &Snapshot, gpu: &Gpu) -> Resul
         "covered_pixels": comparison.covered_pixels,
         "reference_only_pixels": comparison.only_first,
         "close2gl_only_pixels": comparison.only_second,
+        "color_mean_abs_diff": colors.mean_abs_diff,
+        "color_within_2_fraction": colors.within_2_fraction,
         "background": snapshot.background,
         "stats": snapshot.counts,
         "images": {"reference": names[0], "close2gl": names[1], "diff": names[2]},

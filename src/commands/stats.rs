@@ -1,8 +1,9 @@
-//! `close2gl stats`: the Close2GL pipeline once, headless; its counts as one JSON object.
+//! `close2gl stats`: the Close2GL pipeline once, headless; its counts as one JSON object (and,
+//! with the software rasterizer, its time and the pixels it covered).
 
 use std::path::{Path, PathBuf};
 
-use close2gl_core::{Close2glFrame, ModelStatus};
+use close2gl_core::{Close2glFrame, ModelStatus, Rasterizer, SoftwareFrame};
 use serde_json::json;
 
 use super::CliError;
@@ -35,6 +36,14 @@ pub fn run(args: StatsArgs) -> Result<(), CliError> {
     }
     let mut report = json!(frame.counts);
     report["bounds_px"] = json!(frame.bounds_px());
+    if config.render.close2gl_raster == Rasterizer::Software {
+        let image = world.resource::<SoftwareFrame>();
+        let background = close2gl_gpu::parity::to_rgb8(config.render.background);
+        let covered = image.pixels.iter().filter(|p| p[..3] != background).count();
+        report["stage_ms"] = json!(frame.stage_ms);
+        report["raster_ms"] = json!(image.raster_ms);
+        report["covered_pixels"] = json!(covered);
+    }
     println!("{report}");
     Ok(())
 }

@@ -5,7 +5,7 @@ use std::path::Path;
 
 use close2gl_core::glam::Vec3;
 use close2gl_core::{
-    CameraMode, Clipping, FrontFace, ModelSource, PrimitiveKind, RenderMode, Shading,
+    CameraMode, Clipping, FrontFace, ModelSource, PrimitiveKind, Rasterizer, RenderMode, Shading,
 };
 use toml::Value;
 
@@ -55,6 +55,9 @@ pub fn set(
         }
         ("render", "shading") => {
             c.render.shading = named(value, Shading::ALL.iter().map(|m| (m.name(), *m)))?
+        }
+        ("render", "close2gl_raster") => {
+            c.render.close2gl_raster = named(value, Rasterizer::ALL.iter().map(|m| (m.name(), *m)))?
         }
         ("render", "color") => c.render.color = color(value)?,
         ("render", "background") => c.render.background = color(value)?,

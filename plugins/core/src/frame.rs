@@ -42,12 +42,46 @@ pub struct StageCounts {
     pub output_primitives: usize,
 }
 
+/// A mesh vertex after the transform, for the software rasterizer: its window position, depth in
+/// 0..1 (the reference's depth range) and 1/w, and what lighting needs in eye space. Meaningful
+/// only for vertices inside the view volume (the others are reached only through [`CutVertex`]).
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct RasterVertex {
+    /// x, y in window pixels, depth, 1/w.
+    pub window: [f32; 4],
+    pub eye: [f32; 3],
+    pub normal: [f32; 3],
+}
+
+/// A vertex that clipping made: its window position, and where it lies in the triangle it was
+/// cut from (weights of the triangle's corners, summing to 1), so that anything computed at the
+/// corners (a Gouraud intensity, say) is interpolated to it exactly as a GPU's clipper does.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct CutVertex {
+    pub window: [f32; 4],
+    pub corners: [u32; 3],
+    pub weights: [f32; 3],
+}
+
+/// The Close2GL pipeline's output for its own rasterizer: the same primitives as the 2D buffer,
+/// as indices. Index i < `vertices.len()` is mesh vertex i; above it, `cuts[i - vertices.len()]`.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct RasterGeometry {
+    pub vertices: Vec<RasterVertex>,
+    pub cuts: Vec<CutVertex>,
+    /// One index per point, two per line, three per triangle (the frame's topology).
+    pub primitives: Vec<u32>,
+}
+
 /// The Close2GL pipeline's output: 2D positions in window pixels (origin top-left, y down), ready
-/// for a pass-through GPU pipeline, and the stage counts.
+/// for a pass-through GPU pipeline, and the stage counts; with the software rasterizer, also the
+/// same primitives with depth and what shading needs.
 #[derive(Resource, Clone, Debug, Default, PartialEq)]
 pub struct Close2glFrame {
     pub topology: Topology,
     pub vertices: Vec<[f32; 2]>,
+    /// Filled only when `RenderSettings::close2gl_raster` is `Software`.
+    pub raster: RasterGeometry,
     pub counts: StageCounts,
     /// Viewport the vertices were mapped to.
     pub viewport: Viewport,
@@ -69,4 +103,18 @@ impl Close2glFrame {
             ]
         }))
     }
+}
+
+/// The software rasterizer's image of the Close2GL view: RGBA8 rows from the top, `width` pixels
+/// each, and how long it took.
+#[derive(Resource, Clone, Debug, Default, PartialEq)]
+pub struct SoftwareFrame {
+    pub width: u32,
+    pub height: u32,
+    pub pixels: Vec<[u8; 4]>,
+    /// Rasterization, depth test, shading and the copy into `pixels`, in milliseconds (the
+    /// geometry before it is `Close2glFrame::stage_ms`).
+    pub raster_ms: f64,
+    /// Bumped for every new image, so that uploaders can tell a new one from the last.
+    pub generation: u64,
 }

@@ -17,11 +17,16 @@ pub use app::{App, Plugin, PostUpdate, PreUpdate, Render, Startup, Update, frame
 pub use camera::{
     Camera, CameraAction, CameraActions, CameraHome, CameraMode, CameraSpeeds, Framing,
 };
-pub use frame::{Close2glFrame, StageCounts, Topology, Viewport};
+pub use frame::{
+    Close2glFrame, CutVertex, RasterGeometry, RasterVertex, SoftwareFrame, StageCounts, Topology,
+    Viewport,
+};
 pub use input::{InputBindings, InputState};
 pub use mesh::Mesh;
 pub use model::{ModelRequest, ModelSource, ModelStatus, PrimitiveKind, PrimitiveParams};
-pub use settings::{Clipping, FrontFace, Lighting, RenderMode, RenderSettings, Shading};
+pub use settings::{
+    Clipping, FrontFace, Lighting, Rasterizer, RenderMode, RenderSettings, Shading,
+};
 
 /// Re-exported so that plugin authors need only this crate to write systems.
 pub use bevy_ecs;

@@ -40,7 +40,16 @@ named_enum!(
     }
 );
 named_enum!(
-    /// The reference renderer's lighting (Close2GL is always flat colour).
+    /// Who turns Close2GL's output into pixels.
+    Rasterizer {
+        /// The assignment's rule: the GPU draws Close2GL's 2D primitives in one flat colour.
+        Gpu = "gpu",
+        /// Close2GL's own software rasterizer: z-buffer, fill rule and the four shadings.
+        Software = "software"
+    }
+);
+named_enum!(
+    /// The lighting of both views (with the GPU rasterizer, Close2GL's view stays flat colour).
     Shading {
         None = "none",
         GouraudAd = "gouraud_ad",
@@ -61,6 +70,8 @@ pub struct RenderSettings {
     pub shading: Shading,
     /// The background both views clear to.
     pub background: Vec3,
+    /// Who draws the Close2GL view's pixels.
+    pub close2gl_raster: Rasterizer,
 }
 
 impl Default for RenderSettings {
@@ -73,6 +84,7 @@ impl Default for RenderSettings {
             color: Vec3::new(0.85, 0.65, 0.25),
             shading: Shading::None,
             background: Vec3::new(0.08, 0.08, 0.1),
+            close2gl_raster: Rasterizer::Gpu,
         }
     }
 }

@@ -1,6 +1,7 @@
 //! The GPU side of close2gl, on wgpu: the shared device ([`Gpu`]), the reference renderer (the
 //! mesh drawn from glam's own camera matrices, standing in for OpenGL) and the Close2GL view (the
-//! 2D buffer drawn through a pass-through pipeline), both held in [`Views`]. [`GpuPlugin`] adds
+//! 2D buffer drawn through a pass-through pipeline, or the software rasterizer's image drawn as
+//! one textured triangle), both held in [`Views`]. [`GpuPlugin`] adds
 //! the `Render` systems that read `Camera`, `Mesh`, `ModelStatus`, `RenderSettings`, `Lighting` and
 //! `Close2glFrame` and upload what changed into `Views`; whoever owns the target (a window, or
 //! [`render_offscreen`]) records the draws. Offscreen rendering, PNG images and the coverage
@@ -13,6 +14,7 @@ pub mod image;
 mod offscreen;
 pub mod parity;
 mod reference;
+mod software_view;
 mod systems;
 mod views;
 

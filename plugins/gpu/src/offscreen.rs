@@ -4,7 +4,9 @@
 use std::time::Instant;
 
 use bevy_ecs::prelude::*;
-use close2gl_core::{App, Close2glFrame, Plugin, RenderSettings, StageCounts, Viewport};
+use close2gl_core::{
+    App, Close2glFrame, Plugin, Rasterizer, RenderSettings, SoftwareFrame, StageCounts, Viewport,
+};
 
 use crate::parity::to_rgb8;
 use crate::{DEPTH_FORMAT, Gpu, GpuPlugin, Image, Views};
@@ -33,7 +35,8 @@ pub struct Snapshot {
     pub close2gl: Image,
     /// The reference view's GPU draw, submit to completion, in milliseconds.
     pub reference_ms: f64,
-    /// Close2GL's geometry stage (for the frame shown) plus its 2D draw, submit to completion.
+    /// Close2GL's geometry stage (for the frame shown) plus its 2D draw, submit to completion;
+    /// with the software rasterizer, the geometry stage plus the rasterizer's whole frame.
     pub close2gl_ms: f64,
     pub counts: StageCounts,
     /// The background as stored in the images: what "not covered" looks like.
@@ -127,7 +130,9 @@ pub fn render_offscreen(app: &mut App) -> Result<Snapshot, String> {
         .ok_or("render_offscreen needs the Views resource (add OffscreenPlugin)")?;
     let target = world.resource::<Target>();
     let frame = world.resource::<Close2glFrame>();
-    let background = to_rgb8(world.resource::<RenderSettings>().background);
+    let settings = world.resource::<RenderSettings>();
+    let background = to_rgb8(settings.background);
+    let software = settings.close2gl_raster == Rasterizer::Software;
 
     let reference_ms = draw(
         &gpu,
@@ -136,10 +141,14 @@ pub fn render_offscreen(app: &mut App) -> Result<Snapshot, String> {
         Some(&target.depth),
         |views, pass| views.draw_reference(pass),
     );
+    let close2gl_draw_ms = draw(&gpu, views, &target.close2gl, None, |views, pass| {
+        views.draw_close2gl(pass)
+    });
     let close2gl_ms = frame.stage_ms
-        + draw(&gpu, views, &target.close2gl, None, |views, pass| {
-            views.draw_close2gl(pass)
-        });
+        + match world.get_resource::<SoftwareFrame>() {
+            Some(image) if software => image.raster_ms,
+            _ => close2gl_draw_ms,
+        };
     let [reference, close2gl] = read_back(&gpu, target)?;
     Ok(Snapshot {
         reference,

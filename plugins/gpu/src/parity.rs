@@ -61,6 +61,39 @@ impl Comparison {
     }
 }
 
+/// How far the colours of two images of one scene agree, over the pixels both cover.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ColorComparison {
+    /// Pixels covered in both images.
+    pub compared_pixels: usize,
+    /// The mean of |a − b| over those pixels' channels (RGB), in 0..255.
+    pub mean_abs_diff: f64,
+    /// The share of those pixels whose every channel differs by at most 2 (of 255); 0 when no
+    /// pixel is covered in both.
+    pub within_2_fraction: f64,
+}
+
+impl ColorComparison {
+    pub fn of_images(first: &Image, second: &Image, background: [u8; 3]) -> ColorComparison {
+        let (mut compared, mut sum, mut within) = (0usize, 0u64, 0usize);
+        for (a, b) in first.pixels.iter().zip(&second.pixels) {
+            if a[..3] == background || b[..3] == background {
+                continue;
+            }
+            compared += 1;
+            let diffs = [0, 1, 2].map(|c| a[c].abs_diff(b[c]));
+            sum += diffs.iter().map(|&d| d as u64).sum::<u64>();
+            within += usize::from(diffs.iter().all(|&d| d <= 2));
+        }
+        let share = |n: f64, of: f64| if of == 0.0 { 0.0 } else { n / of };
+        ColorComparison {
+            compared_pixels: compared,
+            mean_abs_diff: share(sum as f64, 3.0 * compared as f64),
+            within_2_fraction: share(within as f64, compared as f64),
+        }
+    }
+}
+
 /// Covered only in the reference: magenta. Covered only in Close2GL: green.
 pub const ONLY_REFERENCE: [u8; 4] = [255, 0, 255, 255];
 pub const ONLY_CLOSE2GL: [u8; 4] = [0, 255, 0, 255];
@@ -131,6 +164,25 @@ mod tests {
         assert_eq!(
             Comparison::of_images(&full, &full, BG).coverage_agreement,
             1.0
+        );
+    }
+
+    #[test]
+    fn colours_are_compared_where_both_images_cover() {
+        let mut a = image(&[true, true, true, false]);
+        let mut b = image(&[true, true, false, true]);
+        a.pixels[0] = [100, 100, 100, 255];
+        b.pixels[0] = [102, 99, 100, 255];
+        a.pixels[1] = [100, 100, 100, 255];
+        b.pixels[1] = [100, 110, 100, 255];
+        let c = ColorComparison::of_images(&a, &b, BG);
+        assert_eq!(c.compared_pixels, 2);
+        assert!((c.mean_abs_diff - 13.0 / 6.0).abs() < 1e-12);
+        assert_eq!(c.within_2_fraction, 0.5);
+        let empty = image(&[false; 4]);
+        assert_eq!(
+            ColorComparison::of_images(&empty, &a, BG).within_2_fraction,
+            0.0
         );
     }
 

@@ -3,6 +3,7 @@
 use bevy_ecs::prelude::*;
 use close2gl_core::{
     App, Camera, Close2glFrame, Lighting, Mesh, ModelStatus, Plugin, Render, RenderSettings,
+    SoftwareFrame,
 };
 
 use crate::reference::clear_color;
@@ -10,7 +11,8 @@ use crate::{Gpu, Views};
 
 /// Adds the `Render` systems that upload what changed: the mesh again only when
 /// `ModelStatus.generation` changes; the reference uniforms from `Camera`, `RenderSettings` and
-/// `Lighting`; the Close2GL 2D buffer from `Close2glFrame`. They run once the `Gpu` and `Views`
+/// `Lighting`; the Close2GL 2D buffer from `Close2glFrame`, or the software rasterizer's image
+/// from `SoftwareFrame`. They run once the `Gpu` and `Views`
 /// resources exist (inserted by whoever owns the target), so a window may arrive late.
 pub struct GpuPlugin;
 
@@ -20,9 +22,15 @@ impl Plugin for GpuPlugin {
             .init_resource::<Lighting>()
             .init_resource::<RenderSettings>()
             .init_resource::<Close2glFrame>()
+            .init_resource::<SoftwareFrame>()
             .add_systems(
                 Render,
-                (upload_mesh, upload_reference, upload_close2gl)
+                (
+                    upload_mesh,
+                    upload_reference,
+                    upload_close2gl,
+                    upload_software,
+                )
                     .chain()
                     .run_if(resource_exists::<Gpu>.and_then(resource_exists::<Views>)),
             );
@@ -65,5 +73,18 @@ fn upload_close2gl(
         views
             .close2gl
             .update(&gpu.device, &gpu.queue, &frame, settings.color);
+    }
+}
+
+/// The software rasterizer's image, when it is the one shown and it is new.
+fn upload_software(
+    gpu: Res<Gpu>,
+    image: Res<SoftwareFrame>,
+    settings: Res<RenderSettings>,
+    mut views: ResMut<Views>,
+) {
+    views.rasterizer = settings.close2gl_raster;
+    if image.is_changed() || views.is_added() {
+        views.software.update(&gpu.device, &gpu.queue, &image);
     }
 }

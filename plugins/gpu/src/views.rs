@@ -3,8 +3,11 @@
 use bevy_ecs::prelude::*;
 
 use crate::Gpu;
+use close2gl_core::Rasterizer;
+
 use crate::close2gl_view::Close2glView;
 use crate::reference::{Reference, clear_color};
+use crate::software_view::SoftwareView;
 
 /// GPU state for both views (a Resource): the reference renderer and the Close2GL 2D renderer.
 /// The `Render` systems of [`crate::GpuPlugin`] keep it up to date; the owner of the target
@@ -13,6 +16,9 @@ use crate::reference::{Reference, clear_color};
 pub struct Views {
     pub(crate) reference: Reference,
     pub(crate) close2gl: Close2glView,
+    pub(crate) software: SoftwareView,
+    /// Which of the two Close2GL views is shown.
+    pub(crate) rasterizer: Rasterizer,
     pub(crate) background: wgpu::Color,
 }
 
@@ -23,6 +29,8 @@ impl Views {
         Views {
             reference: Reference::new(&gpu.device, color_format),
             close2gl: Close2glView::new(&gpu.device, color_format),
+            software: SoftwareView::new(&gpu.device, color_format),
+            rasterizer: Rasterizer::Gpu,
             background: clear_color(close2gl_core::RenderSettings::default().background),
         }
     }
@@ -34,10 +42,14 @@ impl Views {
         self.reference.draw(pass);
     }
 
-    /// Records the Close2GL view (2D, no depth attachment needed); the caller sets the viewport
-    /// rectangle, which should have the size of `Viewport`.
+    /// Records the Close2GL view (2D, no depth attachment needed): its 2D buffer drawn by the
+    /// GPU, or the software rasterizer's image. The caller sets the viewport rectangle, which
+    /// should have the size of `Viewport`.
     pub fn draw_close2gl(&self, pass: &mut wgpu::RenderPass<'_>) {
-        self.close2gl.draw(pass);
+        match self.rasterizer {
+            Rasterizer::Gpu => self.close2gl.draw(pass),
+            Rasterizer::Software => self.software.draw(pass),
+        }
     }
 
     /// RenderSettings.background as a clear colour: both views clear to it.

@@ -2,7 +2,7 @@
 //! volume when |x|, |y|, |z| <= w (which forces w >= 0). Working before the division is what
 //! keeps points behind the camera (w < 0) from wrapping around onto the screen.
 
-use glam::Vec4;
+use glam::{Vec3, Vec4};
 
 /// One bit per plane of the view volume that a point lies outside of.
 pub type Outcode = u8;
@@ -40,11 +40,14 @@ pub const MAX_POLYGON: usize = 9;
 /// A convex polygon in clip space, kept on the stack: clipping allocates nothing. `original[i]`
 /// says whether the edge from vertex i to vertex i + 1 is part of one of the triangle's own edges
 /// (OpenGL's edge flag) rather than an edge the clipping planes added: a GPU draws only those in
-/// line mode, and only their starting vertices in point mode.
+/// line mode, and only their starting vertices in point mode. `weights[i]` says where vertex i
+/// lies in the triangle (the weights of its three corners), for interpolating what the corners
+/// carry.
 #[derive(Clone, Copy, Debug)]
 pub struct Polygon {
     pub points: [Vec4; MAX_POLYGON],
     pub original: [bool; MAX_POLYGON],
+    pub weights: [Vec3; MAX_POLYGON],
     pub len: usize,
 }
 
@@ -52,9 +55,12 @@ impl Polygon {
     pub fn triangle(a: Vec4, b: Vec4, c: Vec4) -> Self {
         let mut points = [Vec4::ZERO; MAX_POLYGON];
         points[..3].copy_from_slice(&[a, b, c]);
+        let mut weights = [Vec3::ZERO; MAX_POLYGON];
+        weights[..3].copy_from_slice(&[Vec3::X, Vec3::Y, Vec3::Z]);
         Self {
             points,
             original: [true; MAX_POLYGON],
+            weights,
             len: 3,
         }
     }
@@ -63,9 +69,10 @@ impl Polygon {
         &self.points[..self.len]
     }
 
-    fn push(&mut self, p: Vec4, original: bool) {
+    fn push(&mut self, p: Vec4, original: bool, weights: Vec3) {
         self.points[self.len] = p;
         self.original[self.len] = original;
+        self.weights[self.len] = weights;
         self.len += 1;
     }
 }
@@ -83,15 +90,18 @@ pub fn clip_polygon(polygon: &Polygon, planes: Outcode) -> Polygon {
         let input = current;
         current.len = 0;
         for i in 0..input.len {
-            let (a, b) = (input.points[i], input.points[(i + 1) % input.len]);
+            let j = (i + 1) % input.len;
+            let (a, b) = (input.points[i], input.points[j]);
             let (da, db) = (plane(a), plane(b));
             if da >= 0.0 {
-                current.push(a, input.original[i]);
+                current.push(a, input.original[i], input.weights[i]);
             }
             if (da >= 0.0) != (db >= 0.0) {
-                let cut = a + (b - a) * (da / (da - db));
+                let t = da / (da - db);
+                let cut = a + (b - a) * t;
+                let weights = input.weights[i] + (input.weights[j] - input.weights[i]) * t;
                 let leaving = da >= 0.0;
-                current.push(cut, !leaving && input.original[i]);
+                current.push(cut, !leaving && input.original[i], weights);
             }
         }
     }

@@ -5,12 +5,15 @@
 //! a steady frame allocates nothing.
 
 use bevy_ecs::prelude::Resource;
-use close2gl_core::{Camera, Close2glFrame, Mesh, RenderSettings, StageCounts, Viewport};
+use close2gl_core::{
+    Camera, Close2glFrame, Mesh, RasterGeometry, RasterVertex, Rasterizer, RenderSettings,
+    StageCounts, Viewport,
+};
 use rayon::prelude::*;
 
 use crate::clip::Outcode;
 use crate::matrices::ClipTransform;
-use crate::stage::{Stage, corner, process};
+use crate::stage::{CUT, Output, RasterOut, Stage, corner, process, to_window_depth};
 use crate::tally;
 
 /// Vertices and triangles per parallel task: big enough to amortise scheduling, small enough to
@@ -22,6 +25,7 @@ const TRIANGLE_CHUNK: usize = 16 * 1024;
 #[derive(Default)]
 struct Chunk {
     vertices: Vec<[f32; 2]>,
+    raster: RasterOut,
     counts: StageCounts,
 }
 
@@ -49,6 +53,7 @@ impl FastPipeline {
     ) {
         let transform = ClipTransform::new(camera);
         let stage = Stage::new(settings, viewport);
+        let raster = settings.close2gl_raster == Rasterizer::Software;
 
         // Transform every unique vertex once.
         let vertices = mesh.positions.len();
@@ -64,6 +69,10 @@ impl FastPipeline {
                 }
             });
 
+        if raster {
+            raster_vertices(mesh, &transform, &stage, &mut frame.raster.vertices);
+        }
+
         // Clip, divide, map, cull and emit the triangles, chunk by chunk.
         let (positions, codes, window) = (&mesh.positions, &self.codes, &self.window);
         let tasks = mesh.triangles.len().div_ceil(TRIANGLE_CHUNK);
@@ -73,15 +82,22 @@ impl FastPipeline {
             .zip(mesh.triangles.par_chunks(TRIANGLE_CHUNK))
             .for_each(|(chunk, triangles)| {
                 chunk.vertices.clear();
+                chunk.raster.primitives.clear();
+                chunk.raster.cuts.clear();
                 chunk.counts = StageCounts::default();
+                let mut out = Output {
+                    window: &mut chunk.vertices,
+                    raster: raster.then_some(&mut chunk.raster),
+                };
                 for triangle in triangles {
                     let [a, b, c] = triangle.map(|i| i as usize);
                     let fate = process(
+                        *triangle,
                         [codes[a], codes[b], codes[c]],
                         [window[a], window[b], window[c]],
                         || [a, b, c].map(|i| transform.apply(positions[i])),
                         &stage,
-                        &mut chunk.vertices,
+                        &mut out,
                     );
                     tally(&mut chunk.counts, fate);
                 }
@@ -94,6 +110,13 @@ impl FastPipeline {
             .vertices
             .resize(chunks.iter().map(|c| c.vertices.len()).sum(), [0.0; 2]);
         join(chunks, &mut frame.vertices);
+        if raster {
+            join_raster(chunks, &mut frame.raster);
+        } else {
+            frame.raster.vertices.clear();
+            frame.raster.cuts.clear();
+            frame.raster.primitives.clear();
+        }
         let mut counts = StageCounts::default();
         for chunk in chunks {
             counts.triangles_in += chunk.counts.triangles_in;
@@ -122,4 +145,45 @@ fn join(chunks: &[Chunk], out: &mut [[f32; 2]]) {
     let (left, right) = chunks.split_at(chunks.len() / 2);
     let (left_out, right_out) = out.split_at_mut(left.iter().map(|c| c.vertices.len()).sum());
     rayon::join(|| join(left, left_out), || join(right, right_out));
+}
+
+/// Each mesh vertex as the rasterizer needs it: window position, depth and 1/w (for vertices
+/// inside the view volume; the others are only reached through clipping), eye-space position
+/// and normal.
+fn raster_vertices(
+    mesh: &Mesh,
+    transform: &ClipTransform,
+    stage: &Stage,
+    out: &mut Vec<RasterVertex>,
+) {
+    out.resize(mesh.positions.len(), RasterVertex::default());
+    out.par_chunks_mut(VERTEX_CHUNK)
+        .zip(mesh.positions.par_chunks(VERTEX_CHUNK))
+        .zip(mesh.normals.par_chunks(VERTEX_CHUNK))
+        .for_each(|((out, positions), normals)| {
+            for ((v, p), n) in out.iter_mut().zip(positions).zip(normals) {
+                *v = RasterVertex {
+                    window: to_window_depth(transform.apply(*p), &stage.viewport),
+                    eye: transform.eye(*p).to_array(),
+                    normal: transform.eye_normal(*n).to_array(),
+                };
+            }
+        });
+}
+
+/// Joins the chunks' primitives and cut vertices in mesh order, turning each chunk's own cut
+/// indices into indices past the mesh vertices.
+fn join_raster(chunks: &[Chunk], out: &mut RasterGeometry) {
+    out.cuts.clear();
+    out.primitives.clear();
+    let mut base = out.vertices.len() as u32;
+    for chunk in chunks {
+        out.cuts.extend_from_slice(&chunk.raster.cuts);
+        out.primitives
+            .extend(chunk.raster.primitives.iter().map(|&i| match i & CUT {
+                0 => i,
+                _ => base + (i & !CUT),
+            }));
+        base += chunk.raster.cuts.len() as u32;
+    }
 }

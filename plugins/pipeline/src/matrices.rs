@@ -42,14 +42,16 @@ pub fn projection(hfov_deg: f32, vfov_deg: f32, near: f32, far: f32) -> Mat4 {
     ])
 }
 
-/// V: the normalized image plane [-1, 1]² → window pixels [0, width] × [0, height]. The window's
-/// origin is its top-left corner with y growing downwards (as every window system and wgpu count
-/// pixels), so y is scaled by -height/2: the top of the image plane (+1) lands on row 0.
+/// V: the normalized image plane [-1, 1]² → window pixels [0, width] × [0, height], and the
+/// normalized depth [-1, 1] → the depth range [0, 1] (glDepthRange's default, and the range of
+/// the reference's depth buffer). The window's origin is its top-left corner with y growing
+/// downwards (as every window system and wgpu count pixels), so y is scaled by -height/2: the top
+/// of the image plane (+1) lands on row 0.
 pub fn viewport(width: f32, height: f32) -> Mat4 {
     from_rows([
         [width / 2.0, 0.0, 0.0, width / 2.0],
         [0.0, -height / 2.0, 0.0, height / 2.0],
-        [0.0, 0.0, 1.0, 0.0],
+        [0.0, 0.0, 0.5, 0.5],
         [0.0, 0.0, 0.0, 1.0],
     ])
 }
@@ -68,6 +70,7 @@ pub fn projection_modelview(camera: &Camera) -> Mat4 {
 #[derive(Clone, Copy, Debug)]
 pub struct ClipTransform {
     centre: Vec3,
+    rotation: Mat4,
     projection_rotation: Mat4,
 }
 
@@ -77,11 +80,26 @@ impl ClipTransform {
             position: Vec3::ZERO,
             ..*camera
         };
+        let rotation = modelview(&at_origin);
         Self {
             centre: camera.position,
+            rotation,
             projection_rotation: projection(camera.hfov, camera.vfov, camera.near, camera.far)
-                * modelview(&at_origin),
+                * rotation,
         }
+    }
+
+    /// The eye-space position M·p of the world point `p`.
+    #[inline]
+    pub fn eye(&self, p: Vec3) -> Vec3 {
+        self.rotation.transform_vector3(p - self.centre)
+    }
+
+    /// The eye-space direction of the world normal `n`: M's rotation alone, whose inverse
+    /// transpose is itself.
+    #[inline]
+    pub fn eye_normal(&self, n: Vec3) -> Vec3 {
+        self.rotation.transform_vector3(n)
     }
 
     /// The clip coordinates P·M·p of the world point `p`.
@@ -161,7 +179,8 @@ mod tests {
         );
         assert_eq!(
             v * Vec4::new(0.0, 0.0, 0.5, 1.0),
-            Vec4::new(320.0, 240.0, 0.5, 1.0)
+            Vec4::new(320.0, 240.0, 0.75, 1.0),
+            "depth -1..1 lands in 0..1"
         );
     }
 

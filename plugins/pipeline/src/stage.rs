@@ -2,7 +2,9 @@
 //! clip, divide by w, map to the viewport, cull, emit. Both the textbook path and the fast path
 //! send every triangle through [`process`], so they cannot disagree on what a triangle becomes.
 
-use close2gl_core::{Clipping, FrontFace, RenderMode, RenderSettings, Topology, Viewport};
+use close2gl_core::{
+    Clipping, CutVertex, FrontFace, RenderMode, RenderSettings, Topology, Viewport,
+};
 use glam::{Mat4, Vec4};
 
 use crate::clip::{NEAR, Outcode, Polygon, clip_polygon, outcode};
@@ -50,9 +52,17 @@ pub fn corner(clip: Vec4, stage: &Stage) -> (Outcode, [f32; 2]) {
 
 /// The perspective division, then V.
 pub fn to_window(clip: Vec4, viewport: &Mat4) -> [f32; 2] {
-    let ndc = Vec4::new(clip.x / clip.w, clip.y / clip.w, clip.z / clip.w, 1.0);
+    let [x, y, _, _] = to_window_depth(clip, viewport);
+    [x, y]
+}
+
+/// The perspective division, then V, keeping what the rasterizer needs: window x, y, the depth
+/// in 0..1, and 1/w for perspective-correct interpolation.
+pub fn to_window_depth(clip: Vec4, viewport: &Mat4) -> [f32; 4] {
+    let inv_w = 1.0 / clip.w;
+    let ndc = Vec4::new(clip.x * inv_w, clip.y * inv_w, clip.z * inv_w, 1.0);
     let window = *viewport * ndc;
-    [window.x, window.y]
+    [window.x, window.y, window.z, inv_w]
 }
 
 /// What happened to a triangle.
@@ -64,17 +74,37 @@ pub enum Fate {
     Drawn(usize),
 }
 
-/// Clip, divide, map, cull and emit one triangle into `out`, given its corners' outcodes and
-/// window positions (from [`corner`]). The clip coordinates are asked for only when the triangle
-/// straddles the view volume's border: most triangles of a big mesh never need them. Inlined
-/// into the callers' loops; the cutting is not (see [`cut`]).
+/// An index in [`RasterOut::primitives`] with this bit set names a vertex of `cuts` (the bit
+/// cleared), not a mesh vertex. The fast path rebases these when it joins its chunks.
+pub const CUT: u32 = 1 << 31;
+
+/// The software rasterizer's share of the output: the primitives as vertex indices, and the
+/// vertices that clipping made.
+#[derive(Debug, Default)]
+pub struct RasterOut {
+    pub primitives: Vec<u32>,
+    pub cuts: Vec<CutVertex>,
+}
+
+/// Where a triangle's primitives go: always the 2D buffer; with the software rasterizer, also
+/// [`RasterOut`].
+pub struct Output<'a> {
+    pub window: &'a mut Vec<[f32; 2]>,
+    pub raster: Option<&'a mut RasterOut>,
+}
+
+/// Clip, divide, map, cull and emit one triangle (mesh vertices `corners`) into `out`, given its
+/// corners' outcodes and window positions (from [`corner`]). The clip coordinates are asked for
+/// only when the triangle straddles the view volume's border: most triangles of a big mesh never
+/// need them. Inlined into the callers' loops; the cutting is not (see [`cut`]).
 #[inline(always)]
 pub fn process(
+    corners: [u32; 3],
     codes: [Outcode; 3],
     window: [[f32; 2]; 3],
     clip: impl FnOnce() -> [Vec4; 3],
     stage: &Stage,
-    out: &mut Vec<[f32; 2]>,
+    out: &mut Output<'_>,
 ) -> Fate {
     let outside_any = codes[0] | codes[1] | codes[2];
     if outside_any == 0 {
@@ -82,20 +112,26 @@ pub fn process(
         if is_culled(&window, stage.culling) {
             return Fate::Culled;
         }
-        return Fate::Drawn(emit_inside(&window, stage.mode, out));
+        return Fate::Drawn(emit_inside(&window, corners, stage.mode, out));
     }
     let outside_all = codes[0] & codes[1] & codes[2];
     if stage.clipping == Clipping::Simple || outside_all != 0 {
         return Fate::Clipped;
     }
-    cut(clip(), outside_any, stage, out)
+    cut(corners, clip(), outside_any, stage, out)
 }
 
 /// Clip, divide, map, cull and emit a triangle that straddles the planes in `outside_any`. Kept
 /// out of line: its polygons need a large stack frame that the common, trivially inside
 /// triangle should not pay for.
 #[inline(never)]
-fn cut(clip: [Vec4; 3], outside_any: Outcode, stage: &Stage, out: &mut Vec<[f32; 2]>) -> Fate {
+fn cut(
+    corners: [u32; 3],
+    clip: [Vec4; 3],
+    outside_any: Outcode,
+    stage: &Stage,
+    out: &mut Output<'_>,
+) -> Fate {
     let triangle = Polygon::triangle(clip[0], clip[1], clip[2]);
     let piece = clip_polygon(&triangle, outside_any);
     let mut piece_window = [[0.0; 2]; crate::clip::MAX_POLYGON];
@@ -109,11 +145,52 @@ fn cut(clip: [Vec4; 3], outside_any: Outcode, stage: &Stage, out: &mut Vec<[f32;
     if is_culled(piece_window, stage.culling) {
         return Fate::Culled;
     }
-    Fate::Drawn(match stage.mode {
-        RenderMode::Solid => emit_fan(piece_window, out),
-        RenderMode::Wireframe => emit_original_edges(piece_window, &piece.original, out),
-        RenderMode::Points => emit_points(&triangle, outside_any, stage, out),
-    })
+    if stage.mode == RenderMode::Points {
+        let points = clip_polygon(&triangle, outside_any & NEAR);
+        return Fate::Drawn(emit_points(&points, corners, stage, out));
+    }
+    let ids = push_cuts(&piece, corners, stage, out);
+    let before = out.window.len();
+    let mut emit = |i: usize| {
+        out.window.push(piece_window[i]);
+        if let Some(raster) = out.raster.as_deref_mut() {
+            raster.primitives.push(ids[i]);
+        }
+    };
+    if stage.mode == RenderMode::Solid {
+        for i in 1..piece.len - 1 {
+            [0, i, i + 1].into_iter().for_each(&mut emit);
+        }
+        return Fate::Drawn(piece.len - 2);
+    }
+    // A GPU draws a clipped polygon in line mode as what is left of the triangle's own edges;
+    // the edges clipping added along the planes are not drawn.
+    for i in (0..piece.len).filter(|&i| piece.original[i]) {
+        [i, (i + 1) % piece.len].into_iter().for_each(&mut emit);
+    }
+    Fate::Drawn((out.window.len() - before) / 2)
+}
+
+/// With the rasterizer, every vertex of a cut piece becomes a [`CutVertex`]; returns their
+/// indices (with [`CUT`] set), or nothing without the rasterizer.
+fn push_cuts(
+    piece: &Polygon,
+    corners: [u32; 3],
+    stage: &Stage,
+    out: &mut Output<'_>,
+) -> [u32; crate::clip::MAX_POLYGON] {
+    let mut ids = [0; crate::clip::MAX_POLYGON];
+    if let Some(raster) = out.raster.as_deref_mut() {
+        for (i, (p, weights)) in piece.vertices().iter().zip(piece.weights).enumerate() {
+            ids[i] = CUT | raster.cuts.len() as u32;
+            raster.cuts.push(CutVertex {
+                window: to_window_depth(*p, &stage.viewport),
+                corners,
+                weights: weights.to_array(),
+            });
+        }
+    }
+    ids
 }
 
 /// Twice the signed area (the red book's formula). Window y grows downwards, so a polygon that
@@ -159,63 +236,56 @@ fn is_culled(window: &[[f32; 2]], culling: Option<FrontFace>) -> bool {
     !front_facing || area.abs() <= DEGENERATE * longest_edge_squared(window)
 }
 
-fn emit_inside(window: &[[f32; 2]; 3], mode: RenderMode, out: &mut Vec<[f32; 2]>) -> usize {
-    match mode {
-        RenderMode::Solid => {
-            out.extend_from_slice(window);
-            1
-        }
-        RenderMode::Wireframe => {
-            out.extend_from_slice(&[
-                window[0], window[1], window[1], window[2], window[2], window[0],
-            ]);
-            3
-        }
-        RenderMode::Points => {
-            out.extend_from_slice(window);
-            3
-        }
-    }
-}
+/// The corners in the order of the mode's primitives: the triangle, its three edges as lines,
+/// or its three corners as points.
+const SOLID: &[usize] = &[0, 1, 2];
+const EDGES: &[usize] = &[0, 1, 1, 2, 2, 0];
 
-fn emit_fan(window: &[[f32; 2]], out: &mut Vec<[f32; 2]>) -> usize {
-    for i in 1..window.len() - 1 {
-        out.extend_from_slice(&[window[0], window[i], window[i + 1]]);
+fn emit_inside(
+    window: &[[f32; 2]; 3],
+    corners: [u32; 3],
+    mode: RenderMode,
+    out: &mut Output<'_>,
+) -> usize {
+    let (order, primitives) = match mode {
+        RenderMode::Solid => (SOLID, 1),
+        RenderMode::Wireframe => (EDGES, 3),
+        RenderMode::Points => (SOLID, 3),
+    };
+    out.window.extend(order.iter().map(|&i| window[i]));
+    if let Some(raster) = out.raster.as_deref_mut() {
+        raster.primitives.extend(order.iter().map(|&i| corners[i]));
     }
-    window.len() - 2
-}
-
-/// A GPU draws a clipped polygon in line mode as what is left of the triangle's own edges; the
-/// edges clipping added along the planes are not drawn.
-fn emit_original_edges(window: &[[f32; 2]], original: &[bool], out: &mut Vec<[f32; 2]>) -> usize {
-    let before = out.len();
-    for (i, a) in window.iter().enumerate() {
-        if original[i] {
-            out.extend_from_slice(&[*a, window[(i + 1) % window.len()]]);
-        }
-    }
-    (out.len() - before) / 2
+    primitives
 }
 
 /// In point mode, a GPU draws the vertices that start one of the triangle's own edges once the
-/// near plane has cut it: its corners, and the points where an edge comes back in front of the
-/// near plane. Every other plane applies to each point alone (a point outside the viewport or
-/// the depth range is dropped), so no vertex is made on them.
+/// near plane has cut it (`near_cut`): its corners, and the points where an edge comes back in
+/// front of the near plane. Every other plane applies to each point alone (a point outside the
+/// viewport or the depth range is dropped), so no vertex is made on them.
 fn emit_points(
-    triangle: &Polygon,
-    outside: Outcode,
+    near_cut: &Polygon,
+    corners: [u32; 3],
     stage: &Stage,
-    out: &mut Vec<[f32; 2]>,
+    out: &mut Output<'_>,
 ) -> usize {
-    let near_cut = clip_polygon(triangle, outside & NEAR);
-    let before = out.len();
-    for (p, original) in near_cut.vertices().iter().zip(near_cut.original) {
+    let before = out.window.len();
+    for (i, p) in near_cut.vertices().iter().enumerate() {
         // Points made on the near plane are inside it by construction, whatever the rounding.
-        if original && outcode(*p) & !NEAR == 0 {
-            out.push(to_window(*p, &stage.viewport));
+        if near_cut.original[i] && outcode(*p) & !NEAR == 0 {
+            let window = to_window_depth(*p, &stage.viewport);
+            out.window.push([window[0], window[1]]);
+            if let Some(raster) = out.raster.as_deref_mut() {
+                raster.primitives.push(CUT | raster.cuts.len() as u32);
+                raster.cuts.push(CutVertex {
+                    window,
+                    corners,
+                    weights: near_cut.weights[i].to_array(),
+                });
+            }
         }
     }
-    out.len() - before
+    out.window.len() - before
 }
 
 #[cfg(test)]

@@ -5,7 +5,7 @@
 use close2gl_core::{Camera, Close2glFrame, Mesh, RenderSettings, StageCounts, Viewport};
 
 use crate::matrices::ClipTransform;
-use crate::stage::{Stage, corner, process};
+use crate::stage::{Output, Stage, corner, process};
 use crate::tally;
 
 /// Fills `frame` with the 2D buffer and counts for this camera, mesh, settings and viewport.
@@ -25,7 +25,11 @@ pub fn run(
         let corners = clip.map(|c| corner(c, &stage));
         let codes = corners.map(|(code, _)| code);
         let window = corners.map(|(_, window)| window);
-        let fate = process(codes, window, || clip, &stage, &mut frame.vertices);
+        let mut out = Output {
+            window: &mut frame.vertices,
+            raster: None,
+        };
+        let fate = process(*triangle, codes, window, || clip, &stage, &mut out);
         tally(&mut counts, fate);
     }
     frame.topology = stage.topology();

@@ -1,9 +1,9 @@
 use bevy_ecs::prelude::*;
 use close2gl_core::glam::Vec3;
-use close2gl_core::{Clipping, FrontFace, RenderMode, RenderSettings, Shading};
+use close2gl_core::{Clipping, FrontFace, Rasterizer, RenderMode, RenderSettings, Shading};
 
-/// Mode, front face, culling, clipping, shading and the model's colour: one `RenderSettings` for
-/// both views.
+/// Mode, front face, culling, clipping, shading, who rasterizes Close2GL and the model's colour:
+/// one `RenderSettings` for both views.
 pub fn section(ui: &mut egui::Ui, world: &mut World) {
     let Some(mut settings) = world.get_resource::<RenderSettings>().copied() else {
         return;
@@ -36,8 +36,25 @@ pub fn section(ui: &mut egui::Ui, world: &mut World) {
                 }
             })
             .response
-            .on_hover_text("The reference view's lighting; Close2GL draws flat colour.");
+            .on_hover_text(
+                "Both views' lighting when Close2GL rasterizes in software; with the GPU \
+                 rasterizer, Close2GL draws flat colour.",
+            );
     });
+    ui.horizontal(|ui| {
+        ui.label("Close2GL raster");
+        choice(
+            ui,
+            &mut settings.close2gl_raster,
+            Rasterizer::ALL,
+            Rasterizer::name,
+        );
+    })
+    .response
+    .on_hover_text(
+        "gpu: the GPU draws Close2GL's 2D primitives (the assignment's rule). software: \
+         Close2GL's own rasterizer, z-buffer and shading.",
+    );
     ui.horizontal(|ui| {
         ui.label("Colour");
         color(ui, &mut settings.color);

@@ -2,7 +2,7 @@ use std::collections::VecDeque;
 use std::time::{Duration, Instant};
 
 use bevy_ecs::prelude::*;
-use close2gl_core::Close2glFrame;
+use close2gl_core::{Close2glFrame, Rasterizer, RenderSettings, SoftwareFrame};
 
 /// What the viewer measured, for the Stats section: one timer per view, the adapter, and what
 /// the adapter cannot do.
@@ -90,6 +90,14 @@ pub fn section(ui: &mut egui::Ui, world: &mut World) {
                 ui.label("Geometry");
                 ui.monospace(format!("{:.2} ms", frame.stage_ms));
                 ui.end_row();
+                let software = world
+                    .get_resource::<RenderSettings>()
+                    .is_some_and(|s| s.close2gl_raster == Rasterizer::Software);
+                if let (true, Some(image)) = (software, world.get_resource::<SoftwareFrame>()) {
+                    ui.label("Raster");
+                    ui.monospace(format!("{:.2} ms", image.raster_ms));
+                    ui.end_row();
+                }
             });
     }
     ui.label(format!("Adapter: {}", stats.adapter));

@@ -1,11 +1,14 @@
 //! `close2gl bench`: times the Close2GL geometry stage (transform, full clipping, divide,
 //! viewport, cull, 2D buffer written) against the straightforward version, in one run, and
-//! prints medians and their ratio as JSON.
+//! prints medians and their ratio as JSON. `--raster` times the software rasterizer's whole
+//! frame beside lavapipe's reference view of the same scene; `--fill` its fill rate.
 
 pub mod baseline;
+pub mod raster;
 
 use std::time::Instant;
 
+use crate::config::Config;
 use close2gl_core::{
     Camera, Clipping, Close2glFrame, Mesh, ModelSource, PrimitiveKind, RenderMode,
 };
@@ -19,9 +22,17 @@ use super::scene::{SceneArgs, viewport};
 pub struct BenchArgs {
     #[command(flatten)]
     pub scene: SceneArgs,
-    /// With no MODEL: a generated sphere of about this many triangles.
-    #[arg(long, default_value_t = 1_000_000)]
-    pub triangles: usize,
+    /// With no MODEL: a generated sphere of about this many triangles (default for the geometry
+    /// bench: 1,000,000; with --raster, the configured model unless this is given).
+    #[arg(long)]
+    pub triangles: Option<usize>,
+    /// Time the software rasterizer's whole frame (geometry, raster, shading) beside the GPU
+    /// reference view of the same scene (set the shading with --set render.shading=...).
+    #[arg(long, conflicts_with = "fill")]
+    pub raster: bool,
+    /// Time the software rasterizer's fill rate on a screen of large triangles.
+    #[arg(long)]
+    pub fill: bool,
     /// Frames timed for each version; the medians are reported.
     #[arg(long, default_value_t = 30)]
     pub frames: usize,
@@ -34,42 +45,65 @@ pub struct BenchArgs {
 }
 
 pub fn run(args: BenchArgs) -> Result<(), CliError> {
-    if args.frames == 0 || args.triangles == 0 {
+    if args.frames == 0 || args.triangles == Some(0) {
         return Err(CliError::Input(
             "bench: --frames and --triangles must be at least 1".into(),
         ));
     }
+    let pool = thread_pool(args.threads)?;
+    let report = if args.fill {
+        raster::fill(&args, &pool)?
+    } else if args.raster {
+        raster::frame(&args, &pool)?
+    } else {
+        geometry(&args, &pool)?
+    };
+    println!("{report}");
+    Ok(())
+}
+
+/// The configuration, with the MODEL argument or, when there is none and `triangles` is given,
+/// a sphere of about that many triangles.
+fn scene_config(args: &BenchArgs, triangles: Option<usize>) -> Result<Config, CliError> {
     let mut config = args.scene.config()?;
-    if args.scene.model.is_none() {
+    if let (None, Some(triangles)) = (&args.scene.model, triangles) {
         config.model = ModelSource::Primitive(PrimitiveKind::Sphere);
         (
             config.primitives.sphere_stacks,
             config.primitives.sphere_slices,
-        ) = sphere_grid(args.triangles);
+        ) = sphere_grid(triangles);
     }
+    Ok(config)
+}
+
+/// The workers, `threads` of them (default: one per core).
+fn thread_pool(threads: Option<usize>) -> Result<rayon::ThreadPool, CliError> {
+    let threads = threads.unwrap_or_else(rayon::current_num_threads).max(1);
+    rayon::ThreadPoolBuilder::new()
+        .num_threads(threads)
+        .build()
+        .map_err(|e| CliError::Runtime(format!("bench: cannot start {threads} threads: {e}")))
+}
+
+/// The framed scene's mesh and camera.
+fn scene(app: &mut close2gl_core::App) -> Result<(Mesh, Camera), CliError> {
+    let world = app.world_mut();
+    let mesh = world.query::<&Mesh>().single(world).ok().cloned();
+    let camera = world.query::<&Camera>().single(world).ok().copied();
+    mesh.zip(camera)
+        .ok_or_else(|| CliError::Runtime("bench: the scene has no mesh or camera".into()))
+}
+
+/// The geometry stage against the baseline.
+fn geometry(args: &BenchArgs, pool: &rayon::ThreadPool) -> Result<serde_json::Value, CliError> {
+    let mut config = scene_config(args, Some(args.triangles.unwrap_or(1_000_000)))?;
     // The stage the issue measures: solid triangles through full clipping.
     config.render.mode = RenderMode::Solid;
     config.render.clipping = Clipping::Full;
     let viewport = viewport(args.size.as_deref(), &config)?;
     let mut app = crate::build_app(&config, viewport).map_err(CliError::Input)?;
-    let world = app.world_mut();
-    let (mut meshes, mut cameras) = (world.query::<&Mesh>(), world.query::<&Camera>());
-    let world = &*world;
-    let (Ok(mesh), Ok(camera)) = (meshes.single(world), cameras.single(world)) else {
-        return Err(CliError::Runtime(
-            "bench: the scene has no mesh or camera".into(),
-        ));
-    };
+    let (mesh, camera) = &scene(&mut app)?;
     let settings = config.render;
-
-    let threads = args
-        .threads
-        .unwrap_or_else(rayon::current_num_threads)
-        .max(1);
-    let pool = rayon::ThreadPoolBuilder::new()
-        .num_threads(threads)
-        .build()
-        .map_err(|e| CliError::Runtime(format!("bench: cannot start {threads} threads: {e}")))?;
     let mut pipeline = FastPipeline::default();
     let mut frame = Close2glFrame::default();
     let fast = pool.install(|| {
@@ -82,19 +116,15 @@ pub fn run(args: BenchArgs) -> Result<(), CliError> {
     });
 
     let triangles = mesh.triangles.len();
-    println!(
-        "{}",
-        json!({
-            "triangles": triangles,
-            "frames": args.frames,
-            "threads": threads,
-            "median_ms": fast,
-            "triangles_per_sec": triangles as f64 / (fast / 1e3),
-            "baseline_median_ms": slow,
-            "speedup": slow / fast,
-        })
-    );
-    Ok(())
+    Ok(json!({
+        "triangles": triangles,
+        "frames": args.frames,
+        "threads": pool.current_num_threads(),
+        "median_ms": fast,
+        "triangles_per_sec": triangles as f64 / (fast / 1e3),
+        "baseline_median_ms": slow,
+        "speedup": slow / fast,
+    }))
 }
 
 /// Sphere stacks and slices (slices = 2 · stacks) giving about `triangles` triangles.
@@ -104,7 +134,7 @@ pub fn sphere_grid(triangles: usize) -> (u32, u32) {
 }
 
 /// Runs `f` once to warm up, then `frames` times; the median wall time in milliseconds.
-fn median_ms(frames: usize, mut f: impl FnMut()) -> f64 {
+pub fn median_ms(frames: usize, mut f: impl FnMut()) -> f64 {
     f();
     let mut times: Vec<f64> = (0..frames)
         .map(|_| {

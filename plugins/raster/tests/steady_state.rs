@@ -1,12 +1,17 @@
-//! A steady frame of the fast path allocates nothing: every buffer is reused. Counted with a
-//! global allocator that tallies every allocation on every thread (rayon's workers included).
+//! A steady frame allocates nothing, in the pipeline's fast path and in the software rasterizer
+//! after it: every buffer is reused. Counted with a global allocator that tallies every
+//! allocation on every thread (rayon's workers included).
 
 use std::alloc::{GlobalAlloc, Layout, System};
 use std::sync::atomic::{AtomicUsize, Ordering};
 
 use close2gl_core::glam::Vec3;
-use close2gl_core::{Camera, Clipping, Close2glFrame, Mesh, RenderMode, RenderSettings, Viewport};
+use close2gl_core::{
+    Camera, Clipping, Close2glFrame, Lighting, Mesh, Rasterizer, RenderMode, RenderSettings,
+    Shading, SoftwareFrame, Viewport,
+};
 use close2gl_pipeline::FastPipeline;
+use close2gl_raster::SoftwareRasterizer;
 
 struct Counting;
 
@@ -78,41 +83,50 @@ fn a_steady_frame_allocates_nothing() {
         width: 800,
         height: 600,
     };
+    let lighting = Lighting::default();
     let mut pipeline = FastPipeline::default();
+    let mut rasterizer = SoftwareRasterizer::default();
     let mut frame = Close2glFrame::default();
+    let mut image = SoftwareFrame::default();
+    let mut run = |settings: &RenderSettings| {
+        pipeline.run(&mesh, &camera, settings, viewport, &mut frame);
+        if settings.close2gl_raster == Rasterizer::Software {
+            rasterizer.draw(&frame, &camera, settings, &lighting, &mut image);
+        }
+        frame.counts
+    };
     let before = ALLOCATIONS.load(Ordering::SeqCst);
-    pipeline.run(
-        &mesh,
-        &camera,
-        &RenderSettings::default(),
-        viewport,
-        &mut frame,
-    );
+    run(&RenderSettings::default());
     assert!(
         ALLOCATIONS.load(Ordering::SeqCst) > before,
         "the counter sees a first frame's buffers"
     );
-    for mode in [RenderMode::Solid, RenderMode::Wireframe, RenderMode::Points] {
-        let settings = RenderSettings {
-            mode,
-            clipping: Clipping::Full,
-            backface_culling: false,
-            ..RenderSettings::default()
-        };
-        // Two warm-up frames size every buffer (and start rayon's pool).
-        pipeline.run(&mesh, &camera, &settings, viewport, &mut frame);
-        pipeline.run(&mesh, &camera, &settings, viewport, &mut frame);
-        assert!(
-            frame.counts.clipped > 0 && frame.counts.drawn > 0,
-            "{:?}",
-            frame.counts
-        );
-        let before = ALLOCATIONS.load(Ordering::SeqCst);
-        pipeline.run(&mesh, &camera, &settings, viewport, &mut frame);
-        let allocated = ALLOCATIONS.load(Ordering::SeqCst) - before;
-        assert_eq!(
-            allocated, 0,
-            "{mode:?}: a steady frame allocated {allocated} times"
-        );
+    let software = [Shading::None, Shading::GouraudAds, Shading::Phong]
+        .map(|shading| (Rasterizer::Software, shading));
+    for (close2gl_raster, shading) in [(Rasterizer::Gpu, Shading::None)]
+        .into_iter()
+        .chain(software)
+    {
+        for mode in [RenderMode::Solid, RenderMode::Wireframe, RenderMode::Points] {
+            let settings = RenderSettings {
+                mode,
+                clipping: Clipping::Full,
+                backface_culling: false,
+                close2gl_raster,
+                shading,
+                ..RenderSettings::default()
+            };
+            // Two warm-up frames size every buffer (and start rayon's pool).
+            run(&settings);
+            let counts = run(&settings);
+            assert!(counts.clipped > 0 && counts.drawn > 0, "{counts:?}");
+            let before = ALLOCATIONS.load(Ordering::SeqCst);
+            run(&settings);
+            let allocated = ALLOCATIONS.load(Ordering::SeqCst) - before;
+            assert_eq!(
+                allocated, 0,
+                "{close2gl_raster:?} {shading:?} {mode:?}: a steady frame allocated {allocated} times"
+            );
+        }
     }
 }

@@ -1,0 +1,127 @@
+//! The Close2GL view when Close2GL rasterizes: the software rasterizer's image uploaded into a
+//! texture (remade only when its size changes) and drawn as one triangle covering the viewport.
+
+use close2gl_core::SoftwareFrame;
+
+pub(crate) struct SoftwareView {
+    pipeline: wgpu::RenderPipeline,
+    layout: wgpu::BindGroupLayout,
+    /// The texture, its bind group and its size; none before the first image.
+    image: Option<(wgpu::Texture, wgpu::BindGroup)>,
+    generation: u64,
+}
+
+impl SoftwareView {
+    pub(crate) fn new(device: &wgpu::Device, color_format: wgpu::TextureFormat) -> Self {
+        let shader = device.create_shader_module(wgpu::include_wgsl!("software.wgsl"));
+        let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
+            label: Some("software image"),
+            entries: &[wgpu::BindGroupLayoutEntry {
+                binding: 0,
+                visibility: wgpu::ShaderStages::FRAGMENT,
+                ty: wgpu::BindingType::Texture {
+                    sample_type: wgpu::TextureSampleType::Float { filterable: false },
+                    view_dimension: wgpu::TextureViewDimension::D2,
+                    multisampled: false,
+                },
+                count: None,
+            }],
+        });
+        let pipeline_layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
+            label: Some("software image"),
+            bind_group_layouts: &[Some(&layout)],
+            immediate_size: 0,
+        });
+        let pipeline = device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
+            label: Some("software image"),
+            layout: Some(&pipeline_layout),
+            vertex: wgpu::VertexState {
+                module: &shader,
+                entry_point: Some("vs_main"),
+                compilation_options: Default::default(),
+                buffers: &[],
+            },
+            primitive: Default::default(),
+            depth_stencil: None,
+            multisample: Default::default(),
+            fragment: Some(wgpu::FragmentState {
+                module: &shader,
+                entry_point: Some("fs_main"),
+                compilation_options: Default::default(),
+                targets: &[Some(color_format.into())],
+            }),
+            multiview_mask: None,
+            cache: None,
+        });
+        Self {
+            pipeline,
+            layout,
+            image: None,
+            generation: 0,
+        }
+    }
+
+    /// Uploads `frame` when it is a new image.
+    pub(crate) fn update(
+        &mut self,
+        device: &wgpu::Device,
+        queue: &wgpu::Queue,
+        frame: &SoftwareFrame,
+    ) {
+        let size = wgpu::Extent3d {
+            width: frame.width,
+            height: frame.height,
+            depth_or_array_layers: 1,
+        };
+        let complete = frame.pixels.len() == frame.width as usize * frame.height as usize;
+        if frame.generation == self.generation || frame.width == 0 || frame.height == 0 || !complete
+        {
+            return;
+        }
+        self.generation = frame.generation;
+        if self.image.as_ref().is_none_or(|(t, _)| t.size() != size) {
+            let texture = device.create_texture(&wgpu::TextureDescriptor {
+                label: Some("software image"),
+                size,
+                mip_level_count: 1,
+                sample_count: 1,
+                dimension: wgpu::TextureDimension::D2,
+                format: wgpu::TextureFormat::Rgba8Unorm,
+                usage: wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::COPY_DST,
+                view_formats: &[],
+            });
+            let view = texture.create_view(&Default::default());
+            let bind_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
+                label: Some("software image"),
+                layout: &self.layout,
+                entries: &[wgpu::BindGroupEntry {
+                    binding: 0,
+                    resource: wgpu::BindingResource::TextureView(&view),
+                }],
+            });
+            self.image = Some((texture, bind_group));
+        }
+        let Some((texture, _)) = &self.image else {
+            return;
+        };
+        queue.write_texture(
+            texture.as_image_copy(),
+            bytemuck::cast_slice(&frame.pixels),
+            wgpu::TexelCopyBufferLayout {
+                offset: 0,
+                bytes_per_row: Some(4 * frame.width),
+                rows_per_image: Some(frame.height),
+            },
+            size,
+        );
+    }
+
+    pub(crate) fn draw(&self, pass: &mut wgpu::RenderPass<'_>) {
+        let Some((_, bind_group)) = &self.image else {
+            return;
+        };
+        pass.set_pipeline(&self.pipeline);
+        pass.set_bind_group(0, bind_group, &[]);
+        pass.draw(0..3, 0..1);
+    }
+}

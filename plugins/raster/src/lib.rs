@@ -1,0 +1,62 @@
+//! Close2GL's own rasterizer. This crate owns the software path from the pipeline's clipped,
+//! culled primitives to pixels: triangle setup in fixed point with the top-left fill rule, lines
+//! and points as the reference's GPU draws them, a depth buffer with the reference's test, the
+//! four shadings lit exactly as the reference's shader lights them, and perspective-correct
+//! interpolation; tiled (64×64 bins, each triangle binned once) and drawn in parallel. Its
+//! `RasterPlugin` reads `Close2glFrame`, `Camera`, `RenderSettings` and `Lighting`, and writes
+//! the `SoftwareFrame` image when `RenderSettings::close2gl_raster` is `software`. Like the
+//! pipeline, it knows no GPU, window or UI.
+
+mod bin;
+mod primitives;
+mod rasterizer;
+mod setup;
+pub mod shading;
+mod target;
+mod tile;
+
+use std::time::Instant;
+
+use bevy_ecs::prelude::*;
+use close2gl_core::{
+    App, Camera, Close2glFrame, Lighting, Plugin, PostUpdate, Rasterizer, RenderSettings,
+    SoftwareFrame,
+};
+
+pub use rasterizer::SoftwareRasterizer;
+
+/// Runs the software rasterizer in `PostUpdate`, after the Close2GL pipeline.
+pub struct RasterPlugin;
+
+impl Plugin for RasterPlugin {
+    fn build(&self, app: &mut App) {
+        app.init_resource::<SoftwareRasterizer>()
+            .init_resource::<SoftwareFrame>()
+            .init_resource::<Lighting>()
+            .add_systems(
+                PostUpdate,
+                raster_system.after(close2gl_pipeline::close2gl_system),
+            );
+    }
+}
+
+/// Draws a new image when the pipeline's output or the lighting changed (and the software
+/// rasterizer is the one asked for).
+pub fn raster_system(
+    camera: Single<&Camera>,
+    frame: Res<Close2glFrame>,
+    settings: Res<RenderSettings>,
+    lighting: Res<Lighting>,
+    mut rasterizer: ResMut<SoftwareRasterizer>,
+    mut image: ResMut<SoftwareFrame>,
+) {
+    let wanted = settings.close2gl_raster == Rasterizer::Software;
+    let stale = frame.is_changed() || lighting.is_changed() || settings.is_changed();
+    if !wanted || !stale {
+        return;
+    }
+    let start = Instant::now();
+    rasterizer.draw(&frame, &camera, &settings, &lighting, &mut image);
+    image.raster_ms = start.elapsed().as_secs_f64() * 1e3;
+    image.generation += 1;
+}

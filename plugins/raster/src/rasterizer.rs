@@ -1,0 +1,200 @@
+//! One software frame, top to bottom: the vertex stage (varyings for each vertex), setup (each
+//! primitive to triangles with edges and planes), binning into tiles, the tiles drawn in
+//! parallel (clear, rasterize, depth test, shade), and the tiles copied out as an image.
+
+use bevy_ecs::prelude::Resource;
+use close2gl_core::{
+    Camera, Close2glFrame, Lighting, RenderSettings, Shading, SoftwareFrame, Topology,
+};
+use close2gl_pipeline::matrices::ClipTransform;
+use glam::Vec3;
+use rayon::prelude::*;
+
+use crate::bin::Bins;
+use crate::primitives::{self, SetupParams, Vertex};
+use crate::setup::{Triangle, VARYINGS};
+use crate::shading::{
+    Flat, Gouraud, Light, Phong, PixelShader, flat_color, pack, varyings_used, vertex_varyings,
+};
+use crate::target::{TILE_PIXELS, Target};
+use crate::tile::draw_tile;
+
+/// Primitives set up per parallel task.
+const SETUP_CHUNK: usize = 4096;
+
+/// The rasterizer's buffers, reused from frame to frame: a steady frame allocates nothing.
+#[derive(Resource, Default)]
+pub struct SoftwareRasterizer {
+    vertices: Vec<Vertex>,
+    triangles: Vec<Triangle>,
+    bins: Bins,
+    target: Target,
+}
+
+/// A frame's constants.
+struct Frame<'a> {
+    geometry: &'a Close2glFrame,
+    shading: Shading,
+    light: Light,
+}
+
+impl SoftwareRasterizer {
+    /// Draws the pipeline's output `geometry` (which must have been made with the software
+    /// rasterizer on, for `camera`) into `out`.
+    pub fn draw(
+        &mut self,
+        geometry: &Close2glFrame,
+        camera: &Camera,
+        settings: &RenderSettings,
+        lighting: &Lighting,
+        out: &mut SoftwareFrame,
+    ) {
+        let light_eye = ClipTransform::new(camera).eye(lighting.light_position);
+        let frame = Frame {
+            geometry,
+            shading: settings.shading,
+            light: Light::new(lighting, light_eye, settings.shading),
+        };
+        let size = geometry.viewport;
+        self.target.resize(size.width, size.height);
+        self.vertex_stage(&frame);
+        self.setup(&frame);
+        self.bins.fill(self.target.grid, &self.triangles);
+        let background = pack(settings.background);
+        match settings.shading {
+            Shading::None => self.draw_tiles(background, &Flat(flat_color(settings))),
+            Shading::GouraudAd | Shading::GouraudAds => self.draw_tiles(
+                background,
+                &Gouraud {
+                    color: settings.color,
+                },
+            ),
+            Shading::Phong => self.draw_tiles(
+                background,
+                &Phong {
+                    color: settings.color,
+                    light: frame.light,
+                },
+            ),
+        }
+        self.target.resolve(&mut out.pixels);
+        (out.width, out.height) = (size.width, size.height);
+    }
+
+    /// Each vertex's window position and varyings: the mesh's vertices lit in parallel, then
+    /// the vertices clipping made, interpolated from their triangle's corners.
+    fn vertex_stage(&mut self, frame: &Frame<'_>) {
+        let raster = &frame.geometry.raster;
+        let mesh_vertices = raster.vertices.len();
+        self.vertices.resize(
+            mesh_vertices + raster.cuts.len(),
+            Vertex {
+                window: [0.0; 4],
+                varyings: [0.0; VARYINGS],
+            },
+        );
+        let (mesh, cuts) = self.vertices.split_at_mut(mesh_vertices);
+        let (shading, light) = (frame.shading, &frame.light);
+        mesh.par_chunks_mut(SETUP_CHUNK * 4)
+            .zip(raster.vertices.par_chunks(SETUP_CHUNK * 4))
+            .for_each(|(out, vertices)| {
+                for (o, v) in out.iter_mut().zip(vertices) {
+                    *o = Vertex {
+                        window: v.window,
+                        varyings: vertex_varyings(
+                            shading,
+                            light,
+                            Vec3::from(v.eye),
+                            Vec3::from(v.normal),
+                        ),
+                    };
+                }
+            });
+        for (o, cut) in cuts.iter_mut().zip(&raster.cuts) {
+            let mut varyings = [0.0; VARYINGS];
+            for (corner, weight) in cut.corners.iter().zip(cut.weights) {
+                let from = &mesh[*corner as usize].varyings;
+                for (v, f) in varyings.iter_mut().zip(from) {
+                    *v += weight * f;
+                }
+            }
+            *o = Vertex {
+                window: cut.window,
+                varyings,
+            };
+        }
+    }
+
+    /// Every primitive to its triangles (two for a line or a point), in order.
+    fn setup(&mut self, frame: &Frame<'_>) {
+        let geometry = frame.geometry;
+        let params = SetupParams {
+            size: [
+                geometry.viewport.width as i32,
+                geometry.viewport.height as i32,
+            ],
+            varyings: varyings_used(frame.shading),
+        };
+        let (per_primitive, triangles_per) = match geometry.topology {
+            Topology::Triangles => (3, 1),
+            Topology::Lines => (2, 2),
+            Topology::Points => (1, 2),
+        };
+        let indices = &geometry.raster.primitives;
+        let count = indices.len() / per_primitive;
+        self.triangles
+            .resize(count * triangles_per, Triangle::EMPTY);
+        let vertices = &self.vertices;
+        let vertex = |i: u32| vertices[i as usize];
+        self.triangles
+            .par_chunks_mut(SETUP_CHUNK * triangles_per)
+            .zip(indices.par_chunks(SETUP_CHUNK * per_primitive))
+            .for_each(|(out, indices)| {
+                let primitives = indices.chunks_exact(per_primitive);
+                match geometry.topology {
+                    Topology::Triangles => {
+                        for (o, p) in out.iter_mut().zip(primitives) {
+                            *o = primitives::triangle([p[0], p[1], p[2]].map(vertex), params);
+                        }
+                    }
+                    Topology::Lines => {
+                        for (o, p) in out.chunks_exact_mut(2).zip(primitives) {
+                            o.copy_from_slice(&primitives::line(
+                                vertex(p[0]),
+                                vertex(p[1]),
+                                params,
+                            ));
+                        }
+                    }
+                    Topology::Points => {
+                        for (o, p) in out.chunks_exact_mut(2).zip(primitives) {
+                            o.copy_from_slice(&primitives::point(vertex(p[0]), params));
+                        }
+                    }
+                }
+            });
+    }
+
+    /// Every tile, in parallel: cleared, then its bin drawn.
+    fn draw_tiles<S: PixelShader>(&mut self, background: u32, shader: &S) {
+        let target = &mut self.target;
+        let grid = target.grid;
+        let (bins, triangles) = (&self.bins.tiles, &self.triangles);
+        target
+            .color
+            .par_chunks_mut(TILE_PIXELS)
+            .zip(target.depth.par_chunks_mut(TILE_PIXELS))
+            .enumerate()
+            .for_each(|(tile, (color, depth))| {
+                draw_tile(
+                    grid.tile_rect(tile),
+                    color,
+                    depth,
+                    background,
+                    &bins[tile],
+                    triangles,
+                    shader,
+                );
+            });
+    }
+}

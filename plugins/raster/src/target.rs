@@ -1,0 +1,92 @@
+//! The colour and depth buffers, stored tile after tile: each 64×64 tile is one contiguous
+//! block, so a thread drawing a tile owns its memory and keeps it in cache.
+
+use rayon::prelude::*;
+
+/// Tile edge in pixels.
+pub(crate) const TILE: i32 = 64;
+pub(crate) const TILE_PIXELS: usize = (TILE * TILE) as usize;
+
+/// A tile's pixel rectangle, inclusive, clipped to the viewport.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct TileRect {
+    pub x0: i32,
+    pub y0: i32,
+    pub x1: i32,
+    pub y1: i32,
+}
+
+/// The viewport cut into tiles.
+#[derive(Clone, Copy, Debug, Default)]
+pub(crate) struct Grid {
+    pub width: i32,
+    pub height: i32,
+    pub tiles_x: i32,
+    pub tiles_y: i32,
+}
+
+/// Tiled colour (RGBA8 packed) and depth (f32, the reference's Depth32Float).
+#[derive(Debug, Default)]
+pub(crate) struct Target {
+    pub grid: Grid,
+    pub color: Vec<u32>,
+    pub depth: Vec<f32>,
+}
+
+impl Target {
+    /// Sizes the buffers for a viewport; keeps them (and allocates nothing) when the size is
+    /// the same as last frame's.
+    pub(crate) fn resize(&mut self, width: u32, height: u32) {
+        let (width, height) = (width as i32, height as i32);
+        self.grid = Grid {
+            width,
+            height,
+            tiles_x: (width as u32).div_ceil(TILE as u32) as i32,
+            tiles_y: (height as u32).div_ceil(TILE as u32) as i32,
+        };
+        let pixels = self.grid.tiles() * TILE_PIXELS;
+        self.color.resize(pixels, 0);
+        self.depth.resize(pixels, 1.0);
+    }
+
+    /// Copies the tiles into `out` as rows from the top (`width` pixels each), in parallel by
+    /// rows of tiles.
+    pub(crate) fn resolve(&self, out: &mut Vec<[u8; 4]>) {
+        let Grid { width, tiles_x, .. } = self.grid;
+        let (width, tiles_x) = (width as usize, tiles_x as usize);
+        out.resize(width * self.grid.height as usize, [0; 4]);
+        let tile = TILE as usize;
+        out.par_chunks_mut(tile * width)
+            .enumerate()
+            .for_each(|(ty, band)| {
+                let rows = band.len() / width;
+                for tx in 0..tiles_x {
+                    let start = (ty * tiles_x + tx) * TILE_PIXELS;
+                    let source = &self.color[start..start + TILE_PIXELS];
+                    let columns = tile.min(width - tx * tile);
+                    for r in 0..rows {
+                        let row = &mut band[r * width + tx * tile..][..columns];
+                        for (p, c) in row.iter_mut().zip(&source[r * tile..]) {
+                            *p = c.to_le_bytes();
+                        }
+                    }
+                }
+            });
+    }
+}
+
+impl Grid {
+    pub(crate) fn tiles(&self) -> usize {
+        (self.tiles_x * self.tiles_y) as usize
+    }
+
+    pub(crate) fn tile_rect(&self, tile: usize) -> TileRect {
+        let (tx, ty) = (tile as i32 % self.tiles_x, tile as i32 / self.tiles_x);
+        TileRect {
+            x0: tx * TILE,
+            y0: ty * TILE,
+            x1: ((tx + 1) * TILE).min(self.width) - 1,
+            y1: ((ty + 1) * TILE).min(self.height) - 1,
+        }
+    }
+}
