@@ -8,6 +8,7 @@
 //! pipeline, it knows no GPU, window or UI.
 
 mod bin;
+mod lanes;
 mod primitives;
 mod rasterizer;
 mod setup;

@@ -281,8 +281,10 @@ mod tests {
                     // Push the outer ring out so the whole viewport is inside the mesh.
                     p = [(p[0] - 48.5) * 1.2 + 48.5, (p[1] - 30.5) * 1.2 + 30.5];
                 } else {
-                    // Half the inner points on pixel centres or half-pixels, half anywhere.
-                    let jitter = [random() - 0.5, random() - 0.5].map(|d| d * step[0] * 0.6);
+                    // Moved by at most a fifth of a cell, so every cell stays convex and no two
+                    // triangles overlap; half the inner points on pixel centres or half-pixels.
+                    let jitter = [(random() - 0.5) * step[0], (random() - 0.5) * step[1]]
+                        .map(|d| d * 0.4);
                     p = [p[0] + jitter[0], p[1] + jitter[1]];
                     if random() < 0.5 {
                         p = p.map(|x| (x * 2.0).round() / 2.0);

@@ -6,7 +6,8 @@
 use close2gl_core::{Lighting, RenderSettings, Shading};
 use glam::Vec3;
 
-use crate::setup::{Triangle, VARYINGS};
+use crate::lanes::{F8, LANES, V8};
+use crate::setup::{Plane, Triangle, VARYINGS};
 
 /// The lighting constants of a frame, with the light in eye space.
 #[derive(Clone, Copy, Debug)]
@@ -36,38 +37,68 @@ impl Light {
         }
     }
 
-    /// I = Ia ka + f_att Il (kd max(N·L, 0) + ks max(V·R, 0)^n), in eye space.
+    /// I = Ia ka + f_att Il (kd max(N·L, 0) + ks max(V·R, 0)^n), in eye space, for eight
+    /// points at once.
     #[inline(always)]
-    pub fn illumination(&self, eye: Vec3, normal: Vec3) -> Vec3 {
+    pub(crate) fn illumination(&self, eye: V8, normal: V8) -> V8 {
+        let zero = F8::splat(0.0);
         let n = safe_normalize(normal);
-        let to_light = self.position - eye;
-        let d = to_light.length();
+        let to_light = V8::splat(self.position).sub(eye);
+        let d2 = to_light.dot(to_light);
+        let d = d2.sqrt();
         let l = safe_normalize(to_light);
-        let v = safe_normalize(-eye);
-        let r = -l + 2.0 * n.dot(l) * n;
-        let [c0, c1, c2] = self.attenuation;
-        let f_att = (1.0 / (c0 + c1 * d + c2 * d * d)).min(1.0);
-        let diffuse = self.kd * n.dot(l).max(0.0);
-        let specular = if self.ks == 0.0 {
-            0.0
-        } else {
-            self.ks * v.dot(r).max(1e-20).powf(self.shininess)
+        let v = safe_normalize(eye.scale(F8::splat(-1.0)));
+        let n_dot_l = n.dot(l);
+        // r = reflect(-l, n) = 2 (n·l) n - l.
+        let r = n.scale(F8::splat(2.0) * n_dot_l).sub(l);
+        let [c0, c1, c2] = self.attenuation.map(F8::splat);
+        let f_att = (F8::splat(1.0) / (c0 + c1 * d + c2 * d2)).min(F8::splat(1.0));
+        let diffuse = F8::splat(self.kd) * n_dot_l.max(zero);
+        let specular = F8::splat(self.ks) * v.dot(r).max(F8::splat(1e-20)).pow(self.shininess);
+        let lit = f_att * (diffuse + specular);
+        let channel = |ambient: f32, intensity: f32| {
+            F8::splat(ambient) + F8::splat(intensity) * lit
         };
-        self.ambient + f_att * self.intensity * (diffuse + specular)
+        V8 {
+            x: channel(self.ambient.x, self.intensity.x),
+            y: channel(self.ambient.y, self.intensity.y),
+            z: channel(self.ambient.z, self.intensity.z),
+        }
     }
 }
 
 /// Normalises without producing NaN for a zero vector, as the shader's safe_normalize.
 #[inline(always)]
-fn safe_normalize(x: Vec3) -> Vec3 {
-    x * (1.0 / x.dot(x).max(1e-30).sqrt())
+fn safe_normalize(x: V8) -> V8 {
+    x.scale(F8::splat(1.0) / x.dot(x).max(F8::splat(1e-30)).sqrt())
 }
 
-/// A colour in 0..1 as the RGBA8 bytes a UNORM target stores, packed little-endian.
-#[inline(always)]
+/// A colour in 0..1 as the RGBA8 bytes a UNORM target stores (clamped, rounded to nearest),
+/// packed little-endian.
 pub fn pack(rgb: Vec3) -> u32 {
-    let byte = |c: f32| (c.clamp(0.0, 1.0) * 255.0 + 0.5) as u32;
-    byte(rgb.x) | byte(rgb.y) << 8 | byte(rgb.z) << 16 | 0xff << 24
+    pack8(V8::splat(rgb))[0]
+}
+
+#[inline(always)]
+fn pack8(rgb: V8) -> [u32; LANES] {
+    let byte = |c: F8| {
+        let c = c.max(F8::splat(0.0)).min(F8::splat(1.0));
+        let c = c * F8::splat(255.0) + F8::splat(0.5);
+        let mut bytes = [0u32; LANES];
+        for i in 0..LANES {
+            // SAFETY: c is in 0.5..=255.5 (clamped above; NaN clamps to 0), which an i32
+            // holds; truncating it rounds the colour to nearest. The checked `as` conversion
+            // would not vectorise.
+            bytes[i] = unsafe { c.0[i].to_int_unchecked::<i32>() } as u32;
+        }
+        bytes
+    };
+    let (r, g, b) = (byte(rgb.x), byte(rgb.y), byte(rgb.z));
+    let mut packed = [0u32; LANES];
+    for i in 0..LANES {
+        packed[i] = r[i] | g[i] << 8 | b[i] << 16 | 0xff << 24;
+    }
+    packed
 }
 
 /// What a vertex carries to the pixels, per shading: nothing (flat colour), the Gouraud
@@ -91,16 +122,17 @@ pub fn vertex_varyings(
     match shading {
         Shading::None => [0.0; VARYINGS],
         Shading::GouraudAd | Shading::GouraudAds => {
-            let i = light.illumination(eye, normal);
-            [i.x, i.y, i.z, 0.0, 0.0, 0.0]
+            let i = light.illumination(V8::splat(eye), V8::splat(normal));
+            [i.x.0[0], i.y.0[0], i.z.0[0], 0.0, 0.0, 0.0]
         }
         Shading::Phong => [eye.x, eye.y, eye.z, normal.x, normal.y, normal.z],
     }
 }
 
-/// The pixel stage: the colour of the pixel centred at (x, y) of a triangle.
+/// The pixel stage: the colours of eight pixels of a triangle, centred at (x, y). Implementations
+/// are inlined into the row loop (see `tile::shade_row`).
 pub(crate) trait PixelShader: Sync {
-    fn shade(&self, triangle: &Triangle, x: f32, y: f32) -> u32;
+    fn shade(&self, t: &Triangle, x: F8, y: f32) -> [u32; LANES];
 }
 
 /// The user's colour, unlit.
@@ -108,15 +140,33 @@ pub(crate) struct Flat(pub u32);
 
 impl PixelShader for Flat {
     #[inline(always)]
-    fn shade(&self, _: &Triangle, _: f32, _: f32) -> u32 {
-        self.0
+    fn shade(&self, _: &Triangle, _: F8, _: f32) -> [u32; LANES] {
+        [self.0; LANES]
     }
 }
 
-/// Perspective-correct varying k at (x, y), given w there.
+/// A plane's value at eight pixel centres of one row.
 #[inline(always)]
-fn varying(t: &Triangle, k: usize, x: f32, y: f32, w: f32) -> f32 {
-    t.at(&t.varyings[k], x, y) * w
+fn at(t: &Triangle, plane: &Plane, x: F8, y: f32) -> F8 {
+    let row = plane.a + plane.dady * (y - t.origin[1]);
+    (x - F8::splat(t.origin[0])).mul_add(F8::splat(plane.dadx), F8::splat(row))
+}
+
+/// Perspective-correct varyings `first..first + 3` at eight pixels, given w there.
+#[inline(always)]
+fn varying3(t: &Triangle, first: usize, x: F8, y: f32, w: F8) -> V8 {
+    let v = |k: usize| at(t, &t.varyings[k], x, y) * w;
+    V8 {
+        x: v(first),
+        y: v(first + 1),
+        z: v(first + 2),
+    }
+}
+
+/// w at eight pixels, from the plane of 1/w.
+#[inline(always)]
+fn w(t: &Triangle, x: F8, y: f32) -> F8 {
+    F8::splat(1.0) / at(t, &t.inv_w, x, y)
 }
 
 /// The interpolated intensity times the user's colour.
@@ -126,14 +176,9 @@ pub(crate) struct Gouraud {
 
 impl PixelShader for Gouraud {
     #[inline(always)]
-    fn shade(&self, t: &Triangle, x: f32, y: f32) -> u32 {
-        let w = 1.0 / t.at(&t.inv_w, x, y);
-        let light = Vec3::new(
-            varying(t, 0, x, y, w),
-            varying(t, 1, x, y, w),
-            varying(t, 2, x, y, w),
-        );
-        pack(self.color * light)
+    fn shade(&self, t: &Triangle, x: F8, y: f32) -> [u32; LANES] {
+        let light = varying3(t, 0, x, y, w(t, x, y));
+        pack8(multiply(self.color, light))
     }
 }
 
@@ -145,12 +190,20 @@ pub(crate) struct Phong {
 
 impl PixelShader for Phong {
     #[inline(always)]
-    fn shade(&self, t: &Triangle, x: f32, y: f32) -> u32 {
-        let w = 1.0 / t.at(&t.inv_w, x, y);
-        let v = [0, 1, 2, 3, 4, 5].map(|k| varying(t, k, x, y, w));
-        let eye = Vec3::new(v[0], v[1], v[2]);
-        let normal = Vec3::new(v[3], v[4], v[5]);
-        pack(self.color * self.light.illumination(eye, normal))
+    fn shade(&self, t: &Triangle, x: F8, y: f32) -> [u32; LANES] {
+        let w = w(t, x, y);
+        let (eye, normal) = (varying3(t, 0, x, y, w), varying3(t, 3, x, y, w));
+        pack8(multiply(self.color, self.light.illumination(eye, normal)))
+    }
+}
+
+/// The user's colour times a light, channel by channel.
+#[inline(always)]
+fn multiply(color: Vec3, light: V8) -> V8 {
+    V8 {
+        x: F8::splat(color.x) * light.x,
+        y: F8::splat(color.y) * light.y,
+        z: F8::splat(color.z) * light.z,
     }
 }
 
@@ -183,14 +236,18 @@ mod tests {
         };
         // Eye at the origin looking down -z at a point whose normal faces the eye and the light.
         let light = Light::new(&lighting, Vec3::new(0.0, 0.0, 0.0), Shading::Phong);
-        let i = light.illumination(Vec3::new(0.0, 0.0, -2.0), Vec3::Z);
+        let lit = |light: &Light| {
+            let i = light.illumination(V8::splat(Vec3::new(0.0, 0.0, -2.0)), V8::splat(Vec3::Z));
+            Vec3::new(i.x.0[0], i.y.0[0], i.z.0[0])
+        };
+        let i = lit(&light);
         let expected = lighting.ia * lighting.ka + lighting.il * (lighting.kd + lighting.ks);
         assert!(
             (i - expected).abs().max_element() < 1e-6,
             "{i} vs {expected}"
         );
         let ad = Light::new(&lighting, Vec3::ZERO, Shading::GouraudAd);
-        let i = ad.illumination(Vec3::new(0.0, 0.0, -2.0), Vec3::Z);
+        let i = lit(&ad);
         let expected = lighting.ia * lighting.ka + lighting.il * lighting.kd;
         assert!((i - expected).abs().max_element() < 1e-6);
     }
@@ -198,6 +255,7 @@ mod tests {
     #[test]
     fn a_zero_normal_does_not_make_nan() {
         let light = Light::new(&Lighting::default(), Vec3::ONE, Shading::Phong);
-        assert!(light.illumination(Vec3::ZERO, Vec3::ZERO).is_finite());
+        let i = light.illumination(V8::splat(Vec3::ZERO), V8::splat(Vec3::ZERO));
+        assert!([i.x, i.y, i.z].iter().all(|c| c.0.iter().all(|x| x.is_finite())));
     }
 }
