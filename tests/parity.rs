@@ -1,7 +1,9 @@
 //! Parity: the reference view (the GPU drawing the mesh from glam's matrices) and the Close2GL
-//! view (the GPU drawing Close2GL's 2D buffer) must cover the same pixels, on a real adapter,
-//! over a matrix of scenes × poses × front faces × modes. A failure names the diff image written
-//! under target/parity/<case>/. No adapter is a failure with a message, never a silent pass.
+//! view (the GPU drawing Close2GL's 2D buffer, or Close2GL's own software rasterizer) must cover
+//! the same pixels, on a real adapter, over a matrix of scenes × poses × front faces × modes ×
+//! rasterizers; with the software rasterizer, in the same colours, in every shading. A failure
+//! names the diff image written under target/parity/<case>/. No adapter is a failure with a
+//! message, never a silent pass.
 
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
@@ -10,10 +12,10 @@ use std::sync::OnceLock;
 use close2gl::config;
 use close2gl::core::glam::{Vec3, Vec4};
 use close2gl::core::{
-    App, Camera, CameraSpeeds, Clipping, FrontFace, Mesh, ModelStatus, RenderMode, RenderSettings,
-    Viewport,
+    App, Camera, CameraSpeeds, Clipping, FrontFace, Mesh, ModelStatus, Rasterizer, RenderMode,
+    RenderSettings, Shading, Viewport,
 };
-use close2gl_gpu::parity::{Comparison, coverage, diff_image};
+use close2gl_gpu::parity::{ColorComparison, Comparison, coverage, diff_image};
 use close2gl_gpu::{Gpu, OffscreenPlugin, Snapshot, camera_matrices, render_offscreen};
 
 fn gpu() -> Gpu {
@@ -186,12 +188,20 @@ const SIZE: Viewport = Viewport {
 
 const MODES: [RenderMode; 3] = [RenderMode::Solid, RenderMode::Wireframe, RenderMode::Points];
 
-fn threshold(mode: RenderMode) -> f64 {
-    match mode {
-        RenderMode::Solid => 0.999,
-        RenderMode::Wireframe | RenderMode::Points => 0.99,
+/// Coverage agreement needed. The software rasterizer follows the reference's rasterization
+/// rules itself, so solid triangles must agree more closely than the GPU drawing Close2GL's 2D
+/// buffer (where two sets of vertex positions, rounded apart, meet the same rules).
+fn threshold(mode: RenderMode, rasterizer: Rasterizer) -> f64 {
+    match (mode, rasterizer) {
+        (RenderMode::Solid, Rasterizer::Gpu) => 0.999,
+        (RenderMode::Solid, Rasterizer::Software) => 0.9995,
+        (RenderMode::Wireframe | RenderMode::Points, _) => 0.99,
     }
 }
+
+/// With the software rasterizer, the share of pixels covered in both views whose colours agree
+/// within 2/255 in every channel.
+const COLOR_WITHIN_2: f64 = 0.99;
 
 /// Writes a case's images under target/parity/<case>/ and returns the diff's path.
 fn write_case(case: &str, snapshot: &Snapshot) -> PathBuf {
@@ -230,47 +240,29 @@ fn check_scene(label: &str, model: &str, overrides: &[&str]) -> String {
         let mut covered_any = false;
         for front_face in [FrontFace::Ccw, FrontFace::Cw] {
             for mode in MODES {
-                let s = settings(&mut app);
-                (s.front_face, s.mode) = (front_face, mode);
-                let snapshot = render_offscreen(&mut app).expect("render");
-                let c = Comparison::of_images(
-                    &snapshot.reference,
-                    &snapshot.close2gl,
-                    snapshot.background,
-                );
-                covered_any |= c.covered_pixels > 0;
-                let agrees = if c.covered_pixels == 0 {
-                    // Both empty (e.g. only back faces in view): nothing to disagree about.
-                    true
-                } else if far_plane_points(pose, mode) {
-                    c.only_second == 0
-                } else {
-                    c.coverage_agreement >= threshold(mode)
-                };
-                if !agrees {
+                for rasterizer in Rasterizer::ALL.iter().copied() {
+                    let s = settings(&mut app);
+                    (s.front_face, s.mode, s.close2gl_raster) = (front_face, mode, rasterizer);
+                    let snapshot = render_offscreen(&mut app).expect("render");
+                    let c = Comparison::of_images(
+                        &snapshot.reference,
+                        &snapshot.close2gl,
+                        snapshot.background,
+                    );
+                    covered_any |= c.covered_pixels > 0;
                     let case = format!(
-                        "{label}_{}_{}_{}",
+                        "{label}_{}_{}_{}_{}",
                         pose.name,
                         front_face.name(),
-                        mode.name()
+                        mode.name(),
+                        rasterizer.name()
                     );
-                    let diff = write_case(&case, &snapshot);
-                    let _ = writeln!(
-                        failures,
-                        "{case}: coverage agreement {:.5}, needed {} ({} of {} pixels differ: {} \
-                         reference only, {} Close2GL only); see {}",
-                        c.coverage_agreement,
-                        if far_plane_points(pose, mode) {
-                            "no Close2GL-only pixel".to_string()
-                        } else {
-                            format!(">= {}", threshold(mode))
-                        },
-                        c.mismatched_pixels,
-                        c.covered_pixels,
-                        c.only_first,
-                        c.only_second,
-                        diff.display()
-                    );
+                    let needed = if far_plane_points(pose, mode) {
+                        None
+                    } else {
+                        Some(threshold(mode, rasterizer))
+                    };
+                    failures.push_str(&judge(&case, &snapshot, &c, needed, 0.0));
                 }
             }
         }
@@ -283,6 +275,44 @@ fn check_scene(label: &str, model: &str, overrides: &[&str]) -> String {
         }
     }
     failures
+}
+
+/// One line naming the case, its figures and its diff image when the views disagree: coverage
+/// below `needed` (or, with `None`, any pixel only Close2GL covers), or colours within 2/255 on
+/// less than `color_within_2` of the pixels both cover. Nothing when they agree, or when neither
+/// view covers a pixel (e.g. only back faces in view).
+fn judge(
+    case: &str,
+    snapshot: &Snapshot,
+    c: &Comparison,
+    needed: Option<f64>,
+    color_within_2: f64,
+) -> String {
+    let colors =
+        ColorComparison::of_images(&snapshot.reference, &snapshot.close2gl, snapshot.background);
+    let coverage_ok = match needed {
+        Some(needed) => c.coverage_agreement >= needed,
+        None => c.only_second == 0,
+    };
+    if c.covered_pixels == 0 || (coverage_ok && colors.within_2_fraction >= color_within_2) {
+        return String::new();
+    }
+    let diff = write_case(case, snapshot);
+    format!(
+        "{case}: coverage agreement {:.5}, needed {} ({} of {} pixels differ: {} reference only, \
+         {} Close2GL only); colours within 2/255 on {:.4} of {} pixels (mean difference {:.3}), \
+         needed {color_within_2}; see {}\n",
+        c.coverage_agreement,
+        needed.map_or("no Close2GL-only pixel".to_string(), |n| format!(">= {n}")),
+        c.mismatched_pixels,
+        c.covered_pixels,
+        c.only_first,
+        c.only_second,
+        colors.within_2_fraction,
+        colors.compared_pixels,
+        colors.mean_abs_diff,
+        diff.display()
+    )
 }
 
 fn assert_scenes(scenes: &[(&str, &str, &[&str])]) {
@@ -406,6 +436,112 @@ fn a_resize_keeps_the_views_in_agreement() {
             let diff = write_case(&format!("resized_{}x{}", size.0, size.1), &snapshot);
             panic!("after a resize to {size:?}: {c:?}; see {}", diff.display());
         }
+        settings(&mut app).close2gl_raster = Rasterizer::Software;
+        let snapshot = render_offscreen(&mut app).expect("render");
+        assert_eq!((snapshot.close2gl.width, snapshot.close2gl.height), size);
+        let c = Comparison::of_images(&snapshot.reference, &snapshot.close2gl, snapshot.background);
+        let case = format!("resized_{}x{}_software", size.0, size.1);
+        let failure = judge(&case, &snapshot, &c, Some(0.9995), COLOR_WITHIN_2);
+        assert!(failure.is_empty(), "{failure}");
+        settings(&mut app).close2gl_raster = Rasterizer::Gpu;
+    }
+}
+
+/// Both views lit, with the software rasterizer: the four shadings, culling on and off, in poses
+/// that cut the model with the near and the far plane and stretch it with unequal fields of
+/// view; solid coverage and colours must agree. One app per scene (its GPU pipelines are built
+/// once), each pose applied to the framed camera and then undone.
+#[test]
+fn the_four_shadings_agree_with_the_software_rasterizer() {
+    let asset = |name: &str| format!("{}/assets/{name}", env!("CARGO_MANIFEST_DIR"));
+    let knot = asset("knot.obj");
+    let poses = ["framed", "near_cut", "far_cut", "unequal_fov", "inside"];
+    let mut failures = String::new();
+    let mut compared = 0;
+    for model in ["box", "sphere", "torus", "cone", "cylinder", knot.as_str()] {
+        let mut app = scene(model, &["render.close2gl_raster=software"], SIZE);
+        let framed = *camera(&mut app);
+        for pose in POSES.iter().filter(|p| poses.contains(&p.name)) {
+            *camera(&mut app) = framed;
+            settings(&mut app).backface_culling = true;
+            (pose.apply)(&mut app);
+            let culls: &[bool] = if settings(&mut app).backface_culling {
+                &[true, false]
+            } else {
+                &[false]
+            };
+            for &cull in culls {
+                for shading in Shading::ALL.iter().copied() {
+                    let s = settings(&mut app);
+                    (s.shading, s.backface_culling) = (shading, cull);
+                    let snapshot = render_offscreen(&mut app).expect("render");
+                    let c = Comparison::of_images(
+                        &snapshot.reference,
+                        &snapshot.close2gl,
+                        snapshot.background,
+                    );
+                    compared += c.covered_pixels;
+                    let name = model.rsplit('/').next().unwrap_or(model);
+                    let case = format!("lit_{name}_{}_{}_cull_{cull}", pose.name, shading.name());
+                    failures.push_str(&judge(&case, &snapshot, &c, Some(0.9995), COLOR_WITHIN_2));
+                }
+            }
+        }
+    }
+    assert!(failures.is_empty(), "the lit views disagree:\n{failures}");
+    assert!(compared > 100_000, "only {compared} pixels compared");
+}
+
+/// Two squares, the near one listed first and lit head-on, the far one listed last and turned
+/// away from the light: where they overlap, both views must show the near square, whichever
+/// order they are drawn in, so the depth test (not the drawing order) decides.
+#[test]
+fn a_near_part_hides_a_far_one_in_both_views() {
+    let path = parity_dir().join("two_squares.obj");
+    std::fs::create_dir_all(parity_dir()).expect("create target/parity");
+    let square = |z: f32, shift: f32, normal: &str| {
+        format!(
+            "v {a} {a} {z}\nv {b} {a} {z}\nv {b} {b} {z}\nv {a} {b} {z}\nvn {normal}\n",
+            a = -1.0 + shift,
+            b = 1.0 + shift
+        )
+    };
+    let faces = "f 1//1 2//1 3//1\nf 1//1 3//1 4//1\nf 5//2 6//2 7//2\nf 5//2 7//2 8//2\n";
+    let text = format!(
+        "{}{}{faces}",
+        square(0.0, 0.0, "0 0 1"),
+        square(-1.0, 0.7, "0.8 0 0.6")
+    );
+    std::fs::write(&path, text).expect("write the two squares");
+    let model = path.to_str().expect("a UTF-8 path");
+    let overrides = [
+        "render.close2gl_raster=software",
+        "render.shading=phong",
+        "camera.position=[0,0,4]",
+        "lighting.light_position=[0,0,10]",
+    ];
+    let mut app = scene(model, &overrides, SIZE);
+    let snapshot = render_offscreen(&mut app).expect("render");
+    let c = Comparison::of_images(&snapshot.reference, &snapshot.close2gl, snapshot.background);
+    let failure = judge("two_squares", &snapshot, &c, Some(0.9995), COLOR_WITHIN_2);
+    assert!(failure.is_empty(), "{failure}");
+    // The centre of the view is inside both squares: it shows the near one, lit head-on,
+    // brighter than the far one's pixels at the right (where only it shows).
+    let at =
+        |image: &close2gl_gpu::Image, x: u32, y: u32| image.pixels[(y * image.width + x) as usize];
+    for image in [&snapshot.reference, &snapshot.close2gl] {
+        let (centre, far_only) = (at(image, 80, 60), at(image, 120, 40));
+        assert_ne!(centre[..3], snapshot.background, "the centre is covered");
+        assert_ne!(
+            far_only[..3],
+            snapshot.background,
+            "the far square shows at the right"
+        );
+        let brightness = |p: [u8; 4]| p[..3].iter().map(|&c| c as u32).sum::<u32>();
+        assert!(
+            brightness(centre) > brightness(far_only) + 30,
+            "the near square must hide the far one: {centre:?} vs {far_only:?}"
+        );
     }
 }
 

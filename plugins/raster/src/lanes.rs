@@ -81,7 +81,9 @@ impl F8 {
         let t2 = t * t;
         let series = [1.0 / 11.0, 1.0 / 9.0, 1.0 / 7.0, 0.2, 1.0 / 3.0, 1.0]
             .into_iter()
-            .fold(F8::splat(1.0 / 13.0), |acc, c| acc.mul_add(t2, F8::splat(c)));
+            .fold(F8::splat(1.0 / 13.0), |acc, c| {
+                acc.mul_add(t2, F8::splat(c))
+            });
         exponent + t * series * F8::splat(2.0 / std::f32::consts::LN_2)
     }
 
@@ -101,7 +103,9 @@ impl F8 {
             1.0,
         ]
         .into_iter()
-        .fold(F8::splat(0.000_154_035_3), |acc, c| acc.mul_add(f, F8::splat(c)));
+        .fold(F8::splat(0.000_154_035_3), |acc, c| {
+            acc.mul_add(f, F8::splat(c))
+        });
         let scale = whole.map(|w| {
             // SAFETY: w is a whole number in -126..=127 (clamped above), which an i32 holds;
             // the checked `as` conversion would not vectorise.

@@ -283,8 +283,8 @@ mod tests {
                 } else {
                     // Moved by at most a fifth of a cell, so every cell stays convex and no two
                     // triangles overlap; half the inner points on pixel centres or half-pixels.
-                    let jitter = [(random() - 0.5) * step[0], (random() - 0.5) * step[1]]
-                        .map(|d| d * 0.4);
+                    let jitter =
+                        [(random() - 0.5) * step[0], (random() - 0.5) * step[1]].map(|d| d * 0.4);
                     p = [p[0] + jitter[0], p[1] + jitter[1]];
                     if random() < 0.5 {
                         p = p.map(|x| (x * 2.0).round() / 2.0);

@@ -56,9 +56,8 @@ impl Light {
         let diffuse = F8::splat(self.kd) * n_dot_l.max(zero);
         let specular = F8::splat(self.ks) * v.dot(r).max(F8::splat(1e-20)).pow(self.shininess);
         let lit = f_att * (diffuse + specular);
-        let channel = |ambient: f32, intensity: f32| {
-            F8::splat(ambient) + F8::splat(intensity) * lit
-        };
+        let channel =
+            |ambient: f32, intensity: f32| F8::splat(ambient) + F8::splat(intensity) * lit;
         V8 {
             x: channel(self.ambient.x, self.intensity.x),
             y: channel(self.ambient.y, self.intensity.y),
@@ -256,6 +255,10 @@ mod tests {
     fn a_zero_normal_does_not_make_nan() {
         let light = Light::new(&Lighting::default(), Vec3::ONE, Shading::Phong);
         let i = light.illumination(V8::splat(Vec3::ZERO), V8::splat(Vec3::ZERO));
-        assert!([i.x, i.y, i.z].iter().all(|c| c.0.iter().all(|x| x.is_finite())));
+        assert!(
+            [i.x, i.y, i.z]
+                .iter()
+                .all(|c| c.0.iter().all(|x| x.is_finite()))
+        );
     }
 }

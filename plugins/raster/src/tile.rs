@@ -177,7 +177,8 @@ fn draw_run_portable<S: PixelShader>(
         // they become masked stores, which some CPUs (AMD's) execute very slowly.
         let pass = std::hint::black_box(pass);
         for i in 0..LANES {
-            depth[i] = f32::from_bits((z.0[i].to_bits() & pass[i]) | (depth[i].to_bits() & !pass[i]));
+            depth[i] =
+                f32::from_bits((z.0[i].to_bits() & pass[i]) | (depth[i].to_bits() & !pass[i]));
         }
         if pass == [0; LANES] {
             continue;
