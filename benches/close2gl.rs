@@ -1,13 +1,21 @@
 //! The Close2GL geometry stage (transform, full clipping, divide, viewport, cull, 2D buffer) on
 //! spheres of 8 k (the course's cow), 100 k and 1 M triangles, and the straightforward baseline
 //! on the same meshes; then the 1 M sphere with the near plane cutting through it, where full
-//! clipping cuts thousands of triangles. `cargo bench` runs it; `close2gl bench` gives the framed
-//! figures as JSON.
+//! clipping cuts thousands of triangles. Then the software rasterizer's whole frame (geometry,
+//! raster, Phong shading) for the bundled knot at 640×480 and 1920×1080 beside the GPU's
+//! reference view of the same scene, its fill rate on full-screen layers, and the 1 M sphere at
+//! 1920×1080. `cargo bench` runs it; `close2gl bench` gives the same figures as JSON.
 
+use std::time::Duration;
+
+use close2gl::commands::bench::raster::{SoftwareTimer, layers};
 use close2gl::commands::bench::{baseline, sphere_grid};
 use close2gl::config::Config;
-use close2gl::core::{Camera, Close2glFrame, Mesh, ModelSource, PrimitiveKind, Viewport};
+use close2gl::core::{
+    Camera, Close2glFrame, Mesh, ModelSource, PrimitiveKind, Rasterizer, Shading, Viewport,
+};
 use close2gl::pipeline::FastPipeline;
+use close2gl_gpu::{Gpu, OffscreenPlugin, render_offscreen};
 use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};
 
 fn scene(triangles: usize) -> (Mesh, Camera, Config) {
@@ -19,18 +27,21 @@ fn scene(triangles: usize) -> (Mesh, Camera, Config) {
         config.primitives.sphere_stacks,
         config.primitives.sphere_slices,
     ) = sphere_grid(triangles);
-    let mut app = close2gl::build_app(
-        &config,
-        Viewport {
-            width: 1280,
-            height: 720,
-        },
-    )
-    .expect("a sphere");
+    let viewport = Viewport {
+        width: 1280,
+        height: 720,
+    };
+    let mut app = close2gl::build_app(&config, viewport).expect("a sphere");
+    let (mesh, camera) = parts(&mut app);
+    (mesh, camera, config)
+}
+
+/// The framed scene's mesh and camera.
+fn parts(app: &mut close2gl::core::App) -> (Mesh, Camera) {
     let world = app.world_mut();
     let mesh = world.query::<&Mesh>().single(world).expect("mesh").clone();
     let camera = *world.query::<&Camera>().single(world).expect("camera");
-    (mesh, camera, config)
+    (mesh, camera)
 }
 
 fn geometry_stage(c: &mut Criterion) {
@@ -65,5 +76,69 @@ fn geometry_stage(c: &mut Criterion) {
     group.finish();
 }
 
-criterion_group!(benches, geometry_stage);
+/// The bundled knot (the course's cow's size), Phong, software.
+fn knot(viewport: Viewport) -> close2gl::core::App {
+    let mut config = Config {
+        model: ModelSource::File(format!("{}/assets/knot.obj", env!("CARGO_MANIFEST_DIR")).into()),
+        ..Config::default()
+    };
+    config.render.shading = Shading::Phong;
+    config.render.close2gl_raster = Rasterizer::Software;
+    close2gl::build_app(&config, viewport).expect("the bundled knot")
+}
+
+fn software_raster(c: &mut Criterion) {
+    let mut group = c.benchmark_group("raster");
+    group.sample_size(20);
+    let gpu = Gpu::headless(close2gl_gpu::wgpu::Backends::PRIMARY).ok();
+    for (width, height) in [(640, 480), (1920, 1080)] {
+        let viewport = Viewport { width, height };
+        let mut app = knot(viewport);
+        let (mesh, camera) = parts(&mut app);
+        let settings = *app.world().resource::<close2gl::core::RenderSettings>();
+        let lighting = *app.world().resource::<close2gl::core::Lighting>();
+        let mut software = SoftwareTimer::default();
+        let size = format!("{width}x{height}");
+        group.bench_function(BenchmarkId::new("software_knot_phong", &size), |b| {
+            b.iter(|| software.frame(&mesh, &camera, &settings, &lighting, viewport))
+        });
+        // The GPU's reference view of the same scene, its work finished (lavapipe without a
+        // GPU): the time render_offscreen measures around the reference draw alone.
+        if let Some(gpu) = &gpu {
+            app.add_plugins(OffscreenPlugin(gpu.clone()));
+            group.bench_function(BenchmarkId::new("reference_knot_phong", &size), |b| {
+                b.iter_custom(|iters| {
+                    (0..iters)
+                        .map(|_| render_offscreen(&mut app).expect("render").reference_ms)
+                        .map(|ms| Duration::from_secs_f64(ms / 1e3))
+                        .sum()
+                })
+            });
+        }
+    }
+    let viewport = Viewport {
+        width: 1920,
+        height: 1080,
+    };
+    let (mesh, camera) = layers(8);
+    let mut settings = close2gl::core::RenderSettings {
+        close2gl_raster: Rasterizer::Software,
+        ..Default::default()
+    };
+    let lighting = close2gl::core::Lighting::default();
+    let mut software = SoftwareTimer::default();
+    group.throughput(Throughput::Elements(8 * 1920 * 1080));
+    group.bench_function("fill_8_layers_1920x1080", |b| {
+        b.iter(|| software.frame(&mesh, &camera, &settings, &lighting, viewport))
+    });
+    let (mesh, camera, _) = scene(1_000_000);
+    settings.shading = Shading::GouraudAds;
+    group.throughput(Throughput::Elements(mesh.triangles.len() as u64));
+    group.bench_function("sphere_1m_gouraud_1920x1080", |b| {
+        b.iter(|| software.frame(&mesh, &camera, &settings, &lighting, viewport))
+    });
+    group.finish();
+}
+
+criterion_group!(benches, geometry_stage, software_raster);
 criterion_main!(benches);

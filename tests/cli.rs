@@ -138,6 +138,35 @@ fn dump_writes_the_2d_buffer() {
     );
 }
 
+/// With the software rasterizer, stats also says how long it took and how many pixels it
+/// covered: the box from a corner covers a good part of a small view; seen from behind (front
+/// faces clockwise, so all six visible faces are culled), nothing.
+#[test]
+fn stats_with_the_software_rasterizer_reports_its_pixels() {
+    let software = [
+        "box",
+        "--size",
+        "80x60",
+        "--set",
+        "camera.position=[3, 2, 4]",
+        "--set",
+        "render.close2gl_raster=software",
+    ];
+    let s = stats(&software);
+    let covered = s["covered_pixels"].as_u64().expect("covered_pixels");
+    // The box's outline spans about 19 × 14 pixels of the 80 × 60 view.
+    assert!((100..=400).contains(&covered), "{s}");
+    assert!(s["raster_ms"].as_f64().is_some_and(|ms| ms >= 0.0), "{s}");
+    let s = stats(&[&software[..], &["--set", "render.mode=points"]].concat());
+    let points = s["covered_pixels"].as_u64().expect("covered_pixels");
+    assert!(
+        (1..=7).contains(&points),
+        "six visible faces share 7 corners: {s}"
+    );
+    let gpu = stats(&software[..5]);
+    assert!(gpu.get("covered_pixels").is_none(), "{gpu}");
+}
+
 #[test]
 fn bad_input_is_one_line_and_exit_code_2() {
     let bad_model = temp("bad.in");
@@ -155,6 +184,11 @@ fn bad_input_is_one_line_and_exit_code_2() {
         ),
         (vec!["stats", "--size", "0x10"], "--size 0x10"),
         (vec!["stats", "model.stl"], "model.stl"),
+        (
+            vec!["stats", "--set", "render.close2gl_raster=vulkan"],
+            "render.close2gl_raster",
+        ),
+        (vec!["bench", "--raster", "--fill"], "--fill"),
     ] {
         let out = close2gl(&args);
         let stderr = String::from_utf8_lossy(&out.stderr);

@@ -28,7 +28,7 @@ pub struct BenchArgs {
     pub triangles: Option<usize>,
     /// Time the software rasterizer's whole frame (geometry, raster, shading) beside the GPU
     /// reference view of the same scene (set the shading with --set render.shading=...).
-    #[arg(long, conflicts_with = "fill")]
+    #[arg(long)]
     pub raster: bool,
     /// Time the software rasterizer's fill rate on a screen of large triangles.
     #[arg(long)]
@@ -48,6 +48,11 @@ pub fn run(args: BenchArgs) -> Result<(), CliError> {
     if args.frames == 0 || args.triangles == Some(0) {
         return Err(CliError::Input(
             "bench: --frames and --triangles must be at least 1".into(),
+        ));
+    }
+    if args.raster && args.fill {
+        return Err(CliError::Input(
+            "bench: --raster and --fill time different scenes; give one of them".into(),
         ));
     }
     let pool = thread_pool(args.threads)?;

@@ -82,7 +82,7 @@ pub fn fill(args: &BenchArgs, pool: &rayon::ThreadPool) -> Result<Value, CliErro
 
 /// The pipeline, the rasterizer and their buffers, kept across frames as the app keeps them.
 #[derive(Default)]
-struct SoftwareTimer {
+pub struct SoftwareTimer {
     pipeline: FastPipeline,
     rasterizer: SoftwareRasterizer,
     geometry: Close2glFrame,
@@ -90,7 +90,8 @@ struct SoftwareTimer {
 }
 
 impl SoftwareTimer {
-    fn frame(
+    /// One whole software frame: geometry, raster, shading, the image finished.
+    pub fn frame(
         &mut self,
         mesh: &Mesh,
         camera: &Camera,
@@ -113,7 +114,7 @@ impl SoftwareTimer {
 }
 
 /// Lavapipe's (or the adapter's) median time for the reference view, the GPU's work finished.
-fn reference_ms(app: &mut close2gl_core::App, frames: usize) -> Result<(f64, String), String> {
+pub fn reference_ms(app: &mut close2gl_core::App, frames: usize) -> Result<(f64, String), String> {
     let gpu = Gpu::headless(close2gl_gpu::wgpu::Backends::PRIMARY)?;
     app.add_plugins(OffscreenPlugin(gpu.clone()));
     render_offscreen(app)?;
@@ -127,7 +128,7 @@ fn reference_ms(app: &mut close2gl_core::App, frames: usize) -> Result<(f64, Str
 
 /// `layers` squares filling a 90° view, one behind the other, listed back to front, each cut
 /// into 8 large triangles; the camera at the origin looking down -z.
-fn layers(layers: usize) -> (Mesh, Camera) {
+pub fn layers(layers: usize) -> (Mesh, Camera) {
     let mut mesh = Mesh {
         name: format!("{layers} full-screen layers"),
         ..Mesh::default()
