@@ -5,10 +5,12 @@ use close2gl::camera::CameraPlugin;
 use close2gl::core::glam::{Vec2, Vec3};
 use close2gl::core::{
     App, Camera, CameraAction, CameraActions, CameraHome, CameraMode, Clipping, Close2glFrame,
-    FrontFace, InputState, Mesh, RenderMode, RenderSettings, Shading, Viewport,
+    FrontFace, InputState, Lighting, Mesh, Rasterizer, RenderMode, RenderSettings, Shading,
+    SoftwareFrame, Viewport,
 };
 use close2gl::input::InputPlugin;
 use close2gl::pipeline::Close2glPlugin;
+use close2gl::raster::RasterPlugin;
 
 /// A closed 2-unit cube centred on the origin, every face counter-clockwise seen from outside.
 fn cube() -> Mesh {
@@ -318,4 +320,55 @@ fn each_mode_emits_its_primitives() {
         let f = frame(&app);
         assert_eq!(f.vertices.len(), f.counts.drawn * per_triangle, "{mode:?}");
     }
+}
+
+/// The software rasterizer on a headless world: it draws only when asked for, only when
+/// something changed, and its image has the viewport's size with the cube in the middle.
+#[test]
+fn the_raster_system_draws_when_asked_and_when_something_changed() {
+    let mut app = app_with(cube(), RenderSettings::default());
+    app.add_plugins(RasterPlugin);
+    let world = app.world_mut();
+    let mut camera = world
+        .query::<&mut Camera>()
+        .single_mut(world)
+        .expect("a camera");
+    camera.position = Vec3::new(0.0, 0.0, 6.0);
+    app.update();
+    assert_eq!(
+        app.world().resource::<SoftwareFrame>().generation,
+        0,
+        "gpu: nothing drawn"
+    );
+
+    app.world_mut()
+        .resource_mut::<RenderSettings>()
+        .close2gl_raster = Rasterizer::Software;
+    app.update();
+    let image = app.world().resource::<SoftwareFrame>().clone();
+    assert_eq!((image.width, image.height, image.generation), (640, 480, 1));
+    let at = |x: u32, y: u32| image.pixels[(y * image.width + x) as usize];
+    assert_eq!(
+        at(320, 240)[..3],
+        [217, 166, 64],
+        "the cube's flat colour in the middle"
+    );
+    assert_eq!(at(2, 2)[..3], [20, 20, 26], "the background in a corner");
+
+    app.update();
+    assert_eq!(
+        app.world().resource::<SoftwareFrame>().generation,
+        1,
+        "nothing changed"
+    );
+    app.world_mut().resource_mut::<Lighting>().kd = 0.5;
+    app.world_mut().resource_mut::<RenderSettings>().shading = Shading::Phong;
+    app.update();
+    let lit = app.world().resource::<SoftwareFrame>();
+    assert_eq!(lit.generation, 2);
+    assert_ne!(
+        lit.pixels[240 * 640 + 320],
+        image.pixels[240 * 640 + 320],
+        "now lit"
+    );
 }
