@@ -21,13 +21,13 @@ impl F8 {
         F8([0.0, 1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0]) + F8::splat(x)
     }
 
-    // Plain indexed loops of a constant count: the compiler unrolls them and packs the lanes
-    // into vector instructions more reliably than it does array::map or from_fn.
+    // Plain loops of a constant count writing an array: the compiler unrolls them and packs the
+    // lanes into vector instructions more reliably than it does array::map or from_fn.
     #[inline(always)]
     fn map(self, f: impl Fn(f32) -> f32) -> F8 {
         let mut out = [0.0; LANES];
-        for i in 0..LANES {
-            out[i] = f(self.0[i]);
+        for (o, a) in out.iter_mut().zip(self.0) {
+            *o = f(a);
         }
         F8(out)
     }
@@ -35,8 +35,8 @@ impl F8 {
     #[inline(always)]
     fn zip(self, other: F8, f: impl Fn(f32, f32) -> f32) -> F8 {
         let mut out = [0.0; LANES];
-        for i in 0..LANES {
-            out[i] = f(self.0[i], other.0[i]);
+        for (o, (a, b)) in out.iter_mut().zip(self.0.into_iter().zip(other.0)) {
+            *o = f(a, b);
         }
         F8(out)
     }
@@ -99,7 +99,7 @@ impl F8 {
             0.009_618_129,
             0.055_504_11,
             0.240_226_5,
-            0.693_147_2,
+            std::f32::consts::LN_2,
             1.0,
         ]
         .into_iter()

@@ -84,18 +84,18 @@ fn pack8(rgb: V8) -> [u32; LANES] {
         let c = c.max(F8::splat(0.0)).min(F8::splat(1.0));
         let c = c * F8::splat(255.0) + F8::splat(0.5);
         let mut bytes = [0u32; LANES];
-        for i in 0..LANES {
+        for (byte, c) in bytes.iter_mut().zip(c.0) {
             // SAFETY: c is in 0.5..=255.5 (clamped above; NaN clamps to 0), which an i32
             // holds; truncating it rounds the colour to nearest. The checked `as` conversion
             // would not vectorise.
-            bytes[i] = unsafe { c.0[i].to_int_unchecked::<i32>() } as u32;
+            *byte = unsafe { c.to_int_unchecked::<i32>() } as u32;
         }
         bytes
     };
     let (r, g, b) = (byte(rgb.x), byte(rgb.y), byte(rgb.z));
     let mut packed = [0u32; LANES];
-    for i in 0..LANES {
-        packed[i] = r[i] | g[i] << 8 | b[i] << 16 | 0xff << 24;
+    for (p, ((r, g), b)) in packed.iter_mut().zip(r.into_iter().zip(g).zip(b)) {
+        *p = r | g << 8 | b << 16 | 0xff << 24;
     }
     packed
 }

@@ -167,11 +167,15 @@ fn draw_run_portable<S: PixelShader>(
         let z = lanes.mul_add(F8::splat(t.depth.dadx), F8::splat(z_row));
         let depth = &mut depth[group];
         let mut pass = [0u32; LANES];
-        for i in 0..LANES {
+        for (i, (p, (z, d))) in pass
+            .iter_mut()
+            .zip(z.0.iter().zip(depth.iter()))
+            .enumerate()
+        {
             let x = (base + i) as i32;
             // `&`, not `&&`: no branch per lane.
-            let passed = (x >= run.lo) & (x <= run.hi) & (z.0[i] < depth[i]);
-            pass[i] = 0u32.wrapping_sub(passed as u32);
+            let passed = (x >= run.lo) & (x <= run.hi) & (z < d);
+            *p = 0u32.wrapping_sub(passed as u32);
         }
         // Seen as a plain bit mask, the blends below stay blends: recognised as a selection,
         // they become masked stores, which some CPUs (AMD's) execute very slowly.
@@ -186,8 +190,8 @@ fn draw_run_portable<S: PixelShader>(
         let x = F8::ramp((run.x0 + base as i32) as f32 + 0.5);
         let shaded = shader.shade(t, x, fy);
         let color = &mut color[group];
-        for i in 0..LANES {
-            color[i] = (shaded[i] & pass[i]) | (color[i] & !pass[i]);
+        for (c, (s, p)) in color.iter_mut().zip(shaded.into_iter().zip(pass)) {
+            *c = (s & p) | (*c & !p);
         }
     }
 }
