@@ -5,24 +5,15 @@
 
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
-use std::sync::OnceLock;
 
 use close2gl::config;
 use close2gl::core::glam::{Vec3, Vec4};
 use close2gl::core::{
-    App, Camera, CameraSpeeds, Clipping, FrontFace, Mesh, ModelStatus, RenderMode, RenderSettings,
-    Viewport,
+    App, CameraSpeeds, Clipping, FrontFace, Mesh, ModelStatus, RenderMode, RenderSettings, Viewport,
 };
 use close2gl_gpu::parity::{Comparison, coverage, diff_image};
-use close2gl_gpu::{Gpu, OffscreenPlugin, Snapshot, camera_matrices, render_offscreen};
-
-fn gpu() -> Gpu {
-    static GPU: OnceLock<Result<Gpu, String>> = OnceLock::new();
-    match GPU.get_or_init(|| Gpu::headless(close2gl_gpu::wgpu::Backends::PRIMARY)) {
-        Ok(gpu) => gpu.clone(),
-        Err(e) => panic!("the parity tests need a GPU adapter: {e}"),
-    }
-}
+use close2gl_gpu::{OffscreenPlugin, Snapshot, camera_matrices, render_offscreen};
+use close2gl_testkit::{camera_mut as camera, gpu};
 
 /// target/parity, next to the other build products.
 fn parity_dir() -> PathBuf {
@@ -53,15 +44,6 @@ fn scene(model: &str, overrides: &[&str], viewport: Viewport) -> App {
 
 fn toml_string(text: &str) -> String {
     format!("\"{}\"", text.replace('\\', "\\\\").replace('"', "\\\""))
-}
-
-fn camera(app: &mut App) -> &mut Camera {
-    let world = app.world_mut();
-    world
-        .query::<&mut Camera>()
-        .single_mut(world)
-        .expect("one camera")
-        .into_inner()
 }
 
 fn settings(app: &mut App) -> &mut RenderSettings {
@@ -356,33 +338,13 @@ fn the_bundled_models_agree_in_every_pose_front_face_and_mode() {
 /// A UV sphere as an .obj without normals (the loader computes them), written under
 /// target/parity/<name>.obj.
 fn sphere_obj(name: &str, centre: Vec3, radius: f32) -> PathBuf {
-    let (stacks, slices) = (12, 24);
+    let sphere = close2gl_testkit::sphere(centre, radius, 12, 24);
     let mut obj = String::from("# a sphere far from the origin\n");
-    for i in 0..=stacks {
-        let theta = std::f32::consts::PI * i as f32 / stacks as f32;
-        for j in 0..slices {
-            let phi = std::f32::consts::TAU * j as f32 / slices as f32;
-            let p = centre
-                + radius
-                    * Vec3::new(
-                        theta.sin() * phi.cos(),
-                        theta.cos(),
-                        -theta.sin() * phi.sin(),
-                    );
-            let _ = writeln!(obj, "v {} {} {}", p.x, p.y, p.z);
-        }
+    for p in &sphere.positions {
+        let _ = writeln!(obj, "v {} {} {}", p.x, p.y, p.z);
     }
-    for i in 0..stacks {
-        for j in 0..slices {
-            let index = |i: usize, j: usize| i * slices + j % slices + 1;
-            let (a, b, c, d) = (
-                index(i, j),
-                index(i + 1, j),
-                index(i + 1, j + 1),
-                index(i, j + 1),
-            );
-            let _ = writeln!(obj, "f {a} {b} {c}\nf {a} {c} {d}");
-        }
+    for [a, b, c] in &sphere.triangles {
+        let _ = writeln!(obj, "f {} {} {}", a + 1, b + 1, c + 1);
     }
     let path = parity_dir().join(format!("{name}.obj"));
     std::fs::create_dir_all(parity_dir()).expect("create target/parity");

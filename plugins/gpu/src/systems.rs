@@ -2,7 +2,8 @@
 
 use bevy_ecs::prelude::*;
 use close2gl_core::{
-    App, Camera, Close2glFrame, Lighting, Mesh, ModelStatus, Plugin, Render, RenderSettings,
+    App, Camera, Close2glFrame, FrameSet, Lighting, Mesh, ModelStatus, Plugin, Render,
+    RenderSettings,
 };
 
 use crate::reference::clear_color;
@@ -11,19 +12,22 @@ use crate::{Gpu, Views};
 /// Adds the `Render` systems that upload what changed: the mesh again only when
 /// `ModelStatus.generation` changes; the reference uniforms from `Camera`, `RenderSettings` and
 /// `Lighting`; the Close2GL 2D buffer from `Close2glFrame`. They run once the `Gpu` and `Views`
-/// resources exist (inserted by whoever owns the target), so a window may arrive late.
+/// resources exist (inserted by whoever owns the target), so a window may arrive late. It owns
+/// `Lighting` (only the reference view shades); the model, settings and Close2GL plugins provide
+/// what else it reads.
 pub struct GpuPlugin;
 
 impl Plugin for GpuPlugin {
     fn build(&self, app: &mut App) {
-        app.init_resource::<ModelStatus>()
-            .init_resource::<Lighting>()
-            .init_resource::<RenderSettings>()
-            .init_resource::<Close2glFrame>()
+        app.init_resource::<Lighting>()
+            .requires::<ModelStatus>("GpuPlugin", "ModelPlugin")
+            .requires::<RenderSettings>("GpuPlugin", "SettingsPlugin")
+            .requires::<Close2glFrame>("GpuPlugin", "Close2glPlugin")
             .add_systems(
                 Render,
                 (upload_mesh, upload_reference, upload_close2gl)
                     .chain()
+                    .in_set(FrameSet::Render)
                     .run_if(resource_exists::<Gpu>.and_then(resource_exists::<Views>)),
             );
     }

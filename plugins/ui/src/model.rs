@@ -31,7 +31,7 @@ pub fn section(ui: &mut egui::Ui, world: &mut World) {
         });
     }
     ui.horizontal_wrapped(|ui| {
-        for kind in PrimitiveKind::ALL {
+        for &kind in PrimitiveKind::ALL {
             if ui.button(kind.name()).clicked() {
                 request = Some(ModelSource::Primitive(kind));
             }

@@ -6,6 +6,7 @@ pub mod baseline;
 
 use std::time::Instant;
 
+use close2gl_core::limits::MAX_SEGMENTS;
 use close2gl_core::{
     Camera, Clipping, Close2glFrame, Mesh, ModelSource, PrimitiveKind, RenderMode,
 };
@@ -99,8 +100,8 @@ pub fn run(args: BenchArgs) -> Result<(), CliError> {
 
 /// Sphere stacks and slices (slices = 2 · stacks) giving about `triangles` triangles.
 pub fn sphere_grid(triangles: usize) -> (u32, u32) {
-    let stacks = ((triangles as f64 / 4.0).sqrt().round() as u32).clamp(2, 4096);
-    (stacks, (stacks * 2).min(4096))
+    let stacks = ((triangles as f64 / 4.0).sqrt().round() as u32).clamp(2, MAX_SEGMENTS);
+    (stacks, (stacks * 2).min(MAX_SEGMENTS))
 }
 
 /// Runs `f` once to warm up, then `frames` times; the median wall time in milliseconds.

@@ -5,11 +5,11 @@
 //! units from the origin, seen from random cameras. Written from the seed, not from the pipeline's
 //! code, and in f64, so that the two agree only if both follow the rules.
 
-use close2gl::core::glam::{DVec3, DVec4, Vec3};
-use close2gl::core::{
+use close2gl_core::glam::{DVec3, DVec4, Vec3};
+use close2gl_core::{
     Camera, Clipping, Close2glFrame, FrontFace, Mesh, RenderSettings, StageCounts, Viewport,
 };
-use close2gl::pipeline::FastPipeline;
+use close2gl_pipeline::FastPipeline;
 
 /// A small deterministic generator (SplitMix64): the same cases on every run and machine.
 struct Random(u64);
