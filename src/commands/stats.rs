@@ -2,11 +2,11 @@
 
 use std::path::{Path, PathBuf};
 
-use close2gl_core::{Close2glFrame, ModelStatus};
+use close2gl_core::Close2glFrame;
 use serde_json::json;
 
 use super::CliError;
-use super::scene::{SceneArgs, viewport};
+use super::scene::{SceneArgs, print_warnings, viewport};
 
 #[derive(clap::Args, Debug, Default)]
 pub struct StatsArgs {
@@ -24,11 +24,8 @@ pub fn run(args: StatsArgs) -> Result<(), CliError> {
     let config = args.scene.config()?;
     let viewport = viewport(args.size.as_deref(), &config)?;
     let app = crate::build_app(&config, viewport).map_err(CliError::Input)?;
-    let world = app.world();
-    for warning in &world.resource::<ModelStatus>().warnings {
-        eprintln!("close2gl: warning: {warning}");
-    }
-    let frame = world.resource::<Close2glFrame>();
+    print_warnings(&app);
+    let frame = app.world().resource::<Close2glFrame>();
     if let Some(path) = &args.dump {
         dump(frame, path)
             .map_err(|e| CliError::Input(format!("{}: cannot write: {e}", path.display())))?;

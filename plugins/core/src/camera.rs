@@ -3,18 +3,6 @@ use glam::Vec3;
 
 use crate::limits::DEFAULT_FOV;
 
-named_enum!(
-    /// How translations and mouse drags move the camera.
-    #[derive(Default)]
-    CameraMode {
-        /// Translate along u, v, n; rotate about them.
-        #[default]
-        Free = "free",
-        /// Keep the look-at point fixed: sideways moves orbit it, forward moves approach it.
-        LookAt = "look_at"
-    }
-);
-
 /// The virtual camera of the assignment: a centre of projection, an orthonormal right-handed
 /// frame (u right, v up, n pointing backwards, away from what it sees), the two fields of view
 /// in degrees and the clipping distances. `target` is the look-at point: on the -n axis, at the
@@ -70,6 +58,16 @@ impl Camera {
         self.position.distance(self.target)
     }
 }
+
+named_enum!(
+    /// How translations and mouse drags move the camera.
+    CameraMode {
+        /// Translate along u, v, n; rotate about them.
+        Free = "free",
+        /// Keep the look-at point fixed: sideways moves orbit it, forward moves approach it.
+        LookAt = "look_at"
+    }
+);
 
 /// The framed pose the camera returns to on reset (set when a model loads).
 #[derive(Component, Clone, Copy, Debug, PartialEq)]

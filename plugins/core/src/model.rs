@@ -6,11 +6,7 @@ use glam::Vec3;
 named_enum!(
     /// The procedural primitives of the shading lecture (002), with exact normals.
     PrimitiveKind {
-        Box = "box",
-        Sphere = "sphere",
-        Torus = "torus",
-        Cone = "cone",
-        Cylinder = "cylinder"
+        Box = "box", Sphere = "sphere", Torus = "torus", Cone = "cone", Cylinder = "cylinder"
     }
 );
 

@@ -75,17 +75,28 @@ pub fn map_input(
     }
 
     for pressed in &input.pressed {
-        let is = |action: &str| bindings.key(action) == Some(pressed.as_str());
-        if is("reset") {
-            actions.0.push(CameraAction::Reset);
-        } else if is("toggle_mode") {
-            actions.0.push(CameraAction::ToggleMode);
-        } else if is("original_color") {
-            settings.shading = Shading::None;
-        } else if is("phong") {
-            settings.shading = Shading::Phong;
-        } else if is("gouraud") {
-            settings.shading = Shading::GouraudAds;
-        }
+        apply_press(pressed, &bindings, &mut actions.0, &mut settings);
+    }
+}
+
+/// One key press: a camera action or the lecture's shading keys. `settings` is written only
+/// when a shading key is pressed, so that it is not marked changed every frame.
+fn apply_press(
+    pressed: &str,
+    bindings: &InputBindings,
+    actions: &mut Vec<CameraAction>,
+    settings: &mut ResMut<RenderSettings>,
+) {
+    let is = |action: &str| bindings.key(action) == Some(pressed);
+    if is("reset") {
+        actions.push(CameraAction::Reset);
+    } else if is("toggle_mode") {
+        actions.push(CameraAction::ToggleMode);
+    } else if is("original_color") {
+        settings.shading = Shading::None;
+    } else if is("phong") {
+        settings.shading = Shading::Phong;
+    } else if is("gouraud") {
+        settings.shading = Shading::GouraudAds;
     }
 }

@@ -6,6 +6,7 @@
 
 use bevy_ecs::prelude::Resource;
 use close2gl_core::{Camera, Close2glFrame, Mesh, RenderSettings, StageCounts, Viewport};
+use glam::Vec3;
 use rayon::prelude::*;
 
 use crate::clip::Outcode;
@@ -38,7 +39,7 @@ pub struct FastPipeline {
 }
 
 impl FastPipeline {
-    /// Fills `frame` exactly as [`crate::textbook::run`] would.
+    /// Fills `frame` with exactly what [`crate::textbook::run`] returns.
     pub fn run(
         &mut self,
         mesh: &Mesh,
@@ -49,20 +50,7 @@ impl FastPipeline {
     ) {
         let transform = ClipTransform::new(camera);
         let stage = Stage::new(settings, viewport);
-
-        // Transform every unique vertex once.
-        let vertices = mesh.positions.len();
-        self.codes.resize(vertices, 0);
-        self.window.resize(vertices, [0.0; 2]);
-        self.codes
-            .par_chunks_mut(VERTEX_CHUNK)
-            .zip(self.window.par_chunks_mut(VERTEX_CHUNK))
-            .zip(mesh.positions.par_chunks(VERTEX_CHUNK))
-            .for_each(|((codes, window), positions)| {
-                for (i, p) in positions.iter().enumerate() {
-                    (codes[i], window[i]) = corner(transform.apply(*p), &stage);
-                }
-            });
+        self.transform_vertices(&mesh.positions, &transform, &stage);
 
         // Clip, divide, map, cull and emit the triangles, chunk by chunk.
         let (positions, codes, window) = (&mesh.positions, &self.codes, &self.window);
@@ -94,18 +82,39 @@ impl FastPipeline {
             .vertices
             .resize(chunks.iter().map(|c| c.vertices.len()).sum(), [0.0; 2]);
         join(chunks, &mut frame.vertices);
-        let mut counts = StageCounts::default();
-        for chunk in chunks {
-            counts.triangles_in += chunk.counts.triangles_in;
-            counts.clipped += chunk.counts.clipped;
-            counts.culled += chunk.counts.culled;
-            counts.drawn += chunk.counts.drawn;
-            counts.output_primitives += chunk.counts.output_primitives;
-        }
         frame.topology = stage.topology();
         frame.viewport = viewport;
-        frame.counts = counts;
+        frame.counts = total_counts(chunks);
     }
+
+    /// Transforms every unique vertex once, into its outcode and window position.
+    fn transform_vertices(&mut self, positions: &[Vec3], transform: &ClipTransform, stage: &Stage) {
+        let vertices = positions.len();
+        self.codes.resize(vertices, 0);
+        self.window.resize(vertices, [0.0; 2]);
+        self.codes
+            .par_chunks_mut(VERTEX_CHUNK)
+            .zip(self.window.par_chunks_mut(VERTEX_CHUNK))
+            .zip(positions.par_chunks(VERTEX_CHUNK))
+            .for_each(|((codes, window), positions)| {
+                for (i, p) in positions.iter().enumerate() {
+                    (codes[i], window[i]) = corner(transform.apply(*p), stage);
+                }
+            });
+    }
+}
+
+/// The chunks' counts added up.
+fn total_counts(chunks: &[Chunk]) -> StageCounts {
+    let mut counts = StageCounts::default();
+    for chunk in chunks {
+        counts.triangles_in += chunk.counts.triangles_in;
+        counts.clipped += chunk.counts.clipped;
+        counts.culled += chunk.counts.culled;
+        counts.drawn += chunk.counts.drawn;
+        counts.output_primitives += chunk.counts.output_primitives;
+    }
+    counts
 }
 
 /// Copies the chunks' vertices, in order, into `out` (exactly as long as all of them), splitting

@@ -42,16 +42,7 @@ pub fn frame(
 
     let culled: Vec<[Vec3; 3]> = divided
         .into_iter()
-        .filter(|t| {
-            if !settings.backface_culling {
-                return true;
-            }
-            let z = (t[1] - t[0]).cross(t[2] - t[0]).z;
-            match settings.front_face {
-                FrontFace::Ccw => z > 0.0,
-                FrontFace::Cw => z < 0.0,
-            }
-        })
+        .filter(|t| !settings.backface_culling || faces_front(t, settings.front_face))
         .collect();
 
     let v = viewport_matrix(viewport.width as f32, viewport.height as f32);
@@ -64,6 +55,15 @@ pub fn frame(
         }
     }
     floats
+}
+
+/// The sign of the area in normalised device coordinates (y up).
+fn faces_front(t: &[Vec3; 3], front: FrontFace) -> bool {
+    let z = (t[1] - t[0]).cross(t[2] - t[0]).z;
+    match front {
+        FrontFace::Ccw => z > 0.0,
+        FrontFace::Cw => z < 0.0,
+    }
 }
 
 /// Full clipping: a triangle inside the view volume is copied, one outside a plane is dropped,

@@ -8,7 +8,8 @@ use std::time::Instant;
 
 use close2gl_core::limits::MAX_SEGMENTS;
 use close2gl_core::{
-    Camera, Clipping, Close2glFrame, Mesh, ModelSource, PrimitiveKind, RenderMode,
+    App, Camera, Clipping, Close2glFrame, Mesh, ModelSource, PrimitiveKind, RenderMode,
+    RenderSettings, Viewport,
 };
 use close2gl_pipeline::FastPipeline;
 use serde_json::json;
@@ -40,19 +41,7 @@ pub fn run(args: BenchArgs) -> Result<(), CliError> {
             "bench: --frames and --triangles must be at least 1".into(),
         ));
     }
-    let mut config = args.scene.config()?;
-    if args.scene.model.is_none() {
-        config.model = ModelSource::Primitive(PrimitiveKind::Sphere);
-        (
-            config.primitives.sphere_stacks,
-            config.primitives.sphere_slices,
-        ) = sphere_grid(args.triangles);
-    }
-    // The stage the issue measures: solid triangles through full clipping.
-    config.render.mode = RenderMode::Solid;
-    config.render.clipping = Clipping::Full;
-    let viewport = viewport(args.size.as_deref(), &config)?;
-    let mut app = crate::build_app(&config, viewport).map_err(CliError::Input)?;
+    let (mut app, settings, viewport) = scene(&args)?;
     let world = app.world_mut();
     let (mut meshes, mut cameras) = (world.query::<&Mesh>(), world.query::<&Camera>());
     let world = &*world;
@@ -61,8 +50,6 @@ pub fn run(args: BenchArgs) -> Result<(), CliError> {
             "bench: the scene has no mesh or camera".into(),
         ));
     };
-    let settings = config.render;
-
     let threads = args
         .threads
         .unwrap_or_else(rayon::current_num_threads)
@@ -96,6 +83,24 @@ pub fn run(args: BenchArgs) -> Result<(), CliError> {
         })
     );
     Ok(())
+}
+
+/// The app for the model asked for (by default a sphere of about `--triangles` triangles) and
+/// the settings the stage is measured with: solid triangles through full clipping.
+fn scene(args: &BenchArgs) -> Result<(App, RenderSettings, Viewport), CliError> {
+    let mut config = args.scene.config()?;
+    if args.scene.model.is_none() {
+        config.model = ModelSource::Primitive(PrimitiveKind::Sphere);
+        (
+            config.primitives.sphere_stacks,
+            config.primitives.sphere_slices,
+        ) = sphere_grid(args.triangles);
+    }
+    config.render.mode = RenderMode::Solid;
+    config.render.clipping = Clipping::Full;
+    let viewport = viewport(args.size.as_deref(), &config)?;
+    let app = crate::build_app(&config, viewport).map_err(CliError::Input)?;
+    Ok((app, config.render, viewport))
 }
 
 /// Sphere stacks and slices (slices = 2 · stacks) giving about `triangles` triangles.
