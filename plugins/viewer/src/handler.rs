@@ -4,7 +4,7 @@
 use std::time::Instant;
 
 use bevy_ecs::world::World;
-use close2gl_core::{App, InputState};
+use close2gl_core::{App, InputState, Viewport};
 use close2gl_gpu::Image;
 use winit::application::ApplicationHandler;
 use winit::event::WindowEvent;
@@ -15,7 +15,7 @@ use crate::ViewerOptions;
 use crate::input::InputTracker;
 use crate::pacing::Pacing;
 use crate::routing::{apply_input, offer_to_panel};
-use crate::windows::{Windows, update_viewport};
+use crate::windows::Windows;
 
 pub struct Viewer {
     app: App,
@@ -92,6 +92,16 @@ impl Viewer {
         {
             windows.main.window.request_redraw();
         }
+    }
+}
+
+/// Keeps `Viewport` equal to the Close2GL view's size; written only when it changed, so that the
+/// pipeline does not run again for nothing.
+fn update_viewport(world: &mut World, viewport: Option<Viewport>) {
+    if let Some(viewport) = viewport
+        && *world.resource::<Viewport>() != viewport
+    {
+        world.insert_resource(viewport);
     }
 }
 

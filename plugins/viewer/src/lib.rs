@@ -4,7 +4,10 @@
 //! scroll) and dropped files into `ModelRequest`, keeps `Viewport` equal to the Close2GL view's
 //! size, runs one app frame per redraw, and draws both views and the panel. It inserts the `Gpu`
 //! and `Views` resources the GPU plugin's upload systems need, and fills `ViewStats`. Redraws
-//! are on demand (input, held keys, the panel's own animations), so an idle viewer sleeps.
+//! are on demand (input, held keys, the panel's own animations), so an idle viewer sleeps. It
+//! adds the GPU and UI plugins unless the app has them, and needs the input, model and settings
+//! plugins' resources (checked before the windows open). It has no systems: its event loop runs
+//! the app's frames.
 
 mod draw;
 mod gui;

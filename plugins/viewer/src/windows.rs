@@ -4,7 +4,7 @@ use std::collections::HashMap;
 use std::sync::Arc;
 
 use bevy_ecs::world::World;
-use close2gl_core::{Layout, Viewport};
+use close2gl_core::Layout;
 use close2gl_gpu::{Gpu, Views};
 use close2gl_ui::ViewStats;
 use winit::dpi::{PhysicalPosition, PhysicalSize};
@@ -192,13 +192,4 @@ fn install(world: &mut World, gpu: &Gpu, format: wgpu::TextureFormat) {
     stats.adapter = format!("{} ({})", gpu.adapter_name(), gpu.backend_name());
     stats.limitations = limitations;
     world.insert_resource(gpu.clone());
-}
-
-/// The `Viewport` to use this frame, if it changed.
-pub fn update_viewport(world: &mut World, viewport: Option<Viewport>) {
-    if let Some(viewport) = viewport
-        && *world.resource::<Viewport>() != viewport
-    {
-        world.insert_resource(viewport);
-    }
 }
