@@ -215,45 +215,15 @@ fn check_scene(label: &str, model: &str, overrides: &[&str]) -> String {
                 let s = settings(&mut app);
                 (s.front_face, s.mode) = (front_face, mode);
                 let snapshot = render_offscreen(&mut app).expect("render");
-                let c = Comparison::of_images(
-                    &snapshot.reference,
-                    &snapshot.close2gl,
-                    snapshot.background,
+                let case = format!(
+                    "{label}_{}_{}_{}",
+                    pose.name,
+                    front_face.name(),
+                    mode.name()
                 );
-                covered_any |= c.covered_pixels > 0;
-                let agrees = if c.covered_pixels == 0 {
-                    // Both empty (e.g. only back faces in view): nothing to disagree about.
-                    true
-                } else if far_plane_points(pose, mode) {
-                    c.only_second == 0
-                } else {
-                    c.coverage_agreement >= threshold(mode)
-                };
-                if !agrees {
-                    let case = format!(
-                        "{label}_{}_{}_{}",
-                        pose.name,
-                        front_face.name(),
-                        mode.name()
-                    );
-                    let diff = write_case(&case, &snapshot);
-                    let _ = writeln!(
-                        failures,
-                        "{case}: coverage agreement {:.5}, needed {} ({} of {} pixels differ: {} \
-                         reference only, {} Close2GL only); see {}",
-                        c.coverage_agreement,
-                        if far_plane_points(pose, mode) {
-                            "no Close2GL-only pixel".to_string()
-                        } else {
-                            format!(">= {}", threshold(mode))
-                        },
-                        c.mismatched_pixels,
-                        c.covered_pixels,
-                        c.only_first,
-                        c.only_second,
-                        diff.display()
-                    );
-                }
+                let (covered, failure) = check_variant(&case, pose, mode, &snapshot);
+                covered_any |= covered;
+                failures.push_str(&failure.unwrap_or_default());
             }
         }
         if !covered_any {
@@ -265,6 +235,43 @@ fn check_scene(label: &str, model: &str, overrides: &[&str]) -> String {
         }
     }
     failures
+}
+
+/// Whether the snapshot covers anything, and a failure line when its views disagree.
+fn check_variant(
+    case: &str,
+    pose: &Pose,
+    mode: RenderMode,
+    snapshot: &Snapshot,
+) -> (bool, Option<String>) {
+    let c = Comparison::of_images(&snapshot.reference, &snapshot.close2gl, snapshot.background);
+    let agrees = if c.covered_pixels == 0 {
+        // Both empty (e.g. only back faces in view): nothing to disagree about.
+        true
+    } else if far_plane_points(pose, mode) {
+        c.only_second == 0
+    } else {
+        c.coverage_agreement >= threshold(mode)
+    };
+    if agrees {
+        return (c.covered_pixels > 0, None);
+    }
+    let needed = if far_plane_points(pose, mode) {
+        "no Close2GL-only pixel".to_string()
+    } else {
+        format!(">= {}", threshold(mode))
+    };
+    let failure = format!(
+        "{case}: coverage agreement {:.5}, needed {needed} ({} of {} pixels differ: {} reference \
+         only, {} Close2GL only); see {}\n",
+        c.coverage_agreement,
+        c.mismatched_pixels,
+        c.covered_pixels,
+        c.only_first,
+        c.only_second,
+        write_case(case, snapshot).display()
+    );
+    (true, Some(failure))
 }
 
 fn assert_scenes(scenes: &[(&str, &str, &[&str])]) {
@@ -382,6 +389,116 @@ fn touches_the_border(clip: &[Vec4; 3]) -> bool {
     })
 }
 
+/// Keeps only the mesh's triangles that touch the frustum's border in the current pose and
+/// renders them with full clipping; `None` when there are none. The pose is kept.
+fn border_triangles(app: &mut App) -> (usize, Option<Snapshot>) {
+    let saved = *camera(app);
+    let (view, projection) = camera_matrices(&saved);
+    let world = app.world_mut();
+    let mut mesh = world
+        .query::<&mut Mesh>()
+        .single_mut(world)
+        .expect("a mesh");
+    let border: Vec<[u32; 3]> = mesh
+        .triangles
+        .iter()
+        .copied()
+        .filter(|t| {
+            let clip = t.map(|i| projection * view * mesh.positions[i as usize].extend(1.0));
+            touches_the_border(&clip)
+        })
+        .collect();
+    let border_count = border.len();
+    mesh.triangles = border;
+    app.world_mut().resource_mut::<ModelStatus>().generation += 1;
+    settings(app).clipping = Clipping::Full;
+    // A new mesh is framed again: run that frame, then put the pose back.
+    app.update();
+    *camera(app) = saved;
+    let edges = (border_count > 0).then(|| render_offscreen(app).expect("render"));
+    (border_count, edges)
+}
+
+/// The pixels only full clipping covers, and how many of them the border triangles do not
+/// explain. Simple clipping covering a pixel full clipping does not is a failure.
+fn pixels_only_full_covers(
+    case: &str,
+    full: &Snapshot,
+    simple: &Snapshot,
+    border: Option<&Snapshot>,
+) -> (usize, usize) {
+    let bg = full.background;
+    let (full_px, simple_px) = (coverage(&full.close2gl, bg), coverage(&simple.close2gl, bg));
+    let border_px = border.map(|e| coverage(&e.close2gl, bg));
+    let (mut extra, mut unexplained) = (0, 0);
+    for (i, (&f, &s)) in full_px.iter().zip(&simple_px).enumerate() {
+        assert!(
+            f || !s,
+            "{case}: simple clipping covers pixel {i} that full clipping does not (see {})",
+            write_case(case, simple).display()
+        );
+        if f && !s {
+            extra += 1;
+            unexplained += usize::from(!border_px.as_ref().is_some_and(|b| b[i]));
+        }
+    }
+    (extra, unexplained)
+}
+
+/// Writes the Close2GL images of a failed case under target/parity/<case>/.
+fn write_close2gl_images(case: &str, images: [(&str, Option<&Snapshot>); 3]) -> PathBuf {
+    let dir = parity_dir().join(case);
+    std::fs::create_dir_all(&dir).expect("create the case directory");
+    for (name, snapshot) in images {
+        if let Some(snapshot) = snapshot {
+            let path = dir.join(format!("{name}.png"));
+            snapshot
+                .close2gl
+                .write_png(&path)
+                .expect("write a parity image");
+        }
+    }
+    dir
+}
+
+/// Simple against full clipping for one model, pose and mode; returns the pixels that differ.
+fn compare_clipping(model: &str, pose: &Pose, mode: RenderMode) -> usize {
+    let mut app = scene(model, &[], SIZE);
+    (pose.apply)(&mut app);
+    settings(&mut app).mode = mode;
+    let case = format!("simple_{model}_{}_{}", pose.name, mode.name());
+    let full = render_offscreen(&mut app).expect("render");
+    settings(&mut app).clipping = Clipping::Simple;
+    let simple = render_offscreen(&mut app).expect("render");
+    let (border_count, edges) = border_triangles(&mut app);
+    let (extra, unexplained) = pixels_only_full_covers(&case, &full, &simple, edges.as_ref());
+    if border_count == 0 {
+        assert_eq!(
+            full.close2gl, simple.close2gl,
+            "{case}: no triangle touches the border, yet the clipping modes differ"
+        );
+    }
+    if unexplained > 0 {
+        let images = [
+            ("full", Some(&full)),
+            ("simple", Some(&simple)),
+            ("border", edges.as_ref()),
+        ];
+        panic!(
+            "{case}: {unexplained} of the {extra} pixels only full clipping covers are not \
+             covered by the {border_count} triangles touching the border (Close2GL images: {})",
+            write_close2gl_images(&case, images).display()
+        );
+    }
+    if pose.name == "framed" {
+        assert_eq!(
+            border_count, 0,
+            "{case}: the framed model touches the border"
+        );
+    }
+    extra
+}
+
 /// Simple clipping drops whole triangles that touch the frustum's border, so its coverage must be
 /// a subset of full clipping's, and every pixel only full clipping covers must be covered by
 /// those border triangles alone (drawn with full clipping). In a framed pose nothing touches the
@@ -392,100 +509,7 @@ fn simple_clipping_differs_from_full_only_at_the_frustum_borders() {
     for model in ["torus", "box", "cylinder"] {
         for pose in POSES {
             for mode in [RenderMode::Solid, RenderMode::Wireframe] {
-                let mut app = scene(model, &[], SIZE);
-                (pose.apply)(&mut app);
-                settings(&mut app).mode = mode;
-                let case = format!("simple_{model}_{}_{}", pose.name, mode.name());
-                let full = render_offscreen(&mut app).expect("render");
-                settings(&mut app).clipping = Clipping::Simple;
-                let simple = render_offscreen(&mut app).expect("render");
-
-                // The border triangles alone, drawn with full clipping.
-                let saved = *camera(&mut app);
-                let (view, projection) = camera_matrices(&saved);
-                let world = app.world_mut();
-                let mut mesh = world
-                    .query::<&mut Mesh>()
-                    .single_mut(world)
-                    .expect("a mesh");
-                let border: Vec<[u32; 3]> = mesh
-                    .triangles
-                    .iter()
-                    .copied()
-                    .filter(|t| {
-                        let clip =
-                            t.map(|i| projection * view * mesh.positions[i as usize].extend(1.0));
-                        touches_the_border(&clip)
-                    })
-                    .collect();
-                let border_count = border.len();
-                mesh.triangles = border;
-                app.world_mut().resource_mut::<ModelStatus>().generation += 1;
-                settings(&mut app).clipping = Clipping::Full;
-                // A new mesh is framed again: run that frame, then put the pose back.
-                app.update();
-                *camera(&mut app) = saved;
-                let edges = if border_count == 0 {
-                    None
-                } else {
-                    Some(render_offscreen(&mut app).expect("render"))
-                };
-
-                let bg = full.background;
-                let (full_px, simple_px) =
-                    (coverage(&full.close2gl, bg), coverage(&simple.close2gl, bg));
-                let border_px = edges.as_ref().map(|e| coverage(&e.close2gl, bg));
-                let mut extra = 0;
-                let mut unexplained = 0;
-                for (i, (&f, &s)) in full_px.iter().zip(&simple_px).enumerate() {
-                    assert!(
-                        f || !s,
-                        "{case}: simple clipping covers pixel {i} that full clipping does not \
-                         (see {})",
-                        write_case(&case, &simple).display()
-                    );
-                    if f && !s {
-                        extra += 1;
-                        unexplained += usize::from(!border_px.as_ref().is_some_and(|b| b[i]));
-                    }
-                }
-                if border_count == 0 {
-                    assert_eq!(
-                        full.close2gl, simple.close2gl,
-                        "{case}: no triangle touches the border, yet the clipping modes differ"
-                    );
-                }
-                if unexplained > 0 {
-                    let dir = parity_dir().join(&case);
-                    std::fs::create_dir_all(&dir).expect("create the case directory");
-                    let images = [
-                        ("full", Some(&full)),
-                        ("simple", Some(&simple)),
-                        ("border", edges.as_ref()),
-                    ];
-                    for (name, snapshot) in images {
-                        if let Some(snapshot) = snapshot {
-                            let path = dir.join(format!("{name}.png"));
-                            snapshot
-                                .close2gl
-                                .write_png(&path)
-                                .expect("write a parity image");
-                        }
-                    }
-                    panic!(
-                        "{case}: {unexplained} of the {extra} pixels only full clipping covers \
-                         are not covered by the {border_count} triangles touching the border \
-                         (Close2GL images: {})",
-                        dir.display()
-                    );
-                }
-                if pose.name == "framed" {
-                    assert_eq!(
-                        border_count, 0,
-                        "{case}: the framed model touches the border"
-                    );
-                }
-                differing_total += extra;
+                differing_total += compare_clipping(model, pose, mode);
             }
         }
     }
@@ -496,30 +520,23 @@ fn simple_clipping_differs_from_full_only_at_the_frustum_borders() {
     );
 }
 
-/// `close2gl render` as a user runs it: the report's agreement must be the one the PNGs give.
-#[test]
-fn the_render_command_reports_what_its_images_show() {
-    let out = parity_dir().join("cli_render");
-    let _ = std::fs::remove_dir_all(&out);
+/// Runs `close2gl render torus` at 160x120 into `out` with `extra` arguments.
+fn render_command(out: &Path, extra: &[&str]) -> std::process::Output {
     let empty = parity_dir().join("empty.toml");
     std::fs::create_dir_all(parity_dir()).expect("create target/parity");
     std::fs::write(&empty, "").expect("write target/parity/empty.toml");
-    let run = |extra: &[&str]| {
-        std::process::Command::new(env!("CARGO_BIN_EXE_close2gl"))
-            .args(["render", "torus", "--size", "160x120", "--config"])
-            .arg(&empty)
-            .arg("--out")
-            .arg(&out)
-            .args(extra)
-            .output()
-            .expect("run close2gl")
-    };
-    let output = run(&["--set", "render.mode=wireframe", "--frames", "3"]);
-    assert!(
-        output.status.success(),
-        "{}",
-        String::from_utf8_lossy(&output.stderr)
-    );
+    std::process::Command::new(env!("CARGO_BIN_EXE_close2gl"))
+        .args(["render", "torus", "--size", "160x120", "--config"])
+        .arg(&empty)
+        .arg("--out")
+        .arg(out)
+        .args(extra)
+        .output()
+        .expect("run close2gl")
+}
+
+/// The report in `out` against the images beside it.
+fn check_report(out: &Path) {
     let text = std::fs::read_to_string(out.join("report.json")).expect("report.json");
     let report: serde_json::Value = serde_json::from_str(&text).expect("valid JSON");
     let image = |name: &str| close2gl_gpu::Image::read_png(&out.join(name)).expect("a PNG");
@@ -550,13 +567,31 @@ fn the_render_command_reports_what_its_images_show() {
             "report.json lacks stats.{key}: {text}"
         );
     }
+}
 
-    let output = run(&["--orbit", "3", "--set", "model.primitive=box"]);
+fn assert_success(output: &std::process::Output) {
     assert!(
         output.status.success(),
         "{}",
         String::from_utf8_lossy(&output.stderr)
     );
+}
+
+/// `close2gl render` as a user runs it: the report's agreement must be the one the PNGs give.
+#[test]
+fn the_render_command_reports_what_its_images_show() {
+    let out = parity_dir().join("cli_render");
+    let _ = std::fs::remove_dir_all(&out);
+    assert_success(&render_command(
+        &out,
+        &["--set", "render.mode=wireframe", "--frames", "3"],
+    ));
+    check_report(&out);
+
+    assert_success(&render_command(
+        &out,
+        &["--orbit", "3", "--set", "model.primitive=box"],
+    ));
     let text = std::fs::read_to_string(out.join("report.json")).expect("report.json");
     let reports: serde_json::Value = serde_json::from_str(&text).expect("valid JSON");
     assert_eq!(reports.as_array().map(Vec::len), Some(3), "{text}");
@@ -571,7 +606,7 @@ fn the_render_command_reports_what_its_images_show() {
         &["--backend", "glide"],
         &["--orbit", "0"],
     ] {
-        let output = run(bad);
+        let output = render_command(&out, bad);
         assert_eq!(output.status.code(), Some(2), "{bad:?}");
         let stderr = String::from_utf8_lossy(&output.stderr);
         let message: Vec<&str> = stderr
