@@ -1,14 +1,14 @@
-//! A user-written plugin, the bevy way: a small struct whose `build` adds a system. This one
-//! orbits the camera a little every frame and logs what Close2GL drew; the example runs it
-//! headless for a full turn on the torus primitive.
+//! A user-written plugin, the bevy way: a small struct whose `build` adds a system in one of the
+//! core's `FrameSet`s. This one orbits the camera a little every frame and logs what Close2GL
+//! drew; the example runs it headless for a full turn on the torus primitive. A plain function
+//! is a plugin too (`report_plugin` below).
 //!
 //!     cargo run --example orbit_plugin
 
-use close2gl::DefaultPlugins;
 use close2gl::config::Config;
 use close2gl::core::bevy_ecs::prelude::*;
 use close2gl::core::{
-    App, CameraAction, CameraActions, Close2glFrame, ModelSource, Plugin, PostUpdate,
+    App, CameraAction, CameraActions, Close2glFrame, FrameSet, ModelSource, Plugin, PostUpdate,
     PrimitiveKind, Update, Viewport,
 };
 
@@ -22,13 +22,15 @@ struct OrbitStep(f32);
 
 impl Plugin for Orbit {
     fn build(&self, app: &mut App) {
+        // Input's set: the camera plugin applies the action in the same frame.
         app.insert_resource(OrbitStep(self.step))
-            .add_systems(Update, orbit)
-            .add_systems(
-                PostUpdate,
-                report.after(close2gl::pipeline::close2gl_system),
-            );
+            .add_systems(Update, orbit.in_set(FrameSet::Input));
     }
+}
+
+/// Logs each frame once the Close2GL pipeline has run.
+fn report_plugin(app: &mut App) {
+    app.add_systems(PostUpdate, report.after(FrameSet::Close2gl));
 }
 
 fn orbit(step: Res<OrbitStep>, mut actions: ResMut<CameraActions>) {
@@ -51,7 +53,7 @@ fn main() -> Result<(), String> {
         model: ModelSource::Primitive(PrimitiveKind::Torus),
         ..Config::default()
     };
-    // build_app adds DefaultPlugins; adding them again is a no-op, shown here for the pattern.
+    // build_app adds DefaultPlugins (adding a plugin twice would be an error).
     let mut app = close2gl::build_app(
         &config,
         Viewport {
@@ -59,9 +61,10 @@ fn main() -> Result<(), String> {
             height: 480,
         },
     )?;
-    app.add_plugins(DefaultPlugins).add_plugins(Orbit {
+    app.add_plugins(Orbit {
         step: std::f32::consts::TAU / 12.0,
-    });
+    })
+    .add_plugins(report_plugin);
     for _ in 0..12 {
         app.update();
     }

@@ -27,32 +27,32 @@ pub use close2gl_pipeline as pipeline;
 pub use close2gl_raster as raster;
 
 use close2gl_core::{
-    App, Camera, CameraActions, Close2glFrame, Framing, InputState, ModelRequest, ModelStatus,
-    Plugin, Viewport,
+    App, Camera, Framing, ModelRequest, ModelStatus, Plugin, SettingsPlugin, Viewport,
 };
 
 use config::Config;
 
-/// Everything headless: model loading, input mapping, the camera, the Close2GL pipeline and its
-/// software rasterizer.
-/// The GPU renderers and the windows are added on top by the commands that need them.
+/// Everything headless: the shared settings, model loading, the camera, input mapping, the
+/// Close2GL pipeline and its software rasterizer. The GPU renderers and the windows are added on
+/// top by the commands that need them. A plugin already in the app is not added again, so an app
+/// may add one of these by hand first.
 pub struct DefaultPlugins;
 
 impl Plugin for DefaultPlugins {
     fn build(&self, app: &mut App) {
-        app.add_plugins(close2gl_model::ModelPlugin)
-            .add_plugins(close2gl_input::InputPlugin)
-            .add_plugins(close2gl_camera::CameraPlugin)
-            .add_plugins(close2gl_pipeline::Close2glPlugin)
-            .add_plugins(close2gl_raster::RasterPlugin);
+        app.add_plugin_once(SettingsPlugin)
+            .add_plugin_once(close2gl_model::ModelPlugin)
+            .add_plugin_once(close2gl_camera::CameraPlugin)
+            .add_plugin_once(close2gl_input::InputPlugin)
+            .add_plugin_once(close2gl_pipeline::Close2glPlugin)
+            .add_plugin_once(close2gl_raster::RasterPlugin);
     }
 }
 
-/// Builds the headless app for `config` with its model already loaded (a model that does not
-/// load is an error here, before anything is shown) and one frame run, so the camera is framed
-/// and the Close2GL frame computed.
+/// Builds the headless app for `config` and runs one frame, in which the model plugin loads the
+/// configured model, the camera frames it and the Close2GL frame is computed. A model that does
+/// not load is an error here, before anything is shown.
 pub fn build_app(config: &Config, viewport: Viewport) -> Result<App, String> {
-    let loaded = close2gl_model::load(&config.model, &config.primitives)?;
     let mut app = App::new();
     app.insert_resource(config.render)
         .insert_resource(config.lighting)
@@ -61,29 +61,21 @@ pub fn build_app(config: &Config, viewport: Viewport) -> Result<App, String> {
         .insert_resource(config.input.clone())
         .insert_resource(viewport)
         .insert_resource(Framing {
-            pose: config.camera.pose().map(|p| [p.position, p.target, p.up]),
+            pose: config.camera.pose(),
             near: config.camera.near,
             far: config.camera.far,
         })
-        .init_resource::<InputState>()
-        .init_resource::<CameraActions>()
-        .init_resource::<Close2glFrame>()
-        .init_resource::<ModelRequest>()
-        .insert_resource(ModelStatus {
-            source: Some(config.model.clone()),
-            warnings: loaded.warnings,
-            error: None,
-            generation: 1,
-        })
+        .insert_resource(ModelRequest(Some(config.model.clone())))
         .add_plugins(DefaultPlugins);
-    let world = app.world_mut();
-    world.spawn(Camera {
+    app.world_mut().spawn(Camera {
         hfov: config.camera.hfov,
         vfov: config.camera.vfov,
         mode: config.camera.mode,
         ..Camera::default()
     });
-    world.spawn(loaded.mesh);
     app.update();
-    Ok(app)
+    match &app.world().resource::<ModelStatus>().error {
+        Some(error) => Err(error.clone()),
+        None => Ok(app),
+    }
 }

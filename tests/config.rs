@@ -54,11 +54,11 @@ fn bad_values_name_the_key_and_the_allowed_range() {
     for (set, expected) in [
         (
             "camera.hfov=180",
-            "camera.hfov: expected a number of degrees in (0, 180), found 180",
+            "camera.hfov: expected a number of degrees in 0.5..=170, found 180",
         ),
         (
             "camera.vfov=0",
-            "camera.vfov: expected a number of degrees in (0, 180)",
+            "camera.vfov: expected a number of degrees in 0.5..=170",
         ),
         ("camera.near=-1", "camera.near: expected a number > 0"),
         (

@@ -7,24 +7,16 @@
 
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
-use std::sync::OnceLock;
 
 use close2gl::config;
 use close2gl::core::glam::{Vec3, Vec4};
 use close2gl::core::{
-    App, Camera, CameraSpeeds, Clipping, FrontFace, Mesh, ModelStatus, Rasterizer, RenderMode,
+    App, CameraSpeeds, Clipping, FrontFace, Mesh, ModelStatus, Rasterizer, RenderMode,
     RenderSettings, Shading, Viewport,
 };
 use close2gl_gpu::parity::{ColorComparison, Comparison, coverage, diff_image};
-use close2gl_gpu::{Gpu, OffscreenPlugin, Snapshot, camera_matrices, render_offscreen};
-
-fn gpu() -> Gpu {
-    static GPU: OnceLock<Result<Gpu, String>> = OnceLock::new();
-    match GPU.get_or_init(|| Gpu::headless(close2gl_gpu::wgpu::Backends::PRIMARY)) {
-        Ok(gpu) => gpu.clone(),
-        Err(e) => panic!("the parity tests need a GPU adapter: {e}"),
-    }
-}
+use close2gl_gpu::{OffscreenPlugin, Snapshot, camera_matrices, render_offscreen};
+use close2gl_testkit::{camera_mut as camera, gpu};
 
 /// target/parity, next to the other build products.
 fn parity_dir() -> PathBuf {
@@ -55,15 +47,6 @@ fn scene(model: &str, overrides: &[&str], viewport: Viewport) -> App {
 
 fn toml_string(text: &str) -> String {
     format!("\"{}\"", text.replace('\\', "\\\\").replace('"', "\\\""))
-}
-
-fn camera(app: &mut App) -> &mut Camera {
-    let world = app.world_mut();
-    world
-        .query::<&mut Camera>()
-        .single_mut(world)
-        .expect("one camera")
-        .into_inner()
 }
 
 fn settings(app: &mut App) -> &mut RenderSettings {
@@ -386,33 +369,13 @@ fn the_bundled_models_agree_in_every_pose_front_face_and_mode() {
 /// A UV sphere as an .obj without normals (the loader computes them), written under
 /// target/parity/<name>.obj.
 fn sphere_obj(name: &str, centre: Vec3, radius: f32) -> PathBuf {
-    let (stacks, slices) = (12, 24);
+    let sphere = close2gl_testkit::sphere(centre, radius, 12, 24);
     let mut obj = String::from("# a sphere far from the origin\n");
-    for i in 0..=stacks {
-        let theta = std::f32::consts::PI * i as f32 / stacks as f32;
-        for j in 0..slices {
-            let phi = std::f32::consts::TAU * j as f32 / slices as f32;
-            let p = centre
-                + radius
-                    * Vec3::new(
-                        theta.sin() * phi.cos(),
-                        theta.cos(),
-                        -theta.sin() * phi.sin(),
-                    );
-            let _ = writeln!(obj, "v {} {} {}", p.x, p.y, p.z);
-        }
+    for p in &sphere.positions {
+        let _ = writeln!(obj, "v {} {} {}", p.x, p.y, p.z);
     }
-    for i in 0..stacks {
-        for j in 0..slices {
-            let index = |i: usize, j: usize| i * slices + j % slices + 1;
-            let (a, b, c, d) = (
-                index(i, j),
-                index(i + 1, j),
-                index(i + 1, j + 1),
-                index(i, j + 1),
-            );
-            let _ = writeln!(obj, "f {a} {b} {c}\nf {a} {c} {d}");
-        }
+    for [a, b, c] in &sphere.triangles {
+        let _ = writeln!(obj, "f {} {} {}", a + 1, b + 1, c + 1);
     }
     let path = parity_dir().join(format!("{name}.obj"));
     std::fs::create_dir_all(parity_dir()).expect("create target/parity");
@@ -556,6 +519,116 @@ fn touches_the_border(clip: &[Vec4; 3]) -> bool {
     })
 }
 
+/// Keeps only the mesh's triangles that touch the frustum's border in the current pose and
+/// renders them with full clipping; `None` when there are none. The pose is kept.
+fn border_triangles(app: &mut App) -> (usize, Option<Snapshot>) {
+    let saved = *camera(app);
+    let (view, projection) = camera_matrices(&saved);
+    let world = app.world_mut();
+    let mut mesh = world
+        .query::<&mut Mesh>()
+        .single_mut(world)
+        .expect("a mesh");
+    let border: Vec<[u32; 3]> = mesh
+        .triangles
+        .iter()
+        .copied()
+        .filter(|t| {
+            let clip = t.map(|i| projection * view * mesh.positions[i as usize].extend(1.0));
+            touches_the_border(&clip)
+        })
+        .collect();
+    let border_count = border.len();
+    mesh.triangles = border;
+    app.world_mut().resource_mut::<ModelStatus>().generation += 1;
+    settings(app).clipping = Clipping::Full;
+    // A new mesh is framed again: run that frame, then put the pose back.
+    app.update();
+    *camera(app) = saved;
+    let edges = (border_count > 0).then(|| render_offscreen(app).expect("render"));
+    (border_count, edges)
+}
+
+/// The pixels only full clipping covers, and how many of them the border triangles do not
+/// explain. Simple clipping covering a pixel full clipping does not is a failure.
+fn pixels_only_full_covers(
+    case: &str,
+    full: &Snapshot,
+    simple: &Snapshot,
+    border: Option<&Snapshot>,
+) -> (usize, usize) {
+    let bg = full.background;
+    let (full_px, simple_px) = (coverage(&full.close2gl, bg), coverage(&simple.close2gl, bg));
+    let border_px = border.map(|e| coverage(&e.close2gl, bg));
+    let (mut extra, mut unexplained) = (0, 0);
+    for (i, (&f, &s)) in full_px.iter().zip(&simple_px).enumerate() {
+        assert!(
+            f || !s,
+            "{case}: simple clipping covers pixel {i} that full clipping does not (see {})",
+            write_case(case, simple).display()
+        );
+        if f && !s {
+            extra += 1;
+            unexplained += usize::from(!border_px.as_ref().is_some_and(|b| b[i]));
+        }
+    }
+    (extra, unexplained)
+}
+
+/// Writes the Close2GL images of a failed case under target/parity/<case>/.
+fn write_close2gl_images(case: &str, images: [(&str, Option<&Snapshot>); 3]) -> PathBuf {
+    let dir = parity_dir().join(case);
+    std::fs::create_dir_all(&dir).expect("create the case directory");
+    for (name, snapshot) in images {
+        if let Some(snapshot) = snapshot {
+            let path = dir.join(format!("{name}.png"));
+            snapshot
+                .close2gl
+                .write_png(&path)
+                .expect("write a parity image");
+        }
+    }
+    dir
+}
+
+/// Simple against full clipping for one model, pose and mode; returns the pixels that differ.
+fn compare_clipping(model: &str, pose: &Pose, mode: RenderMode) -> usize {
+    let mut app = scene(model, &[], SIZE);
+    (pose.apply)(&mut app);
+    settings(&mut app).mode = mode;
+    let case = format!("simple_{model}_{}_{}", pose.name, mode.name());
+    let full = render_offscreen(&mut app).expect("render");
+    settings(&mut app).clipping = Clipping::Simple;
+    let simple = render_offscreen(&mut app).expect("render");
+    let (border_count, edges) = border_triangles(&mut app);
+    let (extra, unexplained) = pixels_only_full_covers(&case, &full, &simple, edges.as_ref());
+    if border_count == 0 {
+        assert_eq!(
+            full.close2gl, simple.close2gl,
+            "{case}: no triangle touches the border, yet the clipping modes differ"
+        );
+    }
+    if unexplained > 0 {
+        let images = [
+            ("full", Some(&full)),
+            ("simple", Some(&simple)),
+            ("border", edges.as_ref()),
+        ];
+        panic!(
+            "{case}: {unexplained} of the {extra} pixels only full clipping covers are not \
+             covered by the {border_count} triangles touching the border (Close2GL images: {})",
+            write_close2gl_images(&case, images).display()
+        );
+    }
+    if pose.name == "framed" {
+        assert_eq!(
+            border_count, 0,
+            "{case}: the framed model touches the border"
+        );
+    }
+    extra
+}
+
 /// Simple clipping drops whole triangles that touch the frustum's border, so its coverage must be
 /// a subset of full clipping's, and every pixel only full clipping covers must be covered by
 /// those border triangles alone (drawn with full clipping). In a framed pose nothing touches the
@@ -566,100 +639,7 @@ fn simple_clipping_differs_from_full_only_at_the_frustum_borders() {
     for model in ["torus", "box", "cylinder"] {
         for pose in POSES {
             for mode in [RenderMode::Solid, RenderMode::Wireframe] {
-                let mut app = scene(model, &[], SIZE);
-                (pose.apply)(&mut app);
-                settings(&mut app).mode = mode;
-                let case = format!("simple_{model}_{}_{}", pose.name, mode.name());
-                let full = render_offscreen(&mut app).expect("render");
-                settings(&mut app).clipping = Clipping::Simple;
-                let simple = render_offscreen(&mut app).expect("render");
-
-                // The border triangles alone, drawn with full clipping.
-                let saved = *camera(&mut app);
-                let (view, projection) = camera_matrices(&saved);
-                let world = app.world_mut();
-                let mut mesh = world
-                    .query::<&mut Mesh>()
-                    .single_mut(world)
-                    .expect("a mesh");
-                let border: Vec<[u32; 3]> = mesh
-                    .triangles
-                    .iter()
-                    .copied()
-                    .filter(|t| {
-                        let clip =
-                            t.map(|i| projection * view * mesh.positions[i as usize].extend(1.0));
-                        touches_the_border(&clip)
-                    })
-                    .collect();
-                let border_count = border.len();
-                mesh.triangles = border;
-                app.world_mut().resource_mut::<ModelStatus>().generation += 1;
-                settings(&mut app).clipping = Clipping::Full;
-                // A new mesh is framed again: run that frame, then put the pose back.
-                app.update();
-                *camera(&mut app) = saved;
-                let edges = if border_count == 0 {
-                    None
-                } else {
-                    Some(render_offscreen(&mut app).expect("render"))
-                };
-
-                let bg = full.background;
-                let (full_px, simple_px) =
-                    (coverage(&full.close2gl, bg), coverage(&simple.close2gl, bg));
-                let border_px = edges.as_ref().map(|e| coverage(&e.close2gl, bg));
-                let mut extra = 0;
-                let mut unexplained = 0;
-                for (i, (&f, &s)) in full_px.iter().zip(&simple_px).enumerate() {
-                    assert!(
-                        f || !s,
-                        "{case}: simple clipping covers pixel {i} that full clipping does not \
-                         (see {})",
-                        write_case(&case, &simple).display()
-                    );
-                    if f && !s {
-                        extra += 1;
-                        unexplained += usize::from(!border_px.as_ref().is_some_and(|b| b[i]));
-                    }
-                }
-                if border_count == 0 {
-                    assert_eq!(
-                        full.close2gl, simple.close2gl,
-                        "{case}: no triangle touches the border, yet the clipping modes differ"
-                    );
-                }
-                if unexplained > 0 {
-                    let dir = parity_dir().join(&case);
-                    std::fs::create_dir_all(&dir).expect("create the case directory");
-                    let images = [
-                        ("full", Some(&full)),
-                        ("simple", Some(&simple)),
-                        ("border", edges.as_ref()),
-                    ];
-                    for (name, snapshot) in images {
-                        if let Some(snapshot) = snapshot {
-                            let path = dir.join(format!("{name}.png"));
-                            snapshot
-                                .close2gl
-                                .write_png(&path)
-                                .expect("write a parity image");
-                        }
-                    }
-                    panic!(
-                        "{case}: {unexplained} of the {extra} pixels only full clipping covers \
-                         are not covered by the {border_count} triangles touching the border \
-                         (Close2GL images: {})",
-                        dir.display()
-                    );
-                }
-                if pose.name == "framed" {
-                    assert_eq!(
-                        border_count, 0,
-                        "{case}: the framed model touches the border"
-                    );
-                }
-                differing_total += extra;
+                differing_total += compare_clipping(model, pose, mode);
             }
         }
     }
@@ -670,30 +650,23 @@ fn simple_clipping_differs_from_full_only_at_the_frustum_borders() {
     );
 }
 
-/// `close2gl render` as a user runs it: the report's agreement must be the one the PNGs give.
-#[test]
-fn the_render_command_reports_what_its_images_show() {
-    let out = parity_dir().join("cli_render");
-    let _ = std::fs::remove_dir_all(&out);
+/// Runs `close2gl render torus` at 160x120 into `out` with `extra` arguments.
+fn render_command(out: &Path, extra: &[&str]) -> std::process::Output {
     let empty = parity_dir().join("empty.toml");
     std::fs::create_dir_all(parity_dir()).expect("create target/parity");
     std::fs::write(&empty, "").expect("write target/parity/empty.toml");
-    let run = |extra: &[&str]| {
-        std::process::Command::new(env!("CARGO_BIN_EXE_close2gl"))
-            .args(["render", "torus", "--size", "160x120", "--config"])
-            .arg(&empty)
-            .arg("--out")
-            .arg(&out)
-            .args(extra)
-            .output()
-            .expect("run close2gl")
-    };
-    let output = run(&["--set", "render.mode=wireframe", "--frames", "3"]);
-    assert!(
-        output.status.success(),
-        "{}",
-        String::from_utf8_lossy(&output.stderr)
-    );
+    std::process::Command::new(env!("CARGO_BIN_EXE_close2gl"))
+        .args(["render", "torus", "--size", "160x120", "--config"])
+        .arg(&empty)
+        .arg("--out")
+        .arg(out)
+        .args(extra)
+        .output()
+        .expect("run close2gl")
+}
+
+/// The report in `out` against the images beside it.
+fn check_report(out: &Path) {
     let text = std::fs::read_to_string(out.join("report.json")).expect("report.json");
     let report: serde_json::Value = serde_json::from_str(&text).expect("valid JSON");
     let image = |name: &str| close2gl_gpu::Image::read_png(&out.join(name)).expect("a PNG");
@@ -724,13 +697,31 @@ fn the_render_command_reports_what_its_images_show() {
             "report.json lacks stats.{key}: {text}"
         );
     }
+}
 
-    let output = run(&["--orbit", "3", "--set", "model.primitive=box"]);
+fn assert_success(output: &std::process::Output) {
     assert!(
         output.status.success(),
         "{}",
         String::from_utf8_lossy(&output.stderr)
     );
+}
+
+/// `close2gl render` as a user runs it: the report's agreement must be the one the PNGs give.
+#[test]
+fn the_render_command_reports_what_its_images_show() {
+    let out = parity_dir().join("cli_render");
+    let _ = std::fs::remove_dir_all(&out);
+    assert_success(&render_command(
+        &out,
+        &["--set", "render.mode=wireframe", "--frames", "3"],
+    ));
+    check_report(&out);
+
+    assert_success(&render_command(
+        &out,
+        &["--orbit", "3", "--set", "model.primitive=box"],
+    ));
     let text = std::fs::read_to_string(out.join("report.json")).expect("report.json");
     let reports: serde_json::Value = serde_json::from_str(&text).expect("valid JSON");
     assert_eq!(reports.as_array().map(Vec::len), Some(3), "{text}");
@@ -745,7 +736,7 @@ fn the_render_command_reports_what_its_images_show() {
         &["--backend", "glide"],
         &["--orbit", "0"],
     ] {
-        let output = run(bad);
+        let output = render_command(&out, bad);
         assert_eq!(output.status.code(), Some(2), "{bad:?}");
         let stderr = String::from_utf8_lossy(&output.stderr);
         let message: Vec<&str> = stderr

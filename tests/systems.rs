@@ -2,68 +2,29 @@
 //! schedules and asserts. No window, no GPU.
 
 use close2gl::camera::CameraPlugin;
+use close2gl::config::Config;
 use close2gl::core::glam::{Vec2, Vec3};
 use close2gl::core::{
     App, Camera, CameraAction, CameraActions, CameraHome, CameraMode, Clipping, Close2glFrame,
-    FrontFace, InputState, Lighting, Mesh, Rasterizer, RenderMode, RenderSettings, Shading,
-    SoftwareFrame, Viewport,
+    FrontFace, InputState, Lighting, Mesh, ModelSource, ModelStatus, Rasterizer, RenderMode,
+    RenderSettings, SettingsPlugin, Shading, SoftwareFrame, Viewport,
 };
 use close2gl::input::InputPlugin;
 use close2gl::pipeline::Close2glPlugin;
 use close2gl::raster::RasterPlugin;
-
-/// A closed 2-unit cube centred on the origin, every face counter-clockwise seen from outside.
-fn cube() -> Mesh {
-    let positions: Vec<Vec3> = (0..8)
-        .map(|i| {
-            Vec3::new(
-                [-1.0, 1.0][i & 1],
-                [-1.0, 1.0][(i >> 1) & 1],
-                [-1.0, 1.0][i >> 2],
-            )
-        })
-        .collect();
-    let quads = [
-        [0, 2, 3, 1],
-        [4, 5, 7, 6],
-        [0, 1, 5, 4],
-        [2, 6, 7, 3],
-        [0, 4, 6, 2],
-        [1, 3, 7, 5],
-    ];
-    let triangles = quads
-        .iter()
-        .flat_map(|[a, b, c, d]| [[*a, *b, *c], [*a, *c, *d]])
-        .collect();
-    Mesh {
-        name: "cube".into(),
-        normals: positions.clone(),
-        positions,
-        triangles,
-    }
-}
+use close2gl_testkit::{camera, camera_mut, cube, mesh, world_with};
 
 fn app_with(mesh: Mesh, settings: RenderSettings) -> App {
-    let mut app = App::new();
-    app.insert_resource(settings)
-        .insert_resource(Viewport {
-            width: 640,
-            height: 480,
-        })
+    let viewport = Viewport {
+        width: 640,
+        height: 480,
+    };
+    let mut app = world_with(mesh, Camera::default(), settings, viewport);
+    app.add_plugins(CameraPlugin)
         .add_plugins(InputPlugin)
-        .add_plugins(CameraPlugin)
         .add_plugins(Close2glPlugin);
-    app.world_mut().spawn(Camera::default());
-    app.world_mut().spawn(mesh);
     app.update();
     app
-}
-
-fn camera(app: &mut App) -> Camera {
-    *app.world_mut()
-        .query::<&Camera>()
-        .single(app.world())
-        .expect("one camera")
 }
 
 fn frame(app: &App) -> &Close2glFrame {
@@ -190,11 +151,24 @@ fn reset_returns_to_the_framed_pose() {
 #[test]
 fn scroll_zooms_both_fields_of_view_keeping_their_ratio() {
     let mut app = app_with(cube(), RenderSettings::default());
-    let before = camera(&mut app);
+    let wide = Camera {
+        hfov: 90.0,
+        vfov: 50.0,
+        ..camera(&mut app)
+    };
+    *camera_mut(&mut app) = wide;
     app.world_mut().resource_mut::<InputState>().scroll = 3.0;
     app.update();
-    let after = camera(&mut app);
-    assert!(after.hfov < before.hfov && after.vfov < before.vfov);
+    let zoomed = camera(&mut app);
+    assert!(zoomed.hfov < wide.hfov && zoomed.vfov < wide.vfov);
+    // The ratio a zoom keeps is the image's aspect: tan(hfov/2) / tan(vfov/2).
+    let aspect = |c: &Camera| (c.hfov.to_radians() / 2.0).tan() / (c.vfov.to_radians() / 2.0).tan();
+    assert!(
+        (aspect(&zoomed) / aspect(&wide) - 1.0).abs() < 1e-5,
+        "aspect {} became {}",
+        aspect(&wide),
+        aspect(&zoomed)
+    );
 }
 
 #[test]
@@ -371,4 +345,58 @@ fn the_raster_system_draws_when_asked_and_when_something_changed() {
         image.pixels[240 * 640 + 320],
         "now lit"
     );
+}
+
+#[test]
+fn a_requested_model_is_loaded_and_framed_in_the_same_frame() {
+    let config = Config {
+        model: ModelSource::parse("assets/cube.in"),
+        ..Config::default()
+    };
+    let viewport = Viewport {
+        width: 640,
+        height: 480,
+    };
+    let mut app = close2gl::build_app(&config, viewport).expect("the cube loads");
+    let (centre, _) = mesh(&mut app).bounding_sphere();
+    assert_eq!(
+        camera(&mut app).target,
+        centre,
+        "framed in the load's frame"
+    );
+    assert!(frame(&app).counts.drawn > 0, "and drawn by Close2GL");
+    let status = app.world().resource::<ModelStatus>();
+    assert_eq!((status.generation, status.error.as_ref()), (1, None));
+}
+
+#[test]
+fn a_model_that_does_not_load_is_an_error_before_anything_is_shown() {
+    let config = Config {
+        model: ModelSource::parse("no/such/model.in"),
+        ..Config::default()
+    };
+    let viewport = Viewport::default();
+    match close2gl::build_app(&config, viewport) {
+        Ok(_) => panic!("a missing file built an app"),
+        Err(error) => assert!(
+            error.starts_with("no/such/model.in: cannot read"),
+            "{error}"
+        ),
+    }
+}
+
+#[test]
+fn a_plugin_without_the_resources_it_needs_names_the_plugin_that_provides_them() {
+    let mut app = App::new();
+    app.add_plugins(SettingsPlugin).add_plugins(InputPlugin);
+    let error = app
+        .check_requirements()
+        .expect_err("the camera plugin is missing");
+    assert_eq!(
+        error,
+        "InputPlugin needs the CameraActions resource: add CameraPlugin (or insert \
+         CameraActions yourself)"
+    );
+    app.add_plugins(CameraPlugin);
+    assert_eq!(app.check_requirements(), Ok(()));
 }

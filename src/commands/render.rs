@@ -5,13 +5,13 @@ use std::f32::consts::TAU;
 use std::path::{Path, PathBuf};
 
 use bevy_ecs::prelude::DetectChangesMut;
-use close2gl_core::{Camera, CameraAction, CameraActions, ModelStatus};
+use close2gl_core::{App, Camera, CameraAction, CameraActions};
 use close2gl_gpu::parity::{ColorComparison, Comparison, diff_image};
 use close2gl_gpu::{Gpu, OffscreenPlugin, Snapshot, parse_backends, render_offscreen};
 use serde_json::{Value, json};
 
 use super::CliError;
-use super::scene::{SceneArgs, viewport};
+use super::scene::{SceneArgs, print_warnings, viewport};
 
 #[derive(clap::Args, Debug, Default)]
 pub struct RenderArgs {
@@ -36,26 +36,11 @@ pub struct RenderArgs {
 }
 
 pub fn run(args: RenderArgs) -> Result<(), CliError> {
-    if args.frames == 0 {
-        return Err(CliError::Input(
-            "render: --frames must be at least 1".into(),
-        ));
-    }
-    if args.orbit == Some(0) {
-        return Err(CliError::Input("render: --orbit must be at least 1".into()));
-    }
-    let backends = match &args.backend {
-        Some(name) => {
-            parse_backends(name).map_err(|e| CliError::Input(format!("render: --backend: {e}")))?
-        }
-        None => close2gl_gpu::wgpu::Backends::PRIMARY,
-    };
+    let backends = check(&args)?;
     let config = args.scene.config()?;
     let viewport = viewport(args.size.as_deref(), &config)?;
     let mut app = crate::build_app(&config, viewport).map_err(CliError::Input)?;
-    for warning in &app.world().resource::<ModelStatus>().warnings {
-        eprintln!("close2gl: warning: {warning}");
-    }
+    print_warnings(&app);
     let gpu = Gpu::headless(backends).map_err(CliError::Runtime)?;
     app.add_plugins(OffscreenPlugin(gpu.clone()));
     std::fs::create_dir_all(&args.out).map_err(|e| {
@@ -68,30 +53,7 @@ pub fn run(args: RenderArgs) -> Result<(), CliError> {
     let poses = args.orbit.unwrap_or(1);
     let mut reports = Vec::new();
     for pose in 0..poses {
-        if pose > 0 {
-            let step = TAU / poses as f32;
-            app.world_mut()
-                .resource_mut::<CameraActions>()
-                .0
-                .push(CameraAction::Orbit {
-                    yaw: step,
-                    pitch: 0.0,
-                });
-        }
-        let (snapshot, reference_ms, close2gl_ms) = render_frames(&mut app, args.frames)?;
-        let suffix = args
-            .orbit
-            .map(|_| format!("_{pose:03}"))
-            .unwrap_or_default();
-        let mut report = write_pose(&args.out, &suffix, &snapshot, &gpu)?;
-        report["reference_ms"] = json!(reference_ms);
-        report["close2gl_ms"] = json!(close2gl_ms);
-        report["frames"] = json!(args.frames);
-        if args.orbit.is_some() {
-            report["pose"] = json!(pose);
-            report["yaw_degrees"] = json!(360.0 * pose as f64 / poses as f64);
-        }
-        reports.push(report);
+        reports.push(render_pose(&mut app, &args, &gpu, pose)?);
     }
     let report = match args.orbit {
         Some(_) => Value::Array(reports),
@@ -103,6 +65,54 @@ pub fn run(args: RenderArgs) -> Result<(), CliError> {
     std::fs::write(&path, text + "\n").map_err(|e| unwritable(&path, e))?;
     println!("{report}");
     Ok(())
+}
+
+/// The arguments' own rules, and the backends `--backend` names.
+fn check(args: &RenderArgs) -> Result<close2gl_gpu::wgpu::Backends, CliError> {
+    if args.frames == 0 {
+        return Err(CliError::Input(
+            "render: --frames must be at least 1".into(),
+        ));
+    }
+    if args.orbit == Some(0) {
+        return Err(CliError::Input("render: --orbit must be at least 1".into()));
+    }
+    match &args.backend {
+        Some(name) => {
+            parse_backends(name).map_err(|e| CliError::Input(format!("render: --backend: {e}")))
+        }
+        None => Ok(close2gl_gpu::wgpu::Backends::PRIMARY),
+    }
+}
+
+/// Pose number `pose` (turned that many steps around the look-at point with `--orbit`): its
+/// images written and its report.
+fn render_pose(app: &mut App, args: &RenderArgs, gpu: &Gpu, pose: u32) -> Result<Value, CliError> {
+    let poses = args.orbit.unwrap_or(1);
+    if pose > 0 {
+        let step = TAU / poses as f32;
+        app.world_mut()
+            .resource_mut::<CameraActions>()
+            .0
+            .push(CameraAction::Orbit {
+                yaw: step,
+                pitch: 0.0,
+            });
+    }
+    let (snapshot, reference_ms, close2gl_ms) = render_frames(app, args.frames)?;
+    let suffix = args
+        .orbit
+        .map(|_| format!("_{pose:03}"))
+        .unwrap_or_default();
+    let mut report = write_pose(&args.out, &suffix, &snapshot, gpu)?;
+    report["reference_ms"] = json!(reference_ms);
+    report["close2gl_ms"] = json!(close2gl_ms);
+    report["frames"] = json!(args.frames);
+    if args.orbit.is_some() {
+        report["pose"] = json!(pose);
+        report["yaw_degrees"] = json!(360.0 * pose as f64 / poses as f64);
+    }
+    Ok(report)
 }
 
 /// Renders `frames` frames of the current pose; returns the last one and the median times.

@@ -2,11 +2,10 @@
 
 use std::path::PathBuf;
 
-use close2gl_core::ModelStatus;
 use close2gl_viewer::{ViewerOptions, ViewerPlugin};
 
 use super::CliError;
-use super::scene::{SceneArgs, viewport};
+use super::scene::{SceneArgs, print_warnings, viewport};
 
 /// Frames drawn before `--screenshot` saves one, when `--exit-after-frames` does not say.
 const SCREENSHOT_FRAMES: u32 = 5;
@@ -32,9 +31,7 @@ pub fn run(args: RunArgs) -> Result<(), CliError> {
     let size = viewport(args.size.as_deref(), &config)?;
     // The first frame's layout replaces this with the views' real size.
     let mut app = crate::build_app(&config, size).map_err(CliError::Input)?;
-    for warning in &app.world().resource::<ModelStatus>().warnings {
-        eprintln!("close2gl: warning: {warning}");
-    }
+    print_warnings(&app);
     let exit_after_frames = args
         .exit_after_frames
         .or(args.screenshot.is_some().then_some(SCREENSHOT_FRAMES));

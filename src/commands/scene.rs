@@ -2,7 +2,7 @@
 
 use std::path::PathBuf;
 
-use close2gl_core::{ModelSource, Viewport};
+use close2gl_core::{App, ModelSource, ModelStatus, Viewport};
 
 use super::CliError;
 use crate::config::{self, Config};
@@ -38,4 +38,12 @@ pub fn viewport(size: Option<&str>, config: &Config) -> Result<Viewport, CliErro
         None => (config.window.width, config.window.height),
     };
     Ok(Viewport { width, height })
+}
+
+/// What the loader forgave about the model (a header that lies about its triangle count, say),
+/// one line each on stderr.
+pub fn print_warnings(app: &App) {
+    for warning in &app.world().resource::<ModelStatus>().warnings {
+        eprintln!("close2gl: warning: {warning}");
+    }
 }

@@ -3,11 +3,11 @@
 
 use std::path::{Path, PathBuf};
 
-use close2gl_core::{Close2glFrame, ModelStatus, Rasterizer, SoftwareFrame};
+use close2gl_core::{Close2glFrame, Rasterizer, SoftwareFrame};
 use serde_json::json;
 
 use super::CliError;
-use super::scene::{SceneArgs, viewport};
+use super::scene::{SceneArgs, print_warnings, viewport};
 
 #[derive(clap::Args, Debug, Default)]
 pub struct StatsArgs {
@@ -25,11 +25,8 @@ pub fn run(args: StatsArgs) -> Result<(), CliError> {
     let config = args.scene.config()?;
     let viewport = viewport(args.size.as_deref(), &config)?;
     let app = crate::build_app(&config, viewport).map_err(CliError::Input)?;
-    let world = app.world();
-    for warning in &world.resource::<ModelStatus>().warnings {
-        eprintln!("close2gl: warning: {warning}");
-    }
-    let frame = world.resource::<Close2glFrame>();
+    print_warnings(&app);
+    let frame = app.world().resource::<Close2glFrame>();
     if let Some(path) = &args.dump {
         dump(frame, path)
             .map_err(|e| CliError::Input(format!("{}: cannot write: {e}", path.display())))?;
@@ -37,15 +34,19 @@ pub fn run(args: StatsArgs) -> Result<(), CliError> {
     let mut report = json!(frame.counts);
     report["bounds_px"] = json!(frame.bounds_px());
     if config.render.close2gl_raster == Rasterizer::Software {
-        let image = world.resource::<SoftwareFrame>();
-        let background = close2gl_gpu::parity::to_rgb8(config.render.background);
-        let covered = image.pixels.iter().filter(|p| p[..3] != background).count();
         report["stage_ms"] = json!(frame.stage_ms);
+        let image = app.world().resource::<SoftwareFrame>();
         report["raster_ms"] = json!(image.raster_ms);
-        report["covered_pixels"] = json!(covered);
+        report["covered_pixels"] = json!(covered(image, config.render.background));
     }
     println!("{report}");
     Ok(())
+}
+
+/// The pixels of the software image that are not the background.
+fn covered(image: &SoftwareFrame, background: glam::Vec3) -> usize {
+    let background = close2gl_gpu::parity::to_rgb8(background);
+    image.pixels.iter().filter(|p| p[..3] != background).count()
 }
 
 /// The 2D buffer as JSON (when the file ends in .json) or as CSV, one vertex a line.

@@ -4,12 +4,11 @@
 use std::path::Path;
 
 use close2gl_core::glam::Vec3;
-use close2gl_core::{
-    CameraMode, Clipping, FrontFace, ModelSource, PrimitiveKind, Rasterizer, RenderMode, Shading,
-};
+use close2gl_core::limits::{FOV_RANGE, MAX_PIXELS, MAX_SEGMENTS};
+use close2gl_core::{ModelSource, NamedEnum, PrimitiveKind};
 use toml::Value;
 
-use super::{Config, Layout};
+use super::Config;
 
 /// Sets `section.key` from a TOML value. `base` is the directory relative model paths start from.
 /// The error says what was expected, without the key (the caller adds file and key).
@@ -24,10 +23,7 @@ pub fn set(
     match (section, key) {
         ("model", "path") => c.model = ModelSource::File(base.join(string(value)?)),
         ("model", "primitive") => {
-            let name = string(value)?;
-            let kind = PrimitiveKind::from_name(name)
-                .ok_or_else(|| one_of(PrimitiveKind::ALL.iter().map(|p| p.name()), name))?;
-            c.model = ModelSource::Primitive(kind);
+            c.model = ModelSource::Primitive(named::<PrimitiveKind>(value)?);
         }
 
         ("camera", "position") => c.camera.position = Some(vec3(value)?),
@@ -37,28 +33,16 @@ pub fn set(
         ("camera", "vfov") => c.camera.vfov = fov(value)?,
         ("camera", "near") => c.camera.near = Some(positive(value)?),
         ("camera", "far") => c.camera.far = Some(positive(value)?),
-        ("camera", "mode") => {
-            c.camera.mode = named(value, CameraMode::ALL.iter().map(|m| (m.name(), *m)))?
-        }
+        ("camera", "mode") => c.camera.mode = named(value)?,
         ("camera", "move_speed") => c.camera.speeds.move_speed = positive(value)?,
         ("camera", "rotate_speed") => c.camera.speeds.rotate_speed = positive(value)?,
 
-        ("render", "mode") => {
-            c.render.mode = named(value, RenderMode::ALL.iter().map(|m| (m.name(), *m)))?
-        }
-        ("render", "front_face") => {
-            c.render.front_face = named(value, FrontFace::ALL.iter().map(|m| (m.name(), *m)))?
-        }
+        ("render", "mode") => c.render.mode = named(value)?,
+        ("render", "front_face") => c.render.front_face = named(value)?,
         ("render", "backface_culling") => c.render.backface_culling = boolean(value)?,
-        ("render", "clipping") => {
-            c.render.clipping = named(value, Clipping::ALL.iter().map(|m| (m.name(), *m)))?
-        }
-        ("render", "shading") => {
-            c.render.shading = named(value, Shading::ALL.iter().map(|m| (m.name(), *m)))?
-        }
-        ("render", "close2gl_raster") => {
-            c.render.close2gl_raster = named(value, Rasterizer::ALL.iter().map(|m| (m.name(), *m)))?
-        }
+        ("render", "clipping") => c.render.clipping = named(value)?,
+        ("render", "shading") => c.render.shading = named(value)?,
+        ("render", "close2gl_raster") => c.render.close2gl_raster = named(value)?,
         ("render", "color") => c.render.color = color(value)?,
         ("render", "background") => c.render.background = color(value)?,
 
@@ -88,12 +72,7 @@ pub fn set(
 
         ("window", "width") => c.window.width = pixels(value)?,
         ("window", "height") => c.window.height = pixels(value)?,
-        ("window", "layout") => {
-            c.window.layout = named(
-                value,
-                [("split", Layout::Split), ("windows", Layout::Windows)],
-            )?
-        }
+        ("window", "layout") => c.window.layout = named(value)?,
 
         ("input", action) if c.input.0.contains_key(action) => {
             let key = string(value)?;
@@ -130,7 +109,8 @@ fn in_range(value: &Value, ok: impl Fn(f32) -> bool, range: &str) -> Result<f32,
 }
 
 fn fov(value: &Value) -> Result<f32, String> {
-    in_range(value, |x| x > 0.0 && x < 180.0, "of degrees in (0, 180)")
+    let range = format!("of degrees in {}..={}", FOV_RANGE.start(), FOV_RANGE.end());
+    in_range(value, |x| FOV_RANGE.contains(&x), &range)
 }
 
 fn positive(value: &Value) -> Result<f32, String> {
@@ -154,11 +134,11 @@ fn integer(value: &Value, min: i64, max: i64) -> Result<u32, String> {
 }
 
 fn count(value: &Value, min: i64) -> Result<u32, String> {
-    integer(value, min, 4096)
+    integer(value, min, MAX_SEGMENTS.into())
 }
 
 fn pixels(value: &Value) -> Result<u32, String> {
-    integer(value, 1, 16384)
+    integer(value, 1, MAX_PIXELS.into())
 }
 
 fn boolean(value: &Value) -> Result<bool, String> {
@@ -173,22 +153,12 @@ fn string(value: &Value) -> Result<&str, String> {
         .ok_or_else(|| format!("expected a string, found {}", value.type_str()))
 }
 
-fn one_of<'a>(names: impl Iterator<Item = &'a str>, found: &str) -> String {
-    let names: Vec<String> = names.map(|n| format!("\"{n}\"")).collect();
-    format!("expected one of {}, found \"{found}\"", names.join(", "))
-}
-
-fn named<T: Copy>(
-    value: &Value,
-    options: impl IntoIterator<Item = (&'static str, T)> + Clone,
-) -> Result<T, String> {
+fn named<T: NamedEnum>(value: &Value) -> Result<T, String> {
     let text = string(value)?;
-    options
-        .clone()
-        .into_iter()
-        .find(|(name, _)| *name == text)
-        .map(|(_, v)| v)
-        .ok_or_else(|| one_of(options.into_iter().map(|(n, _)| n), text))
+    T::from_name(text).ok_or_else(|| {
+        let names: Vec<String> = T::ALL.iter().map(|n| format!("\"{}\"", n.name())).collect();
+        format!("expected one of {}, found \"{text}\"", names.join(", "))
+    })
 }
 
 fn triple(

@@ -1,5 +1,6 @@
 use std::path::{Path, PathBuf};
 
+use close2gl_core::limits::MAX_PIXELS;
 use toml::{Table, Value};
 
 use super::{Config, keys};
@@ -84,13 +85,14 @@ fn check(config: &Config) -> Result<(), String> {
     Ok(())
 }
 
-/// `WxH` → (width, height), each in 1..=16384.
+/// `WxH` → (width, height), each in 1..=[`MAX_PIXELS`].
 pub fn parse_size(text: &str) -> Result<(u32, u32), String> {
-    let bad = || format!("--size {text}: expected WIDTHxHEIGHT, each 1..=16384, e.g. 800x600");
+    let bad =
+        || format!("--size {text}: expected WIDTHxHEIGHT, each 1..={MAX_PIXELS}, e.g. 800x600");
     let (w, h) = text.split_once(['x', 'X']).ok_or_else(bad)?;
     let w: u32 = w.trim().parse().map_err(|_| bad())?;
     let h: u32 = h.trim().parse().map_err(|_| bad())?;
-    if (1..=16384).contains(&w) && (1..=16384).contains(&h) {
+    if (1..=MAX_PIXELS).contains(&w) && (1..=MAX_PIXELS).contains(&h) {
         Ok((w, h))
     } else {
         Err(bad())

@@ -6,21 +6,15 @@ mod load;
 
 use std::path::PathBuf;
 
+pub use close2gl_core::Layout;
 use close2gl_core::glam::Vec3;
+use close2gl_core::limits::DEFAULT_FOV;
 use close2gl_core::{
-    CameraMode, CameraSpeeds, InputBindings, Lighting, ModelSource, PrimitiveParams, RenderSettings,
+    CameraMode, CameraSpeeds, InputBindings, Lighting, ModelSource, Pose, PrimitiveParams,
+    RenderSettings,
 };
-pub use close2gl_viewer::Layout;
 
 pub use load::{load, parse_size};
-
-/// An explicit camera pose; when absent the camera frames the model.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Pose {
-    pub position: Vec3,
-    pub target: Vec3,
-    pub up: Vec3,
-}
 
 /// `[camera]`: the optional pose and the lens; near and far follow the model unless pinned.
 #[derive(Clone, Debug, PartialEq)]
@@ -64,8 +58,8 @@ impl Default for Config {
                 position: None,
                 target: None,
                 up: Vec3::Y,
-                hfov: 60.0,
-                vfov: 60.0,
+                hfov: DEFAULT_FOV,
+                vfov: DEFAULT_FOV,
                 near: None,
                 far: None,
                 mode: CameraMode::Free,
@@ -86,7 +80,8 @@ impl Default for Config {
 }
 
 impl CameraConfig {
-    /// The explicit pose, when the config gives a position (the target defaults to the origin).
+    /// The explicit pose, when the config gives a position (the target defaults to the origin);
+    /// when absent the camera frames the model.
     pub fn pose(&self) -> Option<Pose> {
         self.position.map(|position| Pose {
             position,

@@ -1,7 +1,7 @@
 //! "Rendering the object in the centre of the windows": the camera looks at the bounding box's
 //! centre from +z, at the distance where the bounding sphere fits both fields of view.
 
-use close2gl_core::{Camera, Framing};
+use close2gl_core::{Camera, Framing, Pose};
 use glam::Vec3;
 
 /// The framed camera for a model whose bounding sphere is (`centre`, `radius`), keeping the
@@ -12,10 +12,15 @@ pub fn frame(centre: Vec3, radius: f32, lens: &Camera, framing: &Framing) -> Cam
     let half_fov = lens.hfov.min(lens.vfov).to_radians() * 0.5;
     let distance = radius / half_fov.sin();
 
-    let [position, target, up] =
-        framing
-            .pose
-            .unwrap_or([centre + Vec3::Z * distance, centre, Vec3::Y]);
+    let Pose {
+        position,
+        target,
+        up,
+    } = framing.pose.unwrap_or(Pose {
+        position: centre + Vec3::Z * distance,
+        target: centre,
+        up: Vec3::Y,
+    });
     // The clipping planes hug the model as seen from where the camera really is; from inside the
     // model, near shrinks to a small fraction of its size.
     let seen_from = position.distance(centre);
@@ -92,7 +97,11 @@ mod tests {
     fn planes_follow_an_explicit_pose_even_from_inside_the_model() {
         for position in [Vec3::new(0.0, 0.0, 100.0), Vec3::new(0.1, 0.0, 0.0)] {
             let framing = Framing {
-                pose: Some([position, Vec3::ZERO, Vec3::Y]),
+                pose: Some(Pose {
+                    position,
+                    target: Vec3::ZERO,
+                    up: Vec3::Y,
+                }),
                 ..Framing::default()
             };
             let camera = frame(Vec3::ZERO, 1.0, &Camera::default(), &framing);
@@ -112,7 +121,11 @@ mod tests {
     #[test]
     fn an_explicit_pose_and_pinned_planes_win() {
         let framing = Framing {
-            pose: Some([Vec3::new(5.0, 0.0, 0.0), Vec3::ZERO, Vec3::Y]),
+            pose: Some(Pose {
+                position: Vec3::new(5.0, 0.0, 0.0),
+                target: Vec3::ZERO,
+                up: Vec3::Y,
+            }),
             near: Some(0.5),
             far: None,
         };

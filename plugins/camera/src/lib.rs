@@ -2,14 +2,16 @@
 //! show the whole model, honouring the `Framing` resource's explicit pose and pinned planes, and
 //! that pose is stored as `CameraHome`; `CameraSpeeds::model_radius` follows the model's size)
 //! and camera motion (it drains `CameraActions` into the `Camera`: translations along u, v, n,
-//! rotations about them, orbits of the look-at point, zoom, reset, mode toggle).
+//! rotations about them, orbits of the look-at point, zoom, reset, mode toggle). It owns
+//! `CameraActions`, `CameraSpeeds` and `Framing`; its systems run in `FrameSet::Camera`, after
+//! `FrameSet::Load`, so a mesh loaded this frame is framed this frame.
 
 pub mod framing;
 pub mod motion;
 
 use bevy_ecs::prelude::*;
 use close2gl_core::{
-    App, Camera, CameraActions, CameraHome, CameraSpeeds, Framing, Mesh, Plugin, Update,
+    App, Camera, CameraActions, CameraHome, CameraSpeeds, FrameSet, Framing, Mesh, Plugin, Update,
 };
 
 pub struct CameraPlugin;
@@ -19,7 +21,12 @@ impl Plugin for CameraPlugin {
         app.init_resource::<CameraActions>()
             .init_resource::<CameraSpeeds>()
             .init_resource::<Framing>()
-            .add_systems(Update, (frame_new_model, apply_camera_actions).chain());
+            .add_systems(
+                Update,
+                (frame_new_model, apply_camera_actions)
+                    .chain()
+                    .in_set(FrameSet::Camera),
+            );
     }
 }
 

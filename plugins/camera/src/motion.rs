@@ -1,11 +1,9 @@
 //! Camera moves, all relative to the camera's own frame (Hill's "sliding" and "rotating the
 //! camera"): translation along u, v, n; rotation about them; orbiting the look-at point; zoom.
 
+use close2gl_core::limits::FOV_RANGE;
 use close2gl_core::{Camera, CameraAction, CameraMode};
 use glam::{Quat, Vec3};
-
-/// The narrowest and widest field of view zooming allows, degrees.
-const FOV_RANGE: (f32, f32) = (0.5, 170.0);
 
 /// Applies one action. `home` is the framed pose `Reset` returns to.
 pub fn apply(camera: &mut Camera, action: CameraAction, home: Option<&Camera>) {
@@ -92,7 +90,7 @@ fn zoom(camera: &mut Camera, factor: f32) {
             .to_degrees()
     };
     let (h, v) = (scaled(camera.hfov), scaled(camera.vfov));
-    if h.max(v) <= FOV_RANGE.1 && h.min(v) >= FOV_RANGE.0 {
+    if FOV_RANGE.contains(&h) && FOV_RANGE.contains(&v) {
         (camera.hfov, camera.vfov) = (h, v);
     }
 }

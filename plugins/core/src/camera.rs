@@ -1,26 +1,7 @@
 use bevy_ecs::prelude::*;
 use glam::Vec3;
 
-/// How translations and mouse drags move the camera.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub enum CameraMode {
-    /// Translate along u, v, n; rotate about them.
-    #[default]
-    Free,
-    /// Keep the look-at point fixed: sideways moves orbit it, forward moves approach it.
-    LookAt,
-}
-
-impl CameraMode {
-    pub const ALL: [CameraMode; 2] = [CameraMode::Free, CameraMode::LookAt];
-
-    pub fn name(self) -> &'static str {
-        match self {
-            CameraMode::Free => "free",
-            CameraMode::LookAt => "look_at",
-        }
-    }
-}
+use crate::limits::DEFAULT_FOV;
 
 /// The virtual camera of the assignment: a centre of projection, an orthonormal right-handed
 /// frame (u right, v up, n pointing backwards, away from what it sees), the two fields of view
@@ -49,8 +30,8 @@ impl Default for Camera {
             v: Vec3::Y,
             n: Vec3::Z,
             target: Vec3::NEG_Z,
-            hfov: 60.0,
-            vfov: 60.0,
+            hfov: DEFAULT_FOV,
+            vfov: DEFAULT_FOV,
             near: 0.1,
             far: 100.0,
             mode: CameraMode::Free,
@@ -77,6 +58,16 @@ impl Camera {
         self.position.distance(self.target)
     }
 }
+
+named_enum!(
+    /// How translations and mouse drags move the camera.
+    CameraMode {
+        /// Translate along u, v, n; rotate about them.
+        Free = "free",
+        /// Keep the look-at point fixed: sideways moves orbit it, forward moves approach it.
+        LookAt = "look_at"
+    }
+);
 
 /// The framed pose the camera returns to on reset (set when a model loads).
 #[derive(Component, Clone, Copy, Debug, PartialEq)]
@@ -127,12 +118,19 @@ pub enum CameraAction {
 #[derive(Resource, Default, Debug, Clone)]
 pub struct CameraActions(pub Vec<CameraAction>);
 
-/// What framing a newly loaded model must respect: an explicit pose (position, target, up) from
-/// the config replaces the framed one, and pinned near/far distances replace the ones that
-/// follow the model's size.
+/// An explicit camera pose: where the camera is, what it looks at, and which way is up.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Pose {
+    pub position: Vec3,
+    pub target: Vec3,
+    pub up: Vec3,
+}
+
+/// What framing a newly loaded model must respect: an explicit pose from the config replaces the
+/// framed one, and pinned near/far distances replace the ones that follow the model's size.
 #[derive(Resource, Clone, Copy, Debug, Default, PartialEq)]
 pub struct Framing {
-    pub pose: Option<[Vec3; 3]>,
+    pub pose: Option<Pose>,
     pub near: Option<f32>,
     pub far: Option<f32>,
 }

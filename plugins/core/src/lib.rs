@@ -1,32 +1,45 @@
 //! The shared ECS vocabulary of close2gl. This crate owns the small `App`/`Plugin` pair (a World
-//! with named frame schedules), the schedule labels, and every component and resource that more
-//! than one plugin touches: the camera, the mesh, the render settings and lighting, the raw input
-//! and the camera actions it becomes, the viewport, and the Close2GL frame (the 2D vertex buffer and
-//! its stage counts). It reads and writes nothing itself; every other crate depends on it, so that
-//! plugins can talk to each other without depending on each other.
+//! with named frame schedules, and the [`FrameSet`]s that order every plugin's systems in them),
+//! every component and resource that more than one plugin touches (the camera, the mesh, the
+//! render settings and lighting, the raw input and the camera actions it becomes, the viewport,
+//! and the Close2GL frame: the 2D vertex buffer and its stage counts), and the limits and names
+//! they share ([`limits`], [`NamedEnum`]). Its one plugin, [`SettingsPlugin`], owns the settings
+//! both views follow. It reads and writes nothing itself; every other crate depends on it, so
+//! that plugins can talk to each other without depending on each other.
+
+#[macro_use]
+mod named;
 
 mod app;
 mod camera;
 mod frame;
 mod input;
+mod layout;
+pub mod limits;
 mod mesh;
 mod model;
+mod schedule;
 mod settings;
+mod settings_plugin;
 
-pub use app::{App, Plugin, PostUpdate, PreUpdate, Render, Startup, Update, frame_schedules};
+pub use app::{App, Plugin};
 pub use camera::{
-    Camera, CameraAction, CameraActions, CameraHome, CameraMode, CameraSpeeds, Framing,
+    Camera, CameraAction, CameraActions, CameraHome, CameraMode, CameraSpeeds, Framing, Pose,
 };
 pub use frame::{
     Close2glFrame, CutVertex, RasterGeometry, RasterVertex, SoftwareFrame, StageCounts, Topology,
     Viewport,
 };
 pub use input::{InputBindings, InputState};
+pub use layout::Layout;
 pub use mesh::Mesh;
 pub use model::{ModelRequest, ModelSource, ModelStatus, PrimitiveKind, PrimitiveParams};
+pub use named::NamedEnum;
+pub use schedule::{FrameSet, PostUpdate, PreUpdate, Render, Startup, Update, frame_schedules};
 pub use settings::{
     Clipping, FrontFace, Lighting, Rasterizer, RenderMode, RenderSettings, Shading,
 };
+pub use settings_plugin::SettingsPlugin;
 
 /// Re-exported so that plugin authors need only this crate to write systems.
 pub use bevy_ecs;

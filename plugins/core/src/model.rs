@@ -3,39 +3,12 @@ use std::path::PathBuf;
 use bevy_ecs::prelude::*;
 use glam::Vec3;
 
-/// The procedural primitives of the shading lecture (002), with exact normals.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum PrimitiveKind {
-    Box,
-    Sphere,
-    Torus,
-    Cone,
-    Cylinder,
-}
-
-impl PrimitiveKind {
-    pub const ALL: [PrimitiveKind; 5] = [
-        PrimitiveKind::Box,
-        PrimitiveKind::Sphere,
-        PrimitiveKind::Torus,
-        PrimitiveKind::Cone,
-        PrimitiveKind::Cylinder,
-    ];
-
-    pub fn name(self) -> &'static str {
-        match self {
-            PrimitiveKind::Box => "box",
-            PrimitiveKind::Sphere => "sphere",
-            PrimitiveKind::Torus => "torus",
-            PrimitiveKind::Cone => "cone",
-            PrimitiveKind::Cylinder => "cylinder",
-        }
+named_enum!(
+    /// The procedural primitives of the shading lecture (002), with exact normals.
+    PrimitiveKind {
+        Box = "box", Sphere = "sphere", Torus = "torus", Cone = "cone", Cylinder = "cylinder"
     }
-
-    pub fn from_name(name: &str) -> Option<Self> {
-        Self::ALL.into_iter().find(|p| p.name() == name)
-    }
-}
+);
 
 /// The primitives' parameters (the `[primitives]` config section).
 #[derive(Resource, Clone, Copy, Debug, PartialEq)]

@@ -1,27 +1,6 @@
 use bevy_ecs::prelude::*;
 use glam::Vec3;
 
-/// Defines a config-facing enum with its snake_case names in one place.
-macro_rules! named_enum {
-    ($(#[$meta:meta])* $name:ident { $($(#[$vmeta:meta])* $variant:ident = $text:literal),+ $(,)? }) => {
-        $(#[$meta])*
-        #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-        pub enum $name { $($(#[$vmeta])* $variant),+ }
-
-        impl $name {
-            pub const ALL: &'static [$name] = &[$($name::$variant),+];
-
-            pub fn name(self) -> &'static str {
-                match self { $($name::$variant => $text),+ }
-            }
-
-            pub fn from_name(text: &str) -> Option<Self> {
-                Self::ALL.iter().copied().find(|v| v.name() == text)
-            }
-        }
-    };
-}
-
 named_enum!(
     /// glPolygonMode: what each surviving triangle becomes.
     RenderMode { Points = "points", Wireframe = "wireframe", Solid = "solid" }

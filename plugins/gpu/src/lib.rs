@@ -1,26 +1,30 @@
 //! The GPU side of close2gl, on wgpu: the shared device ([`Gpu`]), the reference renderer (the
 //! mesh drawn from glam's own camera matrices, standing in for OpenGL) and the Close2GL view (the
 //! 2D buffer drawn through a pass-through pipeline, or the software rasterizer's image drawn as
-//! one textured triangle), both held in [`Views`]. [`GpuPlugin`] adds
-//! the `Render` systems that read `Camera`, `Mesh`, `ModelStatus`, `RenderSettings`, `Lighting` and
-//! `Close2glFrame` and upload what changed into `Views`; whoever owns the target (a window, or
-//! [`render_offscreen`]) records the draws. Offscreen rendering, PNG images and the coverage
-//! comparison behind `close2gl render` and the parity tests live here too. No window or UI crate
-//! is a dependency.
+//! one textured triangle), both held in [`Views`]. [`GpuPlugin`] adds the `Render` systems that
+//! read `Camera`, `Mesh`, `ModelStatus`, `RenderSettings`, `Lighting`, `Close2glFrame` and
+//! `SoftwareFrame` and upload what changed into `Views`; whoever owns the target (a window, or
+//! [`render_offscreen`]) records the draws. Offscreen rendering, reading
+//! textures back ([`Readback`]), the texture and attachment descriptions every target shares
+//! ([`texture`]), PNG images and the coverage comparison behind `close2gl render` and the parity
+//! tests live here too. No window or UI crate is a dependency.
 
 mod close2gl_view;
 mod gpu;
 pub mod image;
 mod offscreen;
 pub mod parity;
+mod readback;
 mod reference;
 mod software_view;
 mod systems;
+pub mod texture;
 mod views;
 
 pub use gpu::{Gpu, parse_backends};
 pub use image::Image;
 pub use offscreen::{OFFSCREEN_FORMAT, OffscreenPlugin, Snapshot, render_offscreen};
+pub use readback::Readback;
 pub use reference::{camera_matrices, clear_color};
 pub use systems::GpuPlugin;
 pub use views::Views;
@@ -43,15 +47,7 @@ pub fn submit_pass(
     {
         let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
             label: Some("view"),
-            color_attachments: &[Some(wgpu::RenderPassColorAttachment {
-                view: target,
-                depth_slice: None,
-                resolve_target: None,
-                ops: wgpu::Operations {
-                    load,
-                    store: wgpu::StoreOp::Store,
-                },
-            })],
+            color_attachments: &[Some(texture::color_attachment(target, load))],
             depth_stencil_attachment: depth.map(|view| wgpu::RenderPassDepthStencilAttachment {
                 view,
                 depth_ops: Some(wgpu::Operations {

@@ -9,6 +9,8 @@ use close2gl_core::{
 };
 
 use crate::parity::to_rgb8;
+use crate::readback::Readback;
+use crate::texture::{READABLE_TARGET, texture_2d};
 use crate::{DEPTH_FORMAT, Gpu, GpuPlugin, Image, Views};
 
 /// The offscreen colour format: linear 8-bit, so an image's bytes are the colour values the
@@ -24,7 +26,7 @@ impl Plugin for OffscreenPlugin {
         let views = Views::new(&self.0, OFFSCREEN_FORMAT);
         app.insert_resource(self.0.clone())
             .insert_resource(views)
-            .add_plugins(GpuPlugin);
+            .add_plugin_once(GpuPlugin);
     }
 }
 
@@ -50,52 +52,22 @@ struct Target {
     reference: wgpu::Texture,
     close2gl: wgpu::Texture,
     depth: wgpu::Texture,
-    /// Both colour textures, one after the other, rows padded to wgpu's copy alignment.
-    readback: wgpu::Buffer,
-    padded_row: u32,
+    /// Both colour textures, one after the other.
+    readback: Readback,
 }
 
 impl Target {
     fn new(device: &wgpu::Device, size: Viewport) -> Target {
-        let texture = |label, format, usage| {
-            device.create_texture(&wgpu::TextureDescriptor {
-                label: Some(label),
-                size: wgpu::Extent3d {
-                    width: size.width,
-                    height: size.height,
-                    depth_or_array_layers: 1,
-                },
-                mip_level_count: 1,
-                sample_count: 1,
-                dimension: wgpu::TextureDimension::D2,
-                format,
-                usage,
-                view_formats: &[],
-            })
-        };
-        let color = wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::COPY_SRC;
-        let padded_row = (size.width * 4).next_multiple_of(wgpu::COPY_BYTES_PER_ROW_ALIGNMENT);
+        let pixels = (size.width, size.height);
+        let color = |label| texture_2d(device, label, pixels, OFFSCREEN_FORMAT, READABLE_TARGET);
+        let depth_usage = wgpu::TextureUsages::RENDER_ATTACHMENT;
         Target {
             size,
-            reference: texture("reference", OFFSCREEN_FORMAT, color),
-            close2gl: texture("close2gl", OFFSCREEN_FORMAT, color),
-            depth: texture(
-                "depth",
-                DEPTH_FORMAT,
-                wgpu::TextureUsages::RENDER_ATTACHMENT,
-            ),
-            readback: device.create_buffer(&wgpu::BufferDescriptor {
-                label: Some("readback"),
-                size: 2 * padded_row as u64 * size.height as u64,
-                usage: wgpu::BufferUsages::MAP_READ | wgpu::BufferUsages::COPY_DST,
-                mapped_at_creation: false,
-            }),
-            padded_row,
+            reference: color("reference"),
+            close2gl: color("close2gl"),
+            depth: texture_2d(device, "depth", pixels, DEPTH_FORMAT, depth_usage),
+            readback: Readback::new(device, pixels, 2),
         }
-    }
-
-    fn layer_bytes(&self) -> u64 {
-        self.padded_row as u64 * self.size.height as u64
     }
 }
 
@@ -183,59 +155,19 @@ fn draw(
     start.elapsed().as_secs_f64() * 1e3
 }
 
-/// Copies both colour textures into the readback buffer and unpads them into images.
+/// Both colour textures read back as images.
 fn read_back(gpu: &Gpu, target: &Target) -> Result<[Image; 2], String> {
-    let mut encoder = gpu.device.create_command_encoder(&Default::default());
-    for (layer, texture) in [&target.reference, &target.close2gl]
+    let mut layers = target
+        .readback
+        .read(gpu, &[&target.reference, &target.close2gl])?
         .into_iter()
-        .enumerate()
-    {
-        encoder.copy_texture_to_buffer(
-            texture.as_image_copy(),
-            wgpu::TexelCopyBufferInfo {
-                buffer: &target.readback,
-                layout: wgpu::TexelCopyBufferLayout {
-                    offset: layer as u64 * target.layer_bytes(),
-                    bytes_per_row: Some(target.padded_row),
-                    rows_per_image: Some(target.size.height),
-                },
-            },
-            texture.size(),
-        );
+        .map(|pixels| Image {
+            width: target.size.width,
+            height: target.size.height,
+            pixels,
+        });
+    match (layers.next(), layers.next()) {
+        (Some(reference), Some(close2gl)) => Ok([reference, close2gl]),
+        _ => Err("the GPU readback returned fewer images than asked".into()),
     }
-    gpu.queue.submit([encoder.finish()]);
-    let slice = target.readback.slice(..);
-    let (sender, receiver) = std::sync::mpsc::channel();
-    slice.map_async(wgpu::MapMode::Read, move |result| {
-        let _ = sender.send(result);
-    });
-    gpu.device
-        .poll(wgpu::PollType::wait_indefinitely())
-        .map_err(|e| format!("the GPU did not finish the frame: {e}"))?;
-    receiver
-        .recv()
-        .map_err(|e| format!("the GPU readback was dropped: {e}"))?
-        .map_err(|e| format!("cannot read the frame back from the GPU: {e}"))?;
-    let images = {
-        let bytes = slice
-            .get_mapped_range()
-            .map_err(|e| format!("cannot read the frame back from the GPU: {e}"))?;
-        let (width, height) = (target.size.width, target.size.height);
-        let image = |layer: u64| {
-            let start = (layer * target.layer_bytes()) as usize;
-            let pixels = bytes[start..start + target.layer_bytes() as usize]
-                .chunks_exact(target.padded_row as usize)
-                .flat_map(|row| row[..width as usize * 4].chunks_exact(4))
-                .map(|p| [p[0], p[1], p[2], p[3]])
-                .collect();
-            Image {
-                width,
-                height,
-                pixels,
-            }
-        };
-        [image(0), image(1)]
-    };
-    target.readback.unmap();
-    Ok(images)
 }

@@ -4,6 +4,7 @@
 use std::collections::HashMap;
 
 use bytemuck::{Pod, Zeroable};
+use close2gl_core::limits::has_no_area;
 use close2gl_core::{Camera, FrontFace, Lighting, Mesh, RenderMode, RenderSettings, Shading};
 use glam::camera::rh::proj::directx::perspective;
 use glam::camera::rh::view::look_at_mat4;
@@ -119,10 +120,6 @@ struct Vertex {
     normal: [f32; 3],
 }
 
-/// Twice a triangle's area over its longest edge squared, below which it counts as zero: such a
-/// triangle is at most 1e-5 as tall as it is long, a line for any rasteriser.
-const DEGENERATE: f32 = 1e-5;
-
 pub(crate) struct Reference {
     shader: wgpu::ShaderModule,
     layout: wgpu::PipelineLayout,
@@ -184,14 +181,7 @@ impl Reference {
             contents: bytemuck::cast_slice(&vertices),
             usage: wgpu::BufferUsages::VERTEX,
         });
-        let has_area = |t: &&[u32; 3]| {
-            let [a, b, c] = t.map(|i| mesh.positions[i as usize]);
-            let longest = (b - a)
-                .length_squared()
-                .max((c - b).length_squared())
-                .max((a - c).length_squared());
-            (b - a).cross(c - a).length() > DEGENERATE * longest
-        };
+        let has_area = |t: &&[u32; 3]| has_area(t.map(|i| mesh.positions[i as usize]));
         let (mut triangles, degenerate): (Vec<[u32; 3]>, Vec<[u32; 3]>) =
             mesh.triangles.iter().partition(has_area);
         let culled_index_count = triangles.len() as u32 * 3;
@@ -346,6 +336,17 @@ impl Reference {
     }
 }
 
+/// Whether a triangle has area by the rule Close2GL culls by (see `ZERO_AREA`), measured here in
+/// world space: a shape's area over its longest edge squared is the same after the projection,
+/// for a triangle that faces the camera.
+fn has_area([a, b, c]: [Vec3; 3]) -> bool {
+    let longest = (b - a)
+        .length_squared()
+        .max((c - b).length_squared())
+        .max((a - c).length_squared());
+    !has_no_area((b - a).cross(c - a).length(), longest)
+}
+
 /// The background colour as wgpu's clear colour.
 pub fn clear_color(background: Vec3) -> wgpu::Color {
     wgpu::Color {
@@ -353,5 +354,63 @@ pub fn clear_color(background: Vec3) -> wgpu::Color {
         g: background.y as f64,
         b: background.z as f64,
         a: 1.0,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use close2gl_core::limits::ZERO_AREA;
+    use close2gl_core::{Close2glFrame, Viewport};
+    use close2gl_pipeline::FastPipeline;
+
+    use super::*;
+
+    /// A triangle 10 units wide and `ratio` × 10 tall (twice its area over its longest edge
+    /// squared is `ratio`), facing a camera on +z, wound counter-clockwise as seen from it.
+    fn sliver(ratio: f32) -> [Vec3; 3] {
+        let (z, width) = (-20.0, 10.0);
+        [
+            Vec3::new(-5.0, 0.0, z),
+            Vec3::new(5.0, 0.0, z),
+            Vec3::new(0.0, ratio * width, z),
+        ]
+    }
+
+    /// Close2GL's verdict on the triangle: drawn (it has a facing) or culled (it has none).
+    fn close2gl_draws(corners: [Vec3; 3]) -> bool {
+        let mesh = Mesh {
+            name: "sliver".into(),
+            positions: corners.to_vec(),
+            normals: vec![Vec3::Z; 3],
+            triangles: vec![[0, 1, 2]],
+        };
+        let camera = Camera {
+            near: 1.0,
+            far: 100.0,
+            ..Camera::default()
+        };
+        let viewport = Viewport {
+            width: 400,
+            height: 400,
+        };
+        let mut frame = Close2glFrame::default();
+        let settings = RenderSettings::default();
+        FastPipeline::default().run(&mesh, &camera, &settings, viewport, &mut frame);
+        frame.counts.drawn == 1
+    }
+
+    #[test]
+    fn both_views_draw_a_sliver_exactly_when_the_one_zero_area_rule_says_it_has_area() {
+        // Equal fields of view on a square viewport scale x and y alike, so the ratio is the
+        // same in world space and in window space.
+        for (ratio, has) in [
+            (ZERO_AREA * 0.5, false),
+            (ZERO_AREA * 2.0, true),
+            (0.3, true),
+        ] {
+            let corners = sliver(ratio);
+            assert_eq!(has_area(corners), has, "the reference at ratio {ratio}");
+            assert_eq!(close2gl_draws(corners), has, "Close2GL at ratio {ratio}");
+        }
     }
 }

@@ -2,8 +2,8 @@
 
 use bevy_ecs::prelude::*;
 use close2gl_core::{
-    App, Camera, Close2glFrame, Lighting, Mesh, ModelStatus, Plugin, Render, RenderSettings,
-    SoftwareFrame,
+    App, Camera, Close2glFrame, FrameSet, Lighting, Mesh, ModelStatus, Plugin, Render,
+    RenderSettings, SoftwareFrame,
 };
 
 use crate::reference::clear_color;
@@ -12,17 +12,18 @@ use crate::{Gpu, Views};
 /// Adds the `Render` systems that upload what changed: the mesh again only when
 /// `ModelStatus.generation` changes; the reference uniforms from `Camera`, `RenderSettings` and
 /// `Lighting`; the Close2GL 2D buffer from `Close2glFrame`, or the software rasterizer's image
-/// from `SoftwareFrame`. They run once the `Gpu` and `Views`
-/// resources exist (inserted by whoever owns the target), so a window may arrive late.
+/// from `SoftwareFrame`. They run once the `Gpu` and `Views` resources exist (inserted by
+/// whoever owns the target), so a window may arrive late. It owns no resource: the model,
+/// settings, Close2GL and raster plugins provide what it reads.
 pub struct GpuPlugin;
 
 impl Plugin for GpuPlugin {
     fn build(&self, app: &mut App) {
-        app.init_resource::<ModelStatus>()
-            .init_resource::<Lighting>()
-            .init_resource::<RenderSettings>()
-            .init_resource::<Close2glFrame>()
-            .init_resource::<SoftwareFrame>()
+        app.requires::<ModelStatus>("GpuPlugin", "ModelPlugin")
+            .requires::<RenderSettings>("GpuPlugin", "SettingsPlugin")
+            .requires::<Lighting>("GpuPlugin", "SettingsPlugin")
+            .requires::<Close2glFrame>("GpuPlugin", "Close2glPlugin")
+            .requires::<SoftwareFrame>("GpuPlugin", "RasterPlugin")
             .add_systems(
                 Render,
                 (
@@ -32,6 +33,7 @@ impl Plugin for GpuPlugin {
                     upload_software,
                 )
                     .chain()
+                    .in_set(FrameSet::Render)
                     .run_if(resource_exists::<Gpu>.and_then(resource_exists::<Views>)),
             );
     }

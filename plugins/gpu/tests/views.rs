@@ -1,9 +1,7 @@
 //! Both views on a real adapter, on worlds built by hand: the Close2GL pipeline fills the 2D
 //! buffer, the GPU crate draws both views offscreen, and the coverage must agree.
 
-use std::f32::consts::PI;
 use std::path::PathBuf;
-use std::sync::OnceLock;
 
 use close2gl_core::glam::Vec3;
 use close2gl_core::{
@@ -12,57 +10,27 @@ use close2gl_core::{
 use close2gl_gpu::parity::{Comparison, coverage, diff_image, to_rgb8};
 use close2gl_gpu::{Gpu, OffscreenPlugin, Snapshot, render_offscreen};
 use close2gl_pipeline::Close2glPlugin;
-
-fn gpu() -> Gpu {
-    static GPU: OnceLock<Result<Gpu, String>> = OnceLock::new();
-    match GPU.get_or_init(|| Gpu::headless(wgpu::Backends::PRIMARY)) {
-        Ok(gpu) => gpu.clone(),
-        Err(e) => panic!("these tests need a GPU adapter: {e}"),
-    }
-}
-
-/// A UV sphere with its exact normals, counter-clockwise seen from outside.
-fn sphere(center: Vec3, radius: f32, stacks: u32, slices: u32) -> Mesh {
-    let mut mesh = Mesh {
-        name: "sphere".into(),
-        ..Default::default()
-    };
-    for i in 0..=stacks {
-        let theta = PI * i as f32 / stacks as f32;
-        for j in 0..=slices {
-            let phi = 2.0 * PI * j as f32 / slices as f32;
-            let n = Vec3::new(
-                theta.sin() * phi.cos(),
-                theta.cos(),
-                -theta.sin() * phi.sin(),
-            );
-            mesh.positions.push(center + radius * n);
-            mesh.normals.push(n);
-        }
-    }
-    let row = slices + 1;
-    for i in 0..stacks {
-        for j in 0..slices {
-            let (a, b) = (i * row + j, (i + 1) * row + j);
-            mesh.triangles.push([a, b, b + 1]);
-            mesh.triangles.push([a, b + 1, a + 1]);
-        }
-    }
-    mesh
-}
+use close2gl_testkit::{gpu, sphere};
 
 fn app(mesh: Mesh, camera: Camera, settings: RenderSettings, viewport: Viewport) -> App {
-    let mut app = App::new();
-    app.insert_resource(settings)
-        .insert_resource(viewport)
-        .insert_resource(ModelStatus {
-            generation: 1,
-            ..Default::default()
-        })
-        .add_plugins(Close2glPlugin)
-        .add_plugins(OffscreenPlugin(gpu()));
-    app.world_mut().spawn(camera);
-    app.world_mut().spawn(mesh);
+    app_on(gpu(), mesh, camera, settings, viewport)
+}
+
+/// The Close2GL pipeline and both views offscreen on `gpu`, over a world built by hand.
+fn app_on(
+    gpu: Gpu,
+    mesh: Mesh,
+    camera: Camera,
+    settings: RenderSettings,
+    viewport: Viewport,
+) -> App {
+    let mut app = close2gl_testkit::world_with(mesh, camera, settings, viewport);
+    app.insert_resource(ModelStatus {
+        generation: 1,
+        ..Default::default()
+    })
+    .add_plugins(Close2glPlugin)
+    .add_plugins(OffscreenPlugin(gpu));
     app
 }
 
@@ -321,21 +289,13 @@ fn without_polygon_modes_the_views_say_what_they_draw_instead() {
     assert!(limitations.contains("POLYGON_MODE_LINE"), "{limitations}");
     assert!(limitations.contains("POLYGON_MODE_POINT"), "{limitations}");
     for mode in [RenderMode::Wireframe, RenderMode::Points] {
-        let mut app = App::new();
-        app.insert_resource(RenderSettings {
+        let settings = RenderSettings {
             mode,
             ..Default::default()
-        })
-        .insert_resource(SMALL)
-        .insert_resource(ModelStatus {
-            generation: 1,
-            ..Default::default()
-        })
-        .add_plugins(Close2glPlugin)
-        .add_plugins(OffscreenPlugin(bare.clone()));
-        app.world_mut()
-            .spawn(camera_at(Vec3::new(0.3, 0.5, 3.0), Vec3::ZERO));
-        app.world_mut().spawn(sphere(Vec3::ZERO, 1.0, 16, 32));
+        };
+        let camera = camera_at(Vec3::new(0.3, 0.5, 3.0), Vec3::ZERO);
+        let sphere = sphere(Vec3::ZERO, 1.0, 16, 32);
+        let mut app = app_on(bare.clone(), sphere, camera, settings, SMALL);
         let snapshot = render_offscreen(&mut app).expect("render");
         let covered = coverage(&snapshot.reference, snapshot.background)
             .into_iter()

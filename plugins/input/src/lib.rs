@@ -2,12 +2,14 @@
 //! held and pressed, mouse drag, scroll, frame time), `InputBindings` and `CameraSpeeds`, and
 //! writes `CameraActions` (moves scaled by the model's size, rotations, zoom, reset, mode toggle)
 //! and, for the lecture's Shift+D / Shift+P / Shift+G keys, `RenderSettings::shading`. It knows
-//! no window system: the viewer fills `InputState`, and so can a test.
+//! no window system: the viewer fills `InputState`, and so can a test. It owns `InputState` and
+//! `InputBindings`; the camera plugin provides the actions and speeds, the core's
+//! `SettingsPlugin` the render settings. Its system runs in `FrameSet::Input`.
 
 use bevy_ecs::prelude::*;
 use close2gl_core::{
-    App, CameraAction, CameraActions, CameraSpeeds, InputBindings, InputState, Plugin, PreUpdate,
-    RenderSettings, Shading,
+    App, CameraAction, CameraActions, CameraSpeeds, FrameSet, InputBindings, InputState, Plugin,
+    PreUpdate, RenderSettings, Shading,
 };
 
 pub struct InputPlugin;
@@ -16,10 +18,10 @@ impl Plugin for InputPlugin {
     fn build(&self, app: &mut App) {
         app.init_resource::<InputState>()
             .init_resource::<InputBindings>()
-            .init_resource::<CameraActions>()
-            .init_resource::<CameraSpeeds>()
-            .init_resource::<RenderSettings>()
-            .add_systems(PreUpdate, map_input);
+            .requires::<CameraActions>("InputPlugin", "CameraPlugin")
+            .requires::<CameraSpeeds>("InputPlugin", "CameraPlugin")
+            .requires::<RenderSettings>("InputPlugin", "SettingsPlugin")
+            .add_systems(PreUpdate, map_input.in_set(FrameSet::Input));
     }
 }
 
@@ -73,17 +75,28 @@ pub fn map_input(
     }
 
     for pressed in &input.pressed {
-        let is = |action: &str| bindings.key(action) == Some(pressed.as_str());
-        if is("reset") {
-            actions.0.push(CameraAction::Reset);
-        } else if is("toggle_mode") {
-            actions.0.push(CameraAction::ToggleMode);
-        } else if is("original_color") {
-            settings.shading = Shading::None;
-        } else if is("phong") {
-            settings.shading = Shading::Phong;
-        } else if is("gouraud") {
-            settings.shading = Shading::GouraudAds;
-        }
+        apply_press(pressed, &bindings, &mut actions.0, &mut settings);
+    }
+}
+
+/// One key press: a camera action or the lecture's shading keys. `settings` is written only
+/// when a shading key is pressed, so that it is not marked changed every frame.
+fn apply_press(
+    pressed: &str,
+    bindings: &InputBindings,
+    actions: &mut Vec<CameraAction>,
+    settings: &mut ResMut<RenderSettings>,
+) {
+    let is = |action: &str| bindings.key(action) == Some(pressed);
+    if is("reset") {
+        actions.push(CameraAction::Reset);
+    } else if is("toggle_mode") {
+        actions.push(CameraAction::ToggleMode);
+    } else if is("original_color") {
+        settings.shading = Shading::None;
+    } else if is("phong") {
+        settings.shading = Shading::Phong;
+    } else if is("gouraud") {
+        settings.shading = Shading::GouraudAds;
     }
 }

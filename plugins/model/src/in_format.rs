@@ -1,4 +1,4 @@
-//! The course's `.in` triangle format (/shared/spec/tri-format.md): a header, material blocks,
+//! The course's `.in` triangle format (see the README's Models section): a header, material blocks,
 //! an optional `Texture =` line, a free comment line, then four records per triangle. Layout
 //! is tolerated (runs of spaces, `\r\n`, blank lines, any keyword case, a missing final newline);
 //! content is not (every number finite, every record complete, material indices in range).

@@ -1,10 +1,11 @@
 //! The model plugin. It owns turning a `ModelSource` into a `Mesh`: the course's `.in` triangle
-//! files (every variant of /shared/spec/tri-format.md), Wavefront `.obj` files through tobj, and
+//! files (every variant the README's Models section lists), Wavefront `.obj` files through tobj, and
 //! the shading lecture's primitives (box, sphere, torus, cone, cylinder) with exact normals. Its
 //! system reads and takes the `ModelRequest` resource, reads `PrimitiveParams`, replaces the one
 //! `Mesh` component (spawning it if there is none) and writes `ModelStatus`. A load that fails
-//! leaves the previous mesh untouched and only sets `ModelStatus::error`. Framing the camera on
-//! the new mesh is the camera plugin's job (it watches `Changed<Mesh>`).
+//! leaves the previous mesh untouched and only sets `ModelStatus::error`. It owns `ModelRequest`,
+//! `ModelStatus` and `PrimitiveParams`, and runs in `FrameSet::Load`. Framing the camera on the
+//! new mesh is the camera plugin's job (it watches `Changed<Mesh>`, in `FrameSet::Camera`).
 
 mod diagnostics;
 mod in_format;
@@ -16,7 +17,7 @@ use std::path::Path;
 
 use bevy_ecs::prelude::*;
 use close2gl_core::{
-    App, Mesh, ModelRequest, ModelSource, ModelStatus, Plugin, PrimitiveParams, Update,
+    App, FrameSet, Mesh, ModelRequest, ModelSource, ModelStatus, Plugin, PrimitiveParams, Update,
 };
 
 pub use in_format::parse_in;
@@ -81,7 +82,7 @@ impl Plugin for ModelPlugin {
         app.init_resource::<ModelRequest>()
             .init_resource::<ModelStatus>()
             .init_resource::<PrimitiveParams>()
-            .add_systems(Update, load_requested_model);
+            .add_systems(Update, load_requested_model.in_set(FrameSet::Load));
     }
 }
 

@@ -17,6 +17,21 @@ struct Corner {
     normal: Option<Vec3>,
 }
 
+/// The triangles of one tobj object, corner by corner.
+fn corners(mesh: &tobj::Mesh) -> impl Iterator<Item = [Corner; 3]> + '_ {
+    let position = |i: u32| Vec3::from_slice(&mesh.positions[3 * i as usize..]);
+    // tobj gives one normal per vertex only when every corner of the object named one.
+    let has_normals = mesh.normals.len() == mesh.positions.len();
+    let normal =
+        move |i: u32| has_normals.then(|| Vec3::from_slice(&mesh.normals[3 * i as usize..]));
+    mesh.indices.chunks_exact(3).map(move |t| {
+        [t[0], t[1], t[2]].map(|i| Corner {
+            position: position(i),
+            normal: normal(i),
+        })
+    })
+}
+
 /// Parses the text of a `.obj` file; `label` names the file in messages.
 pub fn parse_obj(text: &str, label: &str) -> Result<LoadedModel, String> {
     check_records(text, label)?;
@@ -29,22 +44,7 @@ pub fn parse_obj(text: &str, label: &str) -> Result<LoadedModel, String> {
     let (models, _) =
         tobj::load_obj_buf(&mut text.as_bytes(), &options, |_| Ok(Default::default()))
             .map_err(|e| format!("{label}: not a readable .obj file: tobj says {e}"))?;
-
-    let mut triangles: Vec<[Corner; 3]> = Vec::new();
-    for model in &models {
-        let mesh = &model.mesh;
-        let position = |i: u32| Vec3::from_slice(&mesh.positions[3 * i as usize..]);
-        // tobj gives one normal per vertex only when every corner of the object named one.
-        let has_normals = mesh.normals.len() == mesh.positions.len();
-        let normal =
-            |i: u32| has_normals.then(|| Vec3::from_slice(&mesh.normals[3 * i as usize..]));
-        triangles.extend(mesh.indices.chunks_exact(3).map(|t| {
-            [t[0], t[1], t[2]].map(|i| Corner {
-                position: position(i),
-                normal: normal(i),
-            })
-        }));
-    }
+    let triangles: Vec<[Corner; 3]> = models.iter().flat_map(|m| corners(&m.mesh)).collect();
     if triangles.is_empty() {
         return Err(format!(
             "{label}: no triangles (faces need at least 3 vertices)"
@@ -100,16 +100,7 @@ fn smooth_normals(triangles: &[[Corner; 3]]) -> HashMap<[u32; 3], Vec3> {
 /// numbers finite, faces referencing records that exist.
 fn check_records(text: &str, label: &str) -> Result<(), String> {
     // Positive indices may point forward, negative ones count back from the record at hand.
-    let mut totals = [0usize; 3];
-    for line in text.lines() {
-        if let Some(kind) = line
-            .split_whitespace()
-            .next()
-            .and_then(Element::from_keyword)
-        {
-            totals[kind as usize] += 1;
-        }
-    }
+    let totals = count_elements(text);
     let mut seen = [0usize; 3];
     for (i, line) in text.lines().enumerate() {
         let error = |what: &str, why: Option<String>| {
@@ -149,6 +140,21 @@ fn check_records(text: &str, label: &str) -> Result<(), String> {
         }
     }
     Ok(())
+}
+
+/// How many positions, texture coordinates and normals the file has.
+fn count_elements(text: &str) -> [usize; 3] {
+    let mut totals = [0usize; 3];
+    for line in text.lines() {
+        if let Some(kind) = line
+            .split_whitespace()
+            .next()
+            .and_then(Element::from_keyword)
+        {
+            totals[kind as usize] += 1;
+        }
+    }
+    totals
 }
 
 /// The three kinds of numbered records a face corner refers to, in the order of `v/vt/vn`.

@@ -1,4 +1,4 @@
-//! The `.in` loader against the spec (/shared/spec/tri-format.md): the course samples, every
+//! The `.in` loader against the spec (see the README's Models section): the course samples, every
 //! layout variant real files show, and a file:line error for each kind of bad input.
 
 use close2gl_model::{LoadedModel, parse_in};

@@ -104,7 +104,7 @@ fn invalid_utf8_is_an_error_at_its_line() {
 
 #[test]
 fn primitives_are_built_from_the_params() {
-    for kind in PrimitiveKind::ALL {
+    for &kind in PrimitiveKind::ALL {
         let model = load(&ModelSource::Primitive(kind), &PrimitiveParams::default()).unwrap();
         model.mesh.validate().unwrap();
         assert!(model.warnings.is_empty());

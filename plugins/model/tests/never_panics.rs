@@ -101,6 +101,32 @@ fn mutation() -> impl Strategy<Value = Mutation> {
     ]
 }
 
+/// Replaces the number at index `at` (modulo how many there are) with `number`.
+fn replace_number(lines: &mut [String], at: usize, number: &str) {
+    let numbers = lines
+        .iter()
+        .flat_map(|l| l.split_whitespace())
+        .filter(|w| w.parse::<f64>().is_ok())
+        .count();
+    if numbers == 0 {
+        return;
+    }
+    let target = at % numbers;
+    let mut seen = 0;
+    for line in lines {
+        let words: Vec<&str> = line
+            .split_whitespace()
+            .map(|w| {
+                let is_number = w.parse::<f64>().is_ok();
+                let replace = is_number && seen == target;
+                seen += usize::from(is_number);
+                if replace { number } else { w }
+            })
+            .collect();
+        *line = words.join(" ");
+    }
+}
+
 fn mutate(text: &str, mutations: &[Mutation]) -> String {
     let mut text = text.to_string();
     for m in mutations {
@@ -115,29 +141,7 @@ fn mutate(text: &str, mutations: &[Mutation]) -> String {
                 lines.insert(at % lines.len(), line);
             }
             Mutation::InsertLine(at, line) => lines.insert(line_at(at), line.to_string()),
-            Mutation::ReplaceNumber(at, number) => {
-                let numbers = lines
-                    .iter()
-                    .flat_map(|l| l.split_whitespace())
-                    .filter(|w| w.parse::<f64>().is_ok())
-                    .count();
-                if numbers > 0 {
-                    let target = at % numbers;
-                    let mut seen = 0;
-                    for line in &mut lines {
-                        let words: Vec<&str> = line
-                            .split_whitespace()
-                            .map(|w| {
-                                let is_number = w.parse::<f64>().is_ok();
-                                let replace = is_number && seen == target;
-                                seen += usize::from(is_number);
-                                if replace { number } else { w }
-                            })
-                            .collect();
-                        *line = words.join(" ");
-                    }
-                }
-            }
+            Mutation::ReplaceNumber(at, number) => replace_number(&mut lines, at, number),
             Mutation::Truncate(at) => {
                 let mut bytes = text.into_bytes();
                 bytes.truncate(at % (bytes.len() + 1));

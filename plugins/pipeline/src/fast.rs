@@ -9,6 +9,7 @@ use close2gl_core::{
     Camera, Close2glFrame, Mesh, RasterGeometry, RasterVertex, Rasterizer, RenderSettings,
     StageCounts, Viewport,
 };
+use glam::Vec3;
 use rayon::prelude::*;
 
 use crate::clip::Outcode;
@@ -42,7 +43,7 @@ pub struct FastPipeline {
 }
 
 impl FastPipeline {
-    /// Fills `frame` exactly as [`crate::textbook::run`] would.
+    /// Fills `frame` with exactly what [`crate::textbook::run`] returns.
     pub fn run(
         &mut self,
         mesh: &Mesh,
@@ -54,20 +55,7 @@ impl FastPipeline {
         let transform = ClipTransform::new(camera);
         let stage = Stage::new(settings, viewport);
         let raster = settings.close2gl_raster == Rasterizer::Software;
-
-        // Transform every unique vertex once.
-        let vertices = mesh.positions.len();
-        self.codes.resize(vertices, 0);
-        self.window.resize(vertices, [0.0; 2]);
-        self.codes
-            .par_chunks_mut(VERTEX_CHUNK)
-            .zip(self.window.par_chunks_mut(VERTEX_CHUNK))
-            .zip(mesh.positions.par_chunks(VERTEX_CHUNK))
-            .for_each(|((codes, window), positions)| {
-                for (i, p) in positions.iter().enumerate() {
-                    (codes[i], window[i]) = corner(transform.apply(*p), &stage);
-                }
-            });
+        self.transform_vertices(&mesh.positions, &transform, &stage);
 
         if raster {
             raster_vertices(mesh, &transform, &stage, &mut frame.raster.vertices);
@@ -117,18 +105,39 @@ impl FastPipeline {
             frame.raster.cuts.clear();
             frame.raster.primitives.clear();
         }
-        let mut counts = StageCounts::default();
-        for chunk in chunks {
-            counts.triangles_in += chunk.counts.triangles_in;
-            counts.clipped += chunk.counts.clipped;
-            counts.culled += chunk.counts.culled;
-            counts.drawn += chunk.counts.drawn;
-            counts.output_primitives += chunk.counts.output_primitives;
-        }
         frame.topology = stage.topology();
         frame.viewport = viewport;
-        frame.counts = counts;
+        frame.counts = total_counts(chunks);
     }
+
+    /// Transforms every unique vertex once, into its outcode and window position.
+    fn transform_vertices(&mut self, positions: &[Vec3], transform: &ClipTransform, stage: &Stage) {
+        let vertices = positions.len();
+        self.codes.resize(vertices, 0);
+        self.window.resize(vertices, [0.0; 2]);
+        self.codes
+            .par_chunks_mut(VERTEX_CHUNK)
+            .zip(self.window.par_chunks_mut(VERTEX_CHUNK))
+            .zip(positions.par_chunks(VERTEX_CHUNK))
+            .for_each(|((codes, window), positions)| {
+                for (i, p) in positions.iter().enumerate() {
+                    (codes[i], window[i]) = corner(transform.apply(*p), stage);
+                }
+            });
+    }
+}
+
+/// The chunks' counts added up.
+fn total_counts(chunks: &[Chunk]) -> StageCounts {
+    let mut counts = StageCounts::default();
+    for chunk in chunks {
+        counts.triangles_in += chunk.counts.triangles_in;
+        counts.clipped += chunk.counts.clipped;
+        counts.culled += chunk.counts.culled;
+        counts.drawn += chunk.counts.drawn;
+        counts.output_primitives += chunk.counts.output_primitives;
+    }
+    counts
 }
 
 /// Copies the chunks' vertices, in order, into `out` (exactly as long as all of them), splitting

@@ -1,8 +1,8 @@
 //! Close2GL: the geometry half of the OpenGL pipeline, in software. This crate owns the
 //! hand-written matrices (modelview M, projection P, viewport V), clipping in homogeneous space,
 //! the perspective division, backface culling, and the `Close2glPlugin` whose system reads the
-//! `Camera` and `Mesh` components and the `RenderSettings` and `Viewport` resources, and writes
-//! the `Close2glFrame` resource: the 2D vertex buffer in window pixels (which the GPU only draws)
+//! `Camera` and `Mesh` components and the `RenderSettings` and `Viewport` resources (owned by the
+//! core's `SettingsPlugin`), and writes the `Close2glFrame` resource, which it owns: the 2D vertex buffer in window pixels (which the GPU only draws)
 //! and the stage counts. It depends on no GPU, window or UI crate; glam only holds the numbers.
 
 pub mod clip;
@@ -15,22 +15,24 @@ use std::time::Instant;
 
 use bevy_ecs::prelude::*;
 use close2gl_core::{
-    App, Camera, Close2glFrame, Mesh, Plugin, PostUpdate, RenderSettings, StageCounts, Viewport,
+    App, Camera, Close2glFrame, FrameSet, Mesh, Plugin, PostUpdate, RenderSettings, StageCounts,
+    Viewport,
 };
 
 pub use fast::FastPipeline;
 use stage::Fate;
 
-/// Runs the Close2GL pipeline in `PostUpdate`, after the camera has moved.
+/// Runs the Close2GL pipeline in `PostUpdate` (`FrameSet::Close2gl`), after the camera has moved.
+/// It owns `FastPipeline` and `Close2glFrame`; the core's `SettingsPlugin` provides the rest.
 pub struct Close2glPlugin;
 
 impl Plugin for Close2glPlugin {
     fn build(&self, app: &mut App) {
         app.init_resource::<FastPipeline>()
             .init_resource::<Close2glFrame>()
-            .init_resource::<Viewport>()
-            .init_resource::<RenderSettings>()
-            .add_systems(PostUpdate, close2gl_system);
+            .requires::<RenderSettings>("Close2glPlugin", "SettingsPlugin")
+            .requires::<Viewport>("Close2glPlugin", "SettingsPlugin")
+            .add_systems(PostUpdate, close2gl_system.in_set(FrameSet::Close2gl));
     }
 }
 

@@ -2,6 +2,7 @@
 //! clip, divide by w, map to the viewport, cull, emit. Both the textbook path and the fast path
 //! send every triangle through [`process`], so they cannot disagree on what a triangle becomes.
 
+use close2gl_core::limits::has_no_area;
 use close2gl_core::{
     Clipping, CutVertex, FrontFace, RenderMode, RenderSettings, Topology, Viewport,
 };
@@ -205,13 +206,6 @@ fn signed_area(window: &[[f32; 2]]) -> f32 {
     area
 }
 
-/// Twice the area over the longest edge squared, at or below which a polygon counts as having
-/// zero area: it is at most 1e-5 as tall as it is long, a line for any rasteriser. A sliver
-/// (a UV sphere's pole, where sin(π) in f32 leaves the pole's copies 1e-7 apart; a face seen
-/// exactly edge-on) gets an area of random sign from rounding, and OpenGL counts a zero-area
-/// polygon as a back face. The reference view draws such triangles the same way.
-const DEGENERATE: f32 = 1e-5;
-
 fn longest_edge_squared(window: &[[f32; 2]]) -> f32 {
     let mut longest = 0.0f32;
     for (i, a) in window.iter().enumerate() {
@@ -232,8 +226,9 @@ fn is_culled(window: &[[f32; 2]], culling: Option<FrontFace>) -> bool {
         FrontFace::Ccw => area < 0.0,
         FrontFace::Cw => area > 0.0,
     };
-    // Only front faces need the size check: most back faces are culled without it.
-    !front_facing || area.abs() <= DEGENERATE * longest_edge_squared(window)
+    // Only front faces need the size check: most back faces are culled without it. A polygon
+    // with no area is a back face, as in OpenGL (see `ZERO_AREA`, which the reference view uses).
+    !front_facing || has_no_area(area, longest_edge_squared(window))
 }
 
 /// The corners in the order of the mode's primitives: the triangle, its three edges as lines,

@@ -2,24 +2,27 @@
 //! send it down the stage. Slow (shared vertices are transformed once per triangle) and easy to
 //! check; the fast path must produce exactly its output.
 
-use close2gl_core::{Camera, Close2glFrame, Mesh, RenderSettings, StageCounts, Viewport};
+use close2gl_core::{Camera, Close2glFrame, Mesh, RenderSettings, Viewport};
 
 use crate::matrices::ClipTransform;
 use crate::stage::{Output, Stage, corner, process};
 use crate::tally;
 
-/// Fills `frame` with the 2D buffer and counts for this camera, mesh, settings and viewport.
+/// The 2D buffer and counts for this camera, mesh, settings and viewport, in a new frame (the
+/// fast path reuses one instead).
 pub fn run(
     mesh: &Mesh,
     camera: &Camera,
     settings: &RenderSettings,
     viewport: Viewport,
-    frame: &mut Close2glFrame,
-) {
+) -> Close2glFrame {
     let transform = ClipTransform::new(camera);
     let stage = Stage::new(settings, viewport);
-    let mut counts = StageCounts::default();
-    frame.vertices.clear();
+    let mut frame = Close2glFrame {
+        topology: stage.topology(),
+        viewport,
+        ..Close2glFrame::default()
+    };
     for triangle in &mesh.triangles {
         let clip = triangle.map(|i| transform.apply(mesh.positions[i as usize]));
         let corners = clip.map(|c| corner(c, &stage));
@@ -30,9 +33,7 @@ pub fn run(
             raster: None,
         };
         let fate = process(*triangle, codes, window, || clip, &stage, &mut out);
-        tally(&mut counts, fate);
+        tally(&mut frame.counts, fate);
     }
-    frame.topology = stage.topology();
-    frame.viewport = viewport;
-    frame.counts = counts;
+    frame
 }

@@ -79,8 +79,7 @@ proptest! {
     fn full_clipping_output_is_finite_and_inside_the_viewport(
         mesh in mesh(60), camera in camera(), settings in settings(), viewport in viewport(),
     ) {
-        let mut frame = Close2glFrame::default();
-        textbook::run(&mesh, &camera, &settings, viewport, &mut frame);
+        let frame = textbook::run(&mesh, &camera, &settings, viewport);
         let slack = 1e-3 * viewport.width.max(viewport.height) as f32;
         for [x, y] in &frame.vertices {
             prop_assert!(x.is_finite() && y.is_finite());
@@ -104,8 +103,7 @@ proptest! {
             *p = camera.position + camera.u * local.dot(camera.u) + camera.v * local.dot(camera.v) + camera.n * depth;
         }
         for clipping in [Clipping::Full, Clipping::Simple] {
-            let mut frame = Close2glFrame::default();
-            textbook::run(&behind, &camera, &RenderSettings { clipping, ..settings }, viewport, &mut frame);
+            let frame = textbook::run(&behind, &camera, &RenderSettings { clipping, ..settings }, viewport);
             prop_assert!(frame.vertices.is_empty(), "{:?} drew {} vertices", clipping, frame.vertices.len());
             prop_assert_eq!(frame.counts.clipped, behind.triangles.len());
         }
@@ -119,8 +117,8 @@ proptest! {
             clipping: if simple { Clipping::Simple } else { Clipping::Full },
             ..settings
         };
-        let (mut slow, mut fast) = (Close2glFrame::default(), Close2glFrame::default());
-        textbook::run(&mesh, &camera, &settings, viewport, &mut slow);
+        let slow = textbook::run(&mesh, &camera, &settings, viewport);
+        let mut fast = Close2glFrame::default();
         FastPipeline::default().run(&mesh, &camera, &settings, viewport, &mut fast);
         prop_assert_eq!(slow, fast);
     }

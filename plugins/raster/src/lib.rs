@@ -3,8 +3,9 @@
 //! and points as the reference's GPU draws them, a depth buffer with the reference's test, the
 //! four shadings lit exactly as the reference's shader lights them, and perspective-correct
 //! interpolation; tiled (64×64 bins, each triangle binned once) and drawn in parallel. Its
-//! `RasterPlugin` reads `Close2glFrame`, `Camera`, `RenderSettings` and `Lighting`, and writes
-//! the `SoftwareFrame` image when `RenderSettings::close2gl_raster` is `software`. Like the
+//! `RasterPlugin` owns the `SoftwareFrame` image and writes it, in the `Close2gl` set after the
+//! pipeline, when `RenderSettings::close2gl_raster` is `software`; it reads `Close2glFrame`
+//! (the Close2GL plugin's), `Camera`, and `RenderSettings` and `Lighting` (the settings plugin's). Like the
 //! pipeline, it knows no GPU, window or UI.
 
 mod bin;
@@ -20,7 +21,7 @@ use std::time::Instant;
 
 use bevy_ecs::prelude::*;
 use close2gl_core::{
-    App, Camera, Close2glFrame, Lighting, Plugin, PostUpdate, Rasterizer, RenderSettings,
+    App, Camera, Close2glFrame, FrameSet, Lighting, Plugin, PostUpdate, Rasterizer, RenderSettings,
     SoftwareFrame,
 };
 
@@ -33,10 +34,14 @@ impl Plugin for RasterPlugin {
     fn build(&self, app: &mut App) {
         app.init_resource::<SoftwareRasterizer>()
             .init_resource::<SoftwareFrame>()
-            .init_resource::<Lighting>()
+            .requires::<Close2glFrame>("RasterPlugin", "Close2glPlugin")
+            .requires::<RenderSettings>("RasterPlugin", "SettingsPlugin")
+            .requires::<Lighting>("RasterPlugin", "SettingsPlugin")
             .add_systems(
                 PostUpdate,
-                raster_system.after(close2gl_pipeline::close2gl_system),
+                raster_system
+                    .after(close2gl_pipeline::close2gl_system)
+                    .in_set(FrameSet::Close2gl),
             );
     }
 }

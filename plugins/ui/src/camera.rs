@@ -1,10 +1,8 @@
 use bevy_ecs::prelude::*;
+use close2gl_core::limits::FOV_RANGE;
 use close2gl_core::{Camera, CameraAction, CameraActions, CameraMode, CameraSpeeds};
 
 use crate::PanelState;
-
-/// Fields of view the sliders offer, degrees (the camera's zoom keeps to the same range).
-const FOV_RANGE: std::ops::RangeInclusive<f32> = 0.5..=170.0;
 
 /// Mode, hfov and vfov (locked together or not), near, far, speeds, and reset.
 pub fn section(ui: &mut egui::Ui, world: &mut World) {
@@ -46,11 +44,10 @@ pub fn section(ui: &mut egui::Ui, world: &mut World) {
     }
 
     ui.horizontal(|ui| {
-        if ui.button("Reset").clicked() {
-            world
-                .get_resource_or_init::<CameraActions>()
-                .0
-                .push(CameraAction::Reset);
+        if ui.button("Reset").clicked()
+            && let Some(mut actions) = world.get_resource_mut::<CameraActions>()
+        {
+            actions.0.push(CameraAction::Reset);
         }
         ui.weak(format!(
             "eye ({:.2}, {:.2}, {:.2})",
@@ -62,22 +59,15 @@ pub fn section(ui: &mut egui::Ui, world: &mut World) {
 fn lens(ui: &mut egui::Ui, camera: &mut Camera, lock: &mut bool) {
     ui.horizontal(|ui| {
         ui.label("Mode");
-        for mode in CameraMode::ALL {
+        for &mode in CameraMode::ALL {
             ui.selectable_value(&mut camera.mode, mode, mode.name());
         }
     });
     ui.checkbox(lock, "Lock hfov and vfov");
     let before = (camera.hfov, camera.vfov);
-    ui.add(
-        egui::Slider::new(&mut camera.hfov, FOV_RANGE)
-            .text("hfov")
-            .suffix("°"),
-    );
-    ui.add(
-        egui::Slider::new(&mut camera.vfov, FOV_RANGE)
-            .text("vfov")
-            .suffix("°"),
-    );
+    for (fov, name) in [(&mut camera.hfov, "hfov"), (&mut camera.vfov, "vfov")] {
+        ui.add(egui::Slider::new(fov, FOV_RANGE).text(name).suffix("°"));
+    }
     if *lock {
         // The one that moved drags the other by the same number of degrees.
         let delta = (camera.hfov - before.0) + (camera.vfov - before.1);

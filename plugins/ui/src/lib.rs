@@ -3,8 +3,9 @@
 //! reads and writes `RenderSettings`. Camera reads and writes the `Camera` component and
 //! `CameraSpeeds`, and pushes `CameraAction::Reset` into `CameraActions`. Stats reads
 //! `Close2glFrame` and [`ViewStats`] (frame times, the adapter's name and limitations, which the
-//! viewer fills). It knows no window system or GPU: the viewer hands it an `egui::Ui` and the
-//! world, and so can a test.
+//! viewer fills). It owns `PanelState` and `ViewStats`; the other plugins provide what it reads.
+//! It has no systems: it knows no window system or GPU, and the viewer hands it an `egui::Ui`
+//! and the world once a frame (before the app's frame runs), and so can a test.
 
 mod camera;
 mod model;
@@ -12,7 +13,10 @@ mod render;
 mod stats;
 
 use bevy_ecs::prelude::*;
-use close2gl_core::{App, Plugin};
+use close2gl_core::{
+    App, CameraActions, CameraSpeeds, Close2glFrame, ModelRequest, ModelStatus, Plugin,
+    RenderSettings,
+};
 
 pub use stats::{FrameTimer, ViewStats};
 
@@ -24,7 +28,13 @@ pub struct UiPlugin;
 impl Plugin for UiPlugin {
     fn build(&self, app: &mut App) {
         app.init_resource::<PanelState>()
-            .init_resource::<ViewStats>();
+            .init_resource::<ViewStats>()
+            .requires::<ModelStatus>("UiPlugin", "ModelPlugin")
+            .requires::<ModelRequest>("UiPlugin", "ModelPlugin")
+            .requires::<RenderSettings>("UiPlugin", "SettingsPlugin")
+            .requires::<CameraActions>("UiPlugin", "CameraPlugin")
+            .requires::<CameraSpeeds>("UiPlugin", "CameraPlugin")
+            .requires::<Close2glFrame>("UiPlugin", "Close2glPlugin");
     }
 }
 

@@ -3,35 +3,41 @@ use close2gl_core::{Mesh, ModelRequest, ModelSource, ModelStatus, PrimitiveKind}
 
 use crate::PanelState;
 
+/// The path being typed and its Load button; a new model (dropped, picked, reloaded) shows its
+/// path in the field. Returns the model asked for, if any.
+fn path_field(
+    ui: &mut egui::Ui,
+    state: &mut PanelState,
+    status: &ModelStatus,
+) -> Option<ModelSource> {
+    if state.path_generation != status.generation {
+        state.path_generation = status.generation;
+        if let Some(ModelSource::File(path)) = &status.source {
+            state.path = path.display().to_string();
+        }
+    }
+    let mut request = None;
+    ui.horizontal(|ui| {
+        let field = egui::TextEdit::singleline(&mut state.path)
+            .hint_text(".in or .obj file, or drop one here")
+            .desired_width(ui.available_width() - 50.0);
+        let entered = ui.add(field).lost_focus() && ui.input(|i| i.key_pressed(egui::Key::Enter));
+        if (ui.button("Load").clicked() || entered) && !state.path.trim().is_empty() {
+            request = Some(ModelSource::parse(state.path.trim()));
+        }
+    });
+    request
+}
+
 /// A path field with Load, a button per primitive, Reload, and what the last load said.
 pub fn section(ui: &mut egui::Ui, world: &mut World) {
     let status = world
         .get_resource::<ModelStatus>()
         .cloned()
         .unwrap_or_default();
-    let mut request = None;
-    {
-        let mut state = world.resource_mut::<PanelState>();
-        // A new model (dropped, picked, reloaded) shows its path in the field.
-        if state.path_generation != status.generation {
-            state.path_generation = status.generation;
-            if let Some(ModelSource::File(path)) = &status.source {
-                state.path = path.display().to_string();
-            }
-        }
-        ui.horizontal(|ui| {
-            let field = egui::TextEdit::singleline(&mut state.path)
-                .hint_text(".in or .obj file, or drop one here")
-                .desired_width(ui.available_width() - 50.0);
-            let entered =
-                ui.add(field).lost_focus() && ui.input(|i| i.key_pressed(egui::Key::Enter));
-            if (ui.button("Load").clicked() || entered) && !state.path.trim().is_empty() {
-                request = Some(ModelSource::parse(state.path.trim()));
-            }
-        });
-    }
+    let mut request = path_field(ui, &mut world.resource_mut::<PanelState>(), &status);
     ui.horizontal_wrapped(|ui| {
-        for kind in PrimitiveKind::ALL {
+        for &kind in PrimitiveKind::ALL {
             if ui.button(kind.name()).clicked() {
                 request = Some(ModelSource::Primitive(kind));
             }

@@ -5,20 +5,7 @@ use std::time::{Duration, Instant};
 use close2gl_gpu::{Gpu, Views};
 use close2gl_ui::ViewStats;
 
-use crate::layout::PixelRect;
-
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum View {
-    Reference,
-    Close2gl,
-}
-
-/// A view and where it goes in its window.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct Placed {
-    pub view: View,
-    pub rect: PixelRect,
-}
+use crate::layout::{Placed, View};
 
 /// Clears `target` to the background and draws `placed` into it. Each view is its own
 /// submission, waited on, so that its time covers the GPU's work as well as the recording;

@@ -1,6 +1,90 @@
-//! Where the views go in a window, in physical pixels.
+//! Where the views go in a window, in physical pixels: pure functions of the window sizes and
+//! the area the panel leaves, so the rules are tested without a window.
 
 use close2gl_core::Viewport;
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum View {
+    Reference,
+    Close2gl,
+}
+
+/// A view and where it goes in its window.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Placed {
+    pub view: View,
+    pub rect: PixelRect,
+}
+
+/// Where each view goes in each window, and the `Viewport` both views share (`None` while there
+/// is no room for them).
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct Placement {
+    /// In the panel's window.
+    pub main: Vec<Placed>,
+    /// In the Close2GL window of the windows layout.
+    pub close2gl: Vec<Placed>,
+    pub viewport: Option<Viewport>,
+}
+
+/// The split layout: the reference view on the left half of `area` (what the panel leaves of the
+/// window), Close2GL on the right half.
+pub fn split(area: PixelRect) -> Placement {
+    let [left, right] = area.halves();
+    if left.is_empty() {
+        return Placement::default();
+    }
+    Placement {
+        main: vec![
+            Placed {
+                view: View::Reference,
+                rect: left,
+            },
+            Placed {
+                view: View::Close2gl,
+                rect: right,
+            },
+        ],
+        close2gl: Vec::new(),
+        viewport: Some(left.size()),
+    }
+}
+
+/// The windows layout: the reference view in `area` of the panel's window, never larger than the
+/// Close2GL window (`width` x `height`), so the two views match even before (or without) the
+/// window manager honouring a resize; Close2GL fills its own window, which sets the viewport.
+pub fn two_windows(area: PixelRect, width: u32, height: u32) -> Placement {
+    let own = PixelRect::whole(width, height);
+    let reference = PixelRect {
+        width: area.width.min(width),
+        height: area.height.min(height),
+        ..area
+    };
+    let main = (!reference.is_empty()).then_some(Placed {
+        view: View::Reference,
+        rect: reference,
+    });
+    let other = (!own.is_empty()).then_some(Placed {
+        view: View::Close2gl,
+        rect: own,
+    });
+    Placement {
+        main: main.into_iter().collect(),
+        close2gl: other.into_iter().collect(),
+        viewport: other.or(main).map(|p| p.rect.size()),
+    }
+}
+
+/// In the windows layout, the size the other window must take when one is resized to `width` x
+/// `height`, so that both views stay equal: the panel's window is the Close2GL window plus the
+/// panel's `panel_width`.
+pub fn matching_size(main_resized: bool, width: u32, height: u32, panel_width: u32) -> (u32, u32) {
+    if main_resized {
+        (width.saturating_sub(panel_width).max(1), height)
+    } else {
+        (width + panel_width, height)
+    }
+}
 
 /// A rectangle of a window in physical pixels, origin top-left.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -112,6 +196,51 @@ mod tests {
         assert!(
             PixelRect::whole(1, 5).halves()[0].is_empty(),
             "one column has no halves"
+        );
+    }
+
+    #[test]
+    fn the_split_layout_shares_the_area_and_needs_two_columns() {
+        let placement = split(PixelRect::whole(991, 720));
+        assert_eq!(placement.main.len(), 2);
+        assert!(placement.close2gl.is_empty());
+        assert_eq!(
+            placement.viewport,
+            Some(Viewport {
+                width: 495,
+                height: 720
+            })
+        );
+        assert_eq!(split(PixelRect::whole(1, 720)), Placement::default());
+    }
+
+    #[test]
+    fn in_two_windows_the_reference_never_outgrows_the_close2gl_window() {
+        let area = PixelRect::whole(700, 800);
+        let placement = two_windows(area, 600, 500);
+        assert_eq!(placement.main[0].rect, PixelRect::whole(600, 500));
+        assert_eq!(placement.close2gl[0].rect, PixelRect::whole(600, 500));
+        assert_eq!(
+            placement.viewport.map(|v| (v.width, v.height)),
+            Some((600, 500))
+        );
+
+        let minimised = two_windows(area, 0, 0);
+        assert!(minimised.close2gl.is_empty());
+        assert_eq!(
+            minimised.viewport, None,
+            "a reference capped to an empty window is empty too"
+        );
+    }
+
+    #[test]
+    fn the_other_window_follows_a_resize_keeping_the_views_equal() {
+        assert_eq!(matching_size(true, 1000, 700, 290), (710, 700));
+        assert_eq!(matching_size(false, 710, 700, 290), (1000, 700));
+        assert_eq!(
+            matching_size(true, 100, 50, 290),
+            (1, 50),
+            "never zero wide"
         );
     }
 }

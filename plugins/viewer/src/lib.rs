@@ -4,30 +4,28 @@
 //! scroll) and dropped files into `ModelRequest`, keeps `Viewport` equal to the Close2GL view's
 //! size, runs one app frame per redraw, and draws both views and the panel. It inserts the `Gpu`
 //! and `Views` resources the GPU plugin's upload systems need, and fills `ViewStats`. Redraws
-//! are on demand (input, held keys, the panel's own animations), so an idle viewer sleeps.
+//! are on demand (input, held keys, the panel's own animations), so an idle viewer sleeps. It
+//! adds the GPU and UI plugins unless the app has them, and needs the input, model and settings
+//! plugins' resources (checked before the windows open). It has no systems: its event loop runs
+//! the app's frames.
 
 mod draw;
 mod gui;
 mod handler;
 pub mod input;
 pub mod layout;
+mod pacing;
+mod present;
+mod routing;
 mod screenshot;
 mod surface;
+mod windows;
 
 use std::path::PathBuf;
 
-use close2gl_core::{App, Plugin};
+pub use close2gl_core::Layout;
+use close2gl_core::{App, InputState, ModelRequest, Plugin, Viewport};
 use winit::event_loop::{ControlFlow, EventLoop};
-
-/// How the two views are laid out.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub enum Layout {
-    /// One window: reference left, Close2GL right, the panel at the side.
-    #[default]
-    Split,
-    /// Two OS windows, "Reference (wgpu)" (with the panel) and "Close2GL".
-    Windows,
-}
 
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct ViewerOptions {
@@ -42,14 +40,17 @@ pub struct ViewerOptions {
     pub exit_after_frames: Option<u32>,
 }
 
-/// Adds the GPU upload systems and the panel's resources, and makes `app.run()` open the
-/// windows and run the event loop until they close.
+/// Adds the GPU upload systems and the panel (unless the app has them already), and makes
+/// `app.run()` open the windows and run the event loop until they close.
 pub struct ViewerPlugin(pub ViewerOptions);
 
 impl Plugin for ViewerPlugin {
     fn build(&self, app: &mut App) {
-        app.add_plugins(close2gl_gpu::GpuPlugin)
-            .add_plugins(close2gl_ui::UiPlugin);
+        app.add_plugin_once(close2gl_gpu::GpuPlugin)
+            .add_plugin_once(close2gl_ui::UiPlugin)
+            .requires::<InputState>("ViewerPlugin", "InputPlugin")
+            .requires::<ModelRequest>("ViewerPlugin", "ModelPlugin")
+            .requires::<Viewport>("ViewerPlugin", "SettingsPlugin");
         let options = self.0.clone();
         app.set_runner(move |app| run(app, options));
     }

@@ -4,6 +4,7 @@
 
 use std::sync::Arc;
 
+use close2gl_gpu::texture::texture_2d;
 use close2gl_gpu::{DEPTH_FORMAT, Gpu};
 use winit::window::Window;
 
@@ -106,20 +107,13 @@ impl WindowSurface {
             return;
         }
         self.surface.configure(&gpu.device, &self.config);
-        let depth = gpu.device.create_texture(&wgpu::TextureDescriptor {
-            label: Some("window depth"),
-            size: wgpu::Extent3d {
-                width: self.config.width,
-                height: self.config.height,
-                depth_or_array_layers: 1,
-            },
-            mip_level_count: 1,
-            sample_count: 1,
-            dimension: wgpu::TextureDimension::D2,
-            format: DEPTH_FORMAT,
-            usage: wgpu::TextureUsages::RENDER_ATTACHMENT,
-            view_formats: &[],
-        });
+        let depth = texture_2d(
+            &gpu.device,
+            "window depth",
+            self.size(),
+            DEPTH_FORMAT,
+            wgpu::TextureUsages::RENDER_ATTACHMENT,
+        );
         self.depth = Some(depth.create_view(&Default::default()));
     }
 

@@ -9,8 +9,9 @@ pub mod raster;
 use std::time::Instant;
 
 use crate::config::Config;
+use close2gl_core::limits::MAX_SEGMENTS;
 use close2gl_core::{
-    Camera, Clipping, Close2glFrame, Mesh, ModelSource, PrimitiveKind, RenderMode,
+    App, Camera, Clipping, Close2glFrame, Mesh, ModelSource, PrimitiveKind, RenderMode,
 };
 use close2gl_pipeline::FastPipeline;
 use serde_json::json;
@@ -91,7 +92,7 @@ fn thread_pool(threads: Option<usize>) -> Result<rayon::ThreadPool, CliError> {
 }
 
 /// The framed scene's mesh and camera.
-fn scene(app: &mut close2gl_core::App) -> Result<(Mesh, Camera), CliError> {
+fn scene(app: &mut App) -> Result<(Mesh, Camera), CliError> {
     let world = app.world_mut();
     let mesh = world.query::<&Mesh>().single(world).ok().cloned();
     let camera = world.query::<&Camera>().single(world).ok().copied();
@@ -134,8 +135,8 @@ fn geometry(args: &BenchArgs, pool: &rayon::ThreadPool) -> Result<serde_json::Va
 
 /// Sphere stacks and slices (slices = 2 · stacks) giving about `triangles` triangles.
 pub fn sphere_grid(triangles: usize) -> (u32, u32) {
-    let stacks = ((triangles as f64 / 4.0).sqrt().round() as u32).clamp(2, 4096);
-    (stacks, (stacks * 2).min(4096))
+    let stacks = ((triangles as f64 / 4.0).sqrt().round() as u32).clamp(2, MAX_SEGMENTS);
+    (stacks, (stacks * 2).min(MAX_SEGMENTS))
 }
 
 /// Runs `f` once to warm up, then `frames` times; the median wall time in milliseconds.

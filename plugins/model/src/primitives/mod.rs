@@ -8,12 +8,9 @@ mod cylinder;
 mod sphere;
 mod torus;
 
+use close2gl_core::limits::MAX_SEGMENTS;
 use close2gl_core::{Mesh, PrimitiveKind, PrimitiveParams};
 use glam::Vec3;
-
-/// The most subdivisions along one direction (the config allows no more): it keeps every mesh
-/// within 32-bit indices and memory.
-const MAX_SEGMENTS: u32 = 4096;
 
 /// Builds `kind` from `params`. Parameters out of range (the config rejects them too) are an
 /// error naming the config key, never a panic or a runaway allocation.

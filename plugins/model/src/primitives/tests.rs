@@ -55,7 +55,7 @@ fn inner_point(kind: PrimitiveKind, p: &PrimitiveParams, at: Vec3) -> Vec3 {
 #[test]
 fn every_primitive_is_valid_named_and_sized_as_the_lecture_says() {
     for p in parameter_sets() {
-        for kind in PrimitiveKind::ALL {
+        for &kind in PrimitiveKind::ALL {
             let mesh = primitive(kind, &p).unwrap();
             mesh.validate().unwrap();
             assert_eq!(mesh.name, kind.name());
@@ -74,7 +74,7 @@ fn every_primitive_is_valid_named_and_sized_as_the_lecture_says() {
 #[test]
 fn every_triangle_is_ccw_seen_from_outside() {
     for p in parameter_sets() {
-        for kind in PrimitiveKind::ALL {
+        for &kind in PrimitiveKind::ALL {
             let mesh = primitive(kind, &p).unwrap();
             for &t in &mesh.triangles {
                 let [a, b, c] = corners(&mesh, t);
@@ -93,7 +93,7 @@ fn every_triangle_is_ccw_seen_from_outside() {
 #[test]
 fn normals_are_unit_outward_and_agree_with_the_winding() {
     for p in parameter_sets() {
-        for kind in PrimitiveKind::ALL {
+        for &kind in PrimitiveKind::ALL {
             let mesh = primitive(kind, &p).unwrap();
             for (&at, &n) in mesh.positions.iter().zip(&mesh.normals) {
                 assert!((n.length() - 1.0).abs() < 1e-5, "{kind:?} {n}");
@@ -115,7 +115,7 @@ fn normals_are_unit_outward_and_agree_with_the_winding() {
 fn every_primitive_is_closed_each_edge_met_once_each_way() {
     let key = |p: Vec3| p.to_array().map(f32::to_bits);
     for p in parameter_sets() {
-        for kind in PrimitiveKind::ALL {
+        for &kind in PrimitiveKind::ALL {
             let mesh = primitive(kind, &p).unwrap();
             let mut edges: HashMap<_, i32> = HashMap::new();
             for &t in &mesh.triangles {

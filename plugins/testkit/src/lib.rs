@@ -1,0 +1,64 @@
+//! What close2gl's test suites share, so that no test file keeps its own copy: meshes built by
+//! hand ([`cube`], [`sphere`]), the world a test starts from ([`world_with`], [`camera`],
+//! [`mesh`]), with feature `gpu` the one headless GPU adapter a test binary uses ([`gpu`]), and
+//! with feature `panel` the egui control panel driven headless ([`panel::Harness`]). Used as a
+//! dev-dependency only.
+
+mod meshes;
+#[cfg(feature = "panel")]
+pub mod panel;
+
+use close2gl_core::{App, Camera, Mesh, RenderSettings, Viewport};
+
+pub use meshes::{cube, sphere};
+
+/// An app whose world has `settings`, `viewport`, one `camera` and one `mesh`: add the plugins
+/// under test, then run frames.
+pub fn world_with(mesh: Mesh, camera: Camera, settings: RenderSettings, viewport: Viewport) -> App {
+    let mut app = App::new();
+    app.insert_resource(settings).insert_resource(viewport);
+    app.world_mut().spawn(camera);
+    app.world_mut().spawn(mesh);
+    app
+}
+
+/// The app's one camera.
+pub fn camera(app: &mut App) -> Camera {
+    let world = app.world_mut();
+    *world
+        .query::<&Camera>()
+        .single(world)
+        .expect("the app has one camera")
+}
+
+/// The app's one camera, to change (which marks it changed).
+pub fn camera_mut(app: &mut App) -> &mut Camera {
+    let world = app.world_mut();
+    world
+        .query::<&mut Camera>()
+        .single_mut(world)
+        .expect("the app has one camera")
+        .into_inner()
+}
+
+/// The app's one mesh.
+pub fn mesh(app: &mut App) -> &Mesh {
+    let world = app.world_mut();
+    world
+        .query::<&Mesh>()
+        .single(world)
+        .expect("the app has one mesh")
+}
+
+/// The headless GPU adapter, made once per test binary (wgpu's handles are cheap to clone). No
+/// adapter is a failure that says what to install, never a silent pass.
+#[cfg(feature = "gpu")]
+pub fn gpu() -> close2gl_gpu::Gpu {
+    use std::sync::OnceLock;
+    static GPU: OnceLock<Result<close2gl_gpu::Gpu, String>> = OnceLock::new();
+    let primary = close2gl_gpu::wgpu::Backends::PRIMARY;
+    match GPU.get_or_init(|| close2gl_gpu::Gpu::headless(primary)) {
+        Ok(gpu) => gpu.clone(),
+        Err(e) => panic!("these tests need a GPU adapter: {e}"),
+    }
+}

@@ -1,0 +1,158 @@
+//! The control panel driven the way a user drives it, without a window: egui runs headless over
+//! a real App (the settings, the Close2GL pipeline and the panel; a triangle and a camera), widgets
+//! are found by their accessibility labels and clicked or set through AccessKit action requests.
+
+use close2gl_core::bevy_ecs::prelude::*;
+use close2gl_core::glam::Vec3;
+use close2gl_core::{
+    App, Camera, CameraActions, CameraSpeeds, Mesh, ModelRequest, ModelSource, ModelStatus,
+    SettingsPlugin, Viewport,
+};
+use egui::accesskit::{Action, ActionData, ActionRequest, Node, NodeId, Role, TreeId};
+
+/// Re-exported for the tests that name widgets' roles and send events.
+pub use egui;
+
+pub struct Harness {
+    pub ctx: egui::Context,
+    pub app: App,
+    nodes: Vec<(NodeId, Node)>,
+    /// What the panel left for the views, in points.
+    pub views: egui::Rect,
+}
+
+impl Harness {
+    /// One triangle 5 units in front of the default camera, wound clockwise as seen from it: a
+    /// back face, culled while backface culling is on.
+    pub fn new() -> Self {
+        let mut app = App::new();
+        app.add_plugins(SettingsPlugin)
+            .add_plugins(close2gl_pipeline::Close2glPlugin)
+            .add_plugins(close2gl_ui::UiPlugin)
+            .init_resource::<CameraActions>()
+            .init_resource::<CameraSpeeds>()
+            .init_resource::<ModelRequest>()
+            .insert_resource(ModelStatus {
+                source: Some(ModelSource::File("models/tri.in".into())),
+                generation: 1,
+                ..ModelStatus::default()
+            })
+            .insert_resource(Viewport {
+                width: 200,
+                height: 100,
+            });
+        app.world_mut().spawn(Camera::default());
+        app.world_mut().spawn(Mesh {
+            name: "tri".into(),
+            positions: vec![
+                Vec3::new(-1.0, -1.0, -5.0),
+                Vec3::new(0.0, 1.0, -5.0),
+                Vec3::new(1.0, -1.0, -5.0),
+            ],
+            normals: vec![Vec3::Z; 3],
+            triangles: vec![[0, 1, 2]],
+        });
+        app.update();
+        let ctx = egui::Context::default();
+        ctx.enable_accesskit();
+        let mut harness = Self {
+            ctx,
+            app,
+            nodes: Vec::new(),
+            views: egui::Rect::NOTHING,
+        };
+        harness.frame(Vec::new());
+        harness
+    }
+
+    /// One panel frame with `events`, then one app frame, as the viewer does.
+    pub fn frame(&mut self, events: Vec<egui::Event>) {
+        let input = egui::RawInput {
+            screen_rect: Some(egui::Rect::from_min_size(
+                egui::Pos2::ZERO,
+                egui::vec2(1280.0, 2400.0),
+            )),
+            events,
+            ..Default::default()
+        };
+        let world = self.app.world_mut();
+        let mut views = egui::Rect::NOTHING;
+        let mut output = self
+            .ctx
+            .run_ui(input, |ui| views = close2gl_ui::show(ui, world));
+        // No renderer here to upload the font atlas to.
+        output.textures_delta.clear();
+        self.views = views;
+        self.nodes = output
+            .platform_output
+            .accesskit_update
+            .map(|update| update.nodes)
+            .unwrap_or_default();
+        self.app.update();
+    }
+
+    /// A node's own label, or else the text of the label beside it (`labelled_by`, as sliders).
+    fn name(&self, node: &Node) -> Option<String> {
+        node.label().map(str::to_string).or_else(|| {
+            let by = node.labelled_by().first()?;
+            let (_, label) = self.nodes.iter().find(|(id, _)| id == by)?;
+            label.label().or(label.value()).map(str::to_string)
+        })
+    }
+
+    pub fn node(&self, role: Role, label: &str) -> NodeId {
+        self.nodes
+            .iter()
+            .find(|(_, node)| node.role() == role && self.name(node).as_deref() == Some(label))
+            .map(|(id, _)| *id)
+            .unwrap_or_else(|| {
+                let known: Vec<_> = self
+                    .nodes
+                    .iter()
+                    .filter_map(|(_, n)| self.name(n).map(|l| format!("{:?} {l:?}", n.role())))
+                    .collect();
+                panic!("no {role:?} labelled {label:?}; the panel has {known:?}")
+            })
+    }
+
+    pub fn act(&mut self, role: Role, label: &str, action: Action, data: Option<ActionData>) {
+        let target_node = self.node(role, label);
+        self.frame(vec![egui::Event::AccessKitActionRequest(ActionRequest {
+            action,
+            target_tree: TreeId::ROOT,
+            target_node,
+            data,
+        })]);
+    }
+
+    pub fn click(&mut self, role: Role, label: &str) {
+        self.act(role, label, Action::Click, None);
+    }
+
+    pub fn set_value(&mut self, role: Role, label: &str, value: f64) {
+        self.act(
+            role,
+            label,
+            Action::SetValue,
+            Some(ActionData::NumericValue(value)),
+        );
+    }
+
+    pub fn world(&mut self) -> &mut World {
+        self.app.world_mut()
+    }
+
+    pub fn camera(&mut self) -> Camera {
+        *self
+            .world()
+            .query::<&Camera>()
+            .single(self.app.world())
+            .expect("the harness has one camera")
+    }
+}
+
+impl Default for Harness {
+    fn default() -> Self {
+        Self::new()
+    }
+}

@@ -1,0 +1,83 @@
+//! Whether an event is the panel's or the camera's, and the camera's events as `InputState`.
+
+use bevy_ecs::world::World;
+use close2gl_core::{InputState, ModelRequest, ModelSource};
+use winit::event::{ElementState, MouseButton, WindowEvent};
+use winit::window::{Window, WindowId};
+
+use crate::gui::Gui;
+use crate::input::InputTracker;
+
+/// What the panel has taken: the keyboard (a text field has focus) and this pointer event (the
+/// pointer is over the panel).
+#[derive(Clone, Copy, Debug, Default)]
+pub struct PanelTook {
+    pub keys: bool,
+    pub pointer: bool,
+}
+
+/// Hands `event` to the panel when it may be the panel's. Key presses reach egui only while a
+/// text field has focus: otherwise egui would move its focus on Tab and click the focused button
+/// on Space, and those keys are the camera's. Only the main window has the panel.
+pub fn offer_to_panel(
+    gui: &mut Gui,
+    window: &Window,
+    is_main: bool,
+    event: &WindowEvent,
+) -> PanelTook {
+    let keys = is_main && gui.ctx.egui_wants_keyboard_input();
+    let camera_key = matches!(event, WindowEvent::KeyboardInput { event, .. }
+        if event.state == ElementState::Pressed && !keys);
+    if !is_main || camera_key {
+        return PanelTook {
+            keys,
+            pointer: false,
+        };
+    }
+    let response = gui.on_event(window, event);
+    if response.repaint {
+        window.request_redraw();
+    }
+    PanelTook {
+        keys,
+        pointer: response.consumed,
+    }
+}
+
+/// Turns what the panel did not take into input for the app: keys, drags and scrolls into
+/// `InputState`, a dropped file into a `ModelRequest`. Returns whether a frame should follow.
+pub fn apply_input(
+    tracker: &mut InputTracker,
+    world: &mut World,
+    window: WindowId,
+    event: WindowEvent,
+    panel: PanelTook,
+) -> bool {
+    let mut input = world.resource_mut::<InputState>();
+    match event {
+        WindowEvent::KeyboardInput { event, .. } => {
+            let pressed = event.state == ElementState::Pressed;
+            if !(pressed && panel.keys) {
+                let (key, logical) = (event.physical_key, &event.logical_key);
+                tracker.key(&mut input, key, logical, pressed, event.repeat);
+            }
+        }
+        WindowEvent::MouseInput {
+            state,
+            button: MouseButton::Left,
+            ..
+        } => tracker.button(state == ElementState::Pressed && !panel.pointer),
+        WindowEvent::CursorMoved { position, .. } => {
+            return tracker.cursor(&mut input, window, position);
+        }
+        WindowEvent::MouseWheel { delta, .. } if !panel.pointer => {
+            tracker.scroll(&mut input, delta);
+        }
+        WindowEvent::DroppedFile(path) => {
+            world.insert_resource(ModelRequest(Some(ModelSource::File(path))));
+        }
+        WindowEvent::Focused(false) => tracker.release_all(&mut input),
+        _ => return false,
+    }
+    true
+}
