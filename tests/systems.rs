@@ -301,7 +301,7 @@ fn each_mode_emits_its_primitives() {
 #[test]
 fn the_raster_system_draws_when_asked_and_when_something_changed() {
     let mut app = app_with(cube(), RenderSettings::default());
-    app.add_plugins(RasterPlugin);
+    app.init_resource::<Lighting>().add_plugins(RasterPlugin);
     let world = app.world_mut();
     let mut camera = world
         .query::<&mut Camera>()

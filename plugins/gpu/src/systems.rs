@@ -14,7 +14,8 @@ use crate::{Gpu, Views};
 /// `Lighting`; the Close2GL 2D buffer from `Close2glFrame`, or the software rasterizer's image
 /// from `SoftwareFrame`. They run once the `Gpu` and `Views` resources exist (inserted by
 /// whoever owns the target), so a window may arrive late. It owns no resource: the model,
-/// settings, Close2GL and raster plugins provide what it reads.
+/// settings and Close2GL plugins provide what it reads, and the raster plugin, when there is
+/// one, the software image.
 pub struct GpuPlugin;
 
 impl Plugin for GpuPlugin {
@@ -23,7 +24,6 @@ impl Plugin for GpuPlugin {
             .requires::<RenderSettings>("GpuPlugin", "SettingsPlugin")
             .requires::<Lighting>("GpuPlugin", "SettingsPlugin")
             .requires::<Close2glFrame>("GpuPlugin", "Close2glPlugin")
-            .requires::<SoftwareFrame>("GpuPlugin", "RasterPlugin")
             .add_systems(
                 Render,
                 (
@@ -78,15 +78,18 @@ fn upload_close2gl(
     }
 }
 
-/// The software rasterizer's image, when it is the one shown and it is new.
+/// The software rasterizer's image, when it is the one shown and it is new. Without the raster
+/// plugin there is no image, and the view stays empty.
 fn upload_software(
     gpu: Res<Gpu>,
-    image: Res<SoftwareFrame>,
+    image: Option<Res<SoftwareFrame>>,
     settings: Res<RenderSettings>,
     mut views: ResMut<Views>,
 ) {
     views.rasterizer = settings.close2gl_raster;
-    if image.is_changed() || views.is_added() {
+    if let Some(image) = image
+        && (image.is_changed() || views.is_added())
+    {
         views.software.update(&gpu.device, &gpu.queue, &image);
     }
 }

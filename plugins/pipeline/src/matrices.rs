@@ -170,12 +170,12 @@ mod tests {
     fn viewport_maps_the_image_plane_corners_to_the_window_corners() {
         let v = viewport(640.0, 480.0);
         assert_eq!(
-            v * Vec4::new(-1.0, 1.0, 0.0, 1.0),
+            v * Vec4::new(-1.0, 1.0, -1.0, 1.0),
             Vec4::new(0.0, 0.0, 0.0, 1.0)
         );
         assert_eq!(
-            v * Vec4::new(1.0, -1.0, 0.0, 1.0),
-            Vec4::new(640.0, 480.0, 0.0, 1.0)
+            v * Vec4::new(1.0, -1.0, 1.0, 1.0),
+            Vec4::new(640.0, 480.0, 1.0, 1.0)
         );
         assert_eq!(
             v * Vec4::new(0.0, 0.0, 0.5, 1.0),

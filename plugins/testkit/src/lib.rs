@@ -8,15 +8,18 @@ mod meshes;
 #[cfg(feature = "panel")]
 pub mod panel;
 
-use close2gl_core::{App, Camera, Mesh, RenderSettings, Viewport};
+use close2gl_core::{App, Camera, Lighting, Mesh, RenderSettings, Viewport};
 
 pub use meshes::{cube, sphere};
 
-/// An app whose world has `settings`, `viewport`, one `camera` and one `mesh`: add the plugins
-/// under test, then run frames.
+/// An app whose world has `settings`, `viewport`, the default lighting, one `camera` and one
+/// `mesh` (what the settings plugin and a loaded model provide): add the plugins under test, then
+/// run frames.
 pub fn world_with(mesh: Mesh, camera: Camera, settings: RenderSettings, viewport: Viewport) -> App {
     let mut app = App::new();
-    app.insert_resource(settings).insert_resource(viewport);
+    app.insert_resource(settings)
+        .insert_resource(viewport)
+        .init_resource::<Lighting>();
     app.world_mut().spawn(camera);
     app.world_mut().spawn(mesh);
     app

@@ -28,6 +28,7 @@ impl Harness {
         let mut app = App::new();
         app.add_plugins(SettingsPlugin)
             .add_plugins(close2gl_pipeline::Close2glPlugin)
+            .add_plugins(close2gl_raster::RasterPlugin)
             .add_plugins(close2gl_ui::UiPlugin)
             .init_resource::<CameraActions>()
             .init_resource::<CameraSpeeds>()
