@@ -3,11 +3,14 @@
 
 use close2gl::camera::CameraPlugin;
 use close2gl::config::Config;
+use std::any::TypeId;
+
+use close2gl::core::bevy_ecs::schedule::{ApplyDeferred, Schedules, SystemSet};
 use close2gl::core::glam::{Vec2, Vec3};
 use close2gl::core::{
     App, Camera, CameraAction, CameraActions, CameraHome, CameraMode, Clipping, Close2glFrame,
-    FrontFace, InputState, Lighting, Mesh, ModelSource, ModelStatus, Rasterizer, RenderMode,
-    RenderSettings, SettingsPlugin, Shading, SoftwareFrame, Viewport,
+    FrameSet, FrontFace, InputState, Lighting, Mesh, ModelSource, ModelStatus, Rasterizer,
+    RenderMode, RenderSettings, SettingsPlugin, Shading, SoftwareFrame, Viewport, frame_schedules,
 };
 use close2gl::input::InputPlugin;
 use close2gl::pipeline::Close2glPlugin;
@@ -399,4 +402,35 @@ fn a_plugin_without_the_resources_it_needs_names_the_plugin_that_provides_them()
     );
     app.add_plugins(CameraPlugin);
     assert_eq!(app.check_requirements(), Ok(()));
+}
+
+#[test]
+fn every_plugins_systems_sit_in_a_frame_set() {
+    let mut app = close2gl::build_app(&Config::default(), Viewport::default()).expect("loads");
+    app.add_plugins(close2gl_gpu::GpuPlugin)
+        .add_plugins(close2gl_ui::UiPlugin);
+    app.update();
+    let schedules = app.world().resource::<Schedules>();
+    let mut checked = 0;
+    for label in frame_schedules() {
+        let schedule = schedules.get(label).expect("a frame schedule");
+        let in_a_set: Vec<_> = FrameSet::ALL
+            .iter()
+            .filter_map(|set| schedule.graph().systems_in_set(set.intern()).ok())
+            .flatten()
+            .collect();
+        for (key, system) in schedule.systems().expect("the schedule has run") {
+            // The sync points bevy inserts between sets are not a plugin's.
+            if system.system_type() == TypeId::of::<ApplyDeferred>() {
+                continue;
+            }
+            assert!(
+                in_a_set.contains(&&key),
+                "{} is in no FrameSet",
+                system.name()
+            );
+            checked += 1;
+        }
+    }
+    assert!(checked >= 6, "only {checked} systems found");
 }

@@ -22,7 +22,8 @@ pub struct Camera {
 }
 
 impl Default for Camera {
-    /// The assignment's initial camera: at the origin, u = x, v = y, n = z, both fields of view 60°.
+    /// The assignment's initial camera: at the origin, u = x, v = y, n = z, both fields of view
+    /// [`DEFAULT_FOV`] (60°).
     fn default() -> Self {
         Self {
             position: Vec3::ZERO,

@@ -18,7 +18,8 @@ use crate::{DEPTH_FORMAT, Gpu, GpuPlugin, Image, Views};
 pub const OFFSCREEN_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rgba8Unorm;
 
 /// Makes an app render offscreen on `gpu`: inserts `Gpu` and `Views` (in [`OFFSCREEN_FORMAT`])
-/// and adds [`GpuPlugin`]. Then call [`render_offscreen`] for each frame wanted.
+/// and adds [`GpuPlugin`] (unless the app has it). Then call [`render_offscreen`] for each frame
+/// wanted.
 pub struct OffscreenPlugin(pub Gpu);
 
 impl Plugin for OffscreenPlugin {

@@ -1,6 +1,6 @@
 //! The model plugin. It owns turning a `ModelSource` into a `Mesh`: the course's `.in` triangle
-//! files (every variant the README's Models section lists), Wavefront `.obj` files through tobj, and
-//! the shading lecture's primitives (box, sphere, torus, cone, cylinder) with exact normals. Its
+//! files (every variant the README's Models section lists), Wavefront `.obj` files through tobj,
+//! and the shading lecture's primitives (box, sphere, torus, cone, cylinder) with exact normals. Its
 //! system reads and takes the `ModelRequest` resource, reads `PrimitiveParams`, replaces the one
 //! `Mesh` component (spawning it if there is none) and writes `ModelStatus`. A load that fails
 //! leaves the previous mesh untouched and only sets `ModelStatus::error`. It owns `ModelRequest`,

@@ -2,8 +2,9 @@
 //! hand-written matrices (modelview M, projection P, viewport V), clipping in homogeneous space,
 //! the perspective division, backface culling, and the `Close2glPlugin` whose system reads the
 //! `Camera` and `Mesh` components and the `RenderSettings` and `Viewport` resources (owned by the
-//! core's `SettingsPlugin`), and writes the `Close2glFrame` resource, which it owns: the 2D vertex buffer in window pixels (which the GPU only draws)
-//! and the stage counts. It depends on no GPU, window or UI crate; glam only holds the numbers.
+//! core's `SettingsPlugin`), and writes the `Close2glFrame` resource, which it owns: the 2D vertex
+//! buffer in window pixels (which the GPU only draws) and the stage counts. It depends on no GPU,
+//! window or UI crate; glam only holds the numbers.
 
 pub mod clip;
 pub mod fast;

@@ -24,27 +24,7 @@ pub fn draw_views(
     }
     for p in placed {
         let start = Instant::now();
-        let rect = p.rect;
-        let set_viewport = |pass: &mut wgpu::RenderPass<'_>| {
-            pass.set_viewport(
-                rect.x as f32,
-                rect.y as f32,
-                rect.width as f32,
-                rect.height as f32,
-                0.0,
-                1.0,
-            );
-        };
-        match p.view {
-            View::Reference => submit(gpu, target, Some(depth), load, |pass| {
-                set_viewport(pass);
-                views.draw_reference(pass);
-            }),
-            View::Close2gl => submit(gpu, target, None, load, |pass| {
-                set_viewport(pass);
-                views.draw_close2gl(pass);
-            }),
-        }
+        draw_view(gpu, views, target, depth, *p, load);
         load = wgpu::LoadOp::Load;
         if let Some(stats) = stats.as_deref_mut() {
             let timer = match p.view {
@@ -53,6 +33,32 @@ pub fn draw_views(
             };
             timer.record(start, start.elapsed());
         }
+    }
+}
+
+/// One view into its rectangle of `target` (the reference with the depth buffer).
+fn draw_view(
+    gpu: &Gpu,
+    views: &Views,
+    target: &wgpu::TextureView,
+    depth: &wgpu::TextureView,
+    placed: Placed,
+    load: wgpu::LoadOp<wgpu::Color>,
+) {
+    let rect = placed.rect;
+    let set_viewport = |pass: &mut wgpu::RenderPass<'_>| {
+        let (x, y) = (rect.x as f32, rect.y as f32);
+        pass.set_viewport(x, y, rect.width as f32, rect.height as f32, 0.0, 1.0);
+    };
+    match placed.view {
+        View::Reference => submit(gpu, target, Some(depth), load, |pass| {
+            set_viewport(pass);
+            views.draw_reference(pass);
+        }),
+        View::Close2gl => submit(gpu, target, None, load, |pass| {
+            set_viewport(pass);
+            views.draw_close2gl(pass);
+        }),
     }
 }
 

@@ -44,21 +44,7 @@ impl WindowSurface {
         format: Option<wgpu::TextureFormat>,
     ) -> Result<Self, String> {
         let caps = surface.get_capabilities(&gpu.adapter);
-        let format = match format {
-            Some(format) if caps.formats.contains(&format) => format,
-            Some(format) => {
-                return Err(format!(
-                    "the second window cannot show {format:?}, the first window's colour format"
-                ));
-            }
-            None => caps
-                .formats
-                .iter()
-                .copied()
-                .find(|f| !f.is_srgb())
-                .or(caps.formats.first().copied())
-                .ok_or("the GPU adapter cannot present to this window")?,
-        };
+        let format = choose_format(&caps, format)?;
         let size = window.inner_size();
         let config = wgpu::SurfaceConfiguration {
             usage: wgpu::TextureUsages::RENDER_ATTACHMENT,
@@ -161,5 +147,26 @@ impl WindowSurface {
         }
         self.missed = true;
         Ok(None)
+    }
+}
+
+/// The format asked for when the surface offers it; with none asked, the first linear one offered
+/// (else the first of any kind).
+fn choose_format(
+    caps: &wgpu::SurfaceCapabilities,
+    wanted: Option<wgpu::TextureFormat>,
+) -> Result<wgpu::TextureFormat, String> {
+    match wanted {
+        Some(format) if caps.formats.contains(&format) => Ok(format),
+        Some(format) => Err(format!(
+            "the second window cannot show {format:?}, the first window's colour format"
+        )),
+        None => caps
+            .formats
+            .iter()
+            .copied()
+            .find(|f| !f.is_srgb())
+            .or(caps.formats.first().copied())
+            .ok_or_else(|| "the GPU adapter cannot present to this window".to_string()),
     }
 }
