@@ -107,9 +107,8 @@ impl SoftwareTimer {
 
     /// The share of the last image's pixels that are not the background.
     fn covered(&self, background: Vec3) -> f64 {
-        let background = close2gl_gpu::parity::to_rgb8(background);
-        let covered = self.image.pixels.iter().filter(|p| p[..3] != background);
-        covered.count() as f64 / self.image.pixels.len().max(1) as f64
+        let covered = crate::commands::stats::covered(&self.image, background);
+        covered as f64 / self.image.pixels.len().max(1) as f64
     }
 }
 
