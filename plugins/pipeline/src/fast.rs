@@ -14,7 +14,7 @@ use rayon::prelude::*;
 
 use crate::clip::Outcode;
 use crate::matrices::ClipTransform;
-use crate::stage::{CUT, Output, RasterOut, Stage, corner, process, to_window_depth};
+use crate::stage::{CUT, Emit, RasterEmit, RasterOut, Stage, corner, process, to_window_depth};
 use crate::tally;
 
 /// Vertices and triangles per parallel task: big enough to amortise scheduling, small enough to
@@ -72,23 +72,21 @@ impl FastPipeline {
                 chunk.vertices.clear();
                 chunk.raster.primitives.clear();
                 chunk.raster.cuts.clear();
-                chunk.counts = StageCounts::default();
-                let mut out = Output {
-                    window: &mut chunk.vertices,
-                    raster: raster.then_some(&mut chunk.raster),
+                let corners = Corners {
+                    positions,
+                    codes,
+                    window,
+                    transform: &transform,
                 };
-                for triangle in triangles {
-                    let [a, b, c] = triangle.map(|i| i as usize);
-                    let fate = process(
-                        *triangle,
-                        [codes[a], codes[b], codes[c]],
-                        [window[a], window[b], window[c]],
-                        || [a, b, c].map(|i| transform.apply(positions[i])),
-                        &stage,
-                        &mut out,
-                    );
-                    tally(&mut chunk.counts, fate);
-                }
+                chunk.counts = if raster {
+                    let mut out = RasterEmit {
+                        window: &mut chunk.vertices,
+                        raster: &mut chunk.raster,
+                    };
+                    corners.process(triangles, &stage, &mut out)
+                } else {
+                    corners.process(triangles, &stage, &mut chunk.vertices)
+                };
             });
 
         // Join the chunks in mesh order. In a steady frame the buffer already has about the
@@ -154,6 +152,36 @@ fn join(chunks: &[Chunk], out: &mut [[f32; 2]]) {
     let (left, right) = chunks.split_at(chunks.len() / 2);
     let (left_out, right_out) = out.split_at_mut(left.iter().map(|c| c.vertices.len()).sum());
     rayon::join(|| join(left, left_out), || join(right, right_out));
+}
+
+/// What the triangle loop reads per corner: positions (for the few triangles clipping cuts),
+/// outcodes and window positions.
+struct Corners<'a> {
+    positions: &'a [Vec3],
+    codes: &'a [Outcode],
+    window: &'a [[f32; 2]],
+    transform: &'a ClipTransform,
+}
+
+impl Corners<'_> {
+    /// Clip, divide, map, cull and emit `triangles` into `out`; their counts.
+    #[inline(always)]
+    fn process(&self, triangles: &[[u32; 3]], stage: &Stage, out: &mut impl Emit) -> StageCounts {
+        let mut counts = StageCounts::default();
+        for triangle in triangles {
+            let [a, b, c] = triangle.map(|i| i as usize);
+            let fate = process(
+                *triangle,
+                [self.codes[a], self.codes[b], self.codes[c]],
+                [self.window[a], self.window[b], self.window[c]],
+                || [a, b, c].map(|i| self.transform.apply(self.positions[i])),
+                stage,
+                out,
+            );
+            tally(&mut counts, fate);
+        }
+        counts
+    }
 }
 
 /// Each mesh vertex as the rasterizer needs it: window position, depth and 1/w (for vertices

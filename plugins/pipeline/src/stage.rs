@@ -87,11 +87,44 @@ pub struct RasterOut {
     pub cuts: Vec<CutVertex>,
 }
 
-/// Where a triangle's primitives go: always the 2D buffer; with the software rasterizer, also
-/// [`RasterOut`].
-pub struct Output<'a> {
+/// Where a triangle's primitives go: the 2D buffer alone (a `Vec` of window positions), or with
+/// the software rasterizer also [`RasterOut`] ([`RasterEmit`]). A trait, so that the 2D path is
+/// compiled on its own and pays nothing for the rasterizer's output.
+pub trait Emit {
+    /// The 2D buffer.
+    fn window(&mut self) -> &mut Vec<[f32; 2]>;
+    /// The rasterizer's share, when it draws.
+    fn raster(&mut self) -> Option<&mut RasterOut>;
+}
+
+impl Emit for Vec<[f32; 2]> {
+    #[inline(always)]
+    fn window(&mut self) -> &mut Vec<[f32; 2]> {
+        self
+    }
+
+    #[inline(always)]
+    fn raster(&mut self) -> Option<&mut RasterOut> {
+        None
+    }
+}
+
+/// The 2D buffer and the rasterizer's share of the output.
+pub struct RasterEmit<'a> {
     pub window: &'a mut Vec<[f32; 2]>,
-    pub raster: Option<&'a mut RasterOut>,
+    pub raster: &'a mut RasterOut,
+}
+
+impl Emit for RasterEmit<'_> {
+    #[inline(always)]
+    fn window(&mut self) -> &mut Vec<[f32; 2]> {
+        self.window
+    }
+
+    #[inline(always)]
+    fn raster(&mut self) -> Option<&mut RasterOut> {
+        Some(self.raster)
+    }
 }
 
 /// Clip, divide, map, cull and emit one triangle (mesh vertices `corners`) into `out`, given its
@@ -105,7 +138,7 @@ pub fn process(
     window: [[f32; 2]; 3],
     clip: impl FnOnce() -> [Vec4; 3],
     stage: &Stage,
-    out: &mut Output<'_>,
+    out: &mut impl Emit,
 ) -> Fate {
     let outside_any = codes[0] | codes[1] | codes[2];
     if outside_any == 0 {
@@ -131,7 +164,7 @@ fn cut(
     clip: [Vec4; 3],
     outside_any: Outcode,
     stage: &Stage,
-    out: &mut Output<'_>,
+    out: &mut impl Emit,
 ) -> Fate {
     let triangle = Polygon::triangle(clip[0], clip[1], clip[2]);
     let piece = clip_polygon(&triangle, outside_any);
@@ -151,10 +184,10 @@ fn cut(
         return Fate::Drawn(emit_points(&points, corners, stage, out));
     }
     let ids = push_cuts(&piece, corners, stage, out);
-    let before = out.window.len();
+    let before = out.window().len();
     let mut emit = |i: usize| {
-        out.window.push(piece_window[i]);
-        if let Some(raster) = out.raster.as_deref_mut() {
+        out.window().push(piece_window[i]);
+        if let Some(raster) = out.raster() {
             raster.primitives.push(ids[i]);
         }
     };
@@ -169,7 +202,7 @@ fn cut(
     for i in (0..piece.len).filter(|&i| piece.original[i]) {
         [i, (i + 1) % piece.len].into_iter().for_each(&mut emit);
     }
-    Fate::Drawn((out.window.len() - before) / 2)
+    Fate::Drawn((out.window().len() - before) / 2)
 }
 
 /// With the rasterizer, every vertex of a cut piece becomes a [`CutVertex`]; returns their
@@ -178,10 +211,10 @@ fn push_cuts(
     piece: &Polygon,
     corners: [u32; 3],
     stage: &Stage,
-    out: &mut Output<'_>,
+    out: &mut impl Emit,
 ) -> [u32; crate::clip::MAX_POLYGON] {
     let mut ids = [0; crate::clip::MAX_POLYGON];
-    if let Some(raster) = out.raster.as_deref_mut() {
+    if let Some(raster) = out.raster() {
         for (i, (p, weights)) in piece.vertices().iter().zip(piece.weights).enumerate() {
             ids[i] = CUT | raster.cuts.len() as u32;
             raster.cuts.push(CutVertex {
@@ -231,26 +264,35 @@ fn is_culled(window: &[[f32; 2]], culling: Option<FrontFace>) -> bool {
     !front_facing || has_no_area(area, longest_edge_squared(window))
 }
 
-/// The corners in the order of the mode's primitives: the triangle, its three edges as lines,
-/// or its three corners as points.
-const SOLID: &[usize] = &[0, 1, 2];
-const EDGES: &[usize] = &[0, 1, 1, 2, 2, 0];
-
+/// The triangle itself, its three edges as lines, or its three corners as points. The solid
+/// case, by far the commonest, copies whole arrays: it runs once per triangle of every frame.
+#[inline(always)]
 fn emit_inside(
     window: &[[f32; 2]; 3],
     corners: [u32; 3],
     mode: RenderMode,
-    out: &mut Output<'_>,
+    out: &mut impl Emit,
 ) -> usize {
-    let (order, primitives) = match mode {
-        RenderMode::Solid => (SOLID, 1),
-        RenderMode::Wireframe => (EDGES, 3),
-        RenderMode::Points => (SOLID, 3),
+    let [a, b, c] = *window;
+    let [ia, ib, ic] = corners;
+    let primitives = match mode {
+        RenderMode::Solid | RenderMode::Points => {
+            out.window().extend_from_slice(window);
+            if let Some(raster) = out.raster() {
+                raster.primitives.extend_from_slice(&corners);
+            }
+            if mode == RenderMode::Solid { 1 } else { 3 }
+        }
+        RenderMode::Wireframe => {
+            out.window().extend_from_slice(&[a, b, b, c, c, a]);
+            if let Some(raster) = out.raster() {
+                raster
+                    .primitives
+                    .extend_from_slice(&[ia, ib, ib, ic, ic, ia]);
+            }
+            3
+        }
     };
-    out.window.extend(order.iter().map(|&i| window[i]));
-    if let Some(raster) = out.raster.as_deref_mut() {
-        raster.primitives.extend(order.iter().map(|&i| corners[i]));
-    }
     primitives
 }
 
@@ -258,19 +300,14 @@ fn emit_inside(
 /// near plane has cut it (`near_cut`): its corners, and the points where an edge comes back in
 /// front of the near plane. Every other plane applies to each point alone (a point outside the
 /// viewport or the depth range is dropped), so no vertex is made on them.
-fn emit_points(
-    near_cut: &Polygon,
-    corners: [u32; 3],
-    stage: &Stage,
-    out: &mut Output<'_>,
-) -> usize {
-    let before = out.window.len();
+fn emit_points(near_cut: &Polygon, corners: [u32; 3], stage: &Stage, out: &mut impl Emit) -> usize {
+    let before = out.window().len();
     for (i, p) in near_cut.vertices().iter().enumerate() {
         // Points made on the near plane are inside it by construction, whatever the rounding.
         if near_cut.original[i] && outcode(*p) & !NEAR == 0 {
             let window = to_window_depth(*p, &stage.viewport);
-            out.window.push([window[0], window[1]]);
-            if let Some(raster) = out.raster.as_deref_mut() {
+            out.window().push([window[0], window[1]]);
+            if let Some(raster) = out.raster() {
                 raster.primitives.push(CUT | raster.cuts.len() as u32);
                 raster.cuts.push(CutVertex {
                     window,
@@ -280,7 +317,7 @@ fn emit_points(
             }
         }
     }
-    out.window.len() - before
+    out.window().len() - before
 }
 
 #[cfg(test)]

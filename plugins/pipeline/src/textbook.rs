@@ -5,7 +5,7 @@
 use close2gl_core::{Camera, Close2glFrame, Mesh, RenderSettings, Viewport};
 
 use crate::matrices::ClipTransform;
-use crate::stage::{Output, Stage, corner, process};
+use crate::stage::{Stage, corner, process};
 use crate::tally;
 
 /// The 2D buffer and counts for this camera, mesh, settings and viewport, in a new frame (the
@@ -28,11 +28,14 @@ pub fn run(
         let corners = clip.map(|c| corner(c, &stage));
         let codes = corners.map(|(code, _)| code);
         let window = corners.map(|(_, window)| window);
-        let mut out = Output {
-            window: &mut frame.vertices,
-            raster: None,
-        };
-        let fate = process(*triangle, codes, window, || clip, &stage, &mut out);
+        let fate = process(
+            *triangle,
+            codes,
+            window,
+            || clip,
+            &stage,
+            &mut frame.vertices,
+        );
         tally(&mut frame.counts, fate);
     }
     frame
