@@ -275,7 +275,7 @@ fn emit_inside(
 ) -> usize {
     let [a, b, c] = *window;
     let [ia, ib, ic] = corners;
-    let primitives = match mode {
+    match mode {
         RenderMode::Solid | RenderMode::Points => {
             out.window().extend_from_slice(window);
             if let Some(raster) = out.raster() {
@@ -292,8 +292,7 @@ fn emit_inside(
             }
             3
         }
-    };
-    primitives
+    }
 }
 
 /// In point mode, a GPU draws the vertices that start one of the triangle's own edges once the
