@@ -228,6 +228,7 @@ fn triangle_through_the_near_plane(clipping: Clipping) -> Close2glFrame {
             Vec3::new(0.0, 0.1, 5.0),
         ],
         normals: vec![Vec3::Y; 3],
+        uvs: Vec::new(),
         triangles: vec![[0, 1, 2]],
     };
     let settings = RenderSettings {

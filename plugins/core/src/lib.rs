@@ -21,6 +21,7 @@ mod model;
 mod schedule;
 mod settings;
 mod settings_plugin;
+mod texture;
 
 pub use app::{App, Plugin};
 pub use camera::{
@@ -37,9 +38,10 @@ pub use model::{ModelRequest, ModelSource, ModelStatus, PrimitiveKind, Primitive
 pub use named::NamedEnum;
 pub use schedule::{FrameSet, PostUpdate, PreUpdate, Render, Startup, Update, frame_schedules};
 pub use settings::{
-    Clipping, FrontFace, Lighting, Rasterizer, RenderMode, RenderSettings, Shading,
+    Clipping, FrontFace, Lighting, Rasterizer, RenderMode, RenderSettings, Shading, TextureFilter,
 };
 pub use settings_plugin::SettingsPlugin;
+pub use texture::{Image8, Texture, checkerboard};
 
 /// Re-exported so that plugin authors need only this crate to write systems.
 pub use bevy_ecs;

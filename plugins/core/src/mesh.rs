@@ -1,20 +1,23 @@
 use bevy_ecs::prelude::*;
-use glam::Vec3;
+use glam::{Vec2, Vec3};
 
 /// An indexed triangle mesh in world coordinates (the file's own coordinates: framing moves the
-/// camera, never the model). `normals[i]` belongs to `positions[i]`; each triangle lists three
-/// vertex indices in the file's winding.
+/// camera, never the model). `normals[i]` and `uvs[i]` belong to `positions[i]`; each triangle
+/// lists three vertex indices in the file's winding.
 #[derive(Component, Clone, Debug, Default, PartialEq)]
 pub struct Mesh {
     pub name: String,
     pub positions: Vec<Vec3>,
     pub normals: Vec<Vec3>,
+    /// Texture coordinates (s, t), one per position, or none for a model without them. t grows
+    /// upwards in the image, as in OpenGL: (0, 0) is the image's bottom-left corner.
+    pub uvs: Vec<Vec2>,
     pub triangles: Vec<[u32; 3]>,
 }
 
 impl Mesh {
     /// Checks the invariants every consumer relies on: at least one triangle, indices in range,
-    /// one normal per position, every number finite.
+    /// one normal (and none or one texture coordinate) per position, every number finite.
     pub fn validate(&self) -> Result<(), String> {
         if self.triangles.is_empty() {
             return Err("the mesh has no triangles".into());
@@ -31,6 +34,16 @@ impl Mesh {
         }
         if let Some(p) = self.normals.iter().position(|n| !n.is_finite()) {
             return Err(format!("normal {p} is not finite"));
+        }
+        if !self.uvs.is_empty() && self.uvs.len() != self.positions.len() {
+            return Err(format!(
+                "{} texture coordinates for {} positions",
+                self.uvs.len(),
+                self.positions.len()
+            ));
+        }
+        if let Some(p) = self.uvs.iter().position(|uv| !uv.is_finite()) {
+            return Err(format!("texture coordinate {p} is not finite"));
         }
         let count = self.positions.len() as u32;
         if let Some(t) = self

@@ -28,6 +28,18 @@ named_enum!(
     }
 );
 named_enum!(
+    /// How a texture is sampled between and across its texels (OpenGL's min/mag filters).
+    TextureFilter {
+        /// The texel the point falls in (GL_NEAREST), from the full-size image.
+        Nearest = "nearest",
+        /// The four nearest texels, weighted (GL_LINEAR), from the full-size image.
+        Bilinear = "bilinear",
+        /// Bilinear in the two mipmap levels whose texel size brackets the pixel's footprint,
+        /// blended (GL_LINEAR_MIPMAP_LINEAR).
+        Trilinear = "trilinear"
+    }
+);
+named_enum!(
     /// The lighting of both views (with the GPU rasterizer, Close2GL's view stays flat colour).
     Shading {
         None = "none",
@@ -51,6 +63,10 @@ pub struct RenderSettings {
     pub background: Vec3,
     /// Who draws the Close2GL view's pixels.
     pub close2gl_raster: Rasterizer,
+    /// Whether a model with texture coordinates is textured (the texture modulates the shaded
+    /// colour).
+    pub texture: bool,
+    pub texture_filter: TextureFilter,
 }
 
 impl Default for RenderSettings {
@@ -64,6 +80,8 @@ impl Default for RenderSettings {
             shading: Shading::None,
             background: Vec3::new(0.08, 0.08, 0.1),
             close2gl_raster: Rasterizer::Gpu,
+            texture: true,
+            texture_filter: TextureFilter::Trilinear,
         }
     }
 }

@@ -382,6 +382,7 @@ mod tests {
             name: "sliver".into(),
             positions: corners.to_vec(),
             normals: vec![Vec3::Z; 3],
+            uvs: Vec::new(),
             triangles: vec![[0, 1, 2]],
         };
         let camera = Camera {

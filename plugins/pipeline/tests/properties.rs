@@ -28,6 +28,7 @@ fn mesh(max_triangles: usize) -> impl Strategy<Value = Mesh> {
                 name: "random".into(),
                 normals: vec![Vec3::Z; positions.len()],
                 positions,
+                uvs: Vec::new(),
                 triangles,
             })
     })

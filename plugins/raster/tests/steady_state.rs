@@ -79,6 +79,7 @@ fn grid(n: u32) -> Mesh {
         name: "grid".into(),
         normals: vec![Vec3::Y; positions.len()],
         positions,
+        uvs: Vec::new(),
         triangles,
     }
 }

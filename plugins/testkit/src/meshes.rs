@@ -32,6 +32,7 @@ pub fn cube() -> Mesh {
         name: "cube".into(),
         normals: positions.clone(),
         positions,
+        uvs: Vec::new(),
         triangles,
     }
 }

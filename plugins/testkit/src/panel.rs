@@ -51,6 +51,7 @@ impl Harness {
                 Vec3::new(1.0, -1.0, -5.0),
             ],
             normals: vec![Vec3::Z; 3],
+            uvs: Vec::new(),
             triangles: vec![[0, 1, 2]],
         });
         app.update();
