@@ -3,7 +3,7 @@
 //! is tolerated (runs of spaces, `\r\n`, blank lines, any keyword case, a missing final newline);
 //! content is not (every number finite, every record complete, material indices in range).
 
-use glam::Vec3;
+use glam::{Vec2, Vec3};
 
 use crate::diagnostics::expected;
 use crate::mesh_builder::MeshBuilder;
@@ -266,10 +266,12 @@ impl VertexLayout {
     }
 }
 
-/// One triangle as the file gives it: corners in file winding and the face normal.
+/// One triangle as the file gives it: corners in file winding, their texture coordinates when
+/// the records carry `s t`, and the face normal.
 struct FileTriangle {
     positions: [Vec3; 3],
     normals: [Vec3; 3],
+    uvs: [Option<Vec2>; 3],
     face_normal: Vec3,
 }
 
@@ -277,6 +279,7 @@ impl VertexLayout {
     fn triangle(&self, records: &mut Records) -> Result<FileTriangle, String> {
         let mut positions = [Vec3::ZERO; 3];
         let mut normals = [Vec3::ZERO; 3];
+        let mut uvs = [None; 3];
         for (k, (tag, what)) in VERTEX_TAGS.iter().zip(&self.forms).enumerate() {
             let (record, v) = records.numbers(&[tag], self.counts, what)?;
             let material = v[6];
@@ -292,11 +295,13 @@ impl VertexLayout {
             }
             positions[k] = Vec3::new(v[0], v[1], v[2]);
             normals[k] = Vec3::new(v[3], v[4], v[5]);
+            uvs[k] = (v.len() == 9).then(|| Vec2::new(v[7], v[8]));
         }
         let (_, n) = records.numbers(&["face", "normal"], &[3], "face normal nx ny nz")?;
         Ok(FileTriangle {
             positions,
             normals,
+            uvs,
             face_normal: Vec3::new(n[0], n[1], n[2]),
         })
     }
@@ -332,7 +337,7 @@ impl Orientation {
             }
             // Only a zero-area triangle with no usable normal gets here: it has no side to
             // show, so any unit vector will do.
-            *corner = builder.vertex(t.positions[k], normal.unwrap_or(Vec3::Z))?;
+            *corner = builder.vertex(t.positions[k], normal.unwrap_or(Vec3::Z), t.uvs[k])?;
         }
         builder.triangle(corners);
         Ok(())

@@ -4,7 +4,7 @@
 
 use std::collections::HashMap;
 
-use glam::Vec3;
+use glam::{Vec2, Vec3};
 
 use crate::diagnostics::expected;
 use crate::mesh_builder::MeshBuilder;
@@ -15,6 +15,7 @@ use crate::{LoadedModel, file_stem};
 struct Corner {
     position: Vec3,
     normal: Option<Vec3>,
+    uv: Option<Vec2>,
 }
 
 /// The triangles of one tobj object, corner by corner.
@@ -24,10 +25,14 @@ fn corners(mesh: &tobj::Mesh) -> impl Iterator<Item = [Corner; 3]> + '_ {
     let has_normals = mesh.normals.len() == mesh.positions.len();
     let normal =
         move |i: u32| has_normals.then(|| Vec3::from_slice(&mesh.normals[3 * i as usize..]));
+    // The same for texture coordinates (`vt`).
+    let has_uvs = mesh.texcoords.len() / 2 == mesh.positions.len() / 3;
+    let uv = move |i: u32| has_uvs.then(|| Vec2::from_slice(&mesh.texcoords[2 * i as usize..]));
     mesh.indices.chunks_exact(3).map(move |t| {
         [t[0], t[1], t[2]].map(|i| Corner {
             position: position(i),
             normal: normal(i),
+            uv: uv(i),
         })
     })
 }
@@ -61,7 +66,7 @@ pub fn parse_obj(text: &str, label: &str) -> Result<LoadedModel, String> {
                 .and_then(Vec3::try_normalize)
                 .or_else(|| smooth.get(&position_key(c.position)).copied())
                 .unwrap_or(Vec3::Z);
-            corners[k] = builder.vertex(c.position, normal)?;
+            corners[k] = builder.vertex(c.position, normal, c.uv)?;
         }
         builder.triangle(corners);
     }

@@ -92,6 +92,26 @@ fn the_cube_is_the_specs_two_unit_cube_at_z_minus_two_to_minus_four() {
 }
 
 #[test]
+fn the_textured_cube_is_the_cube_with_the_whole_texture_on_every_side() {
+    let (plain, textured) = (asset("cube.in").mesh, asset("textured_cube.in").mesh);
+    let geometry = |m: &Mesh| -> Vec<[Vec3; 3]> {
+        m.triangles.iter().map(|&t| corners(m, t)).collect()
+    };
+    assert_eq!(geometry(&plain), geometry(&textured));
+    assert_eq!(textured.uvs.len(), textured.positions.len());
+    for pair in textured.triangles.chunks(2) {
+        let mut side: Vec<[i32; 2]> = pair
+            .iter()
+            .flatten()
+            .map(|&i| (textured.uvs[i as usize] * 1.0).as_ivec2().to_array())
+            .collect();
+        side.sort();
+        side.dedup();
+        assert_eq!(side, vec![[0, 0], [0, 1], [1, 0], [1, 1]], "a side's corners");
+    }
+}
+
+#[test]
 fn the_far_away_model_is_1200_units_across_around_its_centre() {
     let text = std::fs::read_to_string(
         Path::new(env!("CARGO_MANIFEST_DIR")).join("../../assets/far_away.in"),

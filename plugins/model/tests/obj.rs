@@ -82,8 +82,8 @@ fn all_objects_are_merged_into_one_mesh() {
 
 #[test]
 fn texture_seams_do_not_split_smooth_normals() {
-    // The same corner used with two texture coordinates stays two vertices to tobj, but both
-    // get the normal of the whole fold.
+    // The same corner used with two texture coordinates stays two vertices (one per texture
+    // coordinate), but both get the normal of the whole fold.
     let text = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nvt 0 0\nvt 1 1\n\
                 f 1/1 2/1 3/1\nf 1/2 3/2 4/2\n";
     let mesh = parse_obj(text, "t.obj").unwrap().mesh;
@@ -94,7 +94,9 @@ fn texture_seams_do_not_split_smooth_normals() {
         .filter(|(p, _)| **p == Vec3::ZERO)
         .map(|(_, &n)| n)
         .collect();
-    assert_eq!(at_origin.len(), 1, "same position and normal: one vertex");
+    assert_eq!(at_origin.len(), 2, "one vertex per texture coordinate");
+    assert_eq!(at_origin[0], at_origin[1], "and one normal for both");
+    assert_eq!(mesh.uvs.len(), mesh.positions.len());
 }
 
 #[test]
