@@ -51,6 +51,8 @@ pub struct RasterVertex {
     pub window: [f32; 4],
     pub eye: [f32; 3],
     pub normal: [f32; 3],
+    /// Texture coordinates (s, t); (0, 0) for a model without them.
+    pub uv: [f32; 2],
 }
 
 /// A vertex that clipping made: its window position, and where it lies in the triangle it was
@@ -71,6 +73,8 @@ pub struct RasterGeometry {
     pub cuts: Vec<CutVertex>,
     /// One index per point, two per line, three per triangle (the frame's topology).
     pub primitives: Vec<u32>,
+    /// Whether the mesh has texture coordinates.
+    pub textured: bool,
 }
 
 /// The Close2GL pipeline's output: 2D positions in window pixels (origin top-left, y down), ready

@@ -34,7 +34,9 @@ pub use frame::{
 pub use input::{InputBindings, InputState};
 pub use layout::Layout;
 pub use mesh::Mesh;
-pub use model::{ModelRequest, ModelSource, ModelStatus, PrimitiveKind, PrimitiveParams};
+pub use model::{
+    ModelRequest, ModelSource, ModelStatus, PrimitiveKind, PrimitiveParams, TextureRequest,
+};
 pub use named::NamedEnum;
 pub use schedule::{FrameSet, PostUpdate, PreUpdate, Render, Startup, Update, frame_schedules};
 pub use settings::{

@@ -72,6 +72,12 @@ impl ModelSource {
     }
 }
 
+/// Set it to ask the model plugin for a texture image (a PNG or JPEG file); the plugin takes it
+/// and replaces [`crate::Texture`], or reports the error in [`ModelStatus`] and leaves the model
+/// untextured.
+#[derive(Resource, Clone, Debug, Default, PartialEq)]
+pub struct TextureRequest(pub Option<PathBuf>);
+
 /// Set it to ask the model plugin for a (re)load; the plugin takes it and reports in
 /// [`ModelStatus`]. A failed load keeps the previous model.
 #[derive(Resource, Clone, Debug, Default, PartialEq)]

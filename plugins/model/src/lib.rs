@@ -4,7 +4,9 @@
 //! system reads and takes the `ModelRequest` resource, reads `PrimitiveParams`, replaces the one
 //! `Mesh` component (spawning it if there is none) and writes `ModelStatus`. A load that fails
 //! leaves the previous mesh untouched and only sets `ModelStatus::error`. It owns `ModelRequest`,
-//! `ModelStatus` and `PrimitiveParams`, and runs in `FrameSet::Load`. Framing the camera on the
+//! `ModelStatus` and `PrimitiveParams`, and runs in `FrameSet::Load`. It owns the model's
+//! `Texture` too (the course's checkerboard until a `TextureRequest` names a PNG or JPEG file;
+//! a file that does not load removes it, so the model shows untextured, and sets the error). Framing the camera on the
 //! new mesh is the camera plugin's job (it watches `Changed<Mesh>`, in `FrameSet::Camera`).
 
 mod diagnostics;
@@ -12,17 +14,20 @@ mod in_format;
 mod mesh_builder;
 mod obj;
 mod primitives;
+mod texture;
 
 use std::path::Path;
 
 use bevy_ecs::prelude::*;
 use close2gl_core::{
-    App, FrameSet, Mesh, ModelRequest, ModelSource, ModelStatus, Plugin, PrimitiveParams, Update,
+    App, FrameSet, Mesh, ModelRequest, ModelSource, ModelStatus, Plugin, PrimitiveParams, Texture,
+    TextureRequest, Update,
 };
 
 pub use in_format::parse_in;
 pub use obj::parse_obj;
 pub use primitives::primitive;
+pub use texture::load_texture;
 
 /// A mesh ready to show, and what the loader noticed but forgave (e.g. a header that lies about
 /// its triangle count).
@@ -82,7 +87,12 @@ impl Plugin for ModelPlugin {
         app.init_resource::<ModelRequest>()
             .init_resource::<ModelStatus>()
             .init_resource::<PrimitiveParams>()
-            .add_systems(Update, load_requested_model.in_set(FrameSet::Load));
+            .init_resource::<TextureRequest>()
+            .init_resource::<Texture>()
+            .add_systems(
+                Update,
+                (load_requested_model, load_requested_texture).in_set(FrameSet::Load),
+            );
     }
 }
 
@@ -114,5 +124,32 @@ pub fn load_requested_model(
             };
         }
         Err(message) => status.error = Some(message),
+    }
+}
+
+/// Serves a pending `TextureRequest`: on success the texture is replaced (a new generation); on
+/// failure it is removed, so that the model shows untextured, and the error is recorded.
+pub fn load_requested_texture(
+    mut commands: Commands,
+    mut request: ResMut<TextureRequest>,
+    texture: Option<Res<Texture>>,
+    mut status: ResMut<ModelStatus>,
+) {
+    let Some(path) = request.0.take() else {
+        return;
+    };
+    match load_texture(&path) {
+        Ok(image) => {
+            let generation = texture.map_or(0, |t| t.generation) + 1;
+            commands.insert_resource(Texture {
+                source: Some(path),
+                image,
+                generation,
+            });
+        }
+        Err(message) => {
+            commands.remove_resource::<Texture>();
+            status.error = Some(message);
+        }
     }
 }

@@ -59,6 +59,7 @@ impl FastPipeline {
 
         if raster {
             raster_vertices(mesh, &transform, &stage, &mut frame.raster.vertices);
+            frame.raster.textured = !mesh.uvs.is_empty();
         }
 
         // Clip, divide, map, cull and emit the triangles, chunk by chunk.
@@ -186,7 +187,7 @@ impl Corners<'_> {
 
 /// Each mesh vertex as the rasterizer needs it: window position, depth and 1/w (for vertices
 /// inside the view volume; the others are only reached through clipping), eye-space position
-/// and normal.
+/// and normal, texture coordinates.
 fn raster_vertices(
     mesh: &Mesh,
     transform: &ClipTransform,
@@ -194,15 +195,19 @@ fn raster_vertices(
     out: &mut Vec<RasterVertex>,
 ) {
     out.resize(mesh.positions.len(), RasterVertex::default());
+    let uvs = &mesh.uvs;
     out.par_chunks_mut(VERTEX_CHUNK)
         .zip(mesh.positions.par_chunks(VERTEX_CHUNK))
         .zip(mesh.normals.par_chunks(VERTEX_CHUNK))
-        .for_each(|((out, positions), normals)| {
-            for ((v, p), n) in out.iter_mut().zip(positions).zip(normals) {
+        .enumerate()
+        .for_each(|(chunk, ((out, positions), normals))| {
+            let first = chunk * VERTEX_CHUNK;
+            for (i, ((v, p), n)) in out.iter_mut().zip(positions).zip(normals).enumerate() {
                 *v = RasterVertex {
                     window: to_window_depth(transform.apply(*p), &stage.viewport),
                     eye: transform.eye(*p).to_array(),
                     normal: transform.eye_normal(*n).to_array(),
+                    uv: uvs.get(first + i).map_or([0.0; 2], |uv| uv.to_array()),
                 };
             }
         });

@@ -24,7 +24,7 @@ impl F8 {
     // Plain loops of a constant count writing an array: the compiler unrolls them and packs the
     // lanes into vector instructions more reliably than it does array::map or from_fn.
     #[inline(always)]
-    fn map(self, f: impl Fn(f32) -> f32) -> F8 {
+    pub fn map(self, f: impl Fn(f32) -> f32) -> F8 {
         let mut out = [0.0; LANES];
         for (o, a) in out.iter_mut().zip(self.0) {
             *o = f(a);

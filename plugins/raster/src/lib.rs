@@ -5,7 +5,9 @@
 //! interpolation; tiled (64×64 bins, each triangle binned once) and drawn in parallel. Its
 //! `RasterPlugin` owns the `SoftwareFrame` image and writes it, in the `Close2gl` set after the
 //! pipeline, when `RenderSettings::close2gl_raster` is `software`; it reads `Close2glFrame`
-//! (the Close2GL plugin's), `Camera`, and `RenderSettings` and `Lighting` (the settings plugin's). Like the
+//! (the Close2GL plugin's), `Camera`, `RenderSettings` and `Lighting` (the settings plugin's),
+//! and the model's `Texture` when there is one. Textures are sampled by its own code, from its
+//! own mipmap chain (nearest, bilinear, trilinear). Like the
 //! pipeline, it knows no GPU, window or UI.
 
 mod bin;
@@ -15,6 +17,7 @@ mod rasterizer;
 mod setup;
 pub mod shading;
 mod target;
+mod texture;
 mod tile;
 
 use std::time::Instant;
@@ -22,7 +25,7 @@ use std::time::Instant;
 use bevy_ecs::prelude::*;
 use close2gl_core::{
     App, Camera, Close2glFrame, FrameSet, Lighting, Plugin, PostUpdate, Rasterizer, RenderSettings,
-    SoftwareFrame,
+    SoftwareFrame, Texture,
 };
 
 pub use rasterizer::SoftwareRasterizer;
@@ -53,16 +56,20 @@ pub fn raster_system(
     frame: Res<Close2glFrame>,
     settings: Res<RenderSettings>,
     lighting: Res<Lighting>,
+    texture: Option<Res<Texture>>,
     mut rasterizer: ResMut<SoftwareRasterizer>,
     mut image: ResMut<SoftwareFrame>,
 ) {
     let wanted = settings.close2gl_raster == Rasterizer::Software;
-    let stale = frame.is_changed() || lighting.is_changed() || settings.is_changed();
+    let new_texture = texture.as_ref().is_some_and(|t| t.is_changed());
+    let stale =
+        frame.is_changed() || lighting.is_changed() || settings.is_changed() || new_texture;
     if !wanted || !stale {
         return;
     }
     let start = Instant::now();
-    rasterizer.draw(&frame, &camera, &settings, &lighting, &mut image);
+    let texture = texture.as_deref();
+    rasterizer.draw(&frame, &camera, &settings, &lighting, texture, &mut image);
     image.raster_ms = start.elapsed().as_secs_f64() * 1e3;
     image.generation += 1;
 }

@@ -4,7 +4,7 @@
 //! the shapes the reference's rasterizer gives lines and points of width and size 1: Vulkan's
 //! default rectangular lines, and points as squares.
 
-use crate::setup::{Corner, FIXED_ONE, Triangle, VARYINGS, setup, snap};
+use crate::setup::{Corner, FIXED_ONE, Triangle, Used, VARYINGS, setup, snap};
 
 /// A vertex as the pipeline and the vertex stage left it.
 #[derive(Clone, Copy, Debug)]
@@ -46,12 +46,12 @@ impl Vertex {
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct SetupParams {
     pub size: [i32; 2],
-    pub varyings: usize,
+    pub used: Used,
 }
 
 pub(crate) fn triangle(v: [Vertex; 3], params: SetupParams) -> Triangle {
     let corners = v.map(|v| v.corner(v.fixed()));
-    setup(corners, params.size, params.varyings)
+    setup(corners, params.size, params.used)
 }
 
 /// A line one pixel wide: the rectangle whose long sides lie half a pixel either side of it and
@@ -92,7 +92,7 @@ pub(crate) fn point(v: Vertex, params: SetupParams) -> [Triangle; 2] {
 
 fn quad(c: [Corner; 4], params: SetupParams) -> [Triangle; 2] {
     [
-        setup([c[0], c[1], c[2]], params.size, params.varyings),
-        setup([c[0], c[2], c[3]], params.size, params.varyings),
+        setup([c[0], c[1], c[2]], params.size, params.used),
+        setup([c[0], c[2], c[3]], params.size, params.used),
     ]
 }

@@ -4,7 +4,7 @@
 
 use bevy_ecs::prelude::Resource;
 use close2gl_core::{
-    Camera, Close2glFrame, Lighting, RenderSettings, Shading, SoftwareFrame, Topology,
+    Camera, Close2glFrame, Lighting, RenderSettings, Shading, SoftwareFrame, Texture, Topology,
 };
 use close2gl_pipeline::matrices::ClipTransform;
 use glam::Vec3;
@@ -12,10 +12,12 @@ use rayon::prelude::*;
 
 use crate::bin::Bins;
 use crate::primitives::{self, SetupParams, Vertex};
-use crate::setup::{Triangle, VARYINGS};
+use crate::setup::{Triangle, Used, VARYINGS};
 use crate::shading::{
-    Flat, Gouraud, Light, Phong, PixelShader, flat_color, pack, varyings_used, vertex_varyings,
+    Colour, Flat, Gouraud, Light, Phong, PixelShader, Shaded, Textured, Untextured, pack,
+    varyings_used, vertex_varyings,
 };
+use crate::texture::Mips;
 use crate::target::{TILE_PIXELS, Target};
 use crate::tile::draw_tile;
 
@@ -29,6 +31,7 @@ pub struct SoftwareRasterizer {
     triangles: Vec<Triangle>,
     bins: Bins,
     target: Target,
+    mips: Mips,
 }
 
 /// A frame's constants.
@@ -36,24 +39,32 @@ struct Frame<'a> {
     geometry: &'a Close2glFrame,
     shading: Shading,
     light: Light,
+    /// Whether the texture applies: asked for, and the mesh has texture coordinates.
+    textured: bool,
 }
 
 impl SoftwareRasterizer {
     /// Draws the pipeline's output `geometry` (which must have been made with the software
-    /// rasterizer on, for `camera`) into `out`.
+    /// rasterizer on, for `camera`) into `out`, textured with `texture` when there is one, the
+    /// settings ask for it and the mesh has texture coordinates.
     pub fn draw(
         &mut self,
         geometry: &Close2glFrame,
         camera: &Camera,
         settings: &RenderSettings,
         lighting: &Lighting,
+        texture: Option<&Texture>,
         out: &mut SoftwareFrame,
     ) {
         let light_eye = ClipTransform::new(camera).eye(lighting.light_position);
+        if let Some(texture) = texture {
+            self.mips.update(texture);
+        }
         let frame = Frame {
             geometry,
             shading: settings.shading,
             light: Light::new(lighting, light_eye, settings.shading),
+            textured: settings.texture && geometry.raster.textured && texture.is_some(),
         };
         let size = geometry.viewport;
         self.target.resize(size.width, size.height);
@@ -61,21 +72,16 @@ impl SoftwareRasterizer {
         self.setup(&frame);
         self.bins.fill(self.target.grid, &self.triangles);
         let background = pack(settings.background);
+        let color = settings.color;
         match settings.shading {
-            Shading::None => self.draw_tiles(background, &Flat(flat_color(settings))),
-            Shading::GouraudAd | Shading::GouraudAds => self.draw_tiles(
-                background,
-                &Gouraud {
-                    color: settings.color,
-                },
-            ),
-            Shading::Phong => self.draw_tiles(
-                background,
-                &Phong {
-                    color: settings.color,
-                    light: frame.light,
-                },
-            ),
+            Shading::None => self.shade_tiles(background, Flat(color), &frame, settings),
+            Shading::GouraudAd | Shading::GouraudAds => {
+                self.shade_tiles(background, Gouraud { color }, &frame, settings)
+            }
+            Shading::Phong => {
+                let light = frame.light;
+                self.shade_tiles(background, Phong { color, light }, &frame, settings)
+            }
         }
         self.target.resolve(&mut out.pixels);
         (out.width, out.height) = (size.width, size.height);
@@ -106,6 +112,7 @@ impl SoftwareRasterizer {
                             light,
                             Vec3::from(v.eye),
                             Vec3::from(v.normal),
+                            v.uv,
                         ),
                     };
                 }
@@ -133,7 +140,10 @@ impl SoftwareRasterizer {
                 geometry.viewport.width as i32,
                 geometry.viewport.height as i32,
             ],
-            varyings: varyings_used(frame.shading),
+            used: Used {
+                shading: varyings_used(frame.shading),
+                textured: frame.textured,
+            },
         };
         let (per_primitive, triangles_per) = match geometry.topology {
             Topology::Triangles => (3, 1),
@@ -175,11 +185,37 @@ impl SoftwareRasterizer {
             });
     }
 
-    /// Every tile, in parallel: cleared, then its bin drawn.
-    fn draw_tiles<S: PixelShader>(&mut self, background: u32, shader: &S) {
-        let target = &mut self.target;
+    /// The tiles drawn with a shading's colour, textured or not.
+    fn shade_tiles<C: Colour>(
+        &mut self,
+        background: u32,
+        colour: C,
+        frame: &Frame<'_>,
+        settings: &RenderSettings,
+    ) {
+        if frame.textured {
+            let sampler = self.mips.sampler(settings.texture_filter);
+            let texturing = Textured(sampler);
+            let shader = Shaded { colour, texturing };
+            draw_tiles(&mut self.target, &self.bins, &self.triangles, background, &shader);
+        } else {
+            let texturing = Untextured;
+            let shader = Shaded { colour, texturing };
+            draw_tiles(&mut self.target, &self.bins, &self.triangles, background, &shader);
+        }
+    }
+}
+
+/// Every tile, in parallel: cleared, then its bin drawn.
+fn draw_tiles<S: PixelShader>(
+    target: &mut Target,
+    bins: &Bins,
+    triangles: &[Triangle],
+    background: u32,
+    shader: &S,
+) {
         let grid = target.grid;
-        let (bins, triangles) = (&self.bins.tiles, &self.triangles);
+        let bins = &bins.tiles;
         target
             .color
             .par_chunks_mut(TILE_PIXELS)
@@ -197,4 +233,3 @@ impl SoftwareRasterizer {
                 );
             });
     }
-}

@@ -12,8 +12,8 @@ pub(crate) const SUBPIXEL_BITS: u32 = 8;
 pub(crate) const FIXED_ONE: i64 = 1 << SUBPIXEL_BITS;
 
 /// How many floats a vertex carries for shading: eye position and normal (Phong), or the
-/// Gouraud intensity in the first three.
-pub(crate) const VARYINGS: usize = 6;
+/// Gouraud intensity in the first three; then the texture coordinates.
+pub(crate) const VARYINGS: usize = 8;
 
 /// A position in window pixels as fixed point, moved by half a pixel so that pixel (x, y) is
 /// sampled at the integer point (x, y) · [`FIXED_ONE`].
@@ -129,9 +129,24 @@ pub(crate) struct Corner {
     pub varyings: [f32; VARYINGS],
 }
 
-/// Sets up the triangle `corners` in a viewport of `size` pixels, with planes for the first
-/// `varyings` varyings (and 1/w when there are any).
-pub(crate) fn setup(mut corners: [Corner; 3], size: [i32; 2], varyings: usize) -> Triangle {
+/// Which varyings get planes: the first `shading` ones, and the texture coordinates (at
+/// `shading::UV`) when `textured`.
+#[derive(Clone, Copy, Debug, Default)]
+pub(crate) struct Used {
+    pub shading: usize,
+    pub textured: bool,
+}
+
+impl Used {
+    fn indices(self) -> impl Iterator<Item = usize> {
+        let uv = crate::shading::UV;
+        (0..self.shading).chain((uv..uv + 2).filter(move |_| self.textured))
+    }
+}
+
+/// Sets up the triangle `corners` in a viewport of `size` pixels, with planes for the varyings
+/// `used` (and 1/w when there are any).
+pub(crate) fn setup(mut corners: [Corner; 3], size: [i32; 2], used: Used) -> Triangle {
     let [a, b, c] = corners.map(|c| c.fixed);
     let det = (a[0] - b[0]) * (c[1] - a[1]) - (a[1] - b[1]) * (c[0] - a[0]);
     if det == 0
@@ -175,10 +190,10 @@ pub(crate) fn setup(mut corners: [Corner; 3], size: [i32; 2], varyings: usize) -
         depth: plane([p0[2], p1[2], p2[2]]),
         ..Triangle::EMPTY
     };
-    if varyings > 0 {
+    if used.shading > 0 || used.textured {
         let inv_w = corners.map(|c| c.window[3]);
         triangle.inv_w = plane(inv_w);
-        for k in 0..varyings {
+        for k in used.indices() {
             let v = [0, 1, 2].map(|i| corners[i].varyings[k] * inv_w[i]);
             triangle.varyings[k] = plane(v);
         }
@@ -307,7 +322,7 @@ mod tests {
                     if random() < 0.5 {
                         t.swap(1, 2);
                     }
-                    let triangle = setup(t.map(|p| corner(p[0], p[1])), size, 0);
+                    let triangle = setup(t.map(|p| corner(p[0], p[1])), size, Used::default());
                     for (x, y) in covered(&triangle) {
                         count[(y * size[0] + x) as usize] += 1;
                     }

@@ -3,11 +3,12 @@
 //! pixel from the interpolated eye position and normal (Phong), and the colour written as an
 //! 8-bit UNORM target stores it (clamped, rounded to nearest).
 
-use close2gl_core::{Lighting, RenderSettings, Shading};
+use close2gl_core::{Lighting, Shading};
 use glam::Vec3;
 
 use crate::lanes::{F8, LANES, V8};
 use crate::setup::{Plane, Triangle, VARYINGS};
+use crate::texture::Sampler;
 
 /// The lighting constants of a frame, with the light in eye space.
 #[derive(Clone, Copy, Debug)]
@@ -100,47 +101,130 @@ fn pack8(rgb: V8) -> [u32; LANES] {
     packed
 }
 
-/// What a vertex carries to the pixels, per shading: nothing (flat colour), the Gouraud
-/// intensity, or the eye position and normal (Phong).
+/// The varyings the shadings use come first; the texture coordinates (s, t) sit here, after
+/// the most any shading uses (Phong's eye position and normal).
+pub const UV: usize = 6;
+
+/// What a vertex carries to the pixels for its shading: nothing (flat colour), the Gouraud
+/// intensity, or the eye position and normal (Phong). The texture coordinates come on top.
 pub fn varyings_used(shading: Shading) -> usize {
     match shading {
         Shading::None => 0,
         Shading::GouraudAd | Shading::GouraudAds => 3,
-        Shading::Phong => VARYINGS,
+        Shading::Phong => UV,
     }
 }
 
-/// The vertex stage: a vertex's varyings from its eye position and normal.
+/// The vertex stage: a vertex's varyings from its eye position, normal and texture coordinates.
 #[inline(always)]
 pub fn vertex_varyings(
     shading: Shading,
     light: &Light,
     eye: Vec3,
     normal: Vec3,
+    uv: [f32; 2],
 ) -> [f32; VARYINGS] {
-    match shading {
+    let mut v = match shading {
         Shading::None => [0.0; VARYINGS],
         Shading::GouraudAd | Shading::GouraudAds => {
             let i = light.illumination(V8::splat(eye), V8::splat(normal));
-            [i.x.0[0], i.y.0[0], i.z.0[0], 0.0, 0.0, 0.0]
+            [i.x.0[0], i.y.0[0], i.z.0[0], 0.0, 0.0, 0.0, 0.0, 0.0]
         }
-        Shading::Phong => [eye.x, eye.y, eye.z, normal.x, normal.y, normal.z],
-    }
+        Shading::Phong => [eye.x, eye.y, eye.z, normal.x, normal.y, normal.z, 0.0, 0.0],
+    };
+    v[UV..UV + 2].copy_from_slice(&uv);
+    v
 }
 
-/// The pixel stage: the colours of eight pixels of a triangle, centred at (x, y). Implementations
-/// are inlined into the row loop (see `tile::shade_row`).
+/// The pixel stage: the colours of eight pixels of a triangle, centred at (x, y). Inlined into
+/// the row loop (see `tile::draw_run`).
 pub(crate) trait PixelShader: Sync {
     fn shade(&self, t: &Triangle, x: F8, y: f32) -> [u32; LANES];
 }
 
-/// The user's colour, unlit.
-pub(crate) struct Flat(pub u32);
+/// A shading's colour at eight pixels before texturing, given w there.
+pub(crate) trait Colour: Sync {
+    fn colour(&self, t: &Triangle, x: F8, y: f32, w: F8) -> V8;
+}
 
-impl PixelShader for Flat {
+/// What the texture does to a colour: nothing, or modulate it by the texel.
+pub(crate) trait Texturing: Sync {
+    fn modulate(&self, colour: V8, t: &Triangle, x: F8, y: f32, w: F8) -> V8;
+}
+
+/// A shading and a texturing, packed as the target stores them.
+pub(crate) struct Shaded<C, T> {
+    pub colour: C,
+    pub texturing: T,
+}
+
+impl<C: Colour, T: Texturing> PixelShader for Shaded<C, T> {
     #[inline(always)]
-    fn shade(&self, _: &Triangle, _: F8, _: f32) -> [u32; LANES] {
-        [self.0; LANES]
+    fn shade(&self, t: &Triangle, x: F8, y: f32) -> [u32; LANES] {
+        // Unused (flat colour, no texture), the division is compiled away.
+        let w = w(t, x, y);
+        let colour = self.colour.colour(t, x, y, w);
+        pack8(self.texturing.modulate(colour, t, x, y, w))
+    }
+}
+
+/// The user's colour, unlit.
+pub(crate) struct Flat(pub Vec3);
+
+impl Colour for Flat {
+    #[inline(always)]
+    fn colour(&self, _: &Triangle, _: F8, _: f32, _: F8) -> V8 {
+        V8::splat(self.0)
+    }
+}
+
+/// No texture.
+pub(crate) struct Untextured;
+
+impl Texturing for Untextured {
+    #[inline(always)]
+    fn modulate(&self, colour: V8, _: &Triangle, _: F8, _: f32, _: F8) -> V8 {
+        colour
+    }
+}
+
+/// The colour times the texel at the pixel's texture coordinates.
+pub(crate) struct Textured<'a>(pub Sampler<'a>);
+
+impl Texturing for Textured<'_> {
+    #[inline(always)]
+    fn modulate(&self, colour: V8, t: &Triangle, x: F8, y: f32, w: F8) -> V8 {
+        let (s, tt) = (at(t, &t.varyings[UV], x, y) * w, at(t, &t.varyings[UV + 1], x, y) * w);
+        let texel = self.0.sample(s, tt, self.lod(t, x, y));
+        V8 {
+            x: colour.x * texel.x,
+            y: colour.y * texel.y,
+            z: colour.z * texel.z,
+        }
+    }
+}
+
+impl Textured<'_> {
+    /// log2 of the pixel's footprint in level-0 texels, from the differences of (s, t) across
+    /// the pixel's 2×2 quad (its top-left pixel to the one right of it and the one below), as a
+    /// GPU takes them: ρ = max(|∂(s,t)/∂x|, |∂(s,t)/∂y|) in texels.
+    #[inline(always)]
+    fn lod(&self, t: &Triangle, x: F8, y: f32) -> F8 {
+        let (width, height) = self.0.size();
+        let quad = |p: F8| p.map(|p| ((p - 0.5) * 0.5).floor() * 2.0 + 0.5);
+        let (qx, qy) = (quad(x), ((y - 0.5) * 0.5).floor() * 2.0 + 0.5);
+        let st = |x: F8, y: f32| {
+            let w = w(t, x, y);
+            (at(t, &t.varyings[UV], x, y) * w, at(t, &t.varyings[UV + 1], x, y) * w)
+        };
+        let (s0, t0) = st(qx, qy);
+        let (sx, tx) = st(qx + F8::splat(1.0), qy);
+        let (sy, ty) = st(qx, qy + 1.0);
+        let length = |ds: F8, dt: F8| {
+            let (ds, dt) = (ds * F8::splat(width), dt * F8::splat(height));
+            (ds * ds + dt * dt).sqrt()
+        };
+        length(sx - s0, tx - t0).max(length(sy - s0, ty - t0)).log2()
     }
 }
 
@@ -173,11 +257,10 @@ pub(crate) struct Gouraud {
     pub color: Vec3,
 }
 
-impl PixelShader for Gouraud {
+impl Colour for Gouraud {
     #[inline(always)]
-    fn shade(&self, t: &Triangle, x: F8, y: f32) -> [u32; LANES] {
-        let light = varying3(t, 0, x, y, w(t, x, y));
-        pack8(multiply(self.color, light))
+    fn colour(&self, t: &Triangle, x: F8, y: f32, w: F8) -> V8 {
+        multiply(self.color, varying3(t, 0, x, y, w))
     }
 }
 
@@ -187,12 +270,11 @@ pub(crate) struct Phong {
     pub light: Light,
 }
 
-impl PixelShader for Phong {
+impl Colour for Phong {
     #[inline(always)]
-    fn shade(&self, t: &Triangle, x: F8, y: f32) -> [u32; LANES] {
-        let w = w(t, x, y);
+    fn colour(&self, t: &Triangle, x: F8, y: f32, w: F8) -> V8 {
         let (eye, normal) = (varying3(t, 0, x, y, w), varying3(t, 3, x, y, w));
-        pack8(multiply(self.color, self.light.illumination(eye, normal)))
+        multiply(self.color, self.light.illumination(eye, normal))
     }
 }
 
@@ -206,10 +288,6 @@ fn multiply(color: Vec3, light: V8) -> V8 {
     }
 }
 
-/// The flat colour of `settings`, packed.
-pub(crate) fn flat_color(settings: &RenderSettings) -> u32 {
-    pack(settings.color)
-}
 
 #[cfg(test)]
 mod tests {

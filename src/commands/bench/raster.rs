@@ -3,7 +3,8 @@
 //! fill rate on a screen of large triangles.
 
 use close2gl_core::{
-    Camera, Close2glFrame, Lighting, Mesh, Rasterizer, RenderSettings, SoftwareFrame, Viewport,
+    Camera, Close2glFrame, Lighting, Mesh, Rasterizer, RenderSettings, SoftwareFrame, Texture,
+    Viewport,
 };
 use close2gl_gpu::{Gpu, OffscreenPlugin, render_offscreen};
 use close2gl_pipeline::FastPipeline;
@@ -22,7 +23,10 @@ pub fn frame(args: &BenchArgs, pool: &rayon::ThreadPool) -> Result<Value, CliErr
     let viewport = viewport(args.size.as_deref(), &config)?;
     let mut app = crate::build_app(&config, viewport).map_err(CliError::Input)?;
     let (mesh, camera) = scene(&mut app)?;
-    let mut software = SoftwareTimer::default();
+    let mut software = SoftwareTimer {
+        texture: app.world().get_resource::<Texture>().cloned(),
+        ..SoftwareTimer::default()
+    };
     let software_ms = pool.install(|| {
         median_ms(args.frames, || {
             software.frame(&mesh, &camera, &config.render, &config.lighting, viewport)
@@ -40,6 +44,8 @@ pub fn frame(args: &BenchArgs, pool: &rayon::ThreadPool) -> Result<Value, CliErr
         "size": [viewport.width, viewport.height],
         "mode": config.render.mode.name(),
         "shading": config.render.shading.name(),
+        "texture": (config.render.texture && !mesh.uvs.is_empty())
+            .then(|| config.render.texture_filter.name()),
         "frames": args.frames,
         "threads": pool.current_num_threads(),
         "software_median_ms": software_ms,
@@ -87,6 +93,8 @@ pub struct SoftwareTimer {
     rasterizer: SoftwareRasterizer,
     geometry: Close2glFrame,
     image: SoftwareFrame,
+    /// The model's texture, if it has one.
+    pub texture: Option<Texture>,
 }
 
 impl SoftwareTimer {
@@ -102,7 +110,14 @@ impl SoftwareTimer {
         self.pipeline
             .run(mesh, camera, settings, viewport, &mut self.geometry);
         self.rasterizer
-            .draw(&self.geometry, camera, settings, lighting, &mut self.image);
+            .draw(
+                &self.geometry,
+                camera,
+                settings,
+                lighting,
+                self.texture.as_ref(),
+                &mut self.image,
+            );
     }
 
     /// The share of the last image's pixels that are not the background.
