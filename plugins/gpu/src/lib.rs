@@ -16,6 +16,7 @@ mod offscreen;
 pub mod parity;
 mod readback;
 mod reference;
+mod reference_texture;
 mod software_view;
 mod systems;
 pub mod texture;
