@@ -137,6 +137,22 @@ struct Vertex {
     uv: [f32; 2],
 }
 
+impl Vertex {
+    fn of(mesh: &Mesh, origin: Vec3) -> Vec<Vertex> {
+        let uv = |i: usize| mesh.uvs.get(i).map_or([0.0; 2], |uv| uv.to_array());
+        mesh.positions
+            .iter()
+            .zip(&mesh.normals)
+            .enumerate()
+            .map(|(i, (p, n))| Vertex {
+                position: (*p - origin).to_array(),
+                normal: n.to_array(),
+                uv: uv(i),
+            })
+            .collect()
+    }
+}
+
 pub(crate) struct Reference {
     shader: wgpu::ShaderModule,
     color_format: wgpu::TextureFormat,
@@ -179,21 +195,9 @@ impl Reference {
             return;
         }
         let origin = mesh.bounding_sphere().0;
-        let uv = |i: usize| mesh.uvs.get(i).map_or([0.0; 2], |uv| uv.to_array());
-        let vertices: Vec<Vertex> = mesh
-            .positions
-            .iter()
-            .zip(&mesh.normals)
-            .enumerate()
-            .map(|(i, (p, n))| Vertex {
-                position: (*p - origin).to_array(),
-                normal: n.to_array(),
-                uv: uv(i),
-            })
-            .collect();
         let vertices = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
             label: Some("reference vertices"),
-            contents: bytemuck::cast_slice(&vertices),
+            contents: bytemuck::cast_slice(&Vertex::of(mesh, origin)),
             usage: wgpu::BufferUsages::VERTEX,
         });
         let has_area = |t: &&[u32; 3]| has_area(t.map(|i| mesh.positions[i as usize]));
