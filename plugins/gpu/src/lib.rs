@@ -2,8 +2,8 @@
 //! mesh drawn from glam's own camera matrices, standing in for OpenGL) and the Close2GL view (the
 //! 2D buffer drawn through a pass-through pipeline, or the software rasterizer's image drawn as
 //! one textured triangle), both held in [`Views`]. [`GpuPlugin`] adds the `Render` systems that
-//! read `Camera`, `Mesh`, `ModelStatus`, `RenderSettings`, `Lighting`, `Close2glFrame` and
-//! `SoftwareFrame` and upload what changed into `Views`; whoever owns the target (a window, or
+//! read `Camera`, `Mesh`, `ModelStatus`, `RenderSettings`, `Lighting`, `Texture`, `Close2glFrame`
+//! and `SoftwareFrame` and upload what changed into `Views`; whoever owns the target (a window, or
 //! [`render_offscreen`]) records the draws. Offscreen rendering, reading
 //! textures back ([`Readback`]), the texture and attachment descriptions every target shares
 //! ([`texture`]), PNG images and the coverage comparison behind `close2gl render` and the parity
@@ -16,6 +16,7 @@ mod offscreen;
 pub mod parity;
 mod readback;
 mod reference;
+mod reference_texture;
 mod software_view;
 mod systems;
 pub mod texture;

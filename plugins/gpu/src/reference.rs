@@ -1,17 +1,21 @@
 //! The reference renderer: the mesh drawn by the GPU from glam's own camera matrices, with depth
-//! test, glPolygonMode-style points / wireframe / solid, culling, and the four shading modes.
+//! test, glPolygonMode-style points / wireframe / solid, culling, the four shading modes, and the
+//! texture modulating the shaded colour.
 
 use std::collections::HashMap;
 
 use bytemuck::{Pod, Zeroable};
 use close2gl_core::limits::has_no_area;
-use close2gl_core::{Camera, FrontFace, Lighting, Mesh, RenderMode, RenderSettings, Shading};
+use close2gl_core::{
+    Camera, FrontFace, Lighting, Mesh, RenderMode, RenderSettings, Shading, Texture, TextureFilter,
+};
 use glam::camera::rh::proj::directx::perspective;
 use glam::camera::rh::view::look_at_mat4;
 use glam::{Mat4, Vec3};
 use wgpu::util::DeviceExt;
 
 use crate::DEPTH_FORMAT;
+use crate::reference_texture::ReferenceBindings;
 
 /// The camera's view and projection from glam's own functions, deliberately independent of
 /// Close2GL's hand-written matrices so that agreement between the views means something. The
@@ -43,12 +47,20 @@ struct Uniforms {
     color: [f32; 4],
     material: [f32; 4],
     attenuation: [f32; 4],
+    /// x: 1 when the texture modulates the colour, else 0.
+    texturing: [f32; 4],
 }
 
 impl Uniforms {
     /// The uniforms for a mesh uploaded relative to `origin` (see [`GpuMesh::origin`]): the
     /// camera and the light are moved by the same amount, so eye space is unchanged.
-    fn new(camera: &Camera, settings: &RenderSettings, lighting: &Lighting, origin: Vec3) -> Self {
+    fn new(
+        camera: &Camera,
+        settings: &RenderSettings,
+        lighting: &Lighting,
+        origin: Vec3,
+        textured: bool,
+    ) -> Self {
         let relative = Camera {
             position: camera.position - origin,
             ..*camera
@@ -66,6 +78,7 @@ impl Uniforms {
             color: settings.color.extend(1.0).to_array(),
             material: [lighting.kd, lighting.ks, lighting.shininess, 0.0],
             attenuation: [c0, c1, c2, 0.0],
+            texturing: [f32::from(u8::from(textured)), 0.0, 0.0, 0.0],
         }
     }
 }
@@ -90,7 +103,8 @@ impl PipelineKey {
     }
 }
 
-/// The mesh on the GPU: positions and normals interleaved, and a u32 index buffer.
+/// The mesh on the GPU: positions, normals and texture coordinates interleaved, and a u32 index
+/// buffer.
 ///
 /// Triangles of (nearly) zero area (repeated or collinear corners, as at a UV sphere's poles,
 /// where sin(π) in f32 leaves the pole's copies 1e-7 apart) come last in the index buffer. They
@@ -109,46 +123,60 @@ struct GpuMesh {
     indices: wgpu::Buffer,
     index_count: u32,
     culled_index_count: u32,
+    /// Whether the mesh came with texture coordinates (without, it is never textured).
+    has_uvs: bool,
     generation: u64,
 }
 
-/// Interleaved vertex: position then normal.
+/// Interleaved vertex: position, normal, texture coordinates ((0, 0) for a mesh without).
 #[repr(C)]
 #[derive(Clone, Copy, Pod, Zeroable)]
 struct Vertex {
     position: [f32; 3],
     normal: [f32; 3],
+    uv: [f32; 2],
+}
+
+impl Vertex {
+    fn of(mesh: &Mesh, origin: Vec3) -> Vec<Vertex> {
+        let uv = |i: usize| mesh.uvs.get(i).map_or([0.0; 2], |uv| uv.to_array());
+        mesh.positions
+            .iter()
+            .zip(&mesh.normals)
+            .enumerate()
+            .map(|(i, (p, n))| Vertex {
+                position: (*p - origin).to_array(),
+                normal: n.to_array(),
+                uv: uv(i),
+            })
+            .collect()
+    }
 }
 
 pub(crate) struct Reference {
     shader: wgpu::ShaderModule,
-    layout: wgpu::PipelineLayout,
     color_format: wgpu::TextureFormat,
     features: wgpu::Features,
-    uniforms: wgpu::Buffer,
-    bind_group: wgpu::BindGroup,
+    bindings: ReferenceBindings,
     /// One pipeline per (shading, polygon mode, culling, front face), made the first time that
     /// combination is drawn: building all 48 up front would cost seconds on a software GPU.
     pipelines: HashMap<PipelineKey, wgpu::RenderPipeline>,
-    current: Option<PipelineKey>,
+    current: Option<(PipelineKey, TextureFilter)>,
     mesh: Option<GpuMesh>,
 }
 
 impl Reference {
-    pub(crate) fn new(device: &wgpu::Device, color_format: wgpu::TextureFormat) -> Self {
+    pub(crate) fn new(
+        device: &wgpu::Device,
+        queue: &wgpu::Queue,
+        color_format: wgpu::TextureFormat,
+    ) -> Self {
         let shader = device.create_shader_module(wgpu::include_wgsl!("reference.wgsl"));
-        let crate::UniformSetup {
-            buffer: uniforms,
-            bind_group,
-            layout,
-        } = crate::UniformSetup::new(device, "reference", size_of::<Uniforms>());
         Self {
             shader,
-            layout,
             color_format,
             features: device.features(),
-            uniforms,
-            bind_group,
+            bindings: ReferenceBindings::new(device, queue, size_of::<Uniforms>()),
             pipelines: HashMap::new(),
             current: None,
             mesh: None,
@@ -167,18 +195,9 @@ impl Reference {
             return;
         }
         let origin = mesh.bounding_sphere().0;
-        let vertices: Vec<Vertex> = mesh
-            .positions
-            .iter()
-            .zip(&mesh.normals)
-            .map(|(p, n)| Vertex {
-                position: (*p - origin).to_array(),
-                normal: n.to_array(),
-            })
-            .collect();
         let vertices = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
             label: Some("reference vertices"),
-            contents: bytemuck::cast_slice(&vertices),
+            contents: bytemuck::cast_slice(&Vertex::of(mesh, origin)),
             usage: wgpu::BufferUsages::VERTEX,
         });
         let has_area = |t: &&[u32; 3]| has_area(t.map(|i| mesh.positions[i as usize]));
@@ -197,8 +216,20 @@ impl Reference {
             indices,
             index_count: triangles.len() as u32 * 3,
             culled_index_count,
+            has_uvs: !mesh.uvs.is_empty(),
             generation,
         });
+    }
+
+    /// Uploads the texture when its generation is not the one on the GPU; `None` (an app
+    /// without a model plugin) draws untextured.
+    pub(crate) fn upload_texture(
+        &mut self,
+        device: &wgpu::Device,
+        queue: &wgpu::Queue,
+        texture: Option<&Texture>,
+    ) {
+        self.bindings.sync(device, queue, texture);
     }
 
     /// Writes the uniforms and makes sure the pipeline for the settings exists.
@@ -210,23 +241,27 @@ impl Reference {
         settings: &RenderSettings,
         lighting: &Lighting,
     ) {
-        let origin = self.mesh.as_ref().map_or(Vec3::ZERO, |m| m.origin);
-        let uniforms = Uniforms::new(camera, settings, lighting, origin);
-        queue.write_buffer(&self.uniforms, 0, bytemuck::bytes_of(&uniforms));
+        let (origin, has_uvs) = self
+            .mesh
+            .as_ref()
+            .map_or((Vec3::ZERO, false), |m| (m.origin, m.has_uvs));
+        let textured = settings.texture && has_uvs && self.bindings.has_texture();
+        let uniforms = Uniforms::new(camera, settings, lighting, origin, textured);
+        queue.write_buffer(self.bindings.uniforms(), 0, bytemuck::bytes_of(&uniforms));
         let key = PipelineKey::new(settings);
         if !self.pipelines.contains_key(&key) {
             let pipeline = self.create_pipeline(device, key);
             self.pipelines.insert(key, pipeline);
         }
-        self.current = Some(key);
+        self.current = Some((key, settings.texture_filter));
     }
 
     pub(crate) fn draw(&self, pass: &mut wgpu::RenderPass<'_>) {
-        let (Some(mesh), Some(key)) = (&self.mesh, self.current) else {
+        let (Some(mesh), Some((key, filter))) = (&self.mesh, self.current) else {
             return;
         };
         pass.set_pipeline(&self.pipelines[&key]);
-        pass.set_bind_group(0, &self.bind_group, &[]);
+        pass.set_bind_group(0, self.bindings.bind_group(filter), &[]);
         pass.set_vertex_buffer(0, mesh.vertices.slice(..));
         pass.set_index_buffer(mesh.indices.slice(..), wgpu::IndexFormat::Uint32);
         let count = if key.backface_culling {
@@ -301,10 +336,10 @@ impl Reference {
             constants: &constants,
             ..Default::default()
         };
-        let attributes = wgpu::vertex_attr_array![0 => Float32x3, 1 => Float32x3];
+        let attributes = wgpu::vertex_attr_array![0 => Float32x3, 1 => Float32x3, 2 => Float32x2];
         device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
             label: Some("reference"),
-            layout: Some(&self.layout),
+            layout: Some(&self.bindings.pipeline_layout),
             vertex: wgpu::VertexState {
                 module: &self.shader,
                 entry_point: Some("vs_main"),

@@ -28,15 +28,22 @@ struct Uniforms {
     material: vec4<f32>,
     // c0, c1, c2 of f_att = min(1 / (c0 + c1 d + c2 d^2), 1).
     attenuation: vec4<f32>,
+    // x: 1 when the texture modulates the colour (texturing on, the mesh has coordinates), else 0.
+    texturing: vec4<f32>,
 }
 
 @group(0) @binding(0) var<uniform> u: Uniforms;
+@group(0) @binding(1) var tex: texture_2d<f32>;
+// Nearest, bilinear or trilinear: the filter is the bind group's, chosen by the host.
+@group(0) @binding(2) var samp: sampler;
 
 struct Varyings {
     @builtin(position) clip: vec4<f32>,
     @location(0) eye: vec3<f32>,
     @location(1) normal: vec3<f32>,
     @location(2) gouraud: vec3<f32>,
+    // Perspective-correct, as every @location varying is by default.
+    @location(3) uv: vec2<f32>,
 }
 
 // Normalises without producing NaN for a zero vector (a degenerate normal, a light on a vertex).
@@ -60,7 +67,11 @@ fn illumination(eye: vec3<f32>, normal: vec3<f32>) -> vec3<f32> {
 }
 
 @vertex
-fn vs_main(@location(0) position: vec3<f32>, @location(1) normal: vec3<f32>) -> Varyings {
+fn vs_main(
+    @location(0) position: vec3<f32>,
+    @location(1) normal: vec3<f32>,
+    @location(2) uv: vec2<f32>,
+) -> Varyings {
     let world = vec4<f32>(position, 1.0);
     let eye = (u.modelview * world).xyz;
     let n = (u.normal_matrix * vec4<f32>(normal, 0.0)).xyz;
@@ -69,6 +80,7 @@ fn vs_main(@location(0) position: vec3<f32>, @location(1) normal: vec3<f32>) -> 
     out.eye = eye;
     out.normal = n;
     out.gouraud = GOURAUD * illumination(eye, n);
+    out.uv = uv;
     return out;
 }
 
@@ -77,5 +89,9 @@ fn fs_main(in: Varyings) -> @location(0) vec4<f32> {
     // lit is 0 for flat colour, 1 for any lighting: the colour is the user's times the light.
     let lit = GOURAUD + PHONG;
     let light = in.gouraud + PHONG * illumination(in.eye, in.normal);
-    return vec4<f32>(u.color.rgb * mix(vec3<f32>(1.0), light, lit), 1.0);
+    // Sampled whatever the flag says: textureSample needs uniform control flow (its implicit
+    // derivatives pick the mip level). t grows upwards as in OpenGL, the texture's rows downwards.
+    let texel = textureSample(tex, samp, vec2<f32>(in.uv.x, 1.0 - in.uv.y)).rgb;
+    let modulation = mix(vec3<f32>(1.0), texel, u.texturing.x);
+    return vec4<f32>(u.color.rgb * mix(vec3<f32>(1.0), light, lit) * modulation, 1.0);
 }

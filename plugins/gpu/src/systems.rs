@@ -3,19 +3,20 @@
 use bevy_ecs::prelude::*;
 use close2gl_core::{
     App, Camera, Close2glFrame, FrameSet, Lighting, Mesh, ModelStatus, Plugin, Render,
-    RenderSettings, SoftwareFrame,
+    RenderSettings, SoftwareFrame, Texture,
 };
 
 use crate::reference::clear_color;
 use crate::{Gpu, Views};
 
 /// Adds the `Render` systems that upload what changed: the mesh again only when
-/// `ModelStatus.generation` changes; the reference uniforms from `Camera`, `RenderSettings` and
-/// `Lighting`; the Close2GL 2D buffer from `Close2glFrame`, or the software rasterizer's image
-/// from `SoftwareFrame`. They run once the `Gpu` and `Views` resources exist (inserted by
-/// whoever owns the target), so a window may arrive late. It owns no resource: the model,
-/// settings and Close2GL plugins provide what it reads, and the raster plugin, when there is
-/// one, the software image.
+/// `ModelStatus.generation` changes, the texture only when `Texture.generation` does; the
+/// reference uniforms from `Camera`, `RenderSettings` and `Lighting`; the Close2GL 2D buffer
+/// from `Close2glFrame`, or the software rasterizer's image from `SoftwareFrame`. They run once
+/// the `Gpu` and `Views` resources exist (inserted by whoever owns the target), so a window may
+/// arrive late. It owns no resource: the model, settings and Close2GL plugins provide what it
+/// reads, the model plugin the texture (without one the reference draws untextured), and the
+/// raster plugin, when there is one, the software image.
 pub struct GpuPlugin;
 
 impl Plugin for GpuPlugin {
@@ -28,6 +29,7 @@ impl Plugin for GpuPlugin {
                 Render,
                 (
                     upload_mesh,
+                    upload_texture,
                     upload_reference,
                     upload_close2gl,
                     upload_software,
@@ -48,6 +50,12 @@ fn upload_mesh(
     views
         .reference
         .upload_mesh(&gpu.device, &mesh, status.generation);
+}
+
+fn upload_texture(gpu: Res<Gpu>, texture: Option<Res<Texture>>, mut views: ResMut<Views>) {
+    views
+        .reference
+        .upload_texture(&gpu.device, &gpu.queue, texture.as_deref());
 }
 
 /// Every frame: the uniforms are a few hundred bytes, cheaper than tracking what moved.

@@ -27,7 +27,7 @@ impl Views {
     /// [`crate::OFFSCREEN_FORMAT`]).
     pub fn new(gpu: &Gpu, color_format: wgpu::TextureFormat) -> Views {
         Views {
-            reference: Reference::new(&gpu.device, color_format),
+            reference: Reference::new(&gpu.device, &gpu.queue, color_format),
             close2gl: Close2glView::new(&gpu.device, color_format),
             software: SoftwareView::new(&gpu.device, color_format),
             rasterizer: Rasterizer::Gpu,

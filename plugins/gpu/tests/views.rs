@@ -3,9 +3,10 @@
 
 use std::path::PathBuf;
 
-use close2gl_core::glam::Vec3;
+use close2gl_core::glam::{Vec2, Vec3};
 use close2gl_core::{
-    App, Camera, FrontFace, Mesh, ModelStatus, RenderMode, RenderSettings, Shading, Viewport,
+    App, Camera, FrontFace, Image8, Mesh, ModelStatus, RenderMode, RenderSettings, Shading,
+    Texture, TextureFilter, Viewport,
 };
 use close2gl_gpu::parity::{Comparison, coverage, diff_image, to_rgb8};
 use close2gl_gpu::{Gpu, OffscreenPlugin, Snapshot, render_offscreen};
@@ -306,4 +307,174 @@ fn without_polygon_modes_the_views_say_what_they_draw_instead() {
             "{mode:?}: the fallback drew {covered} pixels"
         );
     }
+}
+
+/// A rectangle from `corners` (counter-clockwise seen from its front), textured `repeat` times
+/// each way.
+fn quad(corners: [Vec3; 4], repeat: f32) -> Mesh {
+    let normal = (corners[1] - corners[0])
+        .cross(corners[2] - corners[0])
+        .normalize();
+    Mesh {
+        name: "quad".into(),
+        positions: corners.to_vec(),
+        normals: vec![normal; 4],
+        uvs: [(0.0, 0.0), (1.0, 0.0), (1.0, 1.0), (0.0, 1.0)]
+            .map(|(s, t)| Vec2::new(s, t) * repeat)
+            .to_vec(),
+        triangles: vec![[0, 1, 2], [0, 2, 3]],
+    }
+}
+
+/// White, unlit, textured with the course's checkerboard through `filter`.
+fn textured_app(mesh: Mesh, camera: Camera, filter: TextureFilter, viewport: Viewport) -> App {
+    let settings = RenderSettings {
+        color: Vec3::ONE,
+        shading: Shading::None,
+        texture_filter: filter,
+        ..Default::default()
+    };
+    let mut app = app(mesh, camera, settings, viewport);
+    app.init_resource::<Texture>();
+    app
+}
+
+fn head_on_quad() -> App {
+    let corners =
+        [(-1.0, -1.0), (1.0, -1.0), (1.0, 1.0), (-1.0, 1.0)].map(|(x, y)| Vec3::new(x, y, 0.0));
+    textured_app(
+        quad(corners, 1.0),
+        camera_at(Vec3::new(0.0, 0.0, 2.5), Vec3::ZERO),
+        TextureFilter::Nearest,
+        Viewport {
+            width: 64,
+            height: 64,
+        },
+    )
+}
+
+/// How many covered pixels of the reference view are within 2 of grey level `level`.
+fn share_of(snapshot: &Snapshot, level: u8) -> f64 {
+    let colors = colors(snapshot);
+    let near = |p: &&[u8; 4]| p[..3].iter().all(|c| c.abs_diff(level) <= 2);
+    colors.iter().filter(near).count() as f64 / colors.len() as f64
+}
+
+/// The red level of the leftmost covered pixel in the bottom or the top covered row.
+fn left_corner(snapshot: &Snapshot, bottom: bool) -> u8 {
+    let image = &snapshot.reference;
+    let width = image.width as usize;
+    let covered = coverage(image, snapshot.background);
+    let mut indices = (0..covered.len()).filter(|i| covered[*i]);
+    let index = if bottom {
+        indices.next_back()
+    } else {
+        indices.next()
+    };
+    let row = index.expect("the quad is drawn") / width;
+    let column = (0..width).find(|x| covered[row * width + x]);
+    image.pixels[row * width + column.expect("a covered pixel")][0]
+}
+
+#[test]
+fn a_checkerboard_quad_shows_both_squares_and_none_with_texturing_off() {
+    let mut app = head_on_quad();
+    let textured = render_offscreen(&mut app).expect("render");
+    let (white, grey) = (share_of(&textured, 255), share_of(&textured, 48));
+    // (s, t) = (0, 0) is the image's bottom-left corner, whose square is white; the top-left
+    // one is grey. A flipped s or t would swap them.
+    assert_eq!(
+        (left_corner(&textured, true), left_corner(&textured, false)),
+        (255, 48)
+    );
+    assert!(white + grey > 0.99, "white {white}, grey {grey}");
+    assert!((0.4..0.6).contains(&white), "white {white}, grey {grey}");
+    app.world_mut().resource_mut::<RenderSettings>().texture = false;
+    let plain = render_offscreen(&mut app).expect("render");
+    assert_eq!(share_of(&plain, 255), 1.0);
+    assert_eq!(colors(&plain).len(), colors(&textured).len());
+}
+
+#[test]
+fn the_texture_is_uploaded_again_only_when_its_generation_changes() {
+    let mut app = head_on_quad();
+    let first = render_offscreen(&mut app).expect("render");
+    let black = Image8 {
+        width: 2,
+        height: 2,
+        pixels: vec![[0, 0, 0, 255]; 4],
+    };
+    app.world_mut().resource_mut::<Texture>().image = black;
+    let stale = render_offscreen(&mut app).expect("render");
+    assert_eq!(stale.reference, first.reference);
+    app.world_mut().resource_mut::<Texture>().generation += 1;
+    let fresh = render_offscreen(&mut app).expect("render");
+    let background = [
+        fresh.background[0],
+        fresh.background[1],
+        fresh.background[2],
+        255,
+    ];
+    let black = [0, 0, 0, 255];
+    assert!(
+        fresh
+            .reference
+            .pixels
+            .iter()
+            .all(|p| *p == black || *p == background)
+    );
+}
+
+/// A floor 8 wide and 40 deep, its checker squares a quarter unit, seen from half a unit above
+/// it: far away the squares get much smaller than a pixel.
+fn grazing_floor(filter: TextureFilter) -> Snapshot {
+    let corners =
+        [(-4.0, 0.0), (4.0, 0.0), (4.0, -40.0), (-4.0, -40.0)].map(|(x, z)| Vec3::new(x, 0.0, z));
+    let mut app = textured_app(
+        quad(corners, 4.0),
+        camera_at(Vec3::new(0.0, 0.5, 1.0), Vec3::new(0.0, 0.0, -10.0)),
+        filter,
+        Viewport {
+            width: 96,
+            height: 72,
+        },
+    );
+    render_offscreen(&mut app).expect("render")
+}
+
+/// The mean |p(x+1) - p(x)| (red channel) between horizontal neighbours in the far half of the
+/// floor (the upper half of the rows it covers).
+fn far_half_energy(snapshot: &Snapshot) -> f64 {
+    let image = &snapshot.reference;
+    let covered = coverage(image, snapshot.background);
+    let width = image.width as usize;
+    let rows: Vec<usize> = (0..image.height as usize)
+        .filter(|y| covered[y * width..(y + 1) * width].iter().any(|c| *c))
+        .collect();
+    let (mut sum, mut pairs) = (0u64, 0u64);
+    for y in &rows[..rows.len() / 2] {
+        for x in 0..width - 1 {
+            let (a, b) = (y * width + x, y * width + x + 1);
+            if covered[a] && covered[b] {
+                sum += image.pixels[a][0].abs_diff(image.pixels[b][0]) as u64;
+                pairs += 1;
+            }
+        }
+    }
+    sum as f64 / pairs.max(1) as f64
+}
+
+#[test]
+fn the_filters_differ_on_a_grazing_floor_and_trilinear_calms_the_far_half() {
+    let [nearest, bilinear, trilinear] = [
+        TextureFilter::Nearest,
+        TextureFilter::Bilinear,
+        TextureFilter::Trilinear,
+    ]
+    .map(grazing_floor);
+    assert_ne!(nearest.reference, bilinear.reference);
+    assert_ne!(bilinear.reference, trilinear.reference);
+    assert_ne!(nearest.reference, trilinear.reference);
+    let (near, tri) = (far_half_energy(&nearest), far_half_energy(&trilinear));
+    assert!(tri < 0.5 * near, "trilinear {tri}, nearest {near}");
 }
