@@ -27,7 +27,8 @@ pub use close2gl_pipeline as pipeline;
 pub use close2gl_raster as raster;
 
 use close2gl_core::{
-    App, Camera, Framing, ModelRequest, ModelStatus, Plugin, SettingsPlugin, Viewport,
+    App, Camera, Framing, ModelRequest, ModelStatus, Plugin, SettingsPlugin, TextureRequest,
+    Viewport,
 };
 
 use config::Config;
@@ -50,8 +51,8 @@ impl Plugin for DefaultPlugins {
 }
 
 /// Builds the headless app for `config` and runs one frame, in which the model plugin loads the
-/// configured model, the camera frames it and the Close2GL frame is computed. A model that does
-/// not load is an error here, before anything is shown.
+/// configured model (and texture), the camera frames it and the Close2GL frame is computed. A
+/// model or texture that does not load is an error here, before anything is shown.
 pub fn build_app(config: &Config, viewport: Viewport) -> Result<App, String> {
     let mut app = App::new();
     app.insert_resource(config.render)
@@ -66,6 +67,7 @@ pub fn build_app(config: &Config, viewport: Viewport) -> Result<App, String> {
             far: config.camera.far,
         })
         .insert_resource(ModelRequest(Some(config.model.clone())))
+        .insert_resource(TextureRequest(config.texture.clone()))
         .add_plugins(DefaultPlugins);
     app.world_mut().spawn(Camera {
         hfov: config.camera.hfov,

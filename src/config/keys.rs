@@ -25,6 +25,7 @@ pub fn set(
         ("model", "primitive") => {
             c.model = ModelSource::Primitive(named::<PrimitiveKind>(value)?);
         }
+        ("model", "texture") => c.texture = Some(base.join(string(value)?)),
 
         ("camera", "position") => c.camera.position = Some(vec3(value)?),
         ("camera", "target") => c.camera.target = Some(vec3(value)?),
@@ -43,6 +44,8 @@ pub fn set(
         ("render", "clipping") => c.render.clipping = named(value)?,
         ("render", "shading") => c.render.shading = named(value)?,
         ("render", "close2gl_raster") => c.render.close2gl_raster = named(value)?,
+        ("render", "texture") => c.render.texture = boolean(value)?,
+        ("render", "texture_filter") => c.render.texture_filter = named(value)?,
         ("render", "color") => c.render.color = color(value)?,
         ("render", "background") => c.render.background = color(value)?,
 

@@ -42,6 +42,9 @@ pub struct WindowConfig {
 #[derive(Clone, Debug, PartialEq)]
 pub struct Config {
     pub model: ModelSource,
+    /// `[model] texture`: a PNG or JPEG file (relative to the config file) for a model with
+    /// texture coordinates; without it, such a model gets the course's checkerboard.
+    pub texture: Option<PathBuf>,
     pub camera: CameraConfig,
     pub render: RenderSettings,
     pub lighting: Lighting,
@@ -54,6 +57,7 @@ impl Default for Config {
     fn default() -> Self {
         Self {
             model: ModelSource::File(default_model_path()),
+            texture: None,
             camera: CameraConfig {
                 position: None,
                 target: None,

@@ -23,9 +23,9 @@ pub fn load_texture(path: &Path) -> Result<Image8, String> {
     limits.max_alloc = Some(MAX_DECODE_BYTES);
     reader.limits(limits);
     let image = reader.decode().map_err(|e| match e {
-        image::ImageError::Limits(_) => format!(
-            "{label}: too large: a texture is at most {MAX_PIXELS}×{MAX_PIXELS} pixels"
-        ),
+        image::ImageError::Limits(_) => {
+            format!("{label}: too large: a texture is at most {MAX_PIXELS}×{MAX_PIXELS} pixels")
+        }
         image::ImageError::Unsupported(_) => {
             format!("{label}: not a PNG or JPEG image ({e})")
         }

@@ -94,9 +94,8 @@ fn the_cube_is_the_specs_two_unit_cube_at_z_minus_two_to_minus_four() {
 #[test]
 fn the_textured_cube_is_the_cube_with_the_whole_texture_on_every_side() {
     let (plain, textured) = (asset("cube.in").mesh, asset("textured_cube.in").mesh);
-    let geometry = |m: &Mesh| -> Vec<[Vec3; 3]> {
-        m.triangles.iter().map(|&t| corners(m, t)).collect()
-    };
+    let geometry =
+        |m: &Mesh| -> Vec<[Vec3; 3]> { m.triangles.iter().map(|&t| corners(m, t)).collect() };
     assert_eq!(geometry(&plain), geometry(&textured));
     assert_eq!(textured.uvs.len(), textured.positions.len());
     for pair in textured.triangles.chunks(2) {
@@ -107,7 +106,11 @@ fn the_textured_cube_is_the_cube_with_the_whole_texture_on_every_side() {
             .collect();
         side.sort();
         side.dedup();
-        assert_eq!(side, vec![[0, 0], [0, 1], [1, 0], [1, 1]], "a side's corners");
+        assert_eq!(
+            side,
+            vec![[0, 0], [0, 1], [1, 0], [1, 1]],
+            "a side's corners"
+        );
     }
 }
 

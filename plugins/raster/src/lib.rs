@@ -62,8 +62,7 @@ pub fn raster_system(
 ) {
     let wanted = settings.close2gl_raster == Rasterizer::Software;
     let new_texture = texture.as_ref().is_some_and(|t| t.is_changed());
-    let stale =
-        frame.is_changed() || lighting.is_changed() || settings.is_changed() || new_texture;
+    let stale = frame.is_changed() || lighting.is_changed() || settings.is_changed() || new_texture;
     if !wanted || !stale {
         return;
     }

@@ -17,8 +17,8 @@ use crate::shading::{
     Colour, Flat, Gouraud, Light, Phong, PixelShader, Shaded, Textured, Untextured, pack,
     varyings_used, vertex_varyings,
 };
-use crate::texture::Mips;
 use crate::target::{TILE_PIXELS, Target};
+use crate::texture::Mips;
 use crate::tile::draw_tile;
 
 /// Primitives set up per parallel task.
@@ -197,11 +197,23 @@ impl SoftwareRasterizer {
             let sampler = self.mips.sampler(settings.texture_filter);
             let texturing = Textured(sampler);
             let shader = Shaded { colour, texturing };
-            draw_tiles(&mut self.target, &self.bins, &self.triangles, background, &shader);
+            draw_tiles(
+                &mut self.target,
+                &self.bins,
+                &self.triangles,
+                background,
+                &shader,
+            );
         } else {
             let texturing = Untextured;
             let shader = Shaded { colour, texturing };
-            draw_tiles(&mut self.target, &self.bins, &self.triangles, background, &shader);
+            draw_tiles(
+                &mut self.target,
+                &self.bins,
+                &self.triangles,
+                background,
+                &shader,
+            );
         }
     }
 }
@@ -214,22 +226,22 @@ fn draw_tiles<S: PixelShader>(
     background: u32,
     shader: &S,
 ) {
-        let grid = target.grid;
-        let bins = &bins.tiles;
-        target
-            .color
-            .par_chunks_mut(TILE_PIXELS)
-            .zip(target.depth.par_chunks_mut(TILE_PIXELS))
-            .enumerate()
-            .for_each(|(tile, (color, depth))| {
-                draw_tile(
-                    grid.tile_rect(tile),
-                    color,
-                    depth,
-                    background,
-                    &bins[tile],
-                    triangles,
-                    shader,
-                );
-            });
-    }
+    let grid = target.grid;
+    let bins = &bins.tiles;
+    target
+        .color
+        .par_chunks_mut(TILE_PIXELS)
+        .zip(target.depth.par_chunks_mut(TILE_PIXELS))
+        .enumerate()
+        .for_each(|(tile, (color, depth))| {
+            draw_tile(
+                grid.tile_rect(tile),
+                color,
+                depth,
+                background,
+                &bins[tile],
+                triangles,
+                shader,
+            );
+        });
+}

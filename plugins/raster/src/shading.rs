@@ -194,7 +194,10 @@ pub(crate) struct Textured<'a>(pub Sampler<'a>);
 impl Texturing for Textured<'_> {
     #[inline(always)]
     fn modulate(&self, colour: V8, t: &Triangle, x: F8, y: f32, w: F8) -> V8 {
-        let (s, tt) = (at(t, &t.varyings[UV], x, y) * w, at(t, &t.varyings[UV + 1], x, y) * w);
+        let (s, tt) = (
+            at(t, &t.varyings[UV], x, y) * w,
+            at(t, &t.varyings[UV + 1], x, y) * w,
+        );
         let texel = self.0.sample(s, tt, self.lod(t, x, y));
         V8 {
             x: colour.x * texel.x,
@@ -215,7 +218,10 @@ impl Textured<'_> {
         let (qx, qy) = (quad(x), ((y - 0.5) * 0.5).floor() * 2.0 + 0.5);
         let st = |x: F8, y: f32| {
             let w = w(t, x, y);
-            (at(t, &t.varyings[UV], x, y) * w, at(t, &t.varyings[UV + 1], x, y) * w)
+            (
+                at(t, &t.varyings[UV], x, y) * w,
+                at(t, &t.varyings[UV + 1], x, y) * w,
+            )
         };
         let (s0, t0) = st(qx, qy);
         let (sx, tx) = st(qx + F8::splat(1.0), qy);
@@ -224,7 +230,9 @@ impl Textured<'_> {
             let (ds, dt) = (ds * F8::splat(width), dt * F8::splat(height));
             (ds * ds + dt * dt).sqrt()
         };
-        length(sx - s0, tx - t0).max(length(sy - s0, ty - t0)).log2()
+        length(sx - s0, tx - t0)
+            .max(length(sy - s0, ty - t0))
+            .log2()
     }
 }
 
@@ -287,7 +295,6 @@ fn multiply(color: Vec3, light: V8) -> V8 {
         z: F8::splat(color.z) * light.z,
     }
 }
-
 
 #[cfg(test)]
 mod tests {

@@ -65,7 +65,11 @@ impl Sampler<'_> {
     /// (magnified) it is level 0's bilinear.
     fn trilinear(&self, s: f32, t: f32, lod: f32) -> [f32; 3] {
         let top = (self.levels.len() - 1) as f32;
-        let lod = if lod.is_nan() { 0.0 } else { lod.clamp(0.0, top) };
+        let lod = if lod.is_nan() {
+            0.0
+        } else {
+            lod.clamp(0.0, top)
+        };
         let (below, fraction) = (lod.floor(), lod - lod.floor());
         let first = bilinear(&self.levels[below as usize], s, t);
         if fraction == 0.0 {
@@ -108,7 +112,8 @@ fn bilinear(level: &Image8, s: f32, t: f32) -> [f32; 3] {
     let (x, y) = (x - 0.5, y - 0.5);
     let (x0, y0) = (floor(x), floor(y));
     let (fx, fy) = (x - x0 as f32, y - y0 as f32);
-    let [a, b, c, d] = [(0, 0), (1, 0), (0, 1), (1, 1)].map(|(dx, dy)| texel(level, x0 + dx, y0 + dy));
+    let [a, b, c, d] =
+        [(0, 0), (1, 0), (0, 1), (1, 1)].map(|(dx, dy)| texel(level, x0 + dx, y0 + dy));
     std::array::from_fn(|k| {
         let top = a[k] + (b[k] - a[k]) * fx;
         let bottom = c[k] + (d[k] - c[k]) * fx;
@@ -120,7 +125,11 @@ fn bilinear(level: &Image8, s: f32, t: f32) -> [f32; 3] {
 /// texture rather than overflowing (wrapping makes any whole number valid).
 #[inline(always)]
 fn floor(x: f32) -> i64 {
-    if x.is_finite() { x.floor().clamp(-1e15, 1e15) as i64 } else { 0 }
+    if x.is_finite() {
+        x.floor().clamp(-1e15, 1e15) as i64
+    } else {
+        0
+    }
 }
 
 #[cfg(test)]

@@ -109,15 +109,14 @@ impl SoftwareTimer {
     ) {
         self.pipeline
             .run(mesh, camera, settings, viewport, &mut self.geometry);
-        self.rasterizer
-            .draw(
-                &self.geometry,
-                camera,
-                settings,
-                lighting,
-                self.texture.as_ref(),
-                &mut self.image,
-            );
+        self.rasterizer.draw(
+            &self.geometry,
+            camera,
+            settings,
+            lighting,
+            self.texture.as_ref(),
+            &mut self.image,
+        );
     }
 
     /// The share of the last image's pixels that are not the background.
