@@ -12,7 +12,7 @@ use close2gl::config;
 use close2gl::core::glam::{Vec3, Vec4};
 use close2gl::core::{
     App, CameraSpeeds, Clipping, FrontFace, Mesh, ModelStatus, Rasterizer, RenderMode,
-    RenderSettings, Shading, Viewport,
+    RenderSettings, Shading, TextureFilter, Viewport,
 };
 use close2gl_gpu::parity::{ColorComparison, Comparison, coverage, diff_image};
 use close2gl_gpu::{OffscreenPlugin, Snapshot, camera_matrices, render_offscreen};
@@ -775,4 +775,163 @@ fn a_one_degree_drift_between_the_views_fails_the_threshold() {
     let drifted = Comparison::of_images(&before.reference, &after.close2gl, bg);
     assert!(same.coverage_agreement >= 0.999, "{same:?}");
     assert!(drifted.coverage_agreement < 0.99, "{drifted:?}");
+}
+
+/// The share of covered pixels whose colours must agree within 2/255 with a texture: GPUs and
+/// Close2GL round texel positions, filter weights and the level of detail each their own way,
+/// and a checkerboard turns a rounding at a square's edge into a whole colour step.
+fn texture_colour_threshold(filter: TextureFilter) -> f64 {
+    match filter {
+        TextureFilter::Nearest | TextureFilter::Bilinear => 0.97,
+        TextureFilter::Trilinear => 0.95,
+    }
+}
+
+/// Textured models in both views: the bundled textured cube and the box (the whole checkerboard
+/// on each side), each filter, flat and Phong, framed, with the near plane cutting the model and
+/// at a grazing angle where mipmapping matters.
+#[test]
+fn textured_models_agree_with_every_filter() {
+    let cube = format!("{}/assets/textured_cube.in", env!("CARGO_MANIFEST_DIR"));
+    let mut failures = String::new();
+    for (label, model) in [("textured_cube", cube.as_str()), ("box", "box")] {
+        let mut app = scene(model, &["render.close2gl_raster=software"], SIZE);
+        let framed = *camera(&mut app);
+        for pose in ["framed", "near_cut", "grazing"] {
+            *camera(&mut app) = framed;
+            match pose {
+                "near_cut" => {
+                    let (nearest, farthest) = depth_range(&mut app);
+                    camera(&mut app).near = nearest + 0.4 * (farthest - nearest);
+                }
+                "grazing" => graze(&mut app),
+                _ => {}
+            }
+            for filter in TextureFilter::ALL.iter().copied() {
+                for shading in [Shading::None, Shading::Phong] {
+                    let s = settings(&mut app);
+                    (s.texture_filter, s.shading) = (filter, shading);
+                    let snapshot = render_offscreen(&mut app).expect("render");
+                    let c = Comparison::of_images(
+                        &snapshot.reference,
+                        &snapshot.close2gl,
+                        snapshot.background,
+                    );
+                    let case = format!("tex_{label}_{pose}_{}_{}", filter.name(), shading.name());
+                    let colours = texture_colour_threshold(filter);
+                    failures.push_str(&judge(&case, &snapshot, &c, Some(0.9995), colours));
+                }
+            }
+        }
+    }
+    assert!(
+        failures.is_empty(),
+        "the textured views disagree:\n{failures}"
+    );
+}
+
+/// Looks along the model's top from just above it: the top recedes to a sliver, where one pixel
+/// spans many texels.
+fn graze(app: &mut App) {
+    let (centre, radius) = {
+        let world = app.world_mut();
+        let mesh = world.query::<&Mesh>().single(world).expect("a mesh");
+        mesh.bounding_sphere()
+    };
+    let top = mesh_top(app);
+    let eye = Vec3::new(centre.x, top + 0.08 * radius, centre.z + 2.0 * radius);
+    let target = Vec3::new(centre.x, top, centre.z - radius);
+    let c = camera(app);
+    *c = c.looking_at(eye, target, Vec3::Y).expect("a valid pose");
+    c.near = 0.05 * radius;
+}
+
+fn mesh_top(app: &mut App) -> f32 {
+    let world = app.world_mut();
+    let mesh = world.query::<&Mesh>().single(world).expect("a mesh");
+    mesh.bounds().1.y
+}
+
+/// A long floor of repeated checkerboard seen at a grazing angle: with nearest filtering its far
+/// half is moiré, with trilinear filtering it fades to grey in both views. The measurable proxy
+/// is the far half's high-frequency energy (the mean difference between horizontal neighbours);
+/// the images are saved under target/parity/moire/.
+#[test]
+fn trilinear_filtering_leaves_no_moire_on_a_grazing_checkerboard() {
+    let path = parity_dir().join("floor.obj");
+    std::fs::create_dir_all(parity_dir()).expect("create target/parity");
+    let floor = "v -20 0 2\nv 20 0 2\nv 20 0 -120\nv -20 0 -120\n\
+                 vt 0 0\nvt 20 0\nvt 20 60\nvt 0 60\nvn 0 1 0\n\
+                 f 1/1/1 2/2/1 3/3/1\nf 1/1/1 3/3/1 4/4/1\n";
+    std::fs::write(&path, floor).expect("write the floor");
+    let overrides = [
+        "render.close2gl_raster=software",
+        "render.color=[1,1,1]",
+        "camera.position=[0,1,2]",
+        "camera.target=[0,0.6,-10]",
+    ];
+    let size = Viewport {
+        width: 192,
+        height: 144,
+    };
+    let mut app = scene(path.to_str().expect("a UTF-8 path"), &overrides, size);
+    let dir = parity_dir().join("moire");
+    std::fs::create_dir_all(&dir).expect("create target/parity/moire");
+    let mut energy = Vec::new();
+    for filter in [TextureFilter::Nearest, TextureFilter::Trilinear] {
+        settings(&mut app).texture_filter = filter;
+        let snapshot = render_offscreen(&mut app).expect("render");
+        for (view, image) in [
+            ("reference", &snapshot.reference),
+            ("close2gl", &snapshot.close2gl),
+        ] {
+            let name = format!("{view}_{}.png", filter.name());
+            image
+                .write_png(&dir.join(name))
+                .expect("write a moire image");
+            energy.push(far_half_energy(image, snapshot.background));
+        }
+        if filter == TextureFilter::Trilinear {
+            let c =
+                Comparison::of_images(&snapshot.reference, &snapshot.close2gl, snapshot.background);
+            let failure = judge("moire_trilinear", &snapshot, &c, Some(0.9995), 0.95);
+            assert!(failure.is_empty(), "{failure}");
+        }
+    }
+    let [nearest_ref, nearest_c2gl, trilinear_ref, trilinear_c2gl] = energy[..] else {
+        panic!("four images");
+    };
+    for (view, nearest, trilinear) in [
+        ("reference", nearest_ref, trilinear_ref),
+        ("close2gl", nearest_c2gl, trilinear_c2gl),
+    ] {
+        assert!(
+            trilinear < 0.5 * nearest,
+            "{view}: far-half energy {trilinear:.1} with trilinear, {nearest:.1} with nearest"
+        );
+    }
+}
+
+/// The mean |p(x+1) − p(x)| (over the channels) between covered horizontal neighbours in the
+/// upper half of the covered rows: the far half of a floor seen from above it.
+fn far_half_energy(image: &close2gl_gpu::Image, background: [u8; 3]) -> f64 {
+    let covered = |p: &[u8; 4]| p[..3] != background;
+    let rows: Vec<u32> = (0..image.height)
+        .filter(|&y| {
+            let row = &image.pixels[(y * image.width) as usize..][..image.width as usize];
+            row.iter().any(covered)
+        })
+        .collect();
+    let far = &rows[..rows.len() / 2];
+    let (mut sum, mut count) = (0u64, 0u64);
+    for &y in far {
+        let row = &image.pixels[(y * image.width) as usize..][..image.width as usize];
+        for pair in row.windows(2).filter(|p| covered(&p[0]) && covered(&p[1])) {
+            sum += (0..3)
+                .map(|c| pair[0][c].abs_diff(pair[1][c]) as u64)
+                .sum::<u64>();
+            count += 3;
+        }
+    }
+    sum as f64 / count.max(1) as f64
 }
