@@ -11,6 +11,7 @@ mod camera;
 mod model;
 mod render;
 mod stats;
+mod texture;
 
 use bevy_ecs::prelude::*;
 use close2gl_core::{
@@ -47,6 +48,8 @@ pub struct PanelState {
     pub path_generation: u64,
     /// Change hfov and vfov together.
     pub lock_fov: bool,
+    /// The texture path being typed.
+    pub texture_path: String,
 }
 
 /// Shows the panel at the right of `ui` and returns the rectangle left for the views, in points.
@@ -94,6 +97,9 @@ fn sections(ui: &mut egui::Ui, world: &mut World) {
     egui::CollapsingHeader::new("Render")
         .default_open(true)
         .show(ui, |ui| render::section(ui, world));
+    egui::CollapsingHeader::new("Texture")
+        .default_open(true)
+        .show(ui, |ui| texture::section(ui, world));
     egui::CollapsingHeader::new("Camera")
         .default_open(true)
         .show(ui, |ui| camera::section(ui, world));

@@ -5,9 +5,10 @@
 
 use close2gl_core::{
     CameraAction, CameraActions, Close2glFrame, ModelRequest, ModelSource, ModelStatus,
-    PrimitiveKind, RenderMode, RenderSettings, Topology,
+    PrimitiveKind, RenderMode, RenderSettings, TextureFilter, TextureRequest, Topology,
 };
 use close2gl_testkit::panel::Harness;
+use close2gl_ui::PanelState;
 use egui::accesskit::Role;
 
 #[test]
@@ -123,4 +124,22 @@ fn the_views_get_the_window_beside_the_panel_whatever_it_shows() {
     h.frame(Vec::new());
     h.frame(Vec::new());
     assert_eq!(h.views, views, "a long error wraps inside the panel");
+}
+
+#[test]
+fn the_texture_section_switches_texturing_and_the_filter_and_asks_for_an_image() {
+    let mut h = Harness::new();
+    assert!(h.world().resource::<RenderSettings>().texture);
+    h.click(Role::CheckBox, "Texture");
+    h.click(Role::Button, "nearest");
+    let settings = *h.world().resource::<RenderSettings>();
+    assert!(!settings.texture);
+    assert_eq!(settings.texture_filter, TextureFilter::Nearest);
+    h.world().resource_mut::<PanelState>().texture_path = "wood.png".into();
+    h.click(Role::Button, "Load image");
+    assert_eq!(
+        h.world().resource::<TextureRequest>().0,
+        Some("wood.png".into()),
+        "nothing here takes the request (no model plugin), so it is still waiting"
+    );
 }

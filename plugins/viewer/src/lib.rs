@@ -1,7 +1,7 @@
 //! The interactive viewer: winit windows with wgpu surfaces, the egui control panel, and the
 //! event loop that drives the app. It owns the windows (one split window, or a "Reference
 //! (wgpu)" and a "Close2GL" window), turns window events into `InputState` (keys, drags,
-//! scroll) and dropped files into `ModelRequest`, keeps `Viewport` equal to the Close2GL view's
+//! scroll) and dropped files into `ModelRequest` (an image into `TextureRequest`), keeps `Viewport` equal to the Close2GL view's
 //! size, runs one app frame per redraw, and draws both views and the panel. It inserts the `Gpu`
 //! and `Views` resources the GPU plugin's upload systems need, and fills `ViewStats`. Redraws
 //! are on demand (input, held keys, the panel's own animations), so an idle viewer sleeps. It

@@ -1,7 +1,7 @@
 //! Whether an event is the panel's or the camera's, and the camera's events as `InputState`.
 
 use bevy_ecs::world::World;
-use close2gl_core::{InputState, ModelRequest, ModelSource};
+use close2gl_core::{InputState, ModelRequest, ModelSource, TextureRequest};
 use winit::event::{ElementState, MouseButton, WindowEvent};
 use winit::window::{Window, WindowId};
 
@@ -73,11 +73,23 @@ pub fn apply_input(
         WindowEvent::MouseWheel { delta, .. } if !panel.pointer => {
             tracker.scroll(&mut input, delta);
         }
-        WindowEvent::DroppedFile(path) => {
-            world.insert_resource(ModelRequest(Some(ModelSource::File(path))));
-        }
+        WindowEvent::DroppedFile(path) => drop_file(world, path),
         WindowEvent::Focused(false) => tracker.release_all(&mut input),
         _ => return false,
     }
     true
+}
+
+/// A dropped image becomes the texture; anything else is taken for a model (whose loader names
+/// what it expected when it is not one).
+fn drop_file(world: &mut World, path: std::path::PathBuf) {
+    let extension = path
+        .extension()
+        .and_then(|e| e.to_str())
+        .map(str::to_ascii_lowercase);
+    if matches!(extension.as_deref(), Some("png" | "jpg" | "jpeg")) {
+        world.insert_resource(TextureRequest(Some(path)));
+    } else {
+        world.insert_resource(ModelRequest(Some(ModelSource::File(path))));
+    }
 }
