@@ -4,6 +4,7 @@
 use bevy_ecs::prelude::*;
 use close2gl_core::{
     App, Mesh, ModelRequest, ModelSource, ModelStatus, PostUpdate, PrimitiveKind, PrimitiveParams,
+    Texture, TextureRequest,
 };
 use close2gl_model::ModelPlugin;
 
@@ -129,4 +130,49 @@ fn frames_without_a_request_do_nothing() {
     app.update();
     assert_eq!(status(&app), ModelStatus::default());
     assert!(meshes(&mut app).is_empty());
+}
+
+fn texture_request(app: &mut App, path: &std::path::Path) {
+    app.world_mut().resource_mut::<TextureRequest>().0 = Some(path.to_path_buf());
+    app.update();
+}
+
+/// The checkerboard until an image is asked for; a PNG replaces it (a new generation, the file's
+/// texels); a file that is missing or not an image removes it (the model shows untextured) and
+/// the error names the file.
+#[test]
+fn a_texture_request_loads_the_image_or_leaves_the_model_untextured() {
+    let dir = std::env::temp_dir().join(format!("close2gl-texture-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("a temp dir");
+    let mut app = app();
+    app.update();
+    let texture = app.world().resource::<Texture>().clone();
+    assert_eq!(
+        (texture.source, texture.image.width),
+        (None, 256),
+        "the checkerboard"
+    );
+
+    let png = dir.join("two.png");
+    let mut image = image::RgbaImage::new(2, 1);
+    image.put_pixel(1, 0, image::Rgba([10, 20, 30, 255]));
+    image.save(&png).expect("write a PNG");
+    texture_request(&mut app, &png);
+    let texture = app.world().resource::<Texture>().clone();
+    assert_eq!(texture.source.as_deref(), Some(png.as_path()));
+    assert_eq!(texture.image.pixels, vec![[0, 0, 0, 0], [10, 20, 30, 255]]);
+    assert_eq!(texture.generation, 1);
+
+    let not_an_image = dir.join("notes.png");
+    std::fs::write(&not_an_image, "not a picture").expect("write");
+    for bad in [dir.join("missing.png"), not_an_image] {
+        texture_request(&mut app, &bad);
+        assert!(
+            app.world().get_resource::<Texture>().is_none(),
+            "untextured"
+        );
+        let error = status(&app).error.expect("an error");
+        assert!(error.starts_with(&bad.display().to_string()), "{error}");
+        assert_eq!(error.lines().count(), 1, "{error}");
+    }
 }
