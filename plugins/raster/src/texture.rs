@@ -43,26 +43,17 @@ impl Sampler<'_> {
     /// pixel's footprint in level-0 texels; used by trilinear only).
     #[inline(always)]
     pub(crate) fn sample(&self, s: F8, t: F8, lod: F8) -> V8 {
-        let mut rgb = [[0.0f32; LANES]; 3];
-        for i in 0..LANES {
-            let texel = match self.filter {
-                TextureFilter::Nearest => nearest(&self.levels[0], s.0[i], t.0[i]),
-                TextureFilter::Bilinear => bilinear(&self.levels[0], s.0[i], t.0[i]),
-                TextureFilter::Trilinear => self.trilinear(s.0[i], t.0[i], lod.0[i]),
-            };
-            for c in 0..3 {
-                rgb[c][i] = texel[c];
-            }
-        }
-        V8 {
-            x: F8(rgb[0]),
-            y: F8(rgb[1]),
-            z: F8(rgb[2]),
+        // One decision per eight pixels, not per pixel.
+        match self.filter {
+            TextureFilter::Nearest => lanes(|i| nearest(&self.levels[0], s.0[i], t.0[i])),
+            TextureFilter::Bilinear => lanes(|i| bilinear(&self.levels[0], s.0[i], t.0[i])),
+            TextureFilter::Trilinear => lanes(|i| self.trilinear(s.0[i], t.0[i], lod.0[i])),
         }
     }
 
     /// Bilinear in the two levels around `lod`, blended by its fraction; below level 0
     /// (magnified) it is level 0's bilinear.
+    #[inline(always)]
     fn trilinear(&self, s: f32, t: f32, lod: f32) -> [f32; 3] {
         let top = (self.levels.len() - 1) as f32;
         let lod = if lod.is_nan() {
@@ -85,13 +76,39 @@ impl Sampler<'_> {
     }
 }
 
+/// Eight texels, lane by lane, as three channels.
+#[inline(always)]
+fn lanes(texel: impl Fn(usize) -> [f32; 3]) -> V8 {
+    let mut rgb = [[0.0f32; LANES]; 3];
+    for i in 0..LANES {
+        let [r, g, b] = texel(i);
+        (rgb[0][i], rgb[1][i], rgb[2][i]) = (r, g, b);
+    }
+    V8 {
+        x: F8(rgb[0]),
+        y: F8(rgb[1]),
+        z: F8(rgb[2]),
+    }
+}
+
+/// `i` wrapped into 0..n (repeat): a mask when n is a power of two, as texture sizes mostly
+/// are, and a division only otherwise.
+#[inline(always)]
+fn wrap(i: i32, n: u32) -> u32 {
+    if n.is_power_of_two() {
+        i as u32 & (n - 1)
+    } else {
+        i.rem_euclid(n as i32) as u32
+    }
+}
+
 /// Texel (x, y) of `level`, wrapped (repeat), as RGB in 0..1.
 #[inline(always)]
-fn texel(level: &Image8, x: i64, y: i64) -> [f32; 3] {
-    let x = x.rem_euclid(level.width as i64) as u32;
-    let y = y.rem_euclid(level.height as i64) as u32;
-    let p = level.pixels[(y * level.width + x) as usize];
-    [0, 1, 2].map(|c| p[c] as f32 / 255.0)
+fn texel(level: &Image8, x: i32, y: i32) -> [f32; 3] {
+    let (x, y) = (wrap(x, level.width), wrap(y, level.height));
+    let [r, g, b, _] = level.pixels[(y * level.width + x) as usize];
+    let scale = 1.0 / 255.0;
+    [r as f32 * scale, g as f32 * scale, b as f32 * scale]
 }
 
 /// Where (s, t) falls in `level`, in texels from the top-left corner.
@@ -100,13 +117,19 @@ fn position(level: &Image8, s: f32, t: f32) -> (f32, f32) {
     (s * level.width as f32, (1.0 - t) * level.height as f32)
 }
 
+// The filters are inlined into the lane loops, so that they are compiled for the CPU features
+// the tile code is (a call into libm's floorf, or a call per lane, would cost more than the
+// filtering).
+
 /// The texel (s, t) falls in.
+#[inline(always)]
 fn nearest(level: &Image8, s: f32, t: f32) -> [f32; 3] {
     let (x, y) = position(level, s, t);
     texel(level, floor(x), floor(y))
 }
 
 /// The four texels whose centres surround (s, t), weighted by nearness.
+#[inline(always)]
 fn bilinear(level: &Image8, s: f32, t: f32) -> [f32; 3] {
     let (x, y) = position(level, s, t);
     let (x, y) = (x - 0.5, y - 0.5);
@@ -124,9 +147,9 @@ fn bilinear(level: &Image8, s: f32, t: f32) -> [f32; 3] {
 /// floor as a whole number of texels; far-off or non-finite coordinates land somewhere in the
 /// texture rather than overflowing (wrapping makes any whole number valid).
 #[inline(always)]
-fn floor(x: f32) -> i64 {
+fn floor(x: f32) -> i32 {
     if x.is_finite() {
-        x.floor().clamp(-1e15, 1e15) as i64
+        x.floor().clamp(-1e9, 1e9) as i32
     } else {
         0
     }
