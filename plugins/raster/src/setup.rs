@@ -232,12 +232,12 @@ mod tests {
         let a = setup(
             [corner(2.0, 1.0), corner(6.0, 1.0), corner(6.0, 3.0)],
             size,
-            0,
+            Used::default(),
         );
         let b = setup(
             [corner(2.0, 1.0), corner(6.0, 3.0), corner(2.0, 3.0)],
             size,
-            0,
+            Used::default(),
         );
         let mut pixels = covered(&a);
         pixels.extend(covered(&b));
@@ -254,12 +254,12 @@ mod tests {
         let a = setup(
             [corner(2.5, 1.5), corner(5.5, 1.5), corner(5.5, 3.5)],
             size,
-            0,
+            Used::default(),
         );
         let b = setup(
             [corner(2.5, 1.5), corner(5.5, 3.5), corner(2.5, 3.5)],
             size,
-            0,
+            Used::default(),
         );
         let mut pixels = covered(&a);
         pixels.extend(covered(&b));
@@ -344,19 +344,19 @@ mod tests {
         let cw = setup(
             [corner(1.0, 1.0), corner(9.0, 2.0), corner(3.0, 8.0)],
             size,
-            0,
+            Used::default(),
         );
         let ccw = setup(
             [corner(1.0, 1.0), corner(3.0, 8.0), corner(9.0, 2.0)],
             size,
-            0,
+            Used::default(),
         );
         assert_eq!(covered(&cw), covered(&ccw));
         assert!(!covered(&cw).is_empty());
         let line = setup(
             [corner(1.0, 1.0), corner(5.0, 5.0), corner(9.0, 9.0)],
             size,
-            0,
+            Used::default(),
         );
         assert!(line.is_empty());
     }
@@ -367,7 +367,7 @@ mod tests {
         c[0].window[2] = 0.1;
         c[1].window[2] = 0.5;
         c[2].window[2] = 0.9;
-        let t = setup(c, [16, 16], 0);
+        let t = setup(c, [16, 16], Used::default());
         for corner in c {
             let z = t.at(&t.depth, corner.window[0], corner.window[1]);
             assert!((z - corner.window[2]).abs() < 1e-6, "{z}");
