@@ -79,15 +79,14 @@ impl Sampler<'_> {
 /// Eight texels, lane by lane, as three channels.
 #[inline(always)]
 fn lanes(texel: impl Fn(usize) -> [f32; 3]) -> V8 {
-    let mut rgb = [[0.0f32; LANES]; 3];
-    for i in 0..LANES {
-        let [r, g, b] = texel(i);
-        (rgb[0][i], rgb[1][i], rgb[2][i]) = (r, g, b);
+    let (mut r, mut g, mut b) = ([0.0f32; LANES], [0.0f32; LANES], [0.0f32; LANES]);
+    for (i, ((r, g), b)) in r.iter_mut().zip(&mut g).zip(&mut b).enumerate() {
+        [*r, *g, *b] = texel(i);
     }
     V8 {
-        x: F8(rgb[0]),
-        y: F8(rgb[1]),
-        z: F8(rgb[2]),
+        x: F8(r),
+        y: F8(g),
+        z: F8(b),
     }
 }
 

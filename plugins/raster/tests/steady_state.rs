@@ -108,6 +108,7 @@ fn steady_frames() {
         height: 600,
     };
     let lighting = Lighting::default();
+    let texture = close2gl_core::Texture::default();
     let mut pipeline = FastPipeline::default();
     let mut rasterizer = SoftwareRasterizer::default();
     let mut frame = Close2glFrame::default();
@@ -115,7 +116,14 @@ fn steady_frames() {
     let mut run = |settings: &RenderSettings| {
         pipeline.run(&mesh, &camera, settings, viewport, &mut frame);
         if settings.close2gl_raster == Rasterizer::Software {
-            rasterizer.draw(&frame, &camera, settings, &lighting, &mut image);
+            rasterizer.draw(
+                &frame,
+                &camera,
+                settings,
+                &lighting,
+                Some(&texture),
+                &mut image,
+            );
         }
         frame.counts
     };
