@@ -193,55 +193,53 @@ impl SoftwareRasterizer {
         frame: &Frame<'_>,
         settings: &RenderSettings,
     ) {
+        let tiles = Tiles {
+            target: &mut self.target,
+            bins: &self.bins,
+            triangles: &self.triangles,
+            background,
+        };
         if frame.textured {
-            let sampler = self.mips.sampler(settings.texture_filter);
-            let texturing = Textured(sampler);
-            let shader = Shaded { colour, texturing };
-            draw_tiles(
-                &mut self.target,
-                &self.bins,
-                &self.triangles,
-                background,
-                &shader,
-            );
+            let texturing = Textured(self.mips.sampler(settings.texture_filter));
+            tiles.draw(&Shaded { colour, texturing });
         } else {
-            let texturing = Untextured;
-            let shader = Shaded { colour, texturing };
-            draw_tiles(
-                &mut self.target,
-                &self.bins,
-                &self.triangles,
-                background,
-                &shader,
-            );
+            tiles.draw(&Shaded {
+                colour,
+                texturing: Untextured,
+            });
         }
     }
 }
 
-/// Every tile, in parallel: cleared, then its bin drawn.
-fn draw_tiles<S: PixelShader>(
-    target: &mut Target,
-    bins: &Bins,
-    triangles: &[Triangle],
+/// What every tile is drawn from, and into.
+struct Tiles<'a> {
+    target: &'a mut Target,
+    bins: &'a Bins,
+    triangles: &'a [Triangle],
     background: u32,
-    shader: &S,
-) {
-    let grid = target.grid;
-    let bins = &bins.tiles;
-    target
-        .color
-        .par_chunks_mut(TILE_PIXELS)
-        .zip(target.depth.par_chunks_mut(TILE_PIXELS))
-        .enumerate()
-        .for_each(|(tile, (color, depth))| {
-            draw_tile(
-                grid.tile_rect(tile),
-                color,
-                depth,
-                background,
-                &bins[tile],
-                triangles,
-                shader,
-            );
-        });
+}
+
+impl Tiles<'_> {
+    /// Every tile, in parallel: cleared, then its bin drawn with `shader`.
+    fn draw<S: PixelShader>(self, shader: &S) {
+        let grid = self.target.grid;
+        let (bins, triangles, background) = (&self.bins.tiles, self.triangles, self.background);
+        self.target
+            .color
+            .par_chunks_mut(TILE_PIXELS)
+            .zip(self.target.depth.par_chunks_mut(TILE_PIXELS))
+            .enumerate()
+            .for_each(|(tile, (color, depth))| {
+                let rect = grid.tile_rect(tile);
+                draw_tile(
+                    rect,
+                    color,
+                    depth,
+                    background,
+                    &bins[tile],
+                    triangles,
+                    shader,
+                );
+            });
+    }
 }
