@@ -42,6 +42,11 @@ impl F8 {
     }
 
     #[inline(always)]
+    pub fn floor(self) -> F8 {
+        self.map(f32::floor)
+    }
+
+    #[inline(always)]
     pub fn sqrt(self) -> F8 {
         self.map(f32::sqrt)
     }
@@ -92,7 +97,7 @@ impl F8 {
     #[inline(always)]
     pub fn exp2(self) -> F8 {
         let x = self.max(F8::splat(-126.0)).min(F8::splat(127.0));
-        let whole = x.map(f32::floor);
+        let whole = x.floor();
         let f = x - whole;
         let p = [
             0.001_333_355_8,

@@ -4,7 +4,8 @@
 
 use bevy_ecs::prelude::Resource;
 use close2gl_core::{
-    Camera, Close2glFrame, Lighting, RenderSettings, Shading, SoftwareFrame, Texture, Topology,
+    Camera, Close2glFrame, Lighting, RenderSettings, Shading, SoftwareFrame, Texture,
+    TextureFilter, Topology,
 };
 use close2gl_pipeline::matrices::ClipTransform;
 use glam::Vec3;
@@ -18,7 +19,7 @@ use crate::shading::{
     varyings_used, vertex_varyings,
 };
 use crate::target::{TILE_PIXELS, Target};
-use crate::texture::Mips;
+use crate::texture::{Bilinear, Filter, Mips, Nearest, Trilinear};
 use crate::tile::draw_tile;
 
 /// Primitives set up per parallel task.
@@ -200,8 +201,12 @@ impl SoftwareRasterizer {
             background,
         };
         if frame.textured {
-            let texturing = Textured(self.mips.sampler(settings.texture_filter));
-            tiles.draw(&Shaded { colour, texturing });
+            let mips = &self.mips;
+            match settings.texture_filter {
+                TextureFilter::Nearest => tiles.draw_textured(colour, mips, Nearest),
+                TextureFilter::Bilinear => tiles.draw_textured(colour, mips, Bilinear),
+                TextureFilter::Trilinear => tiles.draw_textured(colour, mips, Trilinear),
+            }
         } else {
             tiles.draw(&Shaded {
                 colour,
@@ -220,6 +225,14 @@ struct Tiles<'a> {
 }
 
 impl Tiles<'_> {
+    /// Every tile, with `colour` modulated by the texture sampled through `filter`.
+    fn draw_textured<C: Colour, F: Filter>(self, colour: C, mips: &Mips, filter: F) {
+        self.draw(&Shaded {
+            colour,
+            texturing: Textured { mips, filter },
+        });
+    }
+
     /// Every tile, in parallel: cleared, then its bin drawn with `shader`.
     fn draw<S: PixelShader>(self, shader: &S) {
         let grid = self.target.grid;

@@ -8,7 +8,7 @@ use glam::Vec3;
 
 use crate::lanes::{F8, LANES, V8};
 use crate::setup::{Plane, Triangle, VARYINGS};
-use crate::texture::Sampler;
+use crate::texture::{Filter, Mips};
 
 /// The lighting constants of a frame, with the light in eye space.
 #[derive(Clone, Copy, Debug)]
@@ -189,16 +189,18 @@ impl Texturing for Untextured {
 }
 
 /// The colour times the texel at the pixel's texture coordinates.
-pub(crate) struct Textured<'a>(pub Sampler<'a>);
+pub(crate) struct Textured<'a, F> {
+    pub mips: &'a Mips,
+    pub filter: F,
+}
 
-impl Texturing for Textured<'_> {
+impl<F: Filter> Texturing for Textured<'_, F> {
     #[inline(always)]
     fn modulate(&self, colour: V8, t: &Triangle, x: F8, y: f32, w: F8) -> V8 {
-        let (s, tt) = (
-            at(t, &t.varyings[UV], x, y) * w,
-            at(t, &t.varyings[UV + 1], x, y) * w,
-        );
-        let texel = self.0.sample(s, tt, self.lod(t, x, y));
+        let (s, tt) = texture_coordinates(t, x, y, w);
+        let texel = self
+            .filter
+            .sample(self.mips, s, tt, || self.lod(t, x, y, s, tt));
         V8 {
             x: colour.x * texel.x,
             y: colour.y * texel.y,
@@ -207,33 +209,63 @@ impl Texturing for Textured<'_> {
     }
 }
 
-impl Textured<'_> {
+impl<F> Textured<'_, F> {
     /// log2 of the pixel's footprint in level-0 texels, from the differences of (s, t) across
     /// the pixel's 2×2 quad (its top-left pixel to the one right of it and the one below), as a
-    /// GPU takes them: ρ = max(|∂(s,t)/∂x|, |∂(s,t)/∂y|) in texels.
+    /// GPU takes them: ρ = max(|∂(s,t)/∂x|, |∂(s,t)/∂y|) in texels. Lanes pair up into quads
+    /// (eight-pixel groups start at even columns), so the row's own (s, t) give half the quad
+    /// and only the quad's other row is computed.
     #[inline(always)]
-    fn lod(&self, t: &Triangle, x: F8, y: f32) -> F8 {
-        let (width, height) = self.0.size();
-        let quad = |p: F8| p.map(|p| ((p - 0.5) * 0.5).floor() * 2.0 + 0.5);
-        let (qx, qy) = (quad(x), ((y - 0.5) * 0.5).floor() * 2.0 + 0.5);
-        let st = |x: F8, y: f32| {
-            let w = w(t, x, y);
-            (
-                at(t, &t.varyings[UV], x, y) * w,
-                at(t, &t.varyings[UV + 1], x, y) * w,
-            )
+    fn lod(&self, t: &Triangle, x: F8, y: f32, s: F8, tt: F8) -> F8 {
+        let upper_row = (y - 0.5) as u32 % 2 == 0;
+        let other_y = if upper_row { y + 1.0 } else { y - 1.0 };
+        let (s_other, t_other) = texture_coordinates(t, x, other_y, w(t, x, other_y));
+        let ((s0, t0), (s1, t1)) = if upper_row {
+            ((s, tt), (s_other, t_other))
+        } else {
+            ((s_other, t_other), (s, tt))
         };
-        let (s0, t0) = st(qx, qy);
-        let (sx, tx) = st(qx + F8::splat(1.0), qy);
-        let (sy, ty) = st(qx, qy + 1.0);
+        let (width, height) = self.mips.size();
         let length = |ds: F8, dt: F8| {
             let (ds, dt) = (ds * F8::splat(width), dt * F8::splat(height));
             (ds * ds + dt * dt).sqrt()
         };
-        length(sx - s0, tx - t0)
-            .max(length(sy - s0, ty - t0))
-            .log2()
+        let across = length(
+            quad_right(s0) - quad_left(s0),
+            quad_right(t0) - quad_left(t0),
+        );
+        let down = length(quad_left(s1) - quad_left(s0), quad_left(t1) - quad_left(t0));
+        across.max(down).log2()
     }
+}
+
+/// Each lane takes its quad's left pixel's value.
+#[inline(always)]
+fn quad_left(v: F8) -> F8 {
+    let mut out = [0.0; LANES];
+    for (i, o) in out.iter_mut().enumerate() {
+        *o = v.0[i & !1];
+    }
+    F8(out)
+}
+
+/// Each lane takes its quad's right pixel's value.
+#[inline(always)]
+fn quad_right(v: F8) -> F8 {
+    let mut out = [0.0; LANES];
+    for (i, o) in out.iter_mut().enumerate() {
+        *o = v.0[i | 1];
+    }
+    F8(out)
+}
+
+/// Perspective-correct texture coordinates (s, t) at eight pixels, given w there.
+#[inline(always)]
+fn texture_coordinates(t: &Triangle, x: F8, y: f32, w: F8) -> (F8, F8) {
+    (
+        at(t, &t.varyings[UV], x, y) * w,
+        at(t, &t.varyings[UV + 1], x, y) * w,
+    )
 }
 
 /// A plane's value at eight pixel centres of one row.
