@@ -217,7 +217,7 @@ impl<F> Textured<'_, F> {
     /// and only the quad's other row is computed.
     #[inline(always)]
     fn lod(&self, t: &Triangle, x: F8, y: f32, s: F8, tt: F8) -> F8 {
-        let upper_row = (y - 0.5) as u32 % 2 == 0;
+        let upper_row = ((y - 0.5) as u32).is_multiple_of(2);
         let other_y = if upper_row { y + 1.0 } else { y - 1.0 };
         let (s_other, t_other) = texture_coordinates(t, x, other_y, w(t, x, other_y));
         let ((s0, t0), (s1, t1)) = if upper_row {

@@ -328,7 +328,10 @@ mod tests {
             // stay colours.
             let got = mips.trilinear(s, t, F8::splat(lod));
             let finite = &got.x.0[..6];
-            assert!(finite.iter().all(|c| (0.0..=1.0).contains(c)), "{lod}: {got:?}");
+            assert!(
+                finite.iter().all(|c| (0.0..=1.0).contains(c)),
+                "{lod}: {got:?}"
+            );
         }
     }
 }
