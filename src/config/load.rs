@@ -9,14 +9,30 @@ use super::{Config, keys};
 /// then applies each `section.key=value` override in order. Errors name the file and line or the
 /// key, and what was expected there.
 pub fn load(file: Option<&Path>, overrides: &[String]) -> Result<Config, String> {
-    let mut config = Config::default();
     let file = file.map(Path::to_path_buf).or_else(|| {
         let local = PathBuf::from("config.toml");
         local.is_file().then_some(local)
     });
-    if let Some(file) = &file {
-        apply_file(&mut config, file)?;
-    }
+    let Some(file) = file else {
+        // No file: the defaults, which an empty file gives as well.
+        return load_text("", "", Path::new("."), overrides);
+    };
+    let name = file.display().to_string();
+    let text = std::fs::read_to_string(&file).map_err(|e| format!("{name}: cannot read: {e}"))?;
+    let base = file.parent().unwrap_or(Path::new("."));
+    load_text(&text, &name, base, overrides)
+}
+
+/// What [`load`] makes of a config file's `text` and then the overrides, without reading a file:
+/// `name` labels errors, `base` is where relative paths start. The fuzzer's door into the parser.
+pub fn load_text(
+    text: &str,
+    name: &str,
+    base: &Path,
+    overrides: &[String],
+) -> Result<Config, String> {
+    let mut config = Config::default();
+    apply_text(&mut config, text, name, base)?;
     for item in overrides {
         apply_override(&mut config, item)?;
     }
@@ -24,9 +40,7 @@ pub fn load(file: Option<&Path>, overrides: &[String]) -> Result<Config, String>
     Ok(config)
 }
 
-fn apply_file(config: &mut Config, file: &Path) -> Result<(), String> {
-    let name = file.display();
-    let text = std::fs::read_to_string(file).map_err(|e| format!("{name}: cannot read: {e}"))?;
+fn apply_text(config: &mut Config, text: &str, name: &str, base: &Path) -> Result<(), String> {
     let table: Table = text.parse().map_err(|e: toml::de::Error| {
         let line = e
             .span()
@@ -34,7 +48,6 @@ fn apply_file(config: &mut Config, file: &Path) -> Result<(), String> {
             .unwrap_or(1);
         format!("{name}:{line}: {}", e.message())
     })?;
-    let base = file.parent().unwrap_or(Path::new("."));
     for (section, body) in &table {
         let Value::Table(body) = body else {
             return Err(format!("{name}: {section}: expected a [{section}] section"));

@@ -14,7 +14,7 @@ use close2gl_core::{
     RenderSettings,
 };
 
-pub use load::{load, parse_size};
+pub use load::{load, load_text, parse_size};
 
 /// `[camera]`: the optional pose and the lens; near and far follow the model unless pinned.
 #[derive(Clone, Debug, PartialEq)]

@@ -1,0 +1,14 @@
+//! The course's `.in` parser, fed exactly as the app feeds it a file: any bytes, made UTF-8 with
+//! `from_utf8_lossy`, then `parse_in`. It must never panic, a mesh it accepts must be whole, and
+//! `\r\n` line ends must not change the outcome.
+#![no_main]
+
+use libfuzzer_sys::fuzz_target;
+
+fuzz_target!(|bytes: &[u8]| {
+    let text = String::from_utf8_lossy(bytes);
+    let parse = |text: &str| close2gl_model::parse_in(text, "fuzz.in");
+    let result = parse(&text);
+    close2gl_fuzz::check_line_ends(parse, &text, &result);
+    close2gl_fuzz::check_model(result, "fuzz.in");
+});
