@@ -1,5 +1,7 @@
 //! The one wgpu device every view and every window shares.
 
+use std::sync::{Arc, Mutex};
+
 use bevy_ecs::prelude::*;
 
 /// The wgpu instance, adapter, device and queue every view shares (a Resource). Cloning is cheap:
@@ -10,6 +12,9 @@ pub struct Gpu {
     pub adapter: wgpu::Adapter,
     pub device: wgpu::Device,
     pub queue: wgpu::Queue,
+    /// Why the device was lost, once wgpu says so: a lost device draws nothing and reports no
+    /// errors, so whoever presents must ask ([`Gpu::lost`]) to stop with a message.
+    lost: Arc<Mutex<Option<String>>>,
 }
 
 /// The optional features the reference renderer uses when the adapter has them: they are what
@@ -62,12 +67,27 @@ impl Gpu {
                 adapter.get_info().name
             )
         })?;
+        let lost = Arc::new(Mutex::new(None));
+        let flag = Arc::clone(&lost);
+        device.set_device_lost_callback(move |reason, message| {
+            if let Ok(mut lost) = flag.lock() {
+                *lost = Some(lost_message(reason, &message));
+            }
+        });
         Ok(Gpu {
             instance,
             adapter,
             device,
             queue,
+            lost,
         })
+    }
+
+    /// A one-line error when the device has been lost (a driver reset, the adapter removed):
+    /// nothing drawn on it shows any more. wgpu reports a loss when it next polls the device.
+    pub fn lost(&self) -> Option<String> {
+        let _ = self.device.poll(wgpu::PollType::Poll);
+        self.lost.lock().ok().and_then(|lost| lost.clone())
     }
 
     /// The adapter's name, e.g. "llvmpipe (LLVM 15.0.6, 256 bits)".
@@ -78,6 +98,17 @@ impl Gpu {
     /// The backend in use, e.g. "vulkan" or "gl".
     pub fn backend_name(&self) -> String {
         self.adapter.get_info().backend.to_str().to_string()
+    }
+}
+
+fn lost_message(reason: wgpu::DeviceLostReason, message: &str) -> String {
+    let why = match reason {
+        wgpu::DeviceLostReason::Destroyed => "destroyed",
+        wgpu::DeviceLostReason::Unknown => "a driver error or the adapter went away",
+    };
+    match message.lines().next().filter(|line| !line.is_empty()) {
+        Some(detail) => format!("the GPU device was lost ({why}: {detail}); restart close2gl"),
+        None => format!("the GPU device was lost ({why}); restart close2gl"),
     }
 }
 
@@ -119,5 +150,27 @@ pub fn parse_backends(name: &str) -> Result<wgpu::Backends, String> {
         other => Err(format!(
             "unknown backend \"{other}\": expected vulkan, gl, metal, dx12 or all"
         )),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_lost_device_is_reported_as_one_line() {
+        // A device of its own: destroying it is how wgpu lets a test lose one.
+        let gpu = Gpu::headless(wgpu::Backends::PRIMARY).expect("a GPU adapter");
+        assert_eq!(gpu.lost(), None);
+        gpu.device.destroy();
+        let lost = gpu
+            .lost()
+            .expect("the loss is reported once the device is polled");
+        assert!(
+            lost.starts_with("the GPU device was lost (destroyed"),
+            "{lost}"
+        );
+        assert!(!lost.contains('\n'), "{lost}");
+        assert_eq!(gpu.clone().lost(), Some(lost), "clones share the device");
     }
 }

@@ -6,10 +6,14 @@ use bevy_ecs::world::World;
 use close2gl_gpu::Gpu;
 use winit::window::Window;
 
+use crate::surface::drawable_size;
+
 pub struct Gui {
     pub ctx: egui::Context,
     state: egui_winit::State,
     renderer: egui_wgpu::Renderer,
+    /// The GPU's largest texture: no window is drawn wider or taller.
+    max_texture_side: u32,
 }
 
 /// One panel frame, ready to paint.
@@ -27,14 +31,14 @@ pub struct GuiFrame {
 impl Gui {
     pub fn new(gpu: &Gpu, window: &Window, format: wgpu::TextureFormat) -> Self {
         let ctx = egui::Context::default();
-        let max_texture_side = gpu.device.limits().max_texture_dimension_2d as usize;
+        let max_texture_side = gpu.device.limits().max_texture_dimension_2d;
         let state = egui_winit::State::new(
             ctx.clone(),
             egui::ViewportId::ROOT,
             window,
             Some(window.scale_factor() as f32),
             None,
-            Some(max_texture_side),
+            Some(max_texture_side as usize),
         );
         let renderer =
             egui_wgpu::Renderer::new(&gpu.device, format, egui_wgpu::RendererOptions::default());
@@ -42,6 +46,7 @@ impl Gui {
             ctx,
             state,
             renderer,
+            max_texture_side,
         }
     }
 
@@ -55,7 +60,18 @@ impl Gui {
 
     /// Runs the control panel over `world`; `both_views` when this window shows both views.
     pub fn run(&mut self, window: &Window, world: &mut World, both_views: bool) -> GuiFrame {
-        let input = self.state.take_egui_input(window);
+        let mut input = self.state.take_egui_input(window);
+        // Laid out in the part of the window its surface draws, so that the panel of a window
+        // wider than the GPU can draw stays in sight (and egui's clip rectangles inside the
+        // surface).
+        let window_size = window.inner_size();
+        let size = drawable_size(window_size.width, window_size.height, self.max_texture_side)
+            .unwrap_or_default();
+        let pixels_per_point = egui_winit::pixels_per_point(&self.ctx, window);
+        if let Some(rect) = &mut input.screen_rect {
+            let drawn = egui::vec2(size.0 as f32, size.1 as f32) / pixels_per_point;
+            rect.max = rect.max.min(rect.min + drawn);
+        }
         let mut views_area = egui::Rect::NOTHING;
         let output = self.ctx.run_ui(input, |ui| {
             views_area = close2gl_ui::show(ui, world);
@@ -67,7 +83,6 @@ impl Gui {
             .viewport_output
             .get(&egui::ViewportId::ROOT)
             .map_or(Duration::MAX, |v| v.repaint_delay);
-        let size = window.inner_size();
         GuiFrame {
             views_area,
             pixels_per_point: output.pixels_per_point,
@@ -75,7 +90,7 @@ impl Gui {
             paint: self.ctx.tessellate(output.shapes, output.pixels_per_point),
             textures: output.textures_delta,
             screen: egui_wgpu::ScreenDescriptor {
-                size_in_pixels: [size.width, size.height],
+                size_in_pixels: [size.0, size.1],
                 pixels_per_point: output.pixels_per_point,
             },
         }

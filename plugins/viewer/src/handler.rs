@@ -147,7 +147,8 @@ impl ApplicationHandler for Viewer {
             WindowEvent::RedrawRequested if is_main => return self.redraw(event_loop),
             // Not for egui: it would ask for another redraw, forever.
             WindowEvent::RedrawRequested => return windows.main.window.request_redraw(),
-            WindowEvent::CloseRequested => return event_loop.exit(),
+            // Destroyed: another client (or a window manager) took the window away.
+            WindowEvent::CloseRequested | WindowEvent::Destroyed => return event_loop.exit(),
             _ => {}
         }
         let panel = offer_to_panel(&mut windows.gui, &windows.main.window, is_main, &event);

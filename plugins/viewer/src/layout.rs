@@ -234,6 +234,22 @@ mod tests {
     }
 
     #[test]
+    fn a_window_of_zero_or_one_pixel_places_no_view() {
+        let panel = egui::Rect::from_min_max(egui::pos2(0.0, 0.0), egui::pos2(500.0, 400.0));
+        for (width, height) in [(0, 0), (0, 400), (800, 0), (1, 1)] {
+            let area = PixelRect::from_points(panel, 1.0, width, height);
+            assert!(area.width <= width && area.height <= height);
+            assert_eq!(split(area), Placement::default(), "{width}x{height}");
+            let two = two_windows(area, width, height);
+            assert_eq!(two.viewport.is_some(), width == 1, "{width}x{height}");
+        }
+        assert_eq!(
+            two_windows(PixelRect::whole(0, 0), 0, 0),
+            Placement::default()
+        );
+    }
+
+    #[test]
     fn the_other_window_follows_a_resize_keeping_the_views_equal() {
         assert_eq!(matching_size(true, 1000, 700, 290), (710, 700));
         assert_eq!(matching_size(false, 710, 700, 290), (1000, 700));

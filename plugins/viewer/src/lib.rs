@@ -2,7 +2,9 @@
 //! event loop that drives the app. It owns the windows (one split window, or a "Reference
 //! (wgpu)" and a "Close2GL" window), turns window events into `InputState` (keys, drags,
 //! scroll) and dropped files into `ModelRequest` (an image into `TextureRequest`), keeps `Viewport` equal to the Close2GL view's
-//! size, runs one app frame per redraw, and draws both views and the panel. It inserts the `Gpu`
+//! size, runs one app frame per redraw, and draws both views and the panel (skipping a window
+//! without pixels, drawing one wider than the GPU's largest texture up to that size, and ending
+//! the run with its reason when the GPU device is lost). It inserts the `Gpu`
 //! and `Views` resources the GPU plugin's upload systems need, and fills `ViewStats`. Redraws
 //! are on demand (input, held keys, the panel's own animations), so an idle viewer sleeps. It
 //! adds the GPU and UI plugins unless the app has them, and needs the input, model and settings

@@ -20,6 +20,10 @@ impl Windows {
         placement: &Placement,
         capture: bool,
     ) -> Result<Option<Image>, String> {
+        // A lost device draws nothing and reports nothing: stop with its reason instead.
+        if let Some(lost) = self.gpu.lost() {
+            return Err(lost);
+        }
         // Taken out for the frame, so that the views can be borrowed from the world beside it
         // (`Views` must stay put: its upload systems watch when it was added).
         let mut stats = world.remove_resource::<ViewStats>().unwrap_or_default();

@@ -1,0 +1,185 @@
+//! What the tests that run the real app under a real X server share: an Xvfb of their own, the
+//! app run to its end with a deadline, and what its window should show (the model in both
+//! views). Xvfb must be installed (`apt-get install xvfb`); without it these tests fail, they
+//! never skip.
+
+// Each test file that includes this module uses a part of it.
+#![allow(dead_code)]
+
+use std::path::{Path, PathBuf};
+use std::process::{Child, Command, Output, Stdio};
+use std::sync::atomic::{AtomicU32, Ordering};
+use std::time::{Duration, Instant};
+
+use close2gl::config;
+use close2gl_gpu::Image;
+
+/// How long the app may take to open, draw and save (a debug build on a software GPU).
+pub const APP_TIMEOUT: Duration = Duration::from_secs(120);
+
+/// An Xvfb server on a display of its own, killed when dropped.
+pub struct Xvfb {
+    child: Child,
+    pub display: String,
+}
+
+impl Xvfb {
+    pub fn start() -> Xvfb {
+        for number in 90..190 {
+            if Path::new(&format!("/tmp/.X{number}-lock")).exists() {
+                continue;
+            }
+            let child = Command::new("Xvfb")
+                .args([
+                    &format!(":{number}"),
+                    "-screen",
+                    "0",
+                    "1920x1080x24",
+                    "-nolisten",
+                    "tcp",
+                ])
+                .stdout(Stdio::null())
+                .stderr(Stdio::null())
+                .spawn();
+            let mut child = match child {
+                Ok(child) => child,
+                Err(e) if e.kind() == std::io::ErrorKind::NotFound => panic!(
+                    "Xvfb is not installed; the windowed smoke test needs it: apt-get install xvfb"
+                ),
+                Err(e) => panic!("cannot start Xvfb: {e}"),
+            };
+            let socket = PathBuf::from(format!("/tmp/.X11-unix/X{number}"));
+            let deadline = Instant::now() + Duration::from_secs(10);
+            while Instant::now() < deadline {
+                if let Ok(Some(_)) = child.try_wait() {
+                    break; // The display was taken meanwhile (another test): try the next one.
+                }
+                if socket.exists() {
+                    return Xvfb {
+                        child,
+                        display: format!(":{number}"),
+                    };
+                }
+                std::thread::sleep(Duration::from_millis(50));
+            }
+            let _ = child.kill();
+            let _ = child.wait();
+        }
+        panic!("no free X display between :90 and :189 for Xvfb");
+    }
+}
+
+impl Drop for Xvfb {
+    fn drop(&mut self) {
+        let _ = self.child.kill();
+        let _ = self.child.wait();
+    }
+}
+
+/// The app (`close2gl ARGS`) on `xvfb`, from the repository's root, until it exits (killed
+/// after [`APP_TIMEOUT`]); panics unless it exits successfully.
+pub fn run_app(xvfb: &Xvfb, args: &[&str]) -> Output {
+    let mut child = Command::new(env!("CARGO_BIN_EXE_close2gl"))
+        .args(args)
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .env("DISPLAY", &xvfb.display)
+        .env_remove("WAYLAND_DISPLAY")
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .expect("the close2gl binary starts");
+    let deadline = Instant::now() + APP_TIMEOUT;
+    let status = loop {
+        if let Some(status) = child.try_wait().expect("the app can be waited on") {
+            break status;
+        }
+        if Instant::now() > deadline {
+            let _ = child.kill();
+            panic!("close2gl {args:?} did not exit within {APP_TIMEOUT:?}");
+        }
+        std::thread::sleep(Duration::from_millis(50));
+    };
+    let output = child.wait_with_output().expect("the app's output");
+    assert!(
+        status.success(),
+        "close2gl {args:?} exited with {status}: {}",
+        String::from_utf8_lossy(&output.stderr)
+    );
+    output
+}
+
+/// A new temporary directory for one test's files (tests run in parallel in one process).
+pub fn temp_dir(name: &str) -> PathBuf {
+    static COUNT: AtomicU32 = AtomicU32::new(0);
+    let n = COUNT.fetch_add(1, Ordering::Relaxed);
+    let dir = std::env::temp_dir().join(format!("close2gl-{name}-{}-{n}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).expect("a temporary directory");
+    dir
+}
+
+/// The model's colour as the window stores it (a linear 8-bit surface, flat shading).
+pub fn model_color() -> [u8; 3] {
+    let color = config::load(None, &[])
+        .expect("the repository's config")
+        .render
+        .color;
+    color.to_array().map(|c| (c * 255.0).round() as u8)
+}
+
+/// Pixels of the model's colour in columns `x0..x1`.
+pub fn model_pixels(image: &Image, x0: u32, x1: u32) -> usize {
+    let color = model_color();
+    (0..image.height)
+        .flat_map(|y| (x0..x1).map(move |x| (x, y)))
+        .filter(|&(x, y)| {
+            let p = image.pixel(x, y);
+            (0..3).all(|c| p[c].abs_diff(color[c]) <= 2)
+        })
+        .count()
+}
+
+/// The views' background as the window stores it.
+pub fn background_color() -> [u8; 3] {
+    let color = config::load(None, &[])
+        .expect("the repository's config")
+        .render
+        .background;
+    color.to_array().map(|c| (c * 255.0).round() as u8)
+}
+
+/// Whether both views (columns `reference` and `close2gl` of `image`) show the model, and about
+/// as much of it: the same model from the same camera. The error says what they show instead.
+pub fn both_views_show_the_model(
+    image: &Image,
+    reference: (u32, u32),
+    close2gl: (u32, u32),
+) -> Result<(), String> {
+    let r = model_pixels(image, reference.0, reference.1);
+    let c = model_pixels(image, close2gl.0, close2gl.1);
+    let area = ((reference.1 - reference.0) * image.height) as usize;
+    if r <= area / 100 || c <= area / 100 {
+        return Err(format!(
+            "model-coloured pixels: reference {r}, Close2GL {c}, of {area} per view"
+        ));
+    }
+    let (lo, hi) = (r.min(c) as f64, r.max(c) as f64);
+    if lo / hi <= 0.95 {
+        return Err(format!(
+            "the views differ: reference {r}, Close2GL {c} pixels"
+        ));
+    }
+    Ok(())
+}
+
+/// Panics unless both views show the model (see [`both_views_show_the_model`]).
+pub fn assert_both_views_show_the_model(
+    name: &str,
+    image: &Image,
+    reference: (u32, u32),
+    close2gl: (u32, u32),
+) {
+    if let Err(e) = both_views_show_the_model(image, reference, close2gl) {
+        panic!("{name}: {e}");
+    }
+}
