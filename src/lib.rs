@@ -18,6 +18,7 @@
 
 pub mod commands;
 pub mod config;
+mod progress;
 
 pub use close2gl_camera as camera;
 pub use close2gl_core as core;
@@ -51,8 +52,10 @@ impl Plugin for DefaultPlugins {
 }
 
 /// Builds the headless app for `config` and runs one frame, in which the model plugin loads the
-/// configured model (and texture), the camera frames it and the Close2GL frame is computed. A
-/// model or texture that does not load is an error here, before anything is shown.
+/// configured model (and texture), the camera frames it and the Close2GL frame is computed; a
+/// big model file loads on a worker thread meanwhile, with its progress on stderr, and the app
+/// runs frames until it is in. A model or texture that does not load is an error here, before
+/// anything is shown.
 pub fn build_app(config: &Config, viewport: Viewport) -> Result<App, String> {
     let mut app = App::new();
     app.insert_resource(config.render)
@@ -76,8 +79,25 @@ pub fn build_app(config: &Config, viewport: Viewport) -> Result<App, String> {
         ..Camera::default()
     });
     app.update();
+    wait_for_model(&mut app);
     match &app.world().resource::<ModelStatus>().error {
         Some(error) => Err(error.clone()),
         None => Ok(app),
     }
+}
+
+/// Runs frames until a model loading in the background is in, showing its progress.
+fn wait_for_model(app: &mut App) {
+    /// Often enough for a bar that moves, rarely enough that the frames cost nothing.
+    const POLL: std::time::Duration = std::time::Duration::from_millis(50);
+    let Some(loading) = app.world().resource::<ModelStatus>().loading.clone() else {
+        return;
+    };
+    let mut bar = progress::TerminalProgress::new(&loading.source);
+    while let Some(loading) = &app.world().resource::<ModelStatus>().loading {
+        bar.show(loading.fraction);
+        std::thread::sleep(POLL);
+        app.update();
+    }
+    bar.finish(app.world().resource::<ModelStatus>().error.is_none());
 }

@@ -42,10 +42,25 @@ impl Default for Camera {
 
 impl Camera {
     /// Re-aims the camera at `target` from `position`, keeping `up` as close to v as it can.
-    /// Returns `None` when the pose is degenerate (target on the camera, or up along the view).
+    /// An `up` within [`PARALLEL_UP`] of the view direction (or zero) gives no sideways
+    /// direction, so +y stands in for it, or -z when the view itself is along y (looking down,
+    /// the top of the image points to -z): the frame is always orthonormal. Returns `None` only
+    /// when there is no view direction: the target on the camera, or a coordinate not finite.
     pub fn looking_at(mut self, position: Vec3, target: Vec3, up: Vec3) -> Option<Self> {
-        let n = (position - target).try_normalize()?;
-        let u = up.cross(n).try_normalize()?;
+        if !(position.is_finite() && target.is_finite() && up.is_finite()) {
+            return None;
+        }
+        // Halved, the difference of two finite points cannot overflow.
+        let n =
+            direction(position - target).or_else(|| direction(position * 0.5 - target * 0.5))?;
+        let across = |up: Vec3| {
+            let u = direction(up)?.cross(n);
+            // Gram–Schmidt: what rounding left of n in the cross product goes.
+            (u.length() > PARALLEL_UP).then(|| (u - n * n.dot(u)).normalize())
+        };
+        let u = across(up)
+            .or_else(|| across(Vec3::Y))
+            .or_else(|| across(Vec3::NEG_Z))?;
         self.position = position;
         self.target = target;
         self.n = n;
@@ -58,6 +73,19 @@ impl Camera {
     pub fn distance(&self) -> f32 {
         self.position.distance(self.target)
     }
+}
+
+/// The sine of the smallest angle between `up` and the view direction that
+/// [`Camera::looking_at`] takes: about 0.06°. Closer, the cross product that gives u is mostly
+/// rounding, and u would not be square to n.
+pub const PARALLEL_UP: f32 = 1e-3;
+
+/// `v` as a unit vector, however small it is; `None` when it is zero or not finite.
+fn direction(v: Vec3) -> Option<Vec3> {
+    v.try_normalize().or_else(|| {
+        let largest = v.abs().max_element();
+        (largest > 0.0 && largest.is_finite()).then(|| (v / largest).normalize())
+    })
 }
 
 named_enum!(

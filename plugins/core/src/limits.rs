@@ -19,6 +19,17 @@ pub const MAX_SEGMENTS: u32 = 4096;
 /// (lavapipe among them) allow.
 pub const MAX_PIXELS: u32 = 16384;
 
+/// Model files larger than this, bytes, load on a worker thread with progress while the last
+/// model stays shown; smaller ones load within the frame that asks (the course's cow is 1.3 MB
+/// and parses in about 20 ms: a frame or two, not worth a bar). 4 MiB parses in well under a
+/// second even in a debug build.
+pub const BACKGROUND_LOAD_BYTES: u64 = 4 << 20;
+
+/// The longest line a model file may have, bytes. A `.in` record is under a hundred bytes and
+/// an OBJ face with a thousand corners some twenty thousand: anything longer is not a model,
+/// and reading it whole would let one line take as much memory as the file.
+pub const MAX_LINE_BYTES: usize = 1 << 20;
+
 /// Twice a triangle's area over its longest edge squared, at or below which it counts as having
 /// no area: it is at most 1e-5 as tall as it is long, a line for any rasteriser. A sliver (a UV
 /// sphere's pole, where sin(π) in f32 leaves the pole's copies 1e-7 apart; a face seen exactly

@@ -91,4 +91,15 @@ pub struct ModelStatus {
     pub error: Option<String>,
     /// Bumped on every successful load, so renderers know to upload the mesh again.
     pub generation: u64,
+    /// A big file being read on a worker thread while `source`'s mesh stays shown.
+    pub loading: Option<Loading>,
+}
+
+/// A model file loading in the background (see
+/// [`crate::limits::BACKGROUND_LOAD_BYTES`]).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Loading {
+    pub source: ModelSource,
+    /// How much of the file has been parsed, 0..=1.
+    pub fraction: f32,
 }

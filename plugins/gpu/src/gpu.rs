@@ -67,6 +67,17 @@ impl Gpu {
                 adapter.get_info().name
             )
         })?;
+        Ok(Self::from_device(instance, adapter, device, queue))
+    }
+
+    /// A device opened by hand (a test that wants other features or limits), watched for its
+    /// loss like every other.
+    pub fn from_device(
+        instance: wgpu::Instance,
+        adapter: wgpu::Adapter,
+        device: wgpu::Device,
+        queue: wgpu::Queue,
+    ) -> Gpu {
         let lost = Arc::new(Mutex::new(None));
         let flag = Arc::clone(&lost);
         device.set_device_lost_callback(move |reason, message| {
@@ -74,13 +85,13 @@ impl Gpu {
                 *lost = Some(lost_message(reason, &message));
             }
         });
-        Ok(Gpu {
+        Gpu {
             instance,
             adapter,
             device,
             queue,
             lost,
-        })
+        }
     }
 
     /// A one-line error when the device has been lost (a driver reset, the adapter removed):

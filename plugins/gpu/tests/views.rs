@@ -273,12 +273,7 @@ fn without_polygon_modes_the_views_say_what_they_draw_instead() {
         .expect("the adapter found before");
     let (device, queue) = pollster::block_on(adapter.request_device(&Default::default()))
         .expect("a device without optional features");
-    let bare = Gpu {
-        instance,
-        adapter,
-        device,
-        queue,
-    };
+    let bare = Gpu::from_device(instance, adapter, device, queue);
     assert!(
         close2gl_gpu::Views::new(&full, close2gl_gpu::OFFSCREEN_FORMAT)
             .limitations()

@@ -3,9 +3,12 @@
 //! is tolerated (runs of spaces, `\r\n`, blank lines, any keyword case, a missing final newline);
 //! content is not (every number finite, every record complete, material indices in range).
 
+use std::io::BufRead;
+
 use glam::{Vec2, Vec3};
 
 use crate::diagnostics::expected;
+use crate::lines::Lines;
 use crate::mesh_builder::MeshBuilder;
 use crate::{LoadedModel, file_stem};
 
@@ -13,7 +16,14 @@ const VERTEX_TAGS: [&str; 3] = ["v0", "v1", "v2"];
 
 /// Parses the text of a `.in` file; `label` names the file in messages and warnings.
 pub fn parse_in(text: &str, label: &str) -> Result<LoadedModel, String> {
-    let mut records = Records::new(text, label);
+    read_in(Lines::new(text.as_bytes(), label))
+}
+
+/// Parses a `.in` file line by line as `lines` reads it, so that memory follows the mesh, not
+/// the file.
+pub(crate) fn read_in<R: BufRead>(lines: Lines<R>) -> Result<LoadedModel, String> {
+    let label = lines.label();
+    let mut records = Records::new(lines);
     let mut warnings = Vec::new();
 
     let (_, name) = records.key_value("Object name", "Object name = <name>")?;
@@ -26,12 +36,12 @@ pub fn parse_in(text: &str, label: &str) -> Result<LoadedModel, String> {
     }
     warnings.extend(materials.warnings(label));
     let layout = VertexLayout::new(records.texture()?, material_count);
-    records.skip_comment();
+    records.skip_comment()?;
 
     let name = if name.is_empty() {
         file_stem(label)
     } else {
-        name.to_string()
+        name
     };
     let mut builder = MeshBuilder::new(name);
     let mut orientation = Orientation::default();
@@ -41,7 +51,7 @@ pub fn parse_in(text: &str, label: &str) -> Result<LoadedModel, String> {
         let corners = layout.triangle(&mut records)?;
         orientation.add(corners, &mut builder)?;
         triangles += 1;
-        if records.peek().is_none() {
+        if records.peek()?.is_none() {
             break;
         }
     }
@@ -58,116 +68,132 @@ pub fn parse_in(text: &str, label: &str) -> Result<LoadedModel, String> {
     })
 }
 
-/// One non-blank line, trimmed, with its 1-based number.
-#[derive(Clone, Copy)]
-struct Record<'a> {
+/// The file's non-blank lines ("records"), trimmed, in order. The record last handed out stays
+/// readable, so errors can quote it.
+struct Records<'l, R> {
+    lines: Lines<'l, R>,
+    /// The record last read, trimmed.
+    text: String,
+    /// Its 1-based line number.
     line: usize,
-    text: &'a str,
+    /// Whether it was only peeked at, not yet handed out.
+    peeked: bool,
+    /// Whether the file has no more records.
+    ended: bool,
+    label: &'l str,
 }
 
-/// The file's non-blank lines, in order.
-struct Records<'a> {
-    lines: std::iter::Enumerate<std::str::Split<'a, char>>,
-    peeked: Option<Record<'a>>,
-    /// Line number of the last record handed out, so "end of file" can say where it was met.
-    last_line: usize,
-    label: &'a str,
-}
-
-impl<'a> Records<'a> {
-    fn new(text: &'a str, label: &'a str) -> Self {
-        let text = text.strip_prefix('\u{feff}').unwrap_or(text);
+impl<'l, R: BufRead> Records<'l, R> {
+    fn new(lines: Lines<'l, R>) -> Self {
         Self {
-            lines: text.split('\n').enumerate(),
-            peeked: None,
-            last_line: 0,
-            label,
+            label: lines.label(),
+            lines,
+            text: String::new(),
+            line: 0,
+            peeked: false,
+            ended: false,
         }
     }
 
-    fn peek(&mut self) -> Option<Record<'a>> {
-        if self.peeked.is_none() {
-            self.peeked = self
-                .lines
-                .by_ref()
-                .map(|(i, text)| Record {
-                    line: i + 1,
-                    text: text.trim(),
-                })
-                .find(|r| !r.text.is_empty());
+    /// The line number of the next record without handing it out, or `None` at the end.
+    fn peek(&mut self) -> Result<Option<usize>, String> {
+        if !self.peeked && !self.ended {
+            loop {
+                let Some((line, text)) = self.lines.next_line()? else {
+                    self.ended = true;
+                    break;
+                };
+                let text = if line == 1 {
+                    text.strip_prefix('\u{feff}').unwrap_or(text)
+                } else {
+                    text
+                };
+                let text = text.trim();
+                if !text.is_empty() {
+                    self.text.clear();
+                    self.text.push_str(text);
+                    self.line = line;
+                    self.peeked = true;
+                    break;
+                }
+            }
         }
-        self.peeked
+        Ok(self.peeked.then_some(self.line))
     }
 
-    fn next(&mut self) -> Option<Record<'a>> {
-        let record = self.peek();
-        self.peeked = None;
-        if let Some(r) = record {
-            self.last_line = r.line;
+    /// The text of the record last peeked at or handed out.
+    fn text(&self) -> &str {
+        &self.text
+    }
+
+    /// The next record's line number, which must exist: the end of the file is an error naming
+    /// `what`. Its text is [`Records::text`] until the next call.
+    fn expect(&mut self, what: &str) -> Result<usize, String> {
+        match self.peek()? {
+            Some(line) => {
+                self.peeked = false;
+                Ok(line)
+            }
+            None => Err(expected(self.label, self.line + 1, what, None)),
         }
-        record
     }
 
-    /// The next record, which must exist: the end of the file is an error naming `what`.
-    fn expect(&mut self, what: &str) -> Result<Record<'a>, String> {
-        self.next()
-            .ok_or_else(|| expected(self.label, self.last_line + 1, what, None))
-    }
-
-    fn error(&self, record: Record, what: &str) -> String {
-        expected(self.label, record.line, what, Some(record.text))
+    /// The error for the record last handed out (at `line`).
+    fn error(&self, line: usize, what: &str) -> String {
+        expected(self.label, line, what, Some(&self.text))
     }
 
     /// The value of a `key = value` record; the key is compared ignoring case and spaces.
-    fn key_value(&mut self, key: &str, what: &str) -> Result<(Record<'a>, &'a str), String> {
-        let record = self.expect(what)?;
-        match record.text.split_once('=') {
-            Some((k, value)) if same_key(k, key) => Ok((record, value.trim())),
-            _ => Err(self.error(record, what)),
+    fn key_value(&mut self, key: &str, what: &str) -> Result<(usize, String), String> {
+        let line = self.expect(what)?;
+        match self.text.split_once('=') {
+            Some((k, value)) if same_key(k, key) => Ok((line, value.trim().to_string())),
+            _ => Err(self.error(line, what)),
         }
     }
 
-    /// A `key = <count>` header record.
+    /// A `key = <count>` header record. The count is only compared with what the file holds,
+    /// never allocated from.
     fn count(&mut self, key: &str, what: &str) -> Result<u64, String> {
-        let (record, value) = self.key_value(key, what)?;
-        value.parse().map_err(|_| self.error(record, what))
+        let (line, value) = self.key_value(key, what)?;
+        value.parse().map_err(|_| self.error(line, what))
     }
 
     /// The optional `Texture = YES|NO` record: whether `<s> <t>` follow each vertex, or `None`
     /// when the file does not say.
     fn texture(&mut self) -> Result<Option<bool>, String> {
         const WHAT: &str = "Texture = YES|NO";
-        match self.peek() {
-            Some(r)
-                if r.text
-                    .split_once('=')
-                    .is_some_and(|(k, _)| same_key(k, "Texture")) =>
-            {
-                let (_, value) = self.key_value("Texture", WHAT)?;
-                if value.eq_ignore_ascii_case("yes") {
-                    Ok(Some(true))
-                } else if value.eq_ignore_ascii_case("no") {
-                    Ok(Some(false))
-                } else {
-                    Err(self.error(r, WHAT))
-                }
-            }
-            _ => Ok(None),
+        let is_texture = self.peek()?.is_some()
+            && self
+                .text()
+                .split_once('=')
+                .is_some_and(|(k, _)| same_key(k, "Texture"));
+        if !is_texture {
+            return Ok(None);
+        }
+        let (line, value) = self.key_value("Texture", WHAT)?;
+        if value.eq_ignore_ascii_case("yes") {
+            Ok(Some(true))
+        } else if value.eq_ignore_ascii_case("no") {
+            Ok(Some(false))
+        } else {
+            Err(self.error(line, WHAT))
         }
     }
 
     /// The comment line before the first triangle is optional and its wording free: anything
     /// that is not the first `v0` record is taken for it.
-    fn skip_comment(&mut self) {
-        if let Some(r) = self.peek()
-            && !r
-                .text
+    fn skip_comment(&mut self) -> Result<(), String> {
+        if self.peek()?.is_some()
+            && !self
+                .text()
                 .split_whitespace()
                 .next()
                 .is_some_and(|w| w.eq_ignore_ascii_case(VERTEX_TAGS[0]))
         {
-            self.next();
+            self.peeked = false;
         }
+        Ok(())
     }
 
     /// The numbers of a `keywords n1 n2 ...` record, which must have one of `counts` numbers,
@@ -177,9 +203,9 @@ impl<'a> Records<'a> {
         keywords: &[&str],
         counts: &[usize],
         what: &str,
-    ) -> Result<(Record<'a>, Vec<f32>), String> {
-        let record = self.expect(what)?;
-        let mut words = record.text.split_whitespace();
+    ) -> Result<(usize, Vec<f32>), String> {
+        let line = self.expect(what)?;
+        let mut words = self.text.split_whitespace();
         let keywords_match = keywords
             .iter()
             .all(|k| words.next().is_some_and(|w| w.eq_ignore_ascii_case(k)));
@@ -189,15 +215,15 @@ impl<'a> Records<'a> {
         match values {
             Some(v) if counts.contains(&v.len()) => {
                 if v.iter().all(|x| x.is_finite()) {
-                    Ok((record, v))
+                    Ok((line, v))
                 } else {
                     Err(format!(
                         "{} (numbers must be finite)",
-                        self.error(record, what)
+                        self.error(line, what)
                     ))
                 }
             }
-            _ => Err(self.error(record, what)),
+            _ => Err(self.error(line, what)),
         }
     }
 }
@@ -216,20 +242,20 @@ struct MaterialCheck {
 }
 
 impl MaterialCheck {
-    fn block(&mut self, records: &mut Records) -> Result<(), String> {
+    fn block<R: BufRead>(&mut self, records: &mut Records<R>) -> Result<(), String> {
         for (keywords, what) in [
             (["ambient", "color"], "ambient color r g b"),
             (["diffuse", "color"], "diffuse color r g b"),
             (["specular", "color"], "specular color r g b"),
         ] {
-            let (record, rgb) = records.numbers(&keywords, &[3], what)?;
+            let (line, rgb) = records.numbers(&keywords, &[3], what)?;
             if rgb.iter().any(|c| !(0.0..=1.0).contains(c)) {
-                self.out_of_range.get_or_insert(record.line);
+                self.out_of_range.get_or_insert(line);
             }
         }
-        let (record, shine) = records.numbers(&["material", "shine"], &[1], "material shine s")?;
+        let (line, shine) = records.numbers(&["material", "shine"], &[1], "material shine s")?;
         if shine[0] < 0.0 {
-            self.out_of_range.get_or_insert(record.line);
+            self.out_of_range.get_or_insert(line);
         }
         Ok(())
     }
@@ -276,12 +302,12 @@ struct FileTriangle {
 }
 
 impl VertexLayout {
-    fn triangle(&self, records: &mut Records) -> Result<FileTriangle, String> {
+    fn triangle<R: BufRead>(&self, records: &mut Records<R>) -> Result<FileTriangle, String> {
         let mut positions = [Vec3::ZERO; 3];
         let mut normals = [Vec3::ZERO; 3];
         let mut uvs = [None; 3];
         for (k, (tag, what)) in VERTEX_TAGS.iter().zip(&self.forms).enumerate() {
-            let (record, v) = records.numbers(&[tag], self.counts, what)?;
+            let (line, v) = records.numbers(&[tag], self.counts, what)?;
             let material = v[6];
             if material.fract() != 0.0
                 || material < 0.0
@@ -289,7 +315,7 @@ impl VertexLayout {
             {
                 return Err(format!(
                     "{} (the material index must be a whole number below the material count, {})",
-                    records.error(record, what),
+                    records.error(line, what),
                     self.material_count
                 ));
             }

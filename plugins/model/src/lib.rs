@@ -9,13 +9,18 @@
 //! a file that does not load removes it, so the model shows untextured, and sets the error). Framing the camera on the
 //! new mesh is the camera plugin's job (it watches `Changed<Mesh>`, in `FrameSet::Camera`).
 
+mod background;
 mod diagnostics;
 mod in_format;
+mod lines;
 mod mesh_builder;
 mod obj;
 mod primitives;
+mod progress;
 mod texture;
 
+use std::fs::File;
+use std::io::BufReader;
 use std::path::Path;
 
 use bevy_ecs::prelude::*;
@@ -24,10 +29,16 @@ use close2gl_core::{
     TextureRequest, Update,
 };
 
+pub use background::BackgroundLoad;
 pub use in_format::parse_in;
 pub use obj::parse_obj;
 pub use primitives::primitive;
+pub use progress::LoadProgress;
 pub use texture::load_texture;
+
+use background::Poll;
+use lines::Lines;
+use progress::Counted;
 
 /// A mesh ready to show, and what the loader noticed but forgave (e.g. a header that lies about
 /// its triangle count).
@@ -45,19 +56,22 @@ pub fn load(source: &ModelSource, params: &PrimitiveParams) -> Result<LoadedMode
             mesh,
             warnings: Vec::new(),
         }),
-        ModelSource::File(path) => load_file(path),
+        ModelSource::File(path) => load_file(path, &LoadProgress::default()),
     }
 }
 
-fn load_file(path: &Path) -> Result<LoadedModel, String> {
+/// Loads a `.in` or `.obj` file, counting what it reads into `progress`. A `.in` file streams
+/// through its parser, so memory follows the mesh; an OBJ file is read whole first (tobj and
+/// the index checks need it), and read again by tobj, so its progress counts both passes.
+pub(crate) fn load_file(path: &Path, progress: &LoadProgress) -> Result<LoadedModel, String> {
     let label = path.display().to_string();
     let extension = path
         .extension()
         .and_then(|e| e.to_str())
         .map(str::to_ascii_lowercase);
-    let parse = match extension.as_deref() {
-        Some("in") => parse_in,
-        Some("obj") => parse_obj,
+    let obj = match extension.as_deref() {
+        Some("in") => false,
+        Some("obj") => true,
         _ => {
             return Err(format!(
                 "{label}: unsupported model file: expected a .in or .obj file \
@@ -65,10 +79,28 @@ fn load_file(path: &Path) -> Result<LoadedModel, String> {
             ));
         }
     };
-    let bytes = std::fs::read(path).map_err(|e| format!("{label}: cannot read: {e}"))?;
-    // Invalid UTF-8 becomes U+FFFD, so the parser reports it at its line like any other garbage.
-    let text = String::from_utf8_lossy(&bytes);
-    parse(&text, &label)
+    let cannot_read = |e: std::io::Error| format!("{label}: cannot read: {e}");
+    let file = File::open(path).map_err(cannot_read)?;
+    let metadata = file.metadata().map_err(cannot_read)?;
+    if !metadata.is_file() {
+        return Err(format!(
+            "{label}: expected a .in or .obj file, found a directory or device"
+        ));
+    }
+    let passes = if obj { 2 } else { 1 };
+    progress.set_total(passes * metadata.len());
+    let lines = Lines::new(
+        BufReader::new(Counted {
+            inner: file,
+            progress,
+        }),
+        &label,
+    );
+    if obj {
+        obj::read_obj(&lines.into_text()?, &label, progress)
+    } else {
+        in_format::read_in(lines)
+    }
 }
 
 /// The name a mesh gets when its file does not give one: the file's stem.
@@ -89,6 +121,7 @@ impl Plugin for ModelPlugin {
             .init_resource::<PrimitiveParams>()
             .init_resource::<TextureRequest>()
             .init_resource::<Texture>()
+            .init_resource::<BackgroundLoad>()
             .add_systems(
                 Update,
                 (load_requested_model, load_requested_texture).in_set(FrameSet::Load),
@@ -97,18 +130,60 @@ impl Plugin for ModelPlugin {
 }
 
 /// Serves a pending `ModelRequest`: on success the mesh is replaced in place (so `Changed<Mesh>`
-/// fires) and the status moves to the new source; on failure only the error is recorded.
+/// fires) and the status moves to the new source; on failure only the error is recorded. A file
+/// too big to load within a frame goes to a worker thread instead (`ModelStatus::loading` says
+/// how far it is) and is served like this in the frame that finds it done; a newer request
+/// cancels it.
 pub fn load_requested_model(
     mut commands: Commands,
     mut request: ResMut<ModelRequest>,
     params: Res<PrimitiveParams>,
     mut status: ResMut<ModelStatus>,
     mut meshes: Query<&mut Mesh>,
+    mut background: ResMut<BackgroundLoad>,
 ) {
-    let Some(source) = request.0.take() else {
+    if let Some(source) = request.0.take() {
+        background.cancel();
+        status.loading = None;
+        if let Some(path) = background::big_file(&source) {
+            status.loading = background.start(source.clone(), path);
+            if status.loading.is_some() {
+                return;
+            }
+        }
+        let loaded = load(&source, &params);
+        show(&mut commands, &mut status, &mut meshes, source, loaded);
         return;
-    };
-    match load(&source, &params) {
+    }
+    match background.poll() {
+        Some(Poll::Done(source, loaded)) => {
+            status.loading = None;
+            show(&mut commands, &mut status, &mut meshes, source, loaded);
+        }
+        Some(Poll::Running(fraction)) => {
+            // Only a real change marks the status changed.
+            if status
+                .loading
+                .as_ref()
+                .is_some_and(|l| l.fraction != fraction)
+                && let Some(loading) = status.loading.as_mut()
+            {
+                loading.fraction = fraction;
+            }
+        }
+        None => {}
+    }
+}
+
+/// Puts a loaded model in place of the one mesh, or records why it did not load.
+fn show(
+    commands: &mut Commands,
+    status: &mut ModelStatus,
+    meshes: &mut Query<&mut Mesh>,
+    source: ModelSource,
+    loaded: Result<LoadedModel, String>,
+) {
+    match loaded {
         Ok(loaded) => {
             match meshes.iter_mut().next() {
                 Some(mut mesh) => *mesh = loaded.mesh,
@@ -121,6 +196,7 @@ pub fn load_requested_model(
                 warnings: loaded.warnings,
                 error: None,
                 generation: status.generation + 1,
+                loading: None,
             };
         }
         Err(message) => status.error = Some(message),

@@ -8,7 +8,11 @@ use glam::{Vec2, Vec3};
 /// per triangle.
 pub(crate) struct MeshBuilder {
     mesh: Mesh,
-    index: HashMap<[u32; 8], u32>,
+    /// A 64-bit fingerprint of each corner's bits → its index. Fingerprints rather than the 32
+    /// bytes themselves halve the map, the largest thing a big load holds besides the mesh; a
+    /// hit is confirmed against the mesh, and a corner whose fingerprint is taken by another
+    /// simply is not shared.
+    index: HashMap<u64, u32>,
     /// Whether any corner had a texture coordinate (the others get (0, 0)).
     textured: bool,
 }
@@ -35,17 +39,15 @@ impl MeshBuilder {
     ) -> Result<u32, String> {
         self.textured |= uv.is_some();
         let (position, normal, uv) = (position + 0.0, normal + 0.0, uv.unwrap_or_default() + 0.0);
-        let key = [
-            position.x.to_bits(),
-            position.y.to_bits(),
-            position.z.to_bits(),
-            normal.x.to_bits(),
-            normal.y.to_bits(),
-            normal.z.to_bits(),
-            uv.x.to_bits(),
-            uv.y.to_bits(),
-        ];
-        if let Some(&i) = self.index.get(&key) {
+        let key = bits(position, normal, uv);
+        let fingerprint = key.iter().fold(0u64, |h, &w| {
+            (h ^ u64::from(w))
+                .wrapping_mul(0x9e37_79b9_7f4a_7c15)
+                .rotate_left(29)
+        });
+        if let Some(&i) = self.index.get(&fingerprint)
+            && self.key_of(i as usize) == key
+        {
             return Ok(i);
         }
         let i = u32::try_from(self.mesh.positions.len())
@@ -53,8 +55,16 @@ impl MeshBuilder {
         self.mesh.positions.push(position);
         self.mesh.normals.push(normal);
         self.mesh.uvs.push(uv);
-        self.index.insert(key, i);
+        self.index.entry(fingerprint).or_insert(i);
         Ok(i)
+    }
+
+    fn key_of(&self, i: usize) -> [u32; 8] {
+        bits(
+            self.mesh.positions[i],
+            self.mesh.normals[i],
+            self.mesh.uvs[i],
+        )
     }
 
     pub(crate) fn triangle(&mut self, corners: [u32; 3]) {
@@ -68,6 +78,11 @@ impl MeshBuilder {
         }
         self.mesh
     }
+}
+
+/// A corner as the builder compares corners: the bits of its eight numbers.
+fn bits(p: Vec3, n: Vec3, uv: Vec2) -> [u32; 8] {
+    [p.x, p.y, p.z, n.x, n.y, n.z, uv.x, uv.y].map(f32::to_bits)
 }
 
 #[cfg(test)]

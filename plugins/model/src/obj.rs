@@ -3,11 +3,13 @@
 //! the app draws in one chosen colour.
 
 use std::collections::HashMap;
+use std::io::BufReader;
 
 use glam::{Vec2, Vec3};
 
 use crate::diagnostics::expected;
 use crate::mesh_builder::MeshBuilder;
+use crate::progress::{Counted, LoadProgress};
 use crate::{LoadedModel, file_stem};
 
 /// One triangle corner as tobj gives it.
@@ -39,6 +41,15 @@ fn corners(mesh: &tobj::Mesh) -> impl Iterator<Item = [Corner; 3]> + '_ {
 
 /// Parses the text of a `.obj` file; `label` names the file in messages.
 pub fn parse_obj(text: &str, label: &str) -> Result<LoadedModel, String> {
+    read_obj(text, label, &LoadProgress::default())
+}
+
+/// [`parse_obj`], counting what tobj reads into `progress`.
+pub(crate) fn read_obj(
+    text: &str,
+    label: &str,
+    progress: &LoadProgress,
+) -> Result<LoadedModel, String> {
     check_records(text, label)?;
     let options = tobj::LoadOptions {
         triangulate: true,
@@ -46,9 +57,12 @@ pub fn parse_obj(text: &str, label: &str) -> Result<LoadedModel, String> {
         ignore_points: true,
         ignore_lines: true,
     };
-    let (models, _) =
-        tobj::load_obj_buf(&mut text.as_bytes(), &options, |_| Ok(Default::default()))
-            .map_err(|e| format!("{label}: not a readable .obj file: tobj says {e}"))?;
+    let mut counted = BufReader::new(Counted {
+        inner: text.as_bytes(),
+        progress,
+    });
+    let (models, _) = tobj::load_obj_buf(&mut counted, &options, |_| Ok(Default::default()))
+        .map_err(|e| format!("{label}: not a readable .obj file: tobj says {e}"))?;
     let triangles: Vec<[Corner; 3]> = models.iter().flat_map(|m| corners(&m.mesh)).collect();
     if triangles.is_empty() {
         return Err(format!(

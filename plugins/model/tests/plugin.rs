@@ -61,6 +61,7 @@ fn a_request_replaces_the_one_mesh_and_bumps_the_generation() {
             warnings: Vec::new(),
             error: None,
             generation: 1,
+            loading: None,
         }
     );
     assert_eq!(

@@ -1,15 +1,17 @@
 //! What close2gl's test suites share, so that no test file keeps its own copy: meshes built by
-//! hand ([`cube`], [`sphere`]), the world a test starts from ([`world_with`], [`camera`],
+//! hand ([`cube`], [`sphere`]), big model files written on the spot ([`write_grid_in`]), the world a test starts from ([`world_with`], [`camera`],
 //! [`mesh`]), with feature `gpu` the one headless GPU adapter a test binary uses ([`gpu`]), and
 //! with feature `panel` the egui control panel driven headless ([`panel::Harness`]). Used as a
 //! dev-dependency only.
 
+mod big_model;
 mod meshes;
 #[cfg(feature = "panel")]
 pub mod panel;
 
 use close2gl_core::{App, Camera, Lighting, Mesh, RenderSettings, Viewport};
 
+pub use big_model::{GridFile, write_grid_in};
 pub use meshes::{cube, sphere};
 
 /// An app whose world has `settings`, `viewport`, the default lighting, one `camera` and one

@@ -1,5 +1,7 @@
+use std::time::Duration;
+
 use bevy_ecs::prelude::*;
-use close2gl_core::{Mesh, ModelRequest, ModelSource, ModelStatus, PrimitiveKind};
+use close2gl_core::{Loading, Mesh, ModelRequest, ModelSource, ModelStatus, PrimitiveKind};
 
 use crate::PanelState;
 
@@ -27,6 +29,24 @@ fn path_field(
         }
     });
     request
+}
+
+/// How often the panel asks to be drawn while a model loads: the viewer otherwise sleeps until
+/// input comes, and the bar would not move.
+const LOADING_REPAINT: Duration = Duration::from_millis(100);
+
+/// The bar of a model loading in the background, named and in percent.
+fn loading_bar(ui: &mut egui::Ui, loading: &Loading) {
+    let name = match &loading.source {
+        ModelSource::File(path) => path.file_name().map_or_else(
+            || path.display().to_string(),
+            |n| n.to_string_lossy().into(),
+        ),
+        ModelSource::Primitive(kind) => kind.name().to_string(),
+    };
+    let percent = (loading.fraction * 100.0).floor();
+    ui.add(egui::ProgressBar::new(loading.fraction).text(format!("loading {name}: {percent}%")));
+    ui.ctx().request_repaint_after(LOADING_REPAINT);
 }
 
 /// A path field with Load, a button per primitive, Reload, and what the last load said.
@@ -57,6 +77,9 @@ pub fn section(ui: &mut egui::Ui, world: &mut World) {
             mesh.triangles.len(),
             mesh.positions.len()
         ));
+    }
+    if let Some(loading) = &status.loading {
+        loading_bar(ui, loading);
     }
     if let Some(error) = &status.error {
         ui.colored_label(ui.visuals().error_fg_color, error);

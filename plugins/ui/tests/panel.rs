@@ -143,3 +143,18 @@ fn the_texture_section_switches_texturing_and_the_filter_and_asks_for_an_image()
         "nothing here takes the request (no model plugin), so it is still waiting"
     );
 }
+
+#[test]
+fn a_model_loading_in_the_background_shows_a_bar_with_its_name_and_percent() {
+    let mut h = Harness::new();
+    assert!(!h.shows("loading big.in: 42%"));
+    h.world().resource_mut::<ModelStatus>().loading = Some(close2gl_core::Loading {
+        source: ModelSource::File("models/big.in".into()),
+        fraction: 0.425,
+    });
+    h.frame(Vec::new());
+    h.node(Role::ProgressIndicator, "loading big.in: 42%");
+    h.world().resource_mut::<ModelStatus>().loading = None;
+    h.frame(Vec::new());
+    assert!(!h.shows("loading big.in: 42%"), "gone once loaded");
+}

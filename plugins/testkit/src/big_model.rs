@@ -1,0 +1,61 @@
+//! Big model files written on the spot, for the tests of loading them (memory, progress, the
+//! background load): nobody keeps a 200 MB file in the repository.
+
+use std::fs::File;
+use std::io::{BufWriter, Write};
+use std::path::Path;
+
+/// What [`write_grid_in`] wrote.
+#[derive(Clone, Copy, Debug)]
+pub struct GridFile {
+    pub bytes: u64,
+    pub triangles: usize,
+    /// Distinct corners: what the loaded mesh holds, each shared by up to six triangles.
+    pub vertices: usize,
+}
+
+impl GridFile {
+    /// Bytes of the loaded mesh's own arrays: a position and a normal per vertex, three 32-bit
+    /// indices per triangle (no texture coordinates).
+    pub fn mesh_bytes(&self) -> u64 {
+        (self.vertices * 2 * 12 + self.triangles * 12) as u64
+    }
+}
+
+/// Writes a course `.in` file of a flat `side` × `side` grid of unit squares, two triangles
+/// each, facing +z: about 160 bytes a triangle, so `side` = 800 gives some 200 MB.
+pub fn write_grid_in(path: &Path, name: &str, side: usize) -> std::io::Result<GridFile> {
+    let triangles = 2 * side * side;
+    let mut out = BufWriter::new(File::create(path)?);
+    writeln!(out, "Object name = {name}")?;
+    writeln!(out, "# triangles = {triangles}")?;
+    writeln!(out, "Material count = 1")?;
+    writeln!(out, "ambient color 0.2 0.2 0.2")?;
+    writeln!(out, "diffuse color 0.8 0.8 0.8")?;
+    writeln!(out, "specular color 0.0 0.0 0.0")?;
+    writeln!(out, "material shine 1.0")?;
+    writeln!(
+        out,
+        "-- 3*[pos(x,y,z) normal(x,y,z) color_index] face_normal(x,y,z)"
+    )?;
+    for row in 0..side {
+        for column in 0..side {
+            let (x, y) = (column as f32, row as f32);
+            for corners in [
+                [(x, y), (x + 1.0, y), (x + 1.0, y + 1.0)],
+                [(x, y), (x + 1.0, y + 1.0), (x, y + 1.0)],
+            ] {
+                for (k, (cx, cy)) in corners.into_iter().enumerate() {
+                    writeln!(out, "v{k} {cx:.6} {cy:.6} 0.000000 0.0 0.0 1.0 0")?;
+                }
+                writeln!(out, "face normal 0.0 0.0 1.0")?;
+            }
+        }
+    }
+    out.flush()?;
+    Ok(GridFile {
+        bytes: std::fs::metadata(path)?.len(),
+        triangles,
+        vertices: (side + 1) * (side + 1),
+    })
+}
