@@ -19,6 +19,7 @@
 pub mod commands;
 pub mod config;
 mod progress;
+pub mod watch;
 
 pub use close2gl_camera as camera;
 pub use close2gl_core as core;
@@ -27,6 +28,7 @@ pub use close2gl_model as model;
 pub use close2gl_pipeline as pipeline;
 pub use close2gl_raster as raster;
 
+use close2gl_core::bevy_ecs::world::World;
 use close2gl_core::{
     App, Camera, Framing, ModelRequest, ModelStatus, Plugin, SettingsPlugin, TextureRequest,
     Viewport,
@@ -58,17 +60,9 @@ impl Plugin for DefaultPlugins {
 /// anything is shown.
 pub fn build_app(config: &Config, viewport: Viewport) -> Result<App, String> {
     let mut app = App::new();
-    app.insert_resource(config.render)
-        .insert_resource(config.lighting)
-        .insert_resource(config.primitives)
-        .insert_resource(config.camera.speeds)
-        .insert_resource(config.input.clone())
+    apply_settings(app.world_mut(), config);
+    app.insert_resource(config.camera.speeds)
         .insert_resource(viewport)
-        .insert_resource(Framing {
-            pose: config.camera.pose(),
-            near: config.camera.near,
-            far: config.camera.far,
-        })
         .insert_resource(ModelRequest(Some(config.model.clone())))
         .insert_resource(TextureRequest(config.texture.clone()))
         .add_plugins(DefaultPlugins);
@@ -84,6 +78,21 @@ pub fn build_app(config: &Config, viewport: Viewport) -> Result<App, String> {
         Some(error) => Err(error.clone()),
         None => Ok(app),
     }
+}
+
+/// The settings of `config` that a running app takes as they are: render switches, lighting,
+/// primitives, key bindings and the framing rules (the camera, the model and the speeds are the
+/// caller's, who knows whether they are new).
+pub fn apply_settings(world: &mut World, config: &Config) {
+    world.insert_resource(config.render);
+    world.insert_resource(config.lighting);
+    world.insert_resource(config.primitives);
+    world.insert_resource(config.input.clone());
+    world.insert_resource(Framing {
+        pose: config.camera.pose(),
+        near: config.camera.near,
+        far: config.camera.far,
+    });
 }
 
 /// Runs frames until a model loading in the background is in, showing its progress.

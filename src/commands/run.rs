@@ -1,11 +1,13 @@
 //! `close2gl [MODEL]`: the interactive viewer, both views and the control panel.
 
 use std::path::PathBuf;
+use std::sync::Arc;
 
-use close2gl_viewer::{ViewerOptions, ViewerPlugin};
+use close2gl_viewer::{Recording, ViewerOptions, ViewerPlugin};
 
 use super::CliError;
 use super::scene::{SceneArgs, print_warnings, viewport};
+use crate::watch::WatchPlugin;
 
 /// Frames drawn before `--screenshot` saves one, when `--exit-after-frames` does not say.
 const SCREENSHOT_FRAMES: u32 = 5;
@@ -17,30 +19,92 @@ pub struct RunArgs {
     /// The window's size, WIDTHxHEIGHT (default: window.width x window.height from the config).
     #[arg(long, value_name = "WxH")]
     pub size: Option<String>,
-    /// Save the window as PNG after the last frame (see --exit-after-frames; default 5), then
-    /// exit. With window.layout = "windows", both windows side by side.
+    /// Save the window as PNG after the last frame (see --exit-after-frames; default 5, or the
+    /// last frame of --replay), then exit. With window.layout = "windows", both windows side by
+    /// side.
     #[arg(long, value_name = "FILE")]
     pub screenshot: Option<PathBuf>,
     /// Draw this many frames, then exit.
     #[arg(long, value_name = "N", value_parser = clap::value_parser!(u32).range(1..))]
     pub exit_after_frames: Option<u32>,
+    /// Where the screenshot key (F12) saves both views and the command that renders them.
+    #[arg(long, value_name = "DIR", default_value = ".")]
+    pub screenshot_dir: PathBuf,
+    /// Reload the model, its texture and the config file when they change on disk, keeping the
+    /// camera where it is.
+    #[arg(long)]
+    pub watch: bool,
+    /// Write every frame's input to FILE (one JSON line a frame), for --replay.
+    #[arg(long, value_name = "FILE", conflicts_with = "replay")]
+    pub record: Option<PathBuf>,
+    /// Play FILE's input back, frame by frame with its recorded time steps (the window opens at
+    /// the recorded size; live input is ignored meanwhile), then exit (see --keep-open).
+    #[arg(long, value_name = "FILE", conflicts_with = "size")]
+    pub replay: Option<PathBuf>,
+    /// After --replay, stay open for live input instead of exiting.
+    #[arg(long, requires = "replay", conflicts_with = "exit_after_frames")]
+    pub keep_open: bool,
 }
 
 pub fn run(args: RunArgs) -> Result<(), CliError> {
-    let config = args.scene.config()?;
-    let size = viewport(args.size.as_deref(), &config)?;
+    let replay = args
+        .replay
+        .as_deref()
+        .map(Recording::read)
+        .transpose()
+        .map_err(CliError::Input)?;
+    // A replay given no scene shows the one it was recorded on.
+    let scene = match &replay {
+        Some(recording) if args.scene.is_empty() => {
+            SceneArgs::from_words(&recording.header.scene).map_err(CliError::Input)?
+        }
+        _ => args.scene.clone(),
+    };
+    let config = scene.config()?;
+    let size = match &replay {
+        Some(recording) => close2gl_core::Viewport {
+            width: recording.header.size[0],
+            height: recording.header.size[1],
+        },
+        None => viewport(args.size.as_deref(), &config)?,
+    };
     // The first frame's layout replaces this with the views' real size.
     let mut app = crate::build_app(&config, size).map_err(CliError::Input)?;
     print_warnings(&app);
-    let exit_after_frames = args
-        .exit_after_frames
-        .or(args.screenshot.is_some().then_some(SCREENSHOT_FRAMES));
+    let (exit_after_frames, screenshot_frame) = match &replay {
+        Some(recording) => {
+            let frames = recording.frames.len() as u32;
+            ((!args.keep_open).then_some(frames), Some(frames))
+        }
+        None => {
+            let exit = args
+                .exit_after_frames
+                .or(args.screenshot.is_some().then_some(SCREENSHOT_FRAMES));
+            (exit, exit)
+        }
+    };
+    if args.watch {
+        let scene = scene.clone();
+        app.add_plugins(WatchPlugin {
+            config_file: crate::config::file_to_read(scene.config.as_deref()),
+            reload: Arc::new(Box::new(move || {
+                scene.config().map_err(|e| match e {
+                    CliError::Input(m) | CliError::Runtime(m) => m,
+                })
+            })),
+        });
+    }
     app.add_plugins(ViewerPlugin(ViewerOptions {
         layout: config.window.layout,
         width: size.width,
         height: size.height,
         screenshot: args.screenshot,
+        screenshot_frame,
         exit_after_frames,
+        screenshot_dir: args.screenshot_dir,
+        record: args.record,
+        scene: scene.words(),
+        replay,
     }));
     app.run().map_err(CliError::Runtime)
 }

@@ -19,7 +19,45 @@ pub struct SceneArgs {
     pub set: Vec<String>,
 }
 
+/// The scene's words alone, parsed as the command line parses them.
+#[derive(clap::Parser)]
+struct SceneWords {
+    #[command(flatten)]
+    scene: SceneArgs,
+}
+
 impl SceneArgs {
+    /// Nothing given: the config file's (or the defaults') scene.
+    pub fn is_empty(&self) -> bool {
+        self.model.is_none() && self.config.is_none() && self.set.is_empty()
+    }
+
+    /// The command-line words that give this scene, `[MODEL] [--config FILE] [--set ...]`,
+    /// with files as absolute paths so that the words mean the same from any directory.
+    pub fn words(&self) -> Vec<String> {
+        let absolute = |path: &str| match std::fs::canonicalize(path) {
+            Ok(path) => path.display().to_string(),
+            Err(_) => path.to_string(),
+        };
+        let mut words: Vec<String> = self.model.iter().map(|m| absolute(m)).collect();
+        if let Some(config) = &self.config {
+            words.extend(["--config".into(), absolute(&config.display().to_string())]);
+        }
+        for set in &self.set {
+            words.extend(["--set".into(), set.clone()]);
+        }
+        words
+    }
+
+    /// The scene `words` (as [`SceneArgs::words`] writes them) give.
+    pub fn from_words(words: &[String]) -> Result<SceneArgs, String> {
+        use clap::Parser;
+        let all = std::iter::once("close2gl".to_string()).chain(words.iter().cloned());
+        SceneWords::try_parse_from(all)
+            .map(|w| w.scene)
+            .map_err(|e| format!("the recorded scene {words:?}: {}", e.kind()))
+    }
+
     /// The configuration with the overrides and the MODEL argument applied.
     pub fn config(&self) -> Result<Config, CliError> {
         let mut config =

@@ -14,7 +14,7 @@ use close2gl_core::{
     RenderSettings,
 };
 
-pub use load::{load, load_text, parse_size};
+pub use load::{file_to_read, load, load_text, parse_size};
 
 /// `[camera]`: the optional pose and the lens; near and far follow the model unless pinned.
 #[derive(Clone, Debug, PartialEq)]
@@ -22,6 +22,11 @@ pub struct CameraConfig {
     pub position: Option<Vec3>,
     pub target: Option<Vec3>,
     pub up: Vec3,
+    /// `camera.u`, `camera.v`, `camera.n`: an exact basis (all three or none), as a copied
+    /// view's command gives it.
+    pub u: Option<Vec3>,
+    pub v: Option<Vec3>,
+    pub n: Option<Vec3>,
     pub hfov: f32,
     pub vfov: f32,
     pub near: Option<f32>,
@@ -62,6 +67,9 @@ impl Default for Config {
                 position: None,
                 target: None,
                 up: Vec3::Y,
+                u: None,
+                v: None,
+                n: None,
                 hfov: DEFAULT_FOV,
                 vfov: DEFAULT_FOV,
                 near: None,
@@ -91,7 +99,13 @@ impl CameraConfig {
             position,
             target: self.target.unwrap_or(Vec3::ZERO),
             up: self.up,
+            basis: self.basis(),
         })
+    }
+
+    /// u, v, n when all three are given.
+    pub fn basis(&self) -> Option<[Vec3; 3]> {
+        Some([self.u?, self.v?, self.n?])
     }
 }
 

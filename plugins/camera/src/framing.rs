@@ -16,10 +16,12 @@ pub fn frame(centre: Vec3, radius: f32, lens: &Camera, framing: &Framing) -> Cam
         position,
         target,
         up,
+        basis,
     } = framing.pose.unwrap_or(Pose {
         position: centre + Vec3::Z * distance,
         target: centre,
         up: Vec3::Y,
+        basis: None,
     });
     // The clipping planes hug the model as seen from where the camera really is; from inside the
     // model, near shrinks to a small fraction of its size.
@@ -37,9 +39,17 @@ pub fn frame(centre: Vec3, radius: f32, lens: &Camera, framing: &Framing) -> Cam
         n: Vec3::Z,
         ..lens
     };
-    let mut camera = match framing.pose {
-        Some(_) => lens.looking_at(position, target, up).unwrap_or(from_plus_z),
-        None => from_plus_z,
+    let mut camera = match (framing.pose, basis) {
+        (Some(_), Some([u, v, n])) => Camera {
+            position,
+            target,
+            u,
+            v,
+            n,
+            ..lens
+        },
+        (Some(_), None) => lens.looking_at(position, target, up).unwrap_or(from_plus_z),
+        (None, _) => from_plus_z,
     };
     pin_clipping_planes(&mut camera, framing);
     camera
@@ -101,6 +111,7 @@ mod tests {
                     position,
                     target: Vec3::ZERO,
                     up: Vec3::Y,
+                    basis: None,
                 }),
                 ..Framing::default()
             };
@@ -125,6 +136,7 @@ mod tests {
                 position: Vec3::new(5.0, 0.0, 0.0),
                 target: Vec3::ZERO,
                 up: Vec3::Y,
+                basis: None,
             }),
             near: Some(0.5),
             far: None,
@@ -134,5 +146,27 @@ mod tests {
         assert!((camera.n - Vec3::X).length() < 1e-6);
         assert_eq!(camera.near, 0.5);
         assert!(camera.far > camera.near);
+    }
+
+    #[test]
+    fn a_given_basis_is_taken_as_it_is() {
+        // Not what looking_at would derive from the target: the basis wins, bit for bit.
+        let (u, v, n) = (
+            Vec3::new(0.6, 0.0, -0.8),
+            Vec3::new(0.0, 1.0, 0.0),
+            Vec3::new(0.8, 0.0, 0.6),
+        );
+        let framing = Framing {
+            pose: Some(Pose {
+                position: Vec3::new(4.0, 0.1, 3.0),
+                target: Vec3::ZERO,
+                up: Vec3::Y,
+                basis: Some([u, v, n]),
+            }),
+            ..Framing::default()
+        };
+        let camera = frame(Vec3::ZERO, 1.0, &Camera::default(), &framing);
+        assert_eq!((camera.u, camera.v, camera.n), (u, v, n));
+        assert_eq!(camera.position, Vec3::new(4.0, 0.1, 3.0));
     }
 }

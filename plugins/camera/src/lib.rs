@@ -3,7 +3,8 @@
 //! that pose is stored as `CameraHome`; `CameraSpeeds::model_radius` follows the model's size)
 //! and camera motion (it drains `CameraActions` into the `Camera`: translations along u, v, n,
 //! rotations about them, orbits of the look-at point, zoom, reset, mode toggle). It owns
-//! `CameraActions`, `CameraSpeeds` and `Framing`; its systems run in `FrameSet::Camera`, after
+//! `CameraActions`, `CameraSpeeds`, `Framing` and `KeepPose` (set, a new mesh leaves the camera
+//! where it is: a watched file reloaded); its systems run in `FrameSet::Camera`, after
 //! `FrameSet::Load`, so a mesh loaded this frame is framed this frame.
 
 pub mod framing;
@@ -11,7 +12,8 @@ pub mod motion;
 
 use bevy_ecs::prelude::*;
 use close2gl_core::{
-    App, Camera, CameraActions, CameraHome, CameraSpeeds, FrameSet, Framing, Mesh, Plugin, Update,
+    App, Camera, CameraActions, CameraHome, CameraSpeeds, FrameSet, Framing, KeepPose, Mesh,
+    Plugin, Update,
 };
 
 pub struct CameraPlugin;
@@ -21,6 +23,7 @@ impl Plugin for CameraPlugin {
         app.init_resource::<CameraActions>()
             .init_resource::<CameraSpeeds>()
             .init_resource::<Framing>()
+            .init_resource::<KeepPose>()
             .add_systems(
                 Update,
                 (frame_new_model, apply_camera_actions)
@@ -30,21 +33,26 @@ impl Plugin for CameraPlugin {
     }
 }
 
-/// Frames the camera on a model that just arrived and remembers the pose for reset.
+/// Frames the camera on a model that just arrived and remembers the pose for reset; with
+/// `KeepPose` set, only the speeds follow the new model's size.
 pub fn frame_new_model(
     mut commands: Commands,
     mesh: Single<Ref<Mesh>>,
     camera: Single<(Entity, &mut Camera)>,
     framing: Res<Framing>,
+    mut keep_pose: ResMut<KeepPose>,
     mut speeds: ResMut<CameraSpeeds>,
 ) {
     if !mesh.is_changed() {
         return;
     }
     let (centre, radius) = mesh.bounding_sphere();
+    speeds.model_radius = radius.max(f32::MIN_POSITIVE);
+    if std::mem::take(&mut keep_pose.0) {
+        return;
+    }
     let (entity, mut camera) = camera.into_inner();
     *camera = framing::frame(centre, radius, &camera, &framing);
-    speeds.model_radius = radius.max(f32::MIN_POSITIVE);
     commands.entity(entity).insert(CameraHome(*camera));
 }
 

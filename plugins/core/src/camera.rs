@@ -153,6 +153,10 @@ pub struct Pose {
     pub position: Vec3,
     pub target: Vec3,
     pub up: Vec3,
+    /// The camera's own u, v, n, when given (as a copied view's command gives them): taken as
+    /// they are instead of being derived from the target and up, so that the view is
+    /// reproduced to the bit.
+    pub basis: Option<[Vec3; 3]>,
 }
 
 /// What framing a newly loaded model must respect: an explicit pose from the config replaces the
@@ -163,3 +167,9 @@ pub struct Framing {
     pub near: Option<f32>,
     pub far: Option<f32>,
 }
+
+/// The next newly loaded mesh leaves the camera where it is (a watched file saved again: the
+/// user is looking at a detail and wants to see it change, not to be thrown back to the framed
+/// pose). Cleared when a mesh arrives.
+#[derive(Resource, Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct KeepPose(pub bool);

@@ -34,7 +34,7 @@ pub struct InputBindings(pub BTreeMap<String, String>);
 
 impl InputBindings {
     /// Every bindable action with its default key.
-    pub const DEFAULTS: [(&'static str, &'static str); 17] = [
+    pub const DEFAULTS: [(&'static str, &'static str); 20] = [
         ("forward", "w"),
         ("back", "s"),
         ("left", "a"),
@@ -52,10 +52,28 @@ impl InputBindings {
         ("original_color", "shift+d"),
         ("phong", "shift+p"),
         ("gouraud", "shift+g"),
+        ("help", "f1 ?"),
+        ("screenshot", "f12"),
+        ("copy_command", "c"),
     ];
 
+    /// The binding as written: one key, or several separated by spaces (`"f1 ?"`).
     pub fn key(&self, action: &str) -> Option<&str> {
         self.0.get(action).map(String::as_str)
+    }
+
+    /// Each key bound to `action`.
+    pub fn keys<'a>(&'a self, action: &str) -> impl Iterator<Item = &'a str> {
+        self.key(action).into_iter().flat_map(str::split_whitespace)
+    }
+
+    /// Whether `pressed` (a name from `InputState::pressed`) is one of `action`'s keys. A symbol
+    /// typed with Shift ("?" on most layouts) also matches its binding without "shift+".
+    pub fn matches(&self, action: &str, pressed: &str) -> bool {
+        let symbol = |k: &str| k.chars().count() == 1 && !k.chars().all(char::is_alphanumeric);
+        self.keys(action).any(|key| {
+            key == pressed || (symbol(key) && pressed.strip_prefix("shift+") == Some(key))
+        })
     }
 }
 

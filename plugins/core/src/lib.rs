@@ -18,14 +18,18 @@ mod layout;
 pub mod limits;
 mod mesh;
 mod model;
+pub mod repro;
 mod schedule;
 mod settings;
 mod settings_plugin;
 mod texture;
+mod tools;
+mod wake;
 
 pub use app::{App, Plugin};
 pub use camera::{
-    Camera, CameraAction, CameraActions, CameraHome, CameraMode, CameraSpeeds, Framing, Pose,
+    Camera, CameraAction, CameraActions, CameraHome, CameraMode, CameraSpeeds, Framing, KeepPose,
+    Pose,
 };
 pub use frame::{
     Close2glFrame, CutVertex, RasterGeometry, RasterVertex, SoftwareFrame, StageCounts, Topology,
@@ -35,8 +39,7 @@ pub use input::{InputBindings, InputState};
 pub use layout::Layout;
 pub use mesh::Mesh;
 pub use model::{
-    Loading, ModelRequest, ModelSource, ModelStatus, PrimitiveKind, PrimitiveParams,
-    TextureRequest,
+    Loading, ModelRequest, ModelSource, ModelStatus, PrimitiveKind, PrimitiveParams, TextureRequest,
 };
 pub use named::NamedEnum;
 pub use schedule::{FrameSet, PostUpdate, PreUpdate, Render, Startup, Update, frame_schedules};
@@ -45,6 +48,8 @@ pub use settings::{
 };
 pub use settings_plugin::SettingsPlugin;
 pub use texture::{Image8, Texture, checkerboard};
+pub use tools::ToolRequests;
+pub use wake::Wake;
 
 /// Re-exported so that plugin authors need only this crate to write systems.
 pub use bevy_ecs;

@@ -1,18 +1,20 @@
 //! The owner of the settings both views follow.
 
-use crate::{App, Lighting, Plugin, RenderSettings, Viewport};
+use crate::{App, Lighting, Plugin, RenderSettings, Viewport, Wake};
 
 /// Owns [`RenderSettings`] (one set of switches for both views), [`Lighting`] (both views light
 /// the model with it) and [`Viewport`] (the size both views share): neither view owns what the
 /// other must follow too. The input plugin, the panel
 /// and the viewer write them; the Close2GL pipeline and the GPU views read them. Values inserted
-/// before the plugin is added (the configuration's) are kept.
+/// before the plugin is added (the configuration's) are kept. It owns [`Wake`] too, which the
+/// viewer fills and any plugin's background work clones.
 pub struct SettingsPlugin;
 
 impl Plugin for SettingsPlugin {
     fn build(&self, app: &mut App) {
         app.init_resource::<RenderSettings>()
             .init_resource::<Lighting>()
-            .init_resource::<Viewport>();
+            .init_resource::<Viewport>()
+            .init_resource::<Wake>();
     }
 }

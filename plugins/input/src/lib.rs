@@ -1,15 +1,16 @@
 //! The input plugin. It owns the mapping from raw input to intent: it reads `InputState` (keys
 //! held and pressed, mouse drag, scroll, frame time), `InputBindings` and `CameraSpeeds`, and
 //! writes `CameraActions` (moves scaled by the model's size, rotations, zoom, reset, mode toggle)
-//! and, for the lecture's Shift+D / Shift+P / Shift+G keys, `RenderSettings::shading`. It knows
+//! and, for the lecture's Shift+D / Shift+P / Shift+G keys, `RenderSettings::shading`, and the
+//! tool keys (cheat sheet, screenshot, copy as command) into `ToolRequests`. It knows
 //! no window system: the viewer fills `InputState`, and so can a test. It owns `InputState` and
-//! `InputBindings`; the camera plugin provides the actions and speeds, the core's
+//! `InputBindings` and `ToolRequests`; the camera plugin provides the actions and speeds, the core's
 //! `SettingsPlugin` the render settings. Its system runs in `FrameSet::Input`.
 
 use bevy_ecs::prelude::*;
 use close2gl_core::{
     App, CameraAction, CameraActions, CameraSpeeds, FrameSet, InputBindings, InputState, Plugin,
-    PreUpdate, RenderSettings, Shading,
+    PreUpdate, RenderSettings, Shading, ToolRequests,
 };
 
 pub struct InputPlugin;
@@ -18,6 +19,7 @@ impl Plugin for InputPlugin {
     fn build(&self, app: &mut App) {
         app.init_resource::<InputState>()
             .init_resource::<InputBindings>()
+            .init_resource::<ToolRequests>()
             .requires::<CameraActions>("InputPlugin", "CameraPlugin")
             .requires::<CameraSpeeds>("InputPlugin", "CameraPlugin")
             .requires::<RenderSettings>("InputPlugin", "SettingsPlugin")
@@ -38,14 +40,12 @@ pub fn map_input(
     speeds: Res<CameraSpeeds>,
     mut actions: ResMut<CameraActions>,
     mut settings: ResMut<RenderSettings>,
+    mut tools: ResMut<ToolRequests>,
 ) {
     let dt = input.dt.clamp(0.0, MAX_DT);
     // Held keys move the camera only without Shift, which belongs to the shading keys.
     let held = |action: &str| {
-        !input.held.contains("shift")
-            && bindings
-                .key(action)
-                .is_some_and(|key| input.held.contains(key))
+        !input.held.contains("shift") && bindings.keys(action).any(|key| input.held.contains(key))
     };
     let axis = |plus: &str, minus: &str| f32::from(held(plus)) - f32::from(held(minus));
 
@@ -75,19 +75,27 @@ pub fn map_input(
     }
 
     for pressed in &input.pressed {
-        apply_press(pressed, &bindings, &mut actions.0, &mut settings);
+        apply_press(
+            pressed,
+            &bindings,
+            &mut actions.0,
+            &mut settings,
+            &mut tools,
+        );
     }
 }
 
-/// One key press: a camera action or the lecture's shading keys. `settings` is written only
-/// when a shading key is pressed, so that it is not marked changed every frame.
+/// One key press: a camera action, the lecture's shading keys or a tool. `settings` and `tools`
+/// are written only when one of their keys is pressed, so that they are not marked changed
+/// every frame.
 fn apply_press(
     pressed: &str,
     bindings: &InputBindings,
     actions: &mut Vec<CameraAction>,
     settings: &mut ResMut<RenderSettings>,
+    tools: &mut ResMut<ToolRequests>,
 ) {
-    let is = |action: &str| bindings.key(action) == Some(pressed);
+    let is = |action: &str| bindings.matches(action, pressed);
     if is("reset") {
         actions.push(CameraAction::Reset);
     } else if is("toggle_mode") {
@@ -98,5 +106,11 @@ fn apply_press(
         settings.shading = Shading::Phong;
     } else if is("gouraud") {
         settings.shading = Shading::GouraudAds;
+    } else if is("help") {
+        tools.toggle_help = true;
+    } else if is("screenshot") {
+        tools.screenshot = true;
+    } else if is("copy_command") {
+        tools.copy_command = true;
     }
 }

@@ -117,6 +117,13 @@ impl Harness {
             })
     }
 
+    /// Whether any widget of the panel is labelled `text` (a node's own label or value).
+    pub fn shows(&self, text: &str) -> bool {
+        self.nodes
+            .iter()
+            .any(|(_, node)| node.label() == Some(text) || node.value() == Some(text))
+    }
+
     pub fn act(&mut self, role: Role, label: &str, action: Action, data: Option<ActionData>) {
         let target_node = self.node(role, label);
         self.frame(vec![egui::Event::AccessKitActionRequest(ActionRequest {

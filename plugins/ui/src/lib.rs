@@ -3,7 +3,9 @@
 //! reads and writes `RenderSettings`. Camera reads and writes the `Camera` component and
 //! `CameraSpeeds`, and pushes `CameraAction::Reset` into `CameraActions`. Stats reads
 //! `Close2glFrame` and [`ViewStats`] (frame times, the adapter's name and limitations, which the
-//! viewer fills). It owns `PanelState` and `ViewStats`; the other plugins provide what it reads.
+//! viewer fills). Tools sets `ToolRequests` (the input plugin's), carries out copy as command
+//! (clipboard and terminal) and the key cheat sheet (from `InputBindings`), and shows the
+//! [`Notice`] a tool leaves. It owns `PanelState`, `ViewStats` and `Notice`; the other plugins provide what it reads.
 //! It has no systems: it knows no window system or GPU, and the viewer hands it an `egui::Ui`
 //! and the world once a frame (before the app's frame runs), and so can a test.
 
@@ -12,6 +14,7 @@ mod model;
 mod render;
 mod stats;
 mod texture;
+mod tools;
 
 use bevy_ecs::prelude::*;
 use close2gl_core::{
@@ -20,6 +23,7 @@ use close2gl_core::{
 };
 
 pub use stats::{FrameTimer, ViewStats};
+pub use tools::{Notice, REPRO_OUT};
 
 /// Width of the side panel, its margins included, in points.
 pub const PANEL_WIDTH: f32 = 290.0;
@@ -30,6 +34,7 @@ impl Plugin for UiPlugin {
     fn build(&self, app: &mut App) {
         app.init_resource::<PanelState>()
             .init_resource::<ViewStats>()
+            .init_resource::<Notice>()
             .requires::<ModelStatus>("UiPlugin", "ModelPlugin")
             .requires::<ModelRequest>("UiPlugin", "ModelPlugin")
             .requires::<RenderSettings>("UiPlugin", "SettingsPlugin")
@@ -50,6 +55,8 @@ pub struct PanelState {
     pub lock_fov: bool,
     /// The texture path being typed.
     pub texture_path: String,
+    /// The key cheat sheet is shown.
+    pub help: bool,
 }
 
 /// Shows the panel at the right of `ui` and returns the rectangle left for the views, in points.
@@ -68,6 +75,10 @@ pub fn show(ui: &mut egui::Ui, world: &mut World) -> egui::Rect {
         .rect;
     let mut views = ui.max_rect();
     views.max.x = views.max.x.min(panel.min.x);
+    // After the panel, so that its buttons take effect in the frame they are clicked in.
+    tools::carry_out(ui.ctx(), world);
+    tools::show_notice(ui, views, world);
+    tools::cheat_sheet(ui.ctx(), world);
     views
 }
 
@@ -103,6 +114,9 @@ fn sections(ui: &mut egui::Ui, world: &mut World) {
     egui::CollapsingHeader::new("Camera")
         .default_open(true)
         .show(ui, |ui| camera::section(ui, world));
+    egui::CollapsingHeader::new("Tools")
+        .default_open(true)
+        .show(ui, |ui| tools::section(ui, world));
     egui::CollapsingHeader::new("Stats")
         .default_open(true)
         .show(ui, |ui| stats::section(ui, world));

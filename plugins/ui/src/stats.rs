@@ -12,6 +12,9 @@ pub struct ViewStats {
     pub limitations: Option<String>,
     pub reference: FrameTimer,
     pub close2gl: FrameTimer,
+    /// During `--replay`: the frame being replayed and how many there are. Times are not
+    /// shown then: a replay must draw the same window on every run, and times never repeat.
+    pub replay: Option<(u32, u32)>,
 }
 
 /// The frames of the last second: when each started and how long it took.
@@ -53,16 +56,21 @@ impl FrameTimer {
 /// FPS and frame time of each view, the Close2GL stage counts and time, the adapter.
 pub fn section(ui: &mut egui::Ui, world: &mut World) {
     let stats = world.resource::<ViewStats>();
+    let timed = stats.replay.is_none();
+    if let Some((frame, frames)) = stats.replay {
+        ui.label(format!("Replaying frame {} of {frames}", frame + 1));
+    }
     egui::Grid::new("stats_grid").num_columns(3).show(ui, |ui| {
         ui.label("");
         ui.label("FPS");
         ui.label("frame ms")
             .on_hover_text("Recording plus the GPU's work for the view, waited on.");
         ui.end_row();
-        for (name, timer) in [
+        let timers = [
             ("Reference", &stats.reference),
             ("Close2GL", &stats.close2gl),
-        ] {
+        ];
+        for (name, timer) in timers.into_iter().filter(|_| timed) {
             ui.label(name);
             ui.monospace(number(timer.fps(), 1));
             ui.monospace(number(timer.mean_ms(), 2));
@@ -87,13 +95,16 @@ pub fn section(ui: &mut egui::Ui, world: &mut World) {
                 }
                 ui.label("2D primitives");
                 ui.monospace(c.output_primitives.to_string());
-                ui.label("Geometry");
-                ui.monospace(format!("{:.2} ms", frame.stage_ms));
+                if timed {
+                    ui.label("Geometry");
+                    ui.monospace(format!("{:.2} ms", frame.stage_ms));
+                }
                 ui.end_row();
                 let software = world
                     .get_resource::<RenderSettings>()
                     .is_some_and(|s| s.close2gl_raster == Rasterizer::Software);
-                if let (true, Some(image)) = (software, world.get_resource::<SoftwareFrame>()) {
+                let image = world.get_resource::<SoftwareFrame>();
+                if let (true, true, Some(image)) = (timed, software, image) {
                     ui.label("Raster");
                     ui.monospace(format!("{:.2} ms", image.raster_ms));
                     ui.end_row();

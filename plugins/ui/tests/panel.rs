@@ -4,11 +4,12 @@
 //! it on into both GPU views.
 
 use close2gl_core::{
-    CameraAction, CameraActions, Close2glFrame, ModelRequest, ModelSource, ModelStatus,
-    PrimitiveKind, RenderMode, RenderSettings, TextureFilter, TextureRequest, Topology,
+    CameraAction, CameraActions, Close2glFrame, InputBindings, ModelRequest, ModelSource,
+    ModelStatus, PrimitiveKind, RenderMode, RenderSettings, TextureFilter, TextureRequest,
+    ToolRequests, Topology,
 };
 use close2gl_testkit::panel::Harness;
-use close2gl_ui::PanelState;
+use close2gl_ui::{Notice, PanelState};
 use egui::accesskit::Role;
 
 #[test]
@@ -141,6 +142,45 @@ fn the_texture_section_switches_texturing_and_the_filter_and_asks_for_an_image()
         h.world().resource::<TextureRequest>().0,
         Some("wood.png".into()),
         "nothing here takes the request (no model plugin), so it is still waiting"
+    );
+}
+
+#[test]
+fn the_key_cheat_sheet_lists_every_key_as_configured() {
+    let mut h = Harness::new();
+    let mut bindings = InputBindings::default();
+    bindings.0.insert("forward".into(), "i".into());
+    h.world().insert_resource(bindings);
+    h.frame(Vec::new());
+    assert!(!h.shows("move forward (along -n)"), "hidden until asked");
+
+    h.click(Role::Button, "Keys (f1 or ?)");
+    assert!(h.world().resource::<PanelState>().help);
+    // A new egui window sizes itself unseen in its first frame.
+    h.frame(Vec::new());
+    assert!(h.shows("move forward (along -n)"));
+    assert!(h.shows("i"), "the configured key, not the default w");
+    assert!(!h.shows("w"));
+    assert!(h.shows("f12") && h.shows("save both views as PNGs"));
+
+    // The help key, as the input plugin passes it on, hides it again.
+    h.world().resource_mut::<ToolRequests>().toggle_help = true;
+    h.frame(Vec::new());
+    h.frame(Vec::new());
+    assert!(!h.shows("move forward (along -n)"));
+}
+
+#[test]
+fn copy_as_command_says_what_it_copied() {
+    let mut h = Harness::new();
+    h.world().insert_resource(InputBindings::default());
+    h.frame(Vec::new());
+    h.click(Role::Button, "Copy as command (c)");
+    let notice = h.world().resource::<Notice>().text.clone();
+    assert!(notice.starts_with("Copied the command"), "{notice}");
+    assert!(
+        !h.world().resource::<ToolRequests>().copy_command,
+        "carried out once"
     );
 }
 

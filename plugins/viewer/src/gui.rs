@@ -58,9 +58,20 @@ impl Gui {
         self.state.on_window_event(window, event)
     }
 
-    /// Runs the control panel over `world`; `both_views` when this window shows both views.
-    pub fn run(&mut self, window: &Window, world: &mut World, both_views: bool) -> GuiFrame {
-        let mut input = self.state.take_egui_input(window);
+    /// The panel's input since the last frame, from the window system.
+    pub fn take_input(&mut self, window: &Window) -> egui::RawInput {
+        self.state.take_egui_input(window)
+    }
+
+    /// Runs the control panel over `world` with `input`; `both_views` when this window shows
+    /// both views.
+    pub fn run(
+        &mut self,
+        window: &Window,
+        world: &mut World,
+        both_views: bool,
+        mut input: egui::RawInput,
+    ) -> GuiFrame {
         // Laid out in the part of the window its surface draws, so that the panel of a window
         // wider than the GPU can draw stays in sight (and egui's clip rectangles inside the
         // surface).

@@ -4,8 +4,8 @@
 use std::time::Instant;
 
 use bevy_ecs::world::World;
-use close2gl_core::{App, InputState, Viewport};
-use close2gl_gpu::Image;
+use close2gl_core::{App, InputState, ToolRequests, Viewport, Wake};
+use close2gl_ui::{Notice, ViewStats};
 use winit::application::ApplicationHandler;
 use winit::event::WindowEvent;
 use winit::event_loop::{ActiveEventLoop, EventLoop};
@@ -14,7 +14,9 @@ use winit::window::WindowId;
 use crate::ViewerOptions;
 use crate::input::InputTracker;
 use crate::pacing::Pacing;
+use crate::present::{Capture, Shot};
 use crate::routing::{apply_input, offer_to_panel};
+use crate::session::Session;
 use crate::windows::Windows;
 
 pub struct Viewer {
@@ -26,10 +28,16 @@ pub struct Viewer {
     pacing: Pacing,
     result: Result<(), String>,
     frames: u32,
+    session: Session,
 }
 
 impl Viewer {
-    pub fn new(app: App, options: ViewerOptions, event_loop: &EventLoop<()>) -> Self {
+    pub fn new(
+        app: App,
+        options: ViewerOptions,
+        session: Session,
+        event_loop: &EventLoop<()>,
+    ) -> Self {
         let instance =
             wgpu::Instance::new(wgpu::InstanceDescriptor::new_with_display_handle_from_env(
                 Box::new(event_loop.owned_display_handle()),
@@ -43,6 +51,7 @@ impl Viewer {
             pacing: Pacing::new(Instant::now()),
             result: Ok(()),
             frames: 0,
+            session,
         }
     }
 
@@ -58,40 +67,76 @@ impl Viewer {
 
     /// One app frame: the panel, the layout, the systems, then every window drawn.
     fn redraw(&mut self, event_loop: &ActiveEventLoop) {
-        let capture = self.options.screenshot.is_some()
-            && self.options.exit_after_frames == Some(self.frames + 1);
         let Some(windows) = self.windows.as_mut() else {
             return;
         };
+        if self
+            .session
+            .wait_for_resize(self.frames, &windows.main.window)
+        {
+            return windows.main.window.request_redraw();
+        }
         let now = Instant::now();
         let world = self.app.world_mut();
-        world.resource_mut::<InputState>().dt = self.pacing.frame_dt(now);
+        let mut raw = windows.gui.take_input(&windows.main.window);
+        let dt = self.pacing.frame_dt(now);
+        if let Err(e) = self.session.begin_frame(self.frames, dt, &mut raw, world) {
+            return self.fail(event_loop, e);
+        }
+        world.resource_mut::<ViewStats>().replay = self.session.replay_progress(self.frames);
         let both_views = windows.close2gl.is_none();
-        let mut gui_frame = windows.gui.run(&windows.main.window, world, both_views);
+        let mut gui_frame = windows
+            .gui
+            .run(&windows.main.window, world, both_views, raw);
         windows.gui.upload_textures(&windows.gpu, &mut gui_frame);
         let placement = windows.placement(&gui_frame);
         update_viewport(world, placement.viewport);
         self.app.update();
 
+        let capture = capture(&self.options, self.frames, self.app.world_mut());
         let drawn = windows.draw(self.app.world_mut(), &gui_frame, &placement, capture);
         windows.gui.free_textures(&mut gui_frame);
         let held = end_input_frame(self.app.world_mut());
-        if let Err(e) = drawn.and_then(|shot| save(&self.options, shot)) {
+        if let Err(e) = drawn.and_then(|shot| save(&self.options, self.app.world_mut(), shot)) {
             return self.fail(event_loop, e);
         }
+        self.session.end_frame(self.frames);
         self.frames += 1;
-        let continuous = self.options.exit_after_frames;
-        if continuous.is_some_and(|n| self.frames >= n) {
+        let continuous = self.options.exit_after_frames.is_some() || self.session.is_replaying();
+        if self
+            .options
+            .exit_after_frames
+            .is_some_and(|n| self.frames >= n)
+        {
             return event_loop.exit();
         }
         let missed = windows.missed_frame();
         let delay = gui_frame.repaint_delay;
         if self
             .pacing
-            .after_frame(now, held, missed, continuous.is_some(), delay)
+            .after_frame(now, held, missed, continuous, delay)
         {
             windows.main.window.request_redraw();
         }
+    }
+}
+
+/// What frame number `frame` keeps of itself: the window for `--screenshot` on its frame, each
+/// view when the screenshot key (or button) asked.
+fn capture(options: &ViewerOptions, frame: u32, world: &mut World) -> Capture {
+    let key = match world.get_resource_mut::<ToolRequests>() {
+        Some(mut tools) if tools.screenshot => {
+            tools.screenshot = false;
+            true
+        }
+        _ => false,
+    };
+    if options.screenshot.is_some() && options.screenshot_frame == Some(frame + 1) {
+        Capture::Window
+    } else if key {
+        Capture::Views
+    } else {
+        Capture::Nothing
     }
 }
 
@@ -112,10 +157,31 @@ fn end_input_frame(world: &mut World) -> bool {
     !input.held.is_empty()
 }
 
-/// Writes the frame's screenshot, when one was taken, where `--screenshot` says.
-fn save(options: &ViewerOptions, shot: Option<Image>) -> Result<(), String> {
+/// Writes what the frame captured: the window where `--screenshot` says, or both views (the
+/// screenshot key) beside the command that renders them again, with a notice naming the files.
+fn save(options: &ViewerOptions, world: &mut World, shot: Option<Shot>) -> Result<(), String> {
     match (shot, &options.screenshot) {
-        (Some(shot), Some(path)) => shot.write_png(path),
+        (Some(Shot::Window(image)), Some(path)) => image.write_png(path),
+        (
+            Some(Shot::Views {
+                reference,
+                close2gl,
+            }),
+            _,
+        ) => {
+            let notice = match crate::screenshot::save_views(
+                &options.screenshot_dir,
+                &reference,
+                &close2gl,
+                world,
+            ) {
+                Ok(saved) => saved,
+                Err(e) => format!("Screenshot not saved: {e}"),
+            };
+            eprintln!("close2gl: {notice}");
+            world.insert_resource(Notice::new(notice));
+            Ok(())
+        }
         _ => Ok(()),
     }
 }
@@ -128,6 +194,10 @@ impl ApplicationHandler for Viewer {
         let world = self.app.world_mut();
         match Windows::open(event_loop, &self.instance, &self.options, world) {
             Ok(windows) => {
+                let window = windows.main.window.clone();
+                if let Some(wake) = world.get_resource::<Wake>() {
+                    wake.install(move || window.request_redraw());
+                }
                 windows.main.window.request_redraw();
                 self.windows = Some(windows);
             }
@@ -149,16 +219,20 @@ impl ApplicationHandler for Viewer {
             WindowEvent::RedrawRequested => return windows.main.window.request_redraw(),
             // Destroyed: another client (or a window manager) took the window away.
             WindowEvent::CloseRequested | WindowEvent::Destroyed => return event_loop.exit(),
+            WindowEvent::Resized(size) => {
+                if is_main {
+                    self.session.window_resized(size);
+                }
+                windows.resized(id, size);
+                return windows.main.window.request_redraw();
+            }
+            // A replay's input is the recording's alone.
+            _ if self.session.is_replaying() => return,
+            WindowEvent::DroppedFile(ref path) => self.session.file_dropped(path),
             _ => {}
         }
         let panel = offer_to_panel(&mut windows.gui, &windows.main.window, is_main, &event);
-        let redraw = match event {
-            WindowEvent::Resized(size) => {
-                windows.resized(id, size);
-                true
-            }
-            event => apply_input(&mut self.tracker, self.app.world_mut(), id, event, panel),
-        };
+        let redraw = apply_input(&mut self.tracker, self.app.world_mut(), id, event, panel);
         if redraw {
             windows.main.window.request_redraw();
         }

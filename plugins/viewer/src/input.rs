@@ -36,6 +36,18 @@ pub fn key_name(key: &Key) -> Option<String> {
             NamedKey::Shift => "shift",
             NamedKey::Control => "ctrl",
             NamedKey::Alt => "alt",
+            NamedKey::F1 => "f1",
+            NamedKey::F2 => "f2",
+            NamedKey::F3 => "f3",
+            NamedKey::F4 => "f4",
+            NamedKey::F5 => "f5",
+            NamedKey::F6 => "f6",
+            NamedKey::F7 => "f7",
+            NamedKey::F8 => "f8",
+            NamedKey::F9 => "f9",
+            NamedKey::F10 => "f10",
+            NamedKey::F11 => "f11",
+            NamedKey::F12 => "f12",
             _ => return None,
         },
         _ => return None,
@@ -155,7 +167,8 @@ mod tests {
             (Key::Named(NamedKey::ArrowLeft), Some("left")),
             (Key::Named(NamedKey::ArrowRight), Some("right")),
             (Key::Named(NamedKey::Shift), Some("shift")),
-            (Key::Named(NamedKey::F1), None),
+            (Key::Named(NamedKey::F1), Some("f1")),
+            (Key::Named(NamedKey::F13), None),
         ];
         for (key, name) in names {
             assert_eq!(key_name(&key).as_deref(), name, "{key:?}");
@@ -169,6 +182,8 @@ mod tests {
                 "down" => Key::Named(NamedKey::ArrowDown),
                 "left" => Key::Named(NamedKey::ArrowLeft),
                 "right" => Key::Named(NamedKey::ArrowRight),
+                "f1" => Key::Named(NamedKey::F1),
+                "f12" => Key::Named(NamedKey::F12),
                 letter => Key::Character(letter.into()),
             };
             assert_eq!(key_name(&winit_key).as_deref(), Some(bare), "{action}");

@@ -6,7 +6,10 @@
 //! without pixels, drawing one wider than the GPU's largest texture up to that size, and ending
 //! the run with its reason when the GPU device is lost). It inserts the `Gpu`
 //! and `Views` resources the GPU plugin's upload systems need, and fills `ViewStats`. Redraws
-//! are on demand (input, held keys, the panel's own animations), so an idle viewer sleeps. It
+//! are on demand (input, held keys, the panel's own animations, a `Wake` from background work),
+//! so an idle viewer sleeps. It carries out the screenshot key (`ToolRequests::screenshot`:
+//! both views as PNGs beside the command that renders them again, and a `Notice`), and records
+//! or replays every frame's input (`--record`, `--replay`). It
 //! adds the GPU and UI plugins unless the app has them, and needs the input, model and settings
 //! plugins' resources (checked before the windows open). It has no systems: its event loop runs
 //! the app's frames.
@@ -18,28 +21,40 @@ pub mod input;
 pub mod layout;
 mod pacing;
 mod present;
+mod recording;
 mod routing;
 mod screenshot;
+mod session;
 mod surface;
 mod windows;
 
 use std::path::PathBuf;
 
 pub use close2gl_core::Layout;
-use close2gl_core::{App, InputState, ModelRequest, Plugin, Viewport};
+use close2gl_core::{App, InputState, ModelRequest, Plugin, Viewport, Wake};
+pub use recording::Recording;
 use winit::event_loop::{ControlFlow, EventLoop};
 
-#[derive(Clone, Debug, PartialEq, Eq)]
+#[derive(Clone, Debug, PartialEq)]
 pub struct ViewerOptions {
     pub layout: Layout,
     /// Inner size of the window (split), or of both windows together (windows), in pixels.
     pub width: u32,
     pub height: u32,
-    /// Save the window's frame as PNG after `exit_after_frames` frames, then exit. In the
-    /// windows layout the two windows are saved side by side in one image.
+    /// Save the window's frame as PNG after `screenshot_frame` frames. In the windows layout
+    /// the two windows are saved side by side in one image.
     pub screenshot: Option<PathBuf>,
+    pub screenshot_frame: Option<u32>,
     /// Exit after drawing this many frames (drawing continuously until then).
     pub exit_after_frames: Option<u32>,
+    /// Where the screenshot key saves both views and the command that renders them again.
+    pub screenshot_dir: PathBuf,
+    /// `--record`: every frame's input written to this file.
+    pub record: Option<PathBuf>,
+    /// The command line's words that chose the scene, for a recording's header.
+    pub scene: Vec<String>,
+    /// `--replay`: the frames' input taken from this recording instead of the window system.
+    pub replay: Option<Recording>,
 }
 
 /// Adds the GPU upload systems and the panel (unless the app has them already), and makes
@@ -52,7 +67,8 @@ impl Plugin for ViewerPlugin {
             .add_plugin_once(close2gl_ui::UiPlugin)
             .requires::<InputState>("ViewerPlugin", "InputPlugin")
             .requires::<ModelRequest>("ViewerPlugin", "ModelPlugin")
-            .requires::<Viewport>("ViewerPlugin", "SettingsPlugin");
+            .requires::<Viewport>("ViewerPlugin", "SettingsPlugin")
+            .requires::<Wake>("ViewerPlugin", "SettingsPlugin");
         let options = self.0.clone();
         app.set_runner(move |app| run(app, options));
     }
@@ -64,7 +80,18 @@ pub fn run(app: App, options: ViewerOptions) -> Result<(), String> {
         format!("cannot open a window: {e} (no display? set DISPLAY, or run under Xvfb)")
     })?;
     event_loop.set_control_flow(ControlFlow::Wait);
-    let mut viewer = handler::Viewer::new(app, options, &event_loop);
+    let session = match (&options.record, &options.replay) {
+        (_, Some(recording)) => {
+            session::Session::Replaying(session::Player::new(recording.clone()))
+        }
+        (Some(path), None) => session::Session::Recording(recording::Recorder::create(
+            path,
+            [options.width, options.height],
+            options.scene.clone(),
+        )?),
+        (None, None) => session::Session::Live,
+    };
+    let mut viewer = handler::Viewer::new(app, options, session, &event_loop);
     event_loop
         .run_app(&mut viewer)
         .map_err(|e| format!("the window system failed: {e}"))?;

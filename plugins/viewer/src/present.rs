@@ -1,4 +1,5 @@
-//! Drawing every window for one frame, and the `--screenshot` capture of what they show.
+//! Drawing every window for one frame, and the captures of what they show: the whole window
+//! (`--screenshot`) or each view alone (the screenshot key).
 
 use bevy_ecs::world::World;
 use close2gl_gpu::{Gpu, Image, Views};
@@ -6,20 +7,44 @@ use close2gl_ui::ViewStats;
 
 use crate::draw::draw_views;
 use crate::gui::GuiFrame;
-use crate::layout::Placement;
+use crate::layout::{Placed, Placement, View};
 use crate::screenshot;
 use crate::surface::WindowSurface;
 use crate::windows::Windows;
 
+/// What a frame keeps of itself besides showing it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Capture {
+    Nothing,
+    /// Every window as shown, panel included, side by side.
+    Window,
+    /// Each view alone, without the panel or labels over it: the pixels `close2gl render`
+    /// writes for the same view.
+    Views,
+}
+
+pub enum Shot {
+    Window(Image),
+    Views { reference: Image, close2gl: Image },
+}
+
+/// How one drawing of a window goes: `timed` when it is the frame shown (its times are the
+/// stats'), `panel` when the panel is painted over the views.
+#[derive(Clone, Copy)]
+struct Pass {
+    timed: bool,
+    panel: bool,
+}
+
 impl Windows {
-    /// Draws every window, and returns the screenshot when `capture` asks for one.
+    /// Draws every window, and returns what `capture` asks to keep.
     pub fn draw(
         &mut self,
         world: &mut World,
         gui: &GuiFrame,
         placement: &Placement,
-        capture: bool,
-    ) -> Result<Option<Image>, String> {
+        capture: Capture,
+    ) -> Result<Option<Shot>, String> {
         // A lost device draws nothing and reports nothing: stop with its reason instead.
         if let Some(lost) = self.gpu.lost() {
             return Err(lost);
@@ -41,8 +66,8 @@ impl Windows {
         stats: &mut ViewStats,
         gui_frame: &GuiFrame,
         placement: &Placement,
-        capture: bool,
-    ) -> Result<Option<Image>, String> {
+        capture: Capture,
+    ) -> Result<Option<Shot>, String> {
         let Windows {
             gpu,
             main,
@@ -51,44 +76,77 @@ impl Windows {
             ..
         } = self;
         let mut shots = Vec::new();
-        let main_shot = draw_window(gpu, main, capture, |target, depth, timed| {
-            let stats = timed.then_some(&mut *stats);
+        let main_shot = draw_window(gpu, main, capture, |target, depth, pass| {
+            let stats = pass.timed.then_some(&mut *stats);
             draw_views(gpu, views, target, depth, &placement.main, stats);
-            gui.paint(gpu, gui_frame, target);
+            if pass.panel {
+                gui.paint(gpu, gui_frame, target);
+            }
         })?;
-        shots.extend(main_shot);
+        shots.extend(main_shot.map(|shot| (shot, &placement.main)));
         if let Some(window) = close2gl {
-            let shot = draw_window(gpu, window, capture, |target, depth, timed| {
-                let stats = timed.then_some(&mut *stats);
+            let shot = draw_window(gpu, window, capture, |target, depth, pass| {
+                let stats = pass.timed.then_some(&mut *stats);
                 draw_views(gpu, views, target, depth, &placement.close2gl, stats);
             })?;
-            shots.extend(shot);
+            shots.extend(shot.map(|shot| (shot, &placement.close2gl)));
         }
-        Ok(capture.then(|| screenshot::side_by_side(&shots)))
+        Ok(match capture {
+            Capture::Nothing => None,
+            Capture::Window => {
+                let images: Vec<Image> = shots.into_iter().map(|(shot, _)| shot).collect();
+                Some(Shot::Window(screenshot::side_by_side(&images)))
+            }
+            Capture::Views => {
+                let view = |wanted: View| {
+                    shots
+                        .iter()
+                        .find_map(|(shot, placed): &(Image, &Vec<Placed>)| {
+                            let p = placed.iter().find(|p| p.view == wanted)?;
+                            Some(screenshot::crop(shot, p.rect))
+                        })
+                };
+                match (view(View::Reference), view(View::Close2gl)) {
+                    (Some(reference), Some(close2gl)) => Some(Shot::Views {
+                        reference,
+                        close2gl,
+                    }),
+                    _ => None,
+                }
+            }
+        })
     }
 }
 
-/// Draws one window with `draw(target, depth, timed)` and presents it; when `capture` asks,
+/// Draws one window with `draw(target, depth, pass)` and presents it; when `capture` asks,
 /// draws it once more into a texture that can be read back (untimed) and returns that image.
 fn draw_window(
     gpu: &Gpu,
     window: &mut WindowSurface,
-    capture: bool,
-    mut draw: impl FnMut(&wgpu::TextureView, &wgpu::TextureView, bool),
+    capture: Capture,
+    mut draw: impl FnMut(&wgpu::TextureView, &wgpu::TextureView, Pass),
 ) -> Result<Option<Image>, String> {
     if let Some(texture) = window.acquire(gpu)? {
         let target = texture.texture.create_view(&Default::default());
         if let Some(depth) = window.depth() {
-            draw(&target, depth, true);
+            let shown = Pass {
+                timed: true,
+                panel: true,
+            };
+            draw(&target, depth, shown);
         }
         gpu.queue.present(texture);
     }
-    let Some(depth) = window.depth().filter(|_| capture) else {
+    let Some(depth) = window.depth().filter(|_| capture != Capture::Nothing) else {
         return Ok(None);
+    };
+    let kept = Pass {
+        timed: false,
+        panel: capture == Capture::Window,
     };
     let (width, height) = window.size();
     screenshot::capture(gpu, window.format(), width, height, |target| {
-        draw(target, depth, false)
+        draw(target, depth, kept)
     })
     .map(Some)
 }

@@ -82,7 +82,7 @@ pub fn apply_input(
 
 /// A dropped image becomes the texture; anything else is taken for a model (whose loader names
 /// what it expected when it is not one).
-fn drop_file(world: &mut World, path: std::path::PathBuf) {
+pub fn drop_file(world: &mut World, path: std::path::PathBuf) {
     let extension = path
         .extension()
         .and_then(|e| e.to_str())

@@ -1,8 +1,53 @@
-//! `--screenshot`: a window's frame drawn once more into a texture that can be read back (a
-//! surface texture may not allow copies), with the same calls, then saved as PNG.
+//! Screenshots: a window's frame drawn once more into a texture that can be read back (a
+//! surface texture may not allow copies), with the same calls, then saved as PNG: the whole
+//! window for `--screenshot`, each view alone for the screenshot key.
 
 use close2gl_gpu::texture::{READABLE_TARGET, texture_2d};
 use close2gl_gpu::{Gpu, Image, Readback};
+
+use std::path::Path;
+
+use bevy_ecs::world::World;
+use close2gl_core::repro::Repro;
+
+use crate::layout::PixelRect;
+
+/// Saves the two views as `close2gl-NNN-reference.png` and `close2gl-NNN-close2gl.png` in `dir`
+/// (the first number not taken), with `close2gl-NNN-command.txt`: the `close2gl render` line
+/// that writes the same two images into `close2gl-NNN-render/`. Returns what to tell the user.
+pub fn save_views(
+    dir: &Path,
+    reference: &Image,
+    close2gl: &Image,
+    world: &mut World,
+) -> Result<String, String> {
+    std::fs::create_dir_all(dir)
+        .map_err(|e| format!("{}: cannot create the directory: {e}", dir.display()))?;
+    let stem = (1..=9999)
+        .map(|n| format!("close2gl-{n:03}"))
+        .find(|stem| !dir.join(format!("{stem}-command.txt")).exists())
+        .ok_or_else(|| format!("{}: no free screenshot name left", dir.display()))?;
+    let command = Repro::of_world(world)
+        .ok_or("no model is shown")?
+        .command(&dir.join(format!("{stem}-render")).display().to_string());
+    let names = [
+        format!("{stem}-reference.png"),
+        format!("{stem}-close2gl.png"),
+        format!("{stem}-command.txt"),
+    ];
+    reference.write_png(&dir.join(&names[0]))?;
+    close2gl.write_png(&dir.join(&names[1]))?;
+    let text = dir.join(&names[2]);
+    std::fs::write(&text, command + "\n")
+        .map_err(|e| format!("{}: cannot write: {e}", text.display()))?;
+    Ok(format!(
+        "Saved {}, {} and {} in {}",
+        names[0],
+        names[1],
+        names[2],
+        dir.display()
+    ))
+}
 
 /// Draws with `draw` into a `width` x `height` texture of `format` and reads it back as RGBA.
 pub fn capture(
@@ -38,6 +83,24 @@ pub fn capture(
     })
 }
 
+/// The part of `image` under `rect` (clamped to the image).
+pub fn crop(image: &Image, rect: PixelRect) -> Image {
+    let x0 = rect.x.min(image.width);
+    let y0 = rect.y.min(image.height);
+    let width = rect.width.min(image.width - x0);
+    let height = rect.height.min(image.height - y0);
+    let mut pixels = Vec::with_capacity((width * height) as usize);
+    for y in y0..y0 + height {
+        let row = (y * image.width + x0) as usize;
+        pixels.extend_from_slice(&image.pixels[row..row + width as usize]);
+    }
+    Image {
+        width,
+        height,
+        pixels,
+    }
+}
+
 /// Images side by side, top-aligned, on black: the two windows of the "windows" layout as one
 /// picture.
 pub fn side_by_side(images: &[Image]) -> Image {
@@ -70,5 +133,20 @@ mod tests {
         assert_eq!(both.pixel(1, 2), [1, 1, 1, 255]);
         assert_eq!(both.pixel(2, 1), [2, 2, 2, 255]);
         assert_eq!(both.pixel(2, 2), [0, 0, 0, 255], "below the shorter window");
+    }
+
+    #[test]
+    fn a_crop_keeps_the_rectangle_and_stops_at_the_border() {
+        let mut image = Image::filled(4, 3, [0, 0, 0, 255]);
+        image.pixels[(2 * 4 + 3) as usize] = [9, 9, 9, 255];
+        let rect = PixelRect {
+            x: 2,
+            y: 1,
+            width: 5,
+            height: 2,
+        };
+        let part = crop(&image, rect);
+        assert_eq!((part.width, part.height), (2, 2));
+        assert_eq!(part.pixel(1, 1), [9, 9, 9, 255]);
     }
 }

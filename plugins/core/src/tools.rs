@@ -1,0 +1,21 @@
+//! The user's tools asked for this frame, by a key or a panel button: the input plugin and the
+//! panel set them, the viewer (screenshot) and the panel (copy as command, key cheat sheet)
+//! carry them out and clear them.
+
+use bevy_ecs::prelude::*;
+
+#[derive(Resource, Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct ToolRequests {
+    /// Save both views as PNGs, with the command that reproduces them beside.
+    pub screenshot: bool,
+    /// Put the command that reproduces the views on the clipboard and the terminal.
+    pub copy_command: bool,
+    /// Show or hide the key cheat sheet.
+    pub toggle_help: bool,
+}
+
+impl ToolRequests {
+    pub fn any(&self) -> bool {
+        self.screenshot || self.copy_command || self.toggle_help
+    }
+}

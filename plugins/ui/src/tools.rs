@@ -1,0 +1,200 @@
+//! The user's tools in the panel: buttons for copy as command, screenshot and the key cheat
+//! sheet (the same `ToolRequests` their keys set), carrying out the two that need no GPU, the
+//! cheat sheet overlay itself, and a short notice of what a tool did.
+
+use bevy_ecs::prelude::*;
+use close2gl_core::repro::Repro;
+use close2gl_core::{InputBindings, ToolRequests};
+
+use crate::PanelState;
+
+/// How long a notice stays, in seconds.
+const NOTICE_SECONDS: f64 = 6.0;
+
+/// Where the copied command writes its images.
+pub const REPRO_OUT: &str = "repro";
+
+/// A line telling the user what a tool just did (files saved, a command copied); the viewer
+/// writes one too. Shown at the top of the views for a few seconds.
+#[derive(Resource, Clone, Debug, Default, PartialEq)]
+pub struct Notice {
+    pub text: String,
+    /// When it was first shown (egui's clock); `None` until then.
+    pub shown_at: Option<f64>,
+}
+
+impl Notice {
+    pub fn new(text: impl Into<String>) -> Self {
+        Notice {
+            text: text.into(),
+            shown_at: None,
+        }
+    }
+}
+
+/// The buttons, each naming its key as bound.
+pub fn section(ui: &mut egui::Ui, world: &mut World) {
+    let bindings = world.get_resource::<InputBindings>().cloned();
+    let key = |action: &str| {
+        let keys = bindings
+            .as_ref()
+            .map(|b| shown(b, action))
+            .unwrap_or_default();
+        match keys.is_empty() {
+            true => keys,
+            false => format!(" ({keys})"),
+        }
+    };
+    let mut asked = ToolRequests::default();
+    ui.horizontal_wrapped(|ui| {
+        asked.copy_command = ui
+            .button(format!("Copy as command{}", key("copy_command")))
+            .clicked();
+        asked.screenshot = ui
+            .button(format!("Screenshot{}", key("screenshot")))
+            .clicked();
+        asked.toggle_help = ui.button(format!("Keys{}", key("help"))).clicked();
+    });
+    if asked.any() {
+        let mut tools = world.get_resource_or_insert_with(ToolRequests::default);
+        tools.copy_command |= asked.copy_command;
+        tools.screenshot |= asked.screenshot;
+        tools.toggle_help |= asked.toggle_help;
+    }
+}
+
+/// Copies the command (clipboard and terminal) and toggles the cheat sheet when asked.
+pub fn carry_out(ctx: &egui::Context, world: &mut World) {
+    let Some(mut tools) = world.get_resource_mut::<ToolRequests>() else {
+        return;
+    };
+    let (copy, help) = (tools.copy_command, tools.toggle_help);
+    if !copy && !help {
+        return;
+    }
+    (tools.copy_command, tools.toggle_help) = (false, false);
+    if help {
+        let mut state = world.resource_mut::<PanelState>();
+        state.help = !state.help;
+    }
+    if copy {
+        let notice = match Repro::of_world(world) {
+            Some(repro) => {
+                let command = repro.command(REPRO_OUT);
+                println!("{command}");
+                ctx.copy_text(command);
+                "Copied the command that renders this view (also printed on the terminal)"
+            }
+            None => "Nothing to copy yet: no model is shown",
+        };
+        world.insert_resource(Notice::new(notice));
+    }
+}
+
+/// The notice, at the top of the views, until it has been shown long enough.
+pub fn show_notice(ui: &egui::Ui, area: egui::Rect, world: &mut World) {
+    let Some(mut notice) = world.get_resource_mut::<Notice>() else {
+        return;
+    };
+    if notice.text.is_empty() {
+        return;
+    }
+    let now = ui.input(|i| i.time);
+    let shown_at = *notice.shown_at.get_or_insert(now);
+    if now - shown_at > NOTICE_SECONDS {
+        notice.text.clear();
+        return;
+    }
+    ui.ctx()
+        .request_repaint_after(std::time::Duration::from_secs_f64(NOTICE_SECONDS));
+    let painter = ui.painter();
+    let at = area.center_bottom() - egui::vec2(0.0, 16.0);
+    let galley = painter.layout_no_wrap(
+        notice.text.clone(),
+        egui::FontId::proportional(15.0),
+        ui.visuals().strong_text_color(),
+    );
+    let rect = egui::Align2::CENTER_BOTTOM.anchor_size(at, galley.size());
+    painter.rect_filled(rect.expand(6.0), 4.0, ui.visuals().extreme_bg_color);
+    painter.galley(rect.min, galley, ui.visuals().strong_text_color());
+}
+
+/// What each action does, in the cheat sheet's words.
+const DESCRIPTIONS: [(&str, &str); 20] = [
+    ("forward", "move forward (along -n)"),
+    ("back", "move back (along n)"),
+    ("left", "move left (along -u)"),
+    ("right", "move right (along u)"),
+    ("up", "move up (along v)"),
+    ("down", "move down (along -v)"),
+    ("roll_left", "roll left (about n)"),
+    ("roll_right", "roll right (about n)"),
+    ("pitch_up", "pitch up (about u)"),
+    ("pitch_down", "pitch down (about u)"),
+    ("yaw_left", "yaw left (about v)"),
+    ("yaw_right", "yaw right (about v)"),
+    ("reset", "reset the camera"),
+    ("toggle_mode", "free / look-at camera"),
+    ("original_color", "original colour (no shading)"),
+    ("phong", "Phong shading"),
+    ("gouraud", "Gouraud shading"),
+    ("help", "show or hide these keys"),
+    ("screenshot", "save both views as PNGs"),
+    ("copy_command", "copy the command for this view"),
+];
+
+/// `action`'s keys as the user reads them: "f1 or ?".
+fn shown(bindings: &InputBindings, action: &str) -> String {
+    bindings.keys(action).collect::<Vec<_>>().join(" or ")
+}
+
+/// The key cheat sheet over the views, from the bindings as configured.
+pub fn cheat_sheet(ctx: &egui::Context, world: &mut World) {
+    if !world.get_resource::<PanelState>().is_some_and(|s| s.help) {
+        return;
+    }
+    let Some(bindings) = world.get_resource::<InputBindings>() else {
+        return;
+    };
+    let rows: Vec<(String, &str)> = DESCRIPTIONS
+        .iter()
+        .map(|(action, what)| (shown(bindings, action), *what))
+        .filter(|(keys, _)| !keys.is_empty())
+        .collect();
+    let mut open = true;
+    egui::Window::new("Keys")
+        .open(&mut open)
+        .collapsible(false)
+        .resizable(false)
+        .anchor(egui::Align2::LEFT_TOP, egui::vec2(16.0, 32.0))
+        .show(ctx, |ui| {
+            egui::Grid::new("keys").striped(true).show(ui, |ui| {
+                for (key, what) in &rows {
+                    ui.monospace(key);
+                    ui.label(*what);
+                    ui.end_row();
+                }
+                ui.monospace("drag");
+                ui.label("yaw and pitch");
+                ui.end_row();
+                ui.monospace("wheel");
+                ui.label("zoom (field of view)");
+                ui.end_row();
+            });
+        });
+    if !open {
+        world.resource_mut::<PanelState>().help = false;
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn every_bindable_action_is_described() {
+        let described: Vec<&str> = DESCRIPTIONS.iter().map(|(a, _)| *a).collect();
+        let bindable: Vec<&str> = InputBindings::DEFAULTS.iter().map(|(a, _)| *a).collect();
+        assert_eq!(described, bindable);
+    }
+}

@@ -1,0 +1,283 @@
+//! The user's tools in the real app under a real X server: the screenshot key and the command it
+//! writes (which must render the very pixels the window showed), copy as command, and record and
+//! replay (a flight recorded from real key presses, replayed twice). Needs Xvfb and xdotool
+//! (`apt-get install xvfb xdotool`); without them these tests fail, they never skip.
+
+mod common;
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Stdio};
+use std::time::{Duration, Instant};
+
+use close2gl_gpu::Image;
+use close2gl_gpu::parity::Comparison;
+use common::{APP_TIMEOUT, Xvfb, run_app, temp_dir};
+
+/// A recording of `frames` frames at 60 Hz: `d` held over frames 2..12 (the camera moves right),
+/// Shift+P on frame 14 (Phong), the copy-command key two frames before the end (the panel
+/// carries it out on the next frame) and the screenshot key on the last frame.
+fn flight(frames: u32, size: [u32; 2]) -> String {
+    let mut lines = vec![format!(
+        "{{\"close2gl_recording\":1,\"size\":[{},{}]}}",
+        size[0], size[1]
+    )];
+    for frame in 0..frames {
+        let mut line = format!("{{\"frame\":{frame},\"dt\":0.016666668");
+        if (2..12).contains(&frame) {
+            line += ",\"held\":[\"d\"]";
+        }
+        if frame == 2 {
+            line += ",\"pressed\":[\"d\"]";
+        }
+        if frame == 14 {
+            line += ",\"held\":[\"shift\"],\"pressed\":[\"shift+p\"]";
+        }
+        if frame == frames - 3 {
+            line += ",\"pressed\":[\"c\"]";
+        }
+        if frame == frames - 1 {
+            line += ",\"pressed\":[\"f12\"]";
+        }
+        lines.push(line + "}");
+    }
+    lines.join("\n") + "\n"
+}
+
+fn png(path: &Path) -> Image {
+    Image::read_png(path).unwrap_or_else(|e| panic!("{e}"))
+}
+
+/// Runs `command` (a line the app wrote) with `close2gl` meaning the binary under test.
+fn run_command_line(command: &str) {
+    let bin = Path::new(env!("CARGO_BIN_EXE_close2gl"));
+    let path = format!(
+        "{}:{}",
+        bin.parent().expect("the binary's folder").display(),
+        std::env::var("PATH").unwrap_or_default()
+    );
+    let output = Command::new("sh")
+        .args(["-c", command])
+        .env("PATH", path)
+        .current_dir(temp_dir("elsewhere"))
+        .output()
+        .expect("sh runs");
+    assert!(
+        output.status.success(),
+        "{command}\nfailed: {}",
+        String::from_utf8_lossy(&output.stderr)
+    );
+}
+
+fn assert_same_pixels(what: &str, window: &Image, rendered: &Image) {
+    assert_eq!(
+        (window.width, window.height),
+        (rendered.width, rendered.height),
+        "{what}: sizes"
+    );
+    let [r, g, b, _] = window.pixel(0, 0);
+    let comparison = Comparison::of_images(window, rendered, [r, g, b]);
+    let differing = window
+        .pixels
+        .iter()
+        .zip(&rendered.pixels)
+        .filter(|(a, b)| a != b)
+        .count();
+    assert!(
+        comparison.covered_pixels > 1000,
+        "{what}: the view shows the model ({} pixels)",
+        comparison.covered_pixels
+    );
+    assert_eq!(
+        comparison.coverage_agreement, 1.0,
+        "{what}: coverage agreement"
+    );
+    assert_eq!(differing, 0, "{what}: pixels that differ");
+}
+
+#[test]
+fn the_screenshot_key_saves_both_views_and_a_command_that_renders_the_same_pixels() {
+    let dir = temp_dir("tools-shot");
+    let recording = dir.join("flight.rec");
+    std::fs::write(&recording, flight(20, [900, 420])).expect("the recording");
+    let shots = dir.join("shots");
+    let xvfb = Xvfb::start();
+    let output = run_app(
+        &xvfb,
+        &[
+            "--replay",
+            &recording.display().to_string(),
+            "--screenshot-dir",
+            &shots.display().to_string(),
+            // Close2GL rasterizes too, and a setting off its default goes into the command.
+            "--set",
+            "render.close2gl_raster=software",
+            "--set",
+            "camera.hfov=50",
+        ],
+    );
+
+    let command = std::fs::read_to_string(shots.join("close2gl-001-command.txt"))
+        .expect("the command beside the screenshots");
+    let command = command.trim();
+    assert!(command.starts_with("close2gl render "), "{command}");
+    for part in [
+        "render.close2gl_raster=software",
+        "render.shading=phong",
+        "camera.hfov=50.0",
+    ] {
+        assert!(command.contains(part), "{part} in {command}");
+    }
+    // The copy-command key printed the same line.
+    let stdout = String::from_utf8_lossy(&output.stdout);
+    let printed = stdout.replace(&shots.join("close2gl-001-render").display().to_string(), "");
+    assert!(
+        printed.contains(
+            &command.replace(&shots.join("close2gl-001-render").display().to_string(), "")
+        ),
+        "copy as command printed {stdout:?}"
+    );
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert!(
+        stderr.contains("Saved close2gl-001-reference.png"),
+        "{stderr}"
+    );
+
+    run_command_line(command);
+    let rendered = shots.join("close2gl-001-render");
+    assert_same_pixels(
+        "reference view",
+        &png(&shots.join("close2gl-001-reference.png")),
+        &png(&rendered.join("reference.png")),
+    );
+    assert_same_pixels(
+        "Close2GL view",
+        &png(&shots.join("close2gl-001-close2gl.png")),
+        &png(&rendered.join("close2gl.png")),
+    );
+}
+
+/// Whole-window screenshot after `args`.
+fn window_shot(xvfb: &Xvfb, dir: &Path, name: &str, args: &[&str]) -> Image {
+    let file = dir.join(format!("{name}.png"));
+    let file_arg = file.display().to_string();
+    let mut all = args.to_vec();
+    all.extend(["--screenshot", &file_arg]);
+    run_app(xvfb, &all);
+    png(&file)
+}
+
+/// The app recording while xdotool holds `d` on its window; returns the recording's path and
+/// the app's own last frame.
+fn record_a_flight(xvfb: &Xvfb, dir: &Path) -> (PathBuf, Image) {
+    let recording = dir.join("recorded.rec");
+    let shot = dir.join("recorded.png");
+    let mut app = Command::new(env!("CARGO_BIN_EXE_close2gl"))
+        .args([
+            "--size",
+            "900x420",
+            "--exit-after-frames",
+            "120",
+            "--record",
+        ])
+        .arg(&recording)
+        .arg("--screenshot")
+        .arg(&shot)
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .env("DISPLAY", &xvfb.display)
+        .env_remove("WAYLAND_DISPLAY")
+        .stdout(Stdio::null())
+        .stderr(Stdio::piped())
+        .spawn()
+        .expect("the app starts");
+    let xdotool = |args: &[&str]| {
+        let status = Command::new("xdotool")
+            .args(args)
+            .env("DISPLAY", &xvfb.display)
+            .status();
+        match status {
+            Ok(status) => status.success(),
+            Err(e) => panic!("xdotool is needed (apt-get install xdotool): {e}"),
+        }
+    };
+    // Wait for the window, then fly: hold d for a moment, turn with an arrow key.
+    let deadline = Instant::now() + APP_TIMEOUT;
+    while !xdotool(&[
+        "search",
+        "--name",
+        "Close2GL viewer",
+        "windowfocus",
+        "--sync",
+    ]) {
+        assert!(Instant::now() < deadline, "the window did not appear");
+        std::thread::sleep(Duration::from_millis(200));
+    }
+    xdotool(&["keydown", "d"]);
+    std::thread::sleep(Duration::from_millis(400));
+    xdotool(&["keyup", "d", "key", "Left"]);
+    let status = loop {
+        if let Some(status) = app.try_wait().expect("the app can be waited on") {
+            break status;
+        }
+        if Instant::now() > deadline {
+            let _ = app.kill();
+            panic!("the recording app did not exit in time");
+        }
+        std::thread::sleep(Duration::from_millis(50));
+    };
+    let output = app.wait_with_output().expect("the app's output");
+    assert!(
+        status.success(),
+        "the recording app failed: {status}: {}",
+        String::from_utf8_lossy(&output.stderr)
+    );
+    (recording, png(&shot))
+}
+
+/// The two views of a 900x420 split window (the panel at the right).
+fn views(image: &Image) -> Image {
+    let width = (image.width - close2gl_ui::PANEL_WIDTH as u32) / 2 * 2;
+    Image {
+        width,
+        height: image.height,
+        pixels: (0..image.height)
+            .flat_map(|y| (0..width).map(move |x| (x, y)))
+            .map(|(x, y)| image.pixel(x, y))
+            .collect(),
+    }
+}
+
+#[test]
+fn a_recorded_flight_replays_to_the_same_image_every_time() {
+    let dir = temp_dir("tools-replay");
+    let xvfb = Xvfb::start();
+    let (recording, recorded) = record_a_flight(&xvfb, &dir);
+    let text = std::fs::read_to_string(&recording).expect("the recording");
+    assert!(
+        text.contains("\"held\":[\"d\"]") && text.contains("\"pressed\":[\"left\"]"),
+        "the key presses were recorded: {text}"
+    );
+
+    let replay = recording.display().to_string();
+    let first = window_shot(&xvfb, &dir, "replay1", &["--replay", &replay]);
+    let second = window_shot(&xvfb, &dir, "replay2", &["--replay", &replay]);
+    assert!(
+        first.pixels == second.pixels,
+        "two replays drew different windows"
+    );
+    // The replay flew where the recording flew: the same views (the panel differs, it showed
+    // live times while recording).
+    assert!(
+        views(&first).pixels == views(&recorded).pixels,
+        "the replay's views differ from the recorded run's"
+    );
+    let start = window_shot(
+        &xvfb,
+        &dir,
+        "start",
+        &["--size", "900x420", "--exit-after-frames", "3"],
+    );
+    assert!(
+        views(&start).pixels != views(&first).pixels,
+        "the flight moved the camera"
+    );
+}

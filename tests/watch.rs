@@ -1,0 +1,203 @@
+//! `--watch` on a headless app: the real config and model files in a temporary directory,
+//! changed on disk while the app runs frames, as an editor would save them.
+
+use std::path::{Path, PathBuf};
+use std::sync::Arc;
+use std::time::{Duration, Instant};
+
+use close2gl::config;
+use close2gl::core::glam::Vec3;
+use close2gl::core::{App, Camera, Mesh, ModelStatus, RenderMode, RenderSettings, Viewport};
+use close2gl::watch::WatchPlugin;
+
+/// How long a change may take to be seen (the watch polls four times a second and waits for
+/// one quiet poll).
+const NOTICED_WITHIN: Duration = Duration::from_secs(10);
+
+const TETRA: &str = include_str!("../plugins/model/tests/data/tetra.in");
+
+struct Files {
+    dir: PathBuf,
+    config: PathBuf,
+    model: PathBuf,
+}
+
+impl Files {
+    fn new(name: &str) -> Files {
+        let dir =
+            std::env::temp_dir().join(format!("close2gl-watch-{name}-{}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&dir);
+        std::fs::create_dir_all(&dir).expect("a temporary directory");
+        let files = Files {
+            config: dir.join("config.toml"),
+            model: dir.join("tetra.in"),
+            dir,
+        };
+        std::fs::write(&files.model, TETRA).expect("the model");
+        files.write_config("solid");
+        files
+    }
+
+    fn write_config(&self, mode: &str) {
+        let text = format!("[model]\npath = \"tetra.in\"\n[render]\nmode = \"{mode}\"\n");
+        std::fs::write(&self.config, text).expect("the config");
+    }
+
+    /// The app as `close2gl --config DIR/config.toml --watch` builds it, without the windows.
+    fn app(&self) -> App {
+        let file = self.config.clone();
+        let load = move || config::load(Some(&file), &[]);
+        let config = load().expect("the config loads");
+        let viewport = Viewport {
+            width: 320,
+            height: 240,
+        };
+        let mut app = close2gl::build_app(&config, viewport).expect("the app");
+        app.add_plugins(WatchPlugin {
+            config_file: Some(self.config.clone()),
+            reload: Arc::new(Box::new(load)),
+        });
+        app.update();
+        app
+    }
+}
+
+impl Drop for Files {
+    fn drop(&mut self) {
+        let _ = std::fs::remove_dir_all(&self.dir);
+    }
+}
+
+/// Runs frames until `done` holds; panics naming `what` when it does not in time.
+fn frames_until(app: &mut App, what: &str, done: impl Fn(&App) -> bool) {
+    let deadline = Instant::now() + NOTICED_WITHIN;
+    while !done(app) {
+        assert!(Instant::now() < deadline, "not seen in time: {what}");
+        std::thread::sleep(Duration::from_millis(50));
+        app.update();
+    }
+}
+
+fn camera(app: &mut App) -> Camera {
+    *app.world_mut()
+        .query::<&Camera>()
+        .single(app.world())
+        .expect("one camera")
+}
+
+fn mesh_positions(app: &mut App) -> Vec<Vec3> {
+    app.world_mut()
+        .query::<&Mesh>()
+        .single(app.world())
+        .expect("one mesh")
+        .positions
+        .clone()
+}
+
+fn error(app: &App) -> Option<String> {
+    app.world().resource::<ModelStatus>().error.clone()
+}
+
+/// The tetrahedron moved by `dx` along x: another valid save of the same file.
+fn moved_tetra(dx: f32) -> String {
+    TETRA
+        .lines()
+        .map(
+            |line| match line.split_whitespace().collect::<Vec<_>>()[..] {
+                [tag @ ("v0" | "v1" | "v2"), x, ref rest @ ..] => {
+                    let x: f32 = x.parse().expect("a number");
+                    format!("{tag} {} {}", x + dx, rest.join(" "))
+                }
+                _ => line.to_string(),
+            },
+        )
+        .collect::<Vec<_>>()
+        .join("\n")
+}
+
+fn write(path: &Path, text: &str) {
+    std::fs::write(path, text).expect("the file is written");
+}
+
+#[test]
+fn a_saved_model_is_reloaded_and_the_camera_stays_where_it_is() {
+    let files = Files::new("model");
+    let mut app = files.app();
+    let before = mesh_positions(&mut app);
+    // The user has flown somewhere: that pose must survive the reload.
+    let flown = Camera {
+        position: Vec3::new(0.3, 2.0, 4.0),
+        ..camera(&mut app)
+    };
+    let mut cameras = app.world_mut().query::<&mut Camera>();
+    *cameras.single_mut(app.world_mut()).expect("one camera") = flown;
+
+    write(&files.model, &moved_tetra(0.5));
+    frames_until(&mut app, "the model reloaded", |app| {
+        app.world().resource::<ModelStatus>().generation > 1
+    });
+
+    let after = mesh_positions(&mut app);
+    assert_eq!(after.len(), before.len());
+    assert!((after[0].x - before[0].x - 0.5).abs() < 1e-6, "{after:?}");
+    assert_eq!(camera(&mut app), flown, "the camera did not move");
+    assert_eq!(error(&app), None);
+}
+
+#[test]
+fn a_broken_save_shows_its_error_and_the_last_good_model_stays() {
+    let files = Files::new("broken");
+    let mut app = files.app();
+    let before = mesh_positions(&mut app);
+
+    write(&files.model, "Object name = TETRA\n# triangles = oops\n");
+    frames_until(&mut app, "the error", |app| error(app).is_some());
+
+    let message = error(&app).unwrap_or_default();
+    assert!(
+        message.contains("tetra.in:2"),
+        "names file and line: {message}"
+    );
+    assert_eq!(
+        mesh_positions(&mut app),
+        before,
+        "the last good model stays"
+    );
+
+    // Fixed again: reloaded, and the error is gone.
+    write(&files.model, &moved_tetra(1.0));
+    frames_until(&mut app, "the fixed model", |app| {
+        app.world().resource::<ModelStatus>().generation > 1
+    });
+    assert_eq!(error(&app), None);
+}
+
+#[test]
+fn a_saved_config_applies_its_settings_and_a_broken_one_changes_nothing() {
+    let files = Files::new("config");
+    let mut app = files.app();
+    let pose = camera(&mut app);
+    assert_eq!(
+        app.world().resource::<RenderSettings>().mode,
+        RenderMode::Solid
+    );
+
+    files.write_config("wireframe");
+    frames_until(&mut app, "wireframe from the config", |app| {
+        app.world().resource::<RenderSettings>().mode == RenderMode::Wireframe
+    });
+    assert_eq!(camera(&mut app).position, pose.position, "the pose stays");
+
+    files.write_config("no_such_mode");
+    frames_until(&mut app, "the config's error", |app| error(app).is_some());
+    let message = error(&app).unwrap_or_default();
+    assert!(
+        message.contains("config.toml") && message.contains("render.mode"),
+        "{message}"
+    );
+    assert_eq!(
+        app.world().resource::<RenderSettings>().mode,
+        RenderMode::Wireframe,
+        "nothing half-applied"
+    );
+}
