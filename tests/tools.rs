@@ -6,12 +6,12 @@
 mod common;
 
 use std::path::{Path, PathBuf};
-use std::process::{Command, Stdio};
+use std::process::Command;
 use std::time::{Duration, Instant};
 
 use close2gl_gpu::Image;
 use close2gl_gpu::parity::Comparison;
-use common::{APP_TIMEOUT, Xvfb, run_app, temp_dir};
+use common::{APP_TIMEOUT, Xvfb, finish, run_app, spawn_app, temp_dir};
 
 /// A recording of `frames` frames at 60 Hz: `d` held over frames 2..12 (the camera moves right),
 /// Shift+P on frame 14 (Phong), the copy-command key two frames before the end (the panel
@@ -171,24 +171,20 @@ fn window_shot(xvfb: &Xvfb, dir: &Path, name: &str, args: &[&str]) -> Image {
 fn record_a_flight(xvfb: &Xvfb, dir: &Path) -> (PathBuf, Image) {
     let recording = dir.join("recorded.rec");
     let shot = dir.join("recorded.png");
-    let mut app = Command::new(env!("CARGO_BIN_EXE_close2gl"))
-        .args([
+    let (recording_arg, shot_arg) = (recording.display().to_string(), shot.display().to_string());
+    let app = spawn_app(
+        xvfb,
+        &[
             "--size",
             "900x420",
             "--exit-after-frames",
             "120",
             "--record",
-        ])
-        .arg(&recording)
-        .arg("--screenshot")
-        .arg(&shot)
-        .current_dir(env!("CARGO_MANIFEST_DIR"))
-        .env("DISPLAY", &xvfb.display)
-        .env_remove("WAYLAND_DISPLAY")
-        .stdout(Stdio::null())
-        .stderr(Stdio::piped())
-        .spawn()
-        .expect("the app starts");
+            &recording_arg,
+            "--screenshot",
+            &shot_arg,
+        ],
+    );
     let xdotool = |args: &[&str]| {
         let status = Command::new("xdotool")
             .args(args)
@@ -214,22 +210,7 @@ fn record_a_flight(xvfb: &Xvfb, dir: &Path) -> (PathBuf, Image) {
     xdotool(&["keydown", "d"]);
     std::thread::sleep(Duration::from_millis(400));
     xdotool(&["keyup", "d", "key", "Left"]);
-    let status = loop {
-        if let Some(status) = app.try_wait().expect("the app can be waited on") {
-            break status;
-        }
-        if Instant::now() > deadline {
-            let _ = app.kill();
-            panic!("the recording app did not exit in time");
-        }
-        std::thread::sleep(Duration::from_millis(50));
-    };
-    let output = app.wait_with_output().expect("the app's output");
-    assert!(
-        status.success(),
-        "the recording app failed: {status}: {}",
-        String::from_utf8_lossy(&output.stderr)
-    );
+    finish(app, "the recording app");
     (recording, png(&shot))
 }
 

@@ -79,7 +79,12 @@ impl Drop for Xvfb {
 /// The app (`close2gl ARGS`) on `xvfb`, from the repository's root, until it exits (killed
 /// after [`APP_TIMEOUT`]); panics unless it exits successfully.
 pub fn run_app(xvfb: &Xvfb, args: &[&str]) -> Output {
-    let mut child = Command::new(env!("CARGO_BIN_EXE_close2gl"))
+    finish(spawn_app(xvfb, args), &format!("close2gl {args:?}"))
+}
+
+/// The app started on `xvfb`, from the repository's root, its output captured.
+pub fn spawn_app(xvfb: &Xvfb, args: &[&str]) -> Child {
+    Command::new(env!("CARGO_BIN_EXE_close2gl"))
         .args(args)
         .current_dir(env!("CARGO_MANIFEST_DIR"))
         .env("DISPLAY", &xvfb.display)
@@ -87,7 +92,12 @@ pub fn run_app(xvfb: &Xvfb, args: &[&str]) -> Output {
         .stdout(Stdio::piped())
         .stderr(Stdio::piped())
         .spawn()
-        .expect("the close2gl binary starts");
+        .expect("the close2gl binary starts")
+}
+
+/// Waits for `child` (`what`) to exit, killing it after [`APP_TIMEOUT`]; panics unless it
+/// exits successfully.
+pub fn finish(mut child: Child, what: &str) -> Output {
     let deadline = Instant::now() + APP_TIMEOUT;
     let status = loop {
         if let Some(status) = child.try_wait().expect("the app can be waited on") {
@@ -95,14 +105,14 @@ pub fn run_app(xvfb: &Xvfb, args: &[&str]) -> Output {
         }
         if Instant::now() > deadline {
             let _ = child.kill();
-            panic!("close2gl {args:?} did not exit within {APP_TIMEOUT:?}");
+            panic!("{what} did not exit within {APP_TIMEOUT:?}");
         }
         std::thread::sleep(Duration::from_millis(50));
     };
     let output = child.wait_with_output().expect("the app's output");
     assert!(
         status.success(),
-        "close2gl {args:?} exited with {status}: {}",
+        "{what} exited with {status}: {}",
         String::from_utf8_lossy(&output.stderr)
     );
     output
