@@ -115,3 +115,35 @@ fn a_bad_file_names_the_file_and_line() {
     let missing = load(Some(&dir.join("missing.toml")), &[]).expect_err("missing file");
     assert!(missing.contains("missing.toml: cannot read"), "{missing}");
 }
+
+/// Found by the fuzzer (`fuzz/`, target `config`): keys, values and `--set` items are quoted in
+/// errors as typed, and a newline in them (a shell argument, a quoted TOML key or string) made
+/// the error two lines. Control characters now show as '?'.
+#[test]
+fn control_characters_in_keys_and_values_keep_the_error_on_one_line() {
+    let overrides = |items: &[&str]| items.iter().map(|s| s.to_string()).collect::<Vec<_>>();
+    for (text, items, expected) in [
+        (
+            "",
+            overrides(&["\u{8}\u{8}\n=0.0"]),
+            "--set ???=0.0: expected",
+        ),
+        ("", overrides(&["render.mode=\"a\nb\""]), "a?b"),
+        (
+            "",
+            overrides(&["rend\ner.mode=1"]),
+            "--set rend?er.mode: unknown key",
+        ),
+        (
+            "[render]\n\"mo\\nde\" = 1\n",
+            Vec::new(),
+            "t.toml: render.mo?de: unknown key",
+        ),
+        ("[render]\nmode = \"x\\ry\"\n", Vec::new(), "found \"x?y\""),
+    ] {
+        let error =
+            close2gl::config::load_text(text, "t.toml", Path::new("."), &items).expect_err(text);
+        assert!(!error.contains(['\n', '\r']), "one line: {error:?}");
+        assert!(error.contains(expected), "{text:?} {items:?}: {error}");
+    }
+}

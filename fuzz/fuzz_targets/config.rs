@@ -11,10 +11,11 @@ use std::path::Path;
 
 use arbitrary::Arbitrary;
 use close2gl::config::{Config, load_text};
+use close2gl_core::glam::Vec3;
 use close2gl_core::limits::{FOV_RANGE, MAX_PIXELS};
 use close2gl_core::{
-    Camera, CameraMode, Clipping, FrontFace, InputBindings, ModelSource, NamedEnum, PrimitiveKind,
-    Rasterizer, RenderMode, Shading, TextureFilter, Viewport,
+    Camera, CameraMode, Clipping, FrontFace, InputBindings, ModelSource, PrimitiveKind, Rasterizer,
+    RenderMode, Shading, TextureFilter, Viewport,
 };
 use close2gl_fuzz::Num;
 use libfuzzer_sys::fuzz_target;
@@ -170,7 +171,7 @@ fn check_ranges(config: &Config) {
     }
     for c in [config.render.color, config.render.background] {
         assert!(
-            c.cmpge(0.0.into()).all() && c.cmple(1.0.into()).all(),
+            c.cmpge(Vec3::ZERO).all() && c.cmple(Vec3::ONE).all(),
             "colour {c}"
         );
     }

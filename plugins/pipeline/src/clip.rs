@@ -69,11 +69,17 @@ impl Polygon {
         &self.points[..self.len]
     }
 
-    fn push(&mut self, p: Vec4, original: bool, weights: Vec3) {
+    /// Appends a vertex; false when the polygon is already [`MAX_POLYGON`] long.
+    #[must_use]
+    fn push(&mut self, p: Vec4, original: bool, weights: Vec3) -> bool {
+        if self.len == MAX_POLYGON {
+            return false;
+        }
         self.points[self.len] = p;
         self.original[self.len] = original;
         self.weights[self.len] = weights;
         self.len += 1;
+        true
     }
 }
 
@@ -81,6 +87,12 @@ impl Polygon {
 /// may be empty (fewer than 3 vertices) when the polygon lies outside. Where an edge leaves the
 /// volume, the new vertex starts an edge along the plane (not original); where an edge comes
 /// back in, the new vertex starts what remains of the outside vertex's edge.
+///
+/// The result is empty too when the cutting would pass [`MAX_POLYGON`] vertices. A convex
+/// polygon gains at most one vertex per plane, but with coordinates near f32's limits the
+/// distances to the planes overflow or round into a polygon that is no longer convex, and a
+/// plane may then add several: such a piece is rounding noise, dropped as clipped rather than
+/// overrunning the arrays.
 pub fn clip_polygon(polygon: &Polygon, planes: Outcode) -> Polygon {
     let mut current = *polygon;
     for (bit, plane) in PLANES.iter().enumerate() {
@@ -93,15 +105,17 @@ pub fn clip_polygon(polygon: &Polygon, planes: Outcode) -> Polygon {
             let j = (i + 1) % input.len;
             let (a, b) = (input.points[i], input.points[j]);
             let (da, db) = (plane(a), plane(b));
-            if da >= 0.0 {
-                current.push(a, input.original[i], input.weights[i]);
+            if da >= 0.0 && !current.push(a, input.original[i], input.weights[i]) {
+                return Polygon { len: 0, ..current };
             }
             if (da >= 0.0) != (db >= 0.0) {
                 let t = da / (da - db);
                 let cut = a + (b - a) * t;
                 let weights = input.weights[i] + (input.weights[j] - input.weights[i]) * t;
                 let leaving = da >= 0.0;
-                current.push(cut, !leaving && input.original[i], weights);
+                if !current.push(cut, !leaving && input.original[i], weights) {
+                    return Polygon { len: 0, ..current };
+                }
             }
         }
     }

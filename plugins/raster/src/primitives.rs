@@ -4,7 +4,7 @@
 //! the shapes the reference's rasterizer gives lines and points of width and size 1: Vulkan's
 //! default rectangular lines, and points as squares.
 
-use crate::setup::{Corner, FIXED_ONE, Triangle, Used, VARYINGS, setup, snap};
+use crate::setup::{Corner, FIXED_ONE, GUARD_PX, Triangle, Used, VARYINGS, setup, snap};
 
 /// A vertex as the pipeline and the vertex stage left it.
 #[derive(Clone, Copy, Debug)]
@@ -40,6 +40,12 @@ impl Vertex {
     fn fixed(&self) -> [i64; 2] {
         [snap(self.window[0]), snap(self.window[1])]
     }
+
+    /// Whether the fixed-point arithmetic can hold this vertex (see [`GUARD_PX`]); false for
+    /// NaN and infinities too. A primitive with a corner outside is not drawn.
+    fn in_guard_band(&self) -> bool {
+        self.window[..2].iter().all(|x| x.abs() <= GUARD_PX)
+    }
 }
 
 /// What the triangle setup needs besides the vertices.
@@ -50,6 +56,9 @@ pub(crate) struct SetupParams {
 }
 
 pub(crate) fn triangle(v: [Vertex; 3], params: SetupParams) -> Triangle {
+    if !v.iter().all(Vertex::in_guard_band) {
+        return Triangle::EMPTY;
+    }
     let corners = v.map(|v| v.corner(v.fixed()));
     setup(corners, params.size, params.used)
 }
@@ -57,6 +66,9 @@ pub(crate) fn triangle(v: [Vertex; 3], params: SetupParams) -> Triangle {
 /// A line one pixel wide: the rectangle whose long sides lie half a pixel either side of it and
 /// whose short sides pass through its ends.
 pub(crate) fn line(a: Vertex, b: Vertex, params: SetupParams) -> [Triangle; 2] {
+    if !(a.in_guard_band() && b.in_guard_band()) {
+        return [Triangle::EMPTY; 2];
+    }
     let (dx, dy) = (a.window[0] - b.window[0], a.window[1] - b.window[1]);
     let length_squared = dx * dx + dy * dy;
     if length_squared == 0.0 || !length_squared.is_finite() {
@@ -79,6 +91,9 @@ pub(crate) fn line(a: Vertex, b: Vertex, params: SetupParams) -> [Triangle; 2] {
 
 /// A point of size 1: the square one pixel wide centred on it.
 pub(crate) fn point(v: Vertex, params: SetupParams) -> [Triangle; 2] {
+    if !v.in_guard_band() {
+        return [Triangle::EMPTY; 2];
+    }
     let half = FIXED_ONE / 2;
     let [x, y] = v.fixed().map(|f| f - half);
     let corners = [

@@ -11,6 +11,13 @@
 pub(crate) const SUBPIXEL_BITS: u32 = 8;
 pub(crate) const FIXED_ONE: i64 = 1 << SUBPIXEL_BITS;
 
+/// How far from the window's origin, in pixels, a vertex may lie and still be drawn: 128 times
+/// the widest view. Clipping keeps real vertices inside the view (give or take rounding), but a
+/// model with coordinates near f32's limits can come out of the clipper thousands of millions of
+/// pixels away, where the edge functions' products of fixed-point differences would overflow
+/// i64. 2^21 pixels are 2^29 in fixed point, so every product stays below 2^62.
+pub(crate) const GUARD_PX: f32 = (1 << 21) as f32;
+
 /// How many floats a vertex carries for shading: eye position and normal (Phong), or the
 /// Gouraud intensity in the first three; then the texture coordinates.
 pub(crate) const VARYINGS: usize = 8;
