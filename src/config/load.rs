@@ -9,18 +9,26 @@ use super::{Config, keys};
 /// then applies each `section.key=value` override in order. Errors name the file and line or the
 /// key, and what was expected there.
 pub fn load(file: Option<&Path>, overrides: &[String]) -> Result<Config, String> {
-    let file = file.map(Path::to_path_buf).or_else(|| {
-        let local = PathBuf::from("config.toml");
-        local.is_file().then_some(local)
-    });
-    let Some(file) = file else {
+    let Some(file) = file_to_read(file) else {
         // No file: the defaults, which an empty file gives as well.
         return load_text("", "", Path::new("."), overrides);
     };
     let name = file.display().to_string();
     let text = std::fs::read_to_string(&file).map_err(|e| format!("{name}: cannot read: {e}"))?;
-    let base = file.parent().unwrap_or(Path::new("."));
-    load_text(&text, &name, base, overrides)
+    load_text(
+        &text,
+        &name,
+        file.parent().unwrap_or(Path::new(".")),
+        overrides,
+    )
+}
+
+/// The file [`load`] reads: `file` if given, else `./config.toml` if present.
+pub fn file_to_read(file: Option<&Path>) -> Option<PathBuf> {
+    file.map(Path::to_path_buf).or_else(|| {
+        let local = PathBuf::from("config.toml");
+        local.is_file().then_some(local)
+    })
 }
 
 /// What [`load`] makes of a config file's `text` and then the overrides, without reading a file:
@@ -87,12 +95,19 @@ fn check(config: &Config) -> Result<(), String> {
             "camera.near: expected a distance below camera.far ({far}), found {near}"
         ));
     }
+    let given = [camera.u, camera.v, camera.n].iter().flatten().count();
+    if given != 0 && given != 3 {
+        return Err("camera.u: expected camera.u, camera.v and camera.n together".into());
+    }
+    if given == 3 && camera.position.is_none() {
+        return Err("camera.u: expected camera.position with camera.u, v and n".into());
+    }
     if let Some(pose) = camera.pose() {
         let view = pose.target - pose.position;
         if view.length_squared() == 0.0 {
             return Err("camera.target: expected a point other than camera.position".into());
         }
-        if view.cross(pose.up).length_squared() == 0.0 {
+        if pose.basis.is_none() && view.cross(pose.up).length_squared() == 0.0 {
             return Err(
                 "camera.up: expected a direction not parallel to the view direction".into(),
             );
