@@ -40,13 +40,15 @@ pub fn write_grid_in(path: &Path, name: &str, side: usize) -> std::io::Result<Gr
     )?;
     for row in 0..side {
         for column in 0..side {
-            let (x, y) = (column as f32, row as f32);
+            let (x, y) = (column, row);
             for corners in [
-                [(x, y), (x + 1.0, y), (x + 1.0, y + 1.0)],
-                [(x, y), (x + 1.0, y + 1.0), (x, y + 1.0)],
+                [(x, y), (x + 1, y), (x + 1, y + 1)],
+                [(x, y), (x + 1, y + 1), (x, y + 1)],
             ] {
+                // Whole numbers written as a course file writes reals (and much faster than
+                // formatting floats in a debug build).
                 for (k, (cx, cy)) in corners.into_iter().enumerate() {
-                    writeln!(out, "v{k} {cx:.6} {cy:.6} 0.000000 0.0 0.0 1.0 0")?;
+                    writeln!(out, "v{k} {cx}.000000 {cy}.000000 0.000000 0.0 0.0 1.0 0")?;
                 }
                 writeln!(out, "face normal 0.0 0.0 1.0")?;
             }
