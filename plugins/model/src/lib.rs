@@ -3,8 +3,11 @@
 //! and the shading lecture's primitives (box, sphere, torus, cone, cylinder) with exact normals. Its
 //! system reads and takes the `ModelRequest` resource, reads `PrimitiveParams`, replaces the one
 //! `Mesh` component (spawning it if there is none) and writes `ModelStatus`. A load that fails
-//! leaves the previous mesh untouched and only sets `ModelStatus::error`. It owns `ModelRequest`,
-//! `ModelStatus` and `PrimitiveParams`, and runs in `FrameSet::Load`. It owns the model's
+//! leaves the previous mesh untouched and only sets `ModelStatus::error`. A file too big to load
+//! within a frame loads on a worker thread (its own `BackgroundLoad` resource), with
+//! `ModelStatus::loading` saying how far it is, and is swapped in by the frame that finds it done.
+//! It owns `ModelRequest`, `ModelStatus`, `PrimitiveParams` and `BackgroundLoad`, and runs in
+//! `FrameSet::Load`. It owns the model's
 //! `Texture` too (the course's checkerboard until a `TextureRequest` names a PNG or JPEG file;
 //! a file that does not load removes it, so the model shows untextured, and sets the error). Framing the camera on the
 //! new mesh is the camera plugin's job (it watches `Changed<Mesh>`, in `FrameSet::Camera`).
