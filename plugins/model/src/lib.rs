@@ -36,12 +36,11 @@ pub use background::BackgroundLoad;
 pub use in_format::parse_in;
 pub use obj::parse_obj;
 pub use primitives::primitive;
-pub use progress::LoadProgress;
 pub use texture::load_texture;
 
 use background::Poll;
 use lines::Lines;
-use progress::Counted;
+use progress::{Counted, LoadProgress};
 
 /// A mesh ready to show, and what the loader noticed but forgave (e.g. a header that lies about
 /// its triangle count).
