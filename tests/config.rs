@@ -147,3 +147,33 @@ fn control_characters_in_keys_and_values_keep_the_error_on_one_line() {
         assert!(error.contains(expected), "{text:?} {items:?}: {error}");
     }
 }
+
+/// Found by the fuzzer (`fuzz/`, target `config`): `camera.rotate_speed=1e38` was accepted (any
+/// number > 0), and on the first frame 1e38 · 360 · dt overflowed to infinity times zero: the
+/// camera's basis became NaN and both views went blank. The speeds now keep to the panel's
+/// ranges.
+#[test]
+fn camera_speeds_keep_to_the_panels_ranges() {
+    for (set, expected) in [
+        (
+            "camera.rotate_speed=1e38",
+            "camera.rotate_speed: expected a number in 0.01..=10, found 1",
+        ),
+        (
+            "camera.move_speed=1e38",
+            "camera.move_speed: expected a number in 0.01..=100, found 1",
+        ),
+        (
+            "camera.move_speed=0",
+            "camera.move_speed: expected a number in 0.01..=100, found 0",
+        ),
+    ] {
+        let error = with(&[set]).expect_err(set);
+        assert!(error.contains(expected), "{set}: {error}");
+    }
+    let c = with(&["camera.rotate_speed=10", "camera.move_speed=100"]).expect("the panel's maxima");
+    assert_eq!(
+        (c.camera.speeds.rotate_speed, c.camera.speeds.move_speed),
+        (10.0, 100.0)
+    );
+}

@@ -1,10 +1,13 @@
 //! Every config key: its type, its range, and where it lands in [`Config`]. One table, so that
 //! the file, `--set` overrides and the error messages cannot disagree.
 
+use std::ops::RangeInclusive;
 use std::path::Path;
 
 use close2gl_core::glam::Vec3;
-use close2gl_core::limits::{FOV_RANGE, MAX_PIXELS, MAX_SEGMENTS};
+use close2gl_core::limits::{
+    FOV_RANGE, MAX_PIXELS, MAX_SEGMENTS, MOVE_SPEED_RANGE, ROTATE_SPEED_RANGE,
+};
 use close2gl_core::{ModelSource, NamedEnum, PrimitiveKind};
 use toml::Value;
 
@@ -38,8 +41,10 @@ pub fn set(
         ("camera", "near") => c.camera.near = Some(positive(value)?),
         ("camera", "far") => c.camera.far = Some(positive(value)?),
         ("camera", "mode") => c.camera.mode = named(value)?,
-        ("camera", "move_speed") => c.camera.speeds.move_speed = positive(value)?,
-        ("camera", "rotate_speed") => c.camera.speeds.rotate_speed = positive(value)?,
+        ("camera", "move_speed") => c.camera.speeds.move_speed = within(value, MOVE_SPEED_RANGE)?,
+        ("camera", "rotate_speed") => {
+            c.camera.speeds.rotate_speed = within(value, ROTATE_SPEED_RANGE)?;
+        }
 
         ("render", "mode") => c.render.mode = named(value)?,
         ("render", "front_face") => c.render.front_face = named(value)?,
@@ -117,6 +122,11 @@ fn in_range(value: &Value, ok: impl Fn(f32) -> bool, range: &str) -> Result<f32,
 fn fov(value: &Value) -> Result<f32, String> {
     let range = format!("of degrees in {}..={}", FOV_RANGE.start(), FOV_RANGE.end());
     in_range(value, |x| FOV_RANGE.contains(&x), &range)
+}
+
+fn within(value: &Value, range: RangeInclusive<f32>) -> Result<f32, String> {
+    let text = format!("in {}..={}", range.start(), range.end());
+    in_range(value, |x| range.contains(&x), &text)
 }
 
 fn positive(value: &Value) -> Result<f32, String> {

@@ -8,6 +8,13 @@ use std::ops::RangeInclusive;
 /// wider than 170° the projection stretches the border past any use.
 pub const FOV_RANGE: RangeInclusive<f32> = 0.5..=170.0;
 
+/// How fast the camera may move, model radii per second (`camera.move_speed`, the panel's
+/// slider), and turn, degrees per pixel of drag (`camera.rotate_speed`; held keys turn 360 times
+/// that per second). Far above these the input's per-frame steps overflow f32 and turn the
+/// camera's basis into NaN.
+pub const MOVE_SPEED_RANGE: RangeInclusive<f32> = 0.01..=100.0;
+pub const ROTATE_SPEED_RANGE: RangeInclusive<f32> = 0.01..=10.0;
+
 /// Both fields of view of the assignment's initial camera, degrees.
 pub const DEFAULT_FOV: f32 = 60.0;
 

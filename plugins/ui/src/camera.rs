@@ -1,5 +1,5 @@
 use bevy_ecs::prelude::*;
-use close2gl_core::limits::FOV_RANGE;
+use close2gl_core::limits::{FOV_RANGE, MOVE_SPEED_RANGE, ROTATE_SPEED_RANGE};
 use close2gl_core::{Camera, CameraAction, CameraActions, CameraMode, CameraSpeeds};
 
 use crate::PanelState;
@@ -29,14 +29,14 @@ pub fn section(ui: &mut egui::Ui, world: &mut World) {
             ui.add(
                 egui::DragValue::new(&mut speeds.move_speed)
                     .speed(0.01)
-                    .range(0.01..=100.0)
+                    .range(MOVE_SPEED_RANGE)
                     .suffix(" radii/s"),
             );
             ui.label("Rotate");
             ui.add(
                 egui::DragValue::new(&mut speeds.rotate_speed)
                     .speed(0.005)
-                    .range(0.01..=10.0)
+                    .range(ROTATE_SPEED_RANGE)
                     .suffix(" °/px"),
             );
         });
