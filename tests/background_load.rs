@@ -11,31 +11,14 @@ use close2gl_core::limits::BACKGROUND_LOAD_BYTES;
 use close2gl_core::{
     App, Camera, Loading, Mesh, ModelRequest, ModelSource, ModelStatus, PrimitiveKind, Viewport,
 };
-use close2gl_testkit::{GridFile, write_grid_in};
+use close2gl_testkit::{GridFile, TempDir, write_grid_in};
 
-/// A directory of this test's own, removed when dropped.
-struct TempDir(PathBuf);
-
-impl TempDir {
-    fn new(test: &str) -> Self {
-        let path = std::env::temp_dir().join(format!("close2gl_{test}_{}", std::process::id()));
-        std::fs::create_dir_all(&path).expect("temp dir");
-        Self(path)
-    }
-
-    /// A grid file just big enough to load in the background.
-    fn big(&self, name: &str) -> (PathBuf, GridFile) {
-        let path = self.0.join(format!("{name}.in"));
-        let grid = write_grid_in(&path, name, 170).expect("write the grid");
-        assert!(grid.bytes > BACKGROUND_LOAD_BYTES, "{} B", grid.bytes);
-        (path, grid)
-    }
-}
-
-impl Drop for TempDir {
-    fn drop(&mut self) {
-        let _ = std::fs::remove_dir_all(&self.0);
-    }
+/// A grid file in `dir` just big enough to load in the background.
+fn big(dir: &TempDir, name: &str) -> (PathBuf, GridFile) {
+    let path = dir.0.join(format!("{name}.in"));
+    let grid = write_grid_in(&path, name, 170).expect("write the grid");
+    assert!(grid.bytes > BACKGROUND_LOAD_BYTES, "{} B", grid.bytes);
+    (path, grid)
 }
 
 /// The headless app with the bundled cube loaded and framed.
@@ -85,7 +68,7 @@ fn until_loaded(app: &mut App) -> Vec<f32> {
 #[test]
 fn a_big_file_loads_in_the_background_while_the_last_model_stays() {
     let dir = TempDir::new("background_load");
-    let (path, grid) = dir.big("grid");
+    let (path, grid) = big(&dir, "grid");
     let mut app = app_with_the_cube();
     let cube = mesh(&mut app);
     let cube_camera = camera(&mut app);
@@ -119,8 +102,8 @@ fn a_big_file_loads_in_the_background_while_the_last_model_stays() {
 #[test]
 fn a_newer_request_supersedes_a_load_in_flight() {
     let dir = TempDir::new("supersede");
-    let (first, _) = dir.big("first");
-    let (second, _) = dir.big("second");
+    let (first, _) = big(&dir, "first");
+    let (second, _) = big(&dir, "second");
     let mut app = app_with_the_cube();
 
     request(&mut app, &first);
@@ -151,7 +134,7 @@ fn a_newer_request_supersedes_a_load_in_flight() {
 #[test]
 fn a_big_file_that_fails_keeps_the_last_model_and_says_where() {
     let dir = TempDir::new("background_error");
-    let (path, _) = dir.big("broken");
+    let (path, _) = big(&dir, "broken");
     let mut text = std::fs::read_to_string(&path).expect("read");
     text.push_str("v0 1 2\n");
     std::fs::write(&path, text).expect("write");

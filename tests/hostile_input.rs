@@ -7,12 +7,13 @@
 //! anything.
 
 use std::io::Write;
-use std::path::{Path, PathBuf};
+use std::path::Path;
 use std::process::{Command, Output};
 
 use close2gl::config::{self, Config};
 use close2gl_core::limits::MAX_LINE_BYTES;
 use close2gl_core::{Mesh, ModelSource, Viewport};
+use close2gl_testkit::TempDir;
 
 const MIB: u64 = 1 << 20;
 
@@ -104,29 +105,6 @@ fn child_loads_the_model_it_is_given() {
         .and_then(|v| v.trim().trim_end_matches("kB").trim().parse().ok())
         .expect("VmHWM");
     println!("peak_rss {}", kib * 1024);
-}
-
-/// A directory of this test's own, removed when dropped.
-struct TempDir(PathBuf);
-
-impl TempDir {
-    fn new(test: &str) -> Self {
-        let path = std::env::temp_dir().join(format!("close2gl_{test}_{}", std::process::id()));
-        std::fs::create_dir_all(&path).expect("temp dir");
-        Self(path)
-    }
-
-    fn write(&self, name: &str, contents: &[u8]) -> PathBuf {
-        let path = self.0.join(name);
-        std::fs::write(&path, contents).expect("write");
-        path
-    }
-}
-
-impl Drop for TempDir {
-    fn drop(&mut self) {
-        let _ = std::fs::remove_dir_all(&self.0);
-    }
 }
 
 /// A one-triangle `.in` file whose header says `triangles` and `materials`.

@@ -8,11 +8,13 @@ mod big_model;
 mod meshes;
 #[cfg(feature = "panel")]
 pub mod panel;
+mod temp_dir;
 
 use close2gl_core::{App, Camera, Lighting, Mesh, RenderSettings, Viewport};
 
 pub use big_model::{GridFile, write_grid_in};
 pub use meshes::{cube, sphere};
+pub use temp_dir::TempDir;
 
 /// An app whose world has `settings`, `viewport`, the default lighting, one `camera` and one
 /// `mesh` (what the settings plugin and a loaded model provide): add the plugins under test, then
