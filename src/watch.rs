@@ -22,13 +22,13 @@ use crate::config::Config;
 const POLL: Duration = Duration::from_millis(250);
 
 /// Reads the configuration again, as the command line did at start-up (file, overrides, model).
-pub type Reload = Box<dyn Fn() -> Result<Config, String> + Send + Sync>;
+pub type Reload = Arc<dyn Fn() -> Result<Config, String> + Send + Sync>;
 
 /// Adds the watch; `config_file` is the file the configuration was read from, if any, and
 /// `reload` reads the whole configuration again.
 pub struct WatchPlugin {
     pub config_file: Option<PathBuf>,
-    pub reload: Arc<Reload>,
+    pub reload: Reload,
 }
 
 impl Plugin for WatchPlugin {
@@ -53,7 +53,7 @@ impl Plugin for WatchPlugin {
 pub struct Watch {
     files: Arc<Mutex<Files>>,
     config_file: Option<PathBuf>,
-    reload: Arc<Reload>,
+    reload: Reload,
     /// The model generation a reload of the watched model waits to replace.
     model_reload: Option<u64>,
 }

@@ -55,7 +55,7 @@ impl Files {
         let mut app = close2gl::build_app(&config, viewport).expect("the app");
         app.add_plugins(WatchPlugin {
             config_file: Some(self.config.clone()),
-            reload: Arc::new(Box::new(load)),
+            reload: Arc::new(load),
         });
         app.update();
         app

@@ -87,11 +87,11 @@ pub fn run(args: RunArgs) -> Result<(), CliError> {
         let scene = scene.clone();
         app.add_plugins(WatchPlugin {
             config_file: crate::config::file_to_read(scene.config.as_deref()),
-            reload: Arc::new(Box::new(move || {
+            reload: Arc::new(move || {
                 scene.config().map_err(|e| match e {
                     CliError::Input(m) | CliError::Runtime(m) => m,
                 })
-            })),
+            }),
         });
     }
     app.add_plugins(ViewerPlugin(ViewerOptions {
