@@ -23,7 +23,7 @@ mod progress;
 mod texture;
 
 use std::fs::File;
-use std::io::BufReader;
+use std::io::{BufReader, Seek};
 use std::path::Path;
 
 use bevy_ecs::prelude::*;
@@ -62,9 +62,9 @@ pub fn load(source: &ModelSource, params: &PrimitiveParams) -> Result<LoadedMode
     }
 }
 
-/// Loads a `.in` or `.obj` file, counting what it reads into `progress`. A `.in` file streams
-/// through its parser, so memory follows the mesh; an OBJ file is read whole first (tobj and
-/// the index checks need it), and read again by tobj, so its progress counts both passes.
+/// Loads a `.in` or `.obj` file, counting what it reads into `progress`. Both stream, so memory
+/// follows the mesh, not the file: a `.in` file in one pass, an OBJ file in two (its progress
+/// counts both).
 pub(crate) fn load_file(path: &Path, progress: &LoadProgress) -> Result<LoadedModel, String> {
     let label = path.display().to_string();
     let extension = path
@@ -89,19 +89,22 @@ pub(crate) fn load_file(path: &Path, progress: &LoadProgress) -> Result<LoadedMo
             "{label}: expected a .in or .obj file, found a directory or device"
         ));
     }
+    // An OBJ file is read twice (see `obj::read_obj`), each pass from the start.
     let passes = if obj { 2 } else { 1 };
     progress.set_total(passes * metadata.len());
-    let lines = Lines::new(
-        BufReader::new(Counted {
-            inner: file,
+    let label = label.as_str();
+    let pass = || {
+        (&file).rewind().map_err(cannot_read)?;
+        let counted = Counted {
+            inner: &file,
             progress,
-        }),
-        &label,
-    );
+        };
+        Ok(Lines::new(BufReader::new(counted), label))
+    };
     if obj {
-        obj::read_obj(&lines.into_text()?, &label, progress)
+        obj::read_obj(pass, label)
     } else {
-        in_format::read_in(lines)
+        in_format::read_in(pass()?)
     }
 }
 

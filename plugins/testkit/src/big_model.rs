@@ -5,7 +5,7 @@ use std::fs::File;
 use std::io::{BufWriter, Write};
 use std::path::Path;
 
-/// What [`write_grid_in`] wrote.
+/// What [`write_grid_in`] or [`write_grid_obj`] wrote.
 #[derive(Clone, Copy, Debug)]
 pub struct GridFile {
     pub bytes: u64,
@@ -25,10 +25,9 @@ impl GridFile {
 /// Writes a course `.in` file of a flat `side` × `side` grid of unit squares, two triangles
 /// each, facing +z: about 160 bytes a triangle, so `side` = 800 gives some 200 MB.
 pub fn write_grid_in(path: &Path, name: &str, side: usize) -> std::io::Result<GridFile> {
-    let triangles = 2 * side * side;
     let mut out = BufWriter::new(File::create(path)?);
     writeln!(out, "Object name = {name}")?;
-    writeln!(out, "# triangles = {triangles}")?;
+    writeln!(out, "# triangles = {}", 2 * side * side)?;
     writeln!(out, "Material count = 1")?;
     writeln!(out, "ambient color 0.2 0.2 0.2")?;
     writeln!(out, "diffuse color 0.8 0.8 0.8")?;
@@ -38,26 +37,53 @@ pub fn write_grid_in(path: &Path, name: &str, side: usize) -> std::io::Result<Gr
         out,
         "-- 3*[pos(x,y,z) normal(x,y,z) color_index] face_normal(x,y,z)"
     )?;
-    for row in 0..side {
-        for column in 0..side {
-            let (x, y) = (column, row);
-            for corners in [
-                [(x, y), (x + 1, y), (x + 1, y + 1)],
-                [(x, y), (x + 1, y + 1), (x, y + 1)],
-            ] {
-                // Whole numbers written as a course file writes reals (and much faster than
-                // formatting floats in a debug build).
-                for (k, (cx, cy)) in corners.into_iter().enumerate() {
-                    writeln!(out, "v{k} {cx}.000000 {cy}.000000 0.000000 0.0 0.0 1.0 0")?;
-                }
-                writeln!(out, "face normal 0.0 0.0 1.0")?;
-            }
+    for corners in grid_triangles(side) {
+        // Whole numbers written as a course file writes reals (and much faster than formatting
+        // floats in a debug build).
+        for (k, (x, y)) in corners.into_iter().enumerate() {
+            writeln!(out, "v{k} {x}.000000 {y}.000000 0.000000 0.0 0.0 1.0 0")?;
+        }
+        writeln!(out, "face normal 0.0 0.0 1.0")?;
+    }
+    finish(out, path, side)
+}
+
+/// Writes a Wavefront `.obj` file of the same grid as [`write_grid_in`]: each corner once (`v`),
+/// then the faces by index, with no normals, so the loader computes smooth ones. About 25
+/// bytes a triangle: `side` = 800 gives some 33 MB.
+pub fn write_grid_obj(path: &Path, name: &str, side: usize) -> std::io::Result<GridFile> {
+    let mut out = BufWriter::new(File::create(path)?);
+    writeln!(out, "o {name}")?;
+    for y in 0..=side {
+        for x in 0..=side {
+            writeln!(out, "v {x} {y} 0")?;
         }
     }
+    // OBJ indices count from 1.
+    let index = |(x, y): (usize, usize)| y * (side + 1) + x + 1;
+    for [a, b, c] in grid_triangles(side) {
+        writeln!(out, "f {} {} {}", index(a), index(b), index(c))?;
+    }
+    finish(out, path, side)
+}
+
+/// The grid's triangles, counter-clockwise seen from +z, as corners (x, y): two per unit square.
+fn grid_triangles(side: usize) -> impl Iterator<Item = [(usize, usize); 3]> {
+    (0..side).flat_map(move |y| {
+        (0..side).flat_map(move |x| {
+            [
+                [(x, y), (x + 1, y), (x + 1, y + 1)],
+                [(x, y), (x + 1, y + 1), (x, y + 1)],
+            ]
+        })
+    })
+}
+
+fn finish(mut out: BufWriter<File>, path: &Path, side: usize) -> std::io::Result<GridFile> {
     out.flush()?;
     Ok(GridFile {
         bytes: std::fs::metadata(path)?.len(),
-        triangles,
+        triangles: 2 * side * side,
         vertices: (side + 1) * (side + 1),
     })
 }

@@ -1,5 +1,6 @@
 //! What close2gl's test suites share, so that no test file keeps its own copy: meshes built by
-//! hand ([`cube`], [`sphere`]), big model files written on the spot ([`write_grid_in`]), the world a test starts from ([`world_with`], [`camera`],
+//! hand ([`cube`], [`sphere`]), big model files written on the spot ([`write_grid_in`],
+//! [`write_grid_obj`]), the world a test starts from ([`world_with`], [`camera`],
 //! [`mesh`]), with feature `gpu` the one headless GPU adapter a test binary uses ([`gpu`]), and
 //! with feature `panel` the egui control panel driven headless ([`panel::Harness`]). Used as a
 //! dev-dependency only.
@@ -12,7 +13,7 @@ mod temp_dir;
 
 use close2gl_core::{App, Camera, Lighting, Mesh, RenderSettings, Viewport};
 
-pub use big_model::{GridFile, write_grid_in};
+pub use big_model::{GridFile, write_grid_in, write_grid_obj};
 pub use meshes::{cube, sphere};
 pub use temp_dir::TempDir;
 
