@@ -1,7 +1,7 @@
 //! A model file too big to load within a frame loads on a worker thread, on the headless app the
 //! commands and the viewer run: the last model stays shown (and framed) while `ModelStatus`
 //! says how far the load is; the frame that finds it done swaps the mesh in and frames it; a
-//! newer request cancels it.
+//! newer request cancels it. A replay holds it to the frames the recording saw.
 
 use std::path::{Path, PathBuf};
 use std::time::{Duration, Instant};
@@ -9,7 +9,8 @@ use std::time::{Duration, Instant};
 use close2gl::config::Config;
 use close2gl_core::limits::BACKGROUND_LOAD_BYTES;
 use close2gl_core::{
-    App, Camera, Loading, Mesh, ModelRequest, ModelSource, ModelStatus, PrimitiveKind, Viewport,
+    App, Camera, LoadPace, Loading, Mesh, ModelRequest, ModelSource, ModelStatus, PrimitiveKind,
+    Viewport,
 };
 use close2gl_testkit::{GridFile, TempDir, write_grid_in};
 
@@ -97,6 +98,32 @@ fn a_big_file_loads_in_the_background_while_the_last_model_stays() {
     );
     let (centre, _) = loaded.bounding_sphere();
     assert_eq!(camera(&mut app).target, centre, "framed when it came in");
+}
+
+#[test]
+fn a_replay_shows_the_recorded_progress_and_brings_the_model_in_on_the_recorded_frame() {
+    let dir = TempDir::new("replay_pace");
+    let (path, grid) = big(&dir, "grid");
+    let mut app = app_with_the_cube();
+    let cube = mesh(&mut app);
+    app.insert_resource(LoadPace::Replay(Some(0.0)));
+    request(&mut app, &path);
+    // The worker is done long before this (about 0.1 s), but the recording says the load went on.
+    std::thread::sleep(Duration::from_secs(1));
+    for fraction in [0.25, 0.75] {
+        app.insert_resource(LoadPace::Replay(Some(fraction)));
+        app.update();
+        assert_eq!(status(&app).loading.map(|l| l.fraction), Some(fraction));
+        assert_eq!(mesh(&mut app), cube, "not in before its recorded frame");
+    }
+    // Its frame: it comes in, waited for if need be, and is framed.
+    app.insert_resource(LoadPace::Replay(None));
+    app.update();
+    let after = status(&app);
+    assert_eq!((after.generation, after.loading), (2, None));
+    let loaded = mesh(&mut app);
+    assert_eq!(loaded.triangles.len(), grid.triangles);
+    assert_eq!(camera(&mut app).target, loaded.bounding_sphere().0);
 }
 
 #[test]

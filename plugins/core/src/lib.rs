@@ -39,7 +39,8 @@ pub use input::{InputBindings, InputState};
 pub use layout::Layout;
 pub use mesh::Mesh;
 pub use model::{
-    Loading, ModelRequest, ModelSource, ModelStatus, PrimitiveKind, PrimitiveParams, TextureRequest,
+    LoadPace, Loading, ModelRequest, ModelSource, ModelStatus, PrimitiveKind, PrimitiveParams,
+    TextureRequest,
 };
 pub use named::NamedEnum;
 pub use schedule::{FrameSet, PostUpdate, PreUpdate, Render, Startup, Update, frame_schedules};

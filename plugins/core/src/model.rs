@@ -103,3 +103,16 @@ pub struct Loading {
     /// How much of the file has been parsed, 0..=1.
     pub fraction: f32,
 }
+
+/// When a model loading on a worker thread shows its progress and arrives. Live, as the worker
+/// goes. A replay makes every frame show what the recording's frame showed, so that the mesh
+/// arrives on the same frame (which frames the camera on it) whatever the machine's speed.
+/// The viewer sets it each frame; the model plugin owns it.
+#[derive(Resource, Clone, Copy, Debug, Default, PartialEq)]
+pub enum LoadPace {
+    #[default]
+    Live,
+    /// The recording's [`Loading::fraction`] at the end of this frame: `Some` shows it and
+    /// keeps the load in flight, even if it is done; `None` waits for a load in flight to end.
+    Replay(Option<f32>),
+}

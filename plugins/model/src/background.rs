@@ -1,5 +1,6 @@
 //! Big model files load on a worker thread, so that the window keeps drawing the last model
-//! (and a progress bar) while they do; the frame that finds the worker done swaps the mesh in.
+//! (and a progress bar) while they do; the frame that finds the worker done swaps the mesh in
+//! (during a replay, the frame the recording says, see [`LoadPace`]).
 
 use std::path::PathBuf;
 use std::sync::Arc;
@@ -7,7 +8,7 @@ use std::thread::JoinHandle;
 
 use bevy_ecs::prelude::*;
 use close2gl_core::limits::BACKGROUND_LOAD_BYTES;
-use close2gl_core::{Loading, ModelSource};
+use close2gl_core::{LoadPace, Loading, ModelSource};
 
 use crate::progress::LoadProgress;
 use crate::{LoadedModel, load_file};
@@ -74,11 +75,21 @@ impl BackgroundLoad {
         }
     }
 
-    /// The finished load, taken, or how far the running one is; `None` when nothing loads.
-    pub(crate) fn poll(&mut self) -> Option<Poll> {
+    /// The finished load, taken, or how far the running one is, as `pace` says it is (see
+    /// [`LoadPace`]); `None` when nothing loads.
+    pub(crate) fn poll(&mut self, pace: LoadPace) -> Option<Poll> {
         let in_flight = self.0.as_ref()?;
-        if !in_flight.worker.is_finished() {
-            return Some(Poll::Running(in_flight.progress.fraction()));
+        let done = match pace {
+            LoadPace::Live => in_flight.worker.is_finished(),
+            LoadPace::Replay(Some(_)) => false,
+            LoadPace::Replay(None) => true,
+        };
+        if !done {
+            let fraction = match pace {
+                LoadPace::Replay(Some(fraction)) => fraction,
+                _ => in_flight.progress.fraction(),
+            };
+            return Some(Poll::Running(fraction));
         }
         let InFlight {
             source,
@@ -86,6 +97,7 @@ impl BackgroundLoad {
             worker,
             ..
         } = self.0.take()?;
+        // Waits, when a replay says the load ended this frame.
         let result = worker.join().unwrap_or_else(|_| {
             Err(format!(
                 "{label}: the loader stopped unexpectedly (a bug: please report it with the file)"

@@ -1,16 +1,17 @@
 //! The model plugin. It owns turning a `ModelSource` into a `Mesh`: the course's `.in` triangle
 //! files (every variant the README's Models section lists), Wavefront `.obj` files through tobj,
-//! and the shading lecture's primitives (box, sphere, torus, cone, cylinder) with exact normals. Its
-//! system reads and takes the `ModelRequest` resource, reads `PrimitiveParams`, replaces the one
-//! `Mesh` component (spawning it if there is none) and writes `ModelStatus`. A load that fails
-//! leaves the previous mesh untouched and only sets `ModelStatus::error`. A file too big to load
-//! within a frame loads on a worker thread (its own `BackgroundLoad` resource), with
-//! `ModelStatus::loading` saying how far it is, and is swapped in by the frame that finds it done.
-//! It owns `ModelRequest`, `ModelStatus`, `PrimitiveParams` and `BackgroundLoad`, and runs in
-//! `FrameSet::Load`. It owns the model's
-//! `Texture` too (the course's checkerboard until a `TextureRequest` names a PNG or JPEG file;
-//! a file that does not load removes it, so the model shows untextured, and sets the error). Framing the camera on the
-//! new mesh is the camera plugin's job (it watches `Changed<Mesh>`, in `FrameSet::Camera`).
+//! and the shading lecture's primitives (box, sphere, torus, cone, cylinder) with exact normals.
+//! Its system reads and takes the `ModelRequest` resource, reads `PrimitiveParams`, replaces the
+//! one `Mesh` component (spawning it if there is none) and writes `ModelStatus`. A load that
+//! fails leaves the previous mesh untouched and only sets `ModelStatus::error`. A file too big
+//! to load within a frame loads on a worker thread (its own `BackgroundLoad` resource), with
+//! `ModelStatus::loading` saying how far it is, and is swapped in by the frame that finds it
+//! done (in a replay, the frame the recording says: `LoadPace`, which the viewer sets). It owns
+//! `ModelRequest`, `ModelStatus`, `PrimitiveParams`, `BackgroundLoad` and `LoadPace`, and runs
+//! in `FrameSet::Load`. It owns the model's `Texture` too (the course's checkerboard until a
+//! `TextureRequest` names a PNG or JPEG file; a file that does not load removes it, so the
+//! model shows untextured, and sets the error). Framing the camera on the new mesh is the
+//! camera plugin's job (it watches `Changed<Mesh>`, in `FrameSet::Camera`).
 
 mod background;
 mod diagnostics;
@@ -28,8 +29,8 @@ use std::path::Path;
 
 use bevy_ecs::prelude::*;
 use close2gl_core::{
-    App, FrameSet, Mesh, ModelRequest, ModelSource, ModelStatus, Plugin, PrimitiveParams, Texture,
-    TextureRequest, Update,
+    App, FrameSet, LoadPace, Mesh, ModelRequest, ModelSource, ModelStatus, Plugin, PrimitiveParams,
+    Texture, TextureRequest, Update,
 };
 
 pub use background::BackgroundLoad;
@@ -127,6 +128,7 @@ impl Plugin for ModelPlugin {
             .init_resource::<TextureRequest>()
             .init_resource::<Texture>()
             .init_resource::<BackgroundLoad>()
+            .init_resource::<LoadPace>()
             .add_systems(
                 Update,
                 (load_requested_model, load_requested_texture).in_set(FrameSet::Load),
@@ -137,8 +139,8 @@ impl Plugin for ModelPlugin {
 /// Serves a pending `ModelRequest`: on success the mesh is replaced in place (so `Changed<Mesh>`
 /// fires) and the status moves to the new source; on failure only the error is recorded. A file
 /// too big to load within a frame goes to a worker thread instead (`ModelStatus::loading` says
-/// how far it is) and is served like this in the frame that finds it done; a newer request
-/// cancels it.
+/// how far it is) and is served like this in the frame that finds it done (or, in a replay,
+/// the frame `LoadPace` names); a newer request cancels it.
 pub fn load_requested_model(
     mut commands: Commands,
     mut request: ResMut<ModelRequest>,
@@ -146,6 +148,7 @@ pub fn load_requested_model(
     mut status: ResMut<ModelStatus>,
     mut meshes: Query<&mut Mesh>,
     mut background: ResMut<BackgroundLoad>,
+    pace: Res<LoadPace>,
 ) {
     if let Some(source) = request.0.take() {
         background.cancel();
@@ -160,7 +163,7 @@ pub fn load_requested_model(
         show(&mut commands, &mut status, &mut meshes, source, loaded);
         return;
     }
-    match background.poll() {
+    match background.poll(*pace) {
         Some(Poll::Done(source, loaded)) => {
             status.loading = None;
             show(&mut commands, &mut status, &mut meshes, source, loaded);

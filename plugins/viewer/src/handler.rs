@@ -97,10 +97,12 @@ impl Viewer {
         let drawn = windows.draw(self.app.world_mut(), &gui_frame, &placement, capture);
         windows.gui.free_textures(&mut gui_frame);
         let held = end_input_frame(self.app.world_mut());
-        if let Err(e) = drawn.and_then(|shot| save(&self.options, self.app.world_mut(), shot)) {
+        let saved = drawn.and_then(|shot| save(&self.options, self.app.world_mut(), shot));
+        if let Err(e) =
+            saved.and_then(|()| self.session.end_frame(self.frames, self.app.world_mut()))
+        {
             return self.fail(event_loop, e);
         }
-        self.session.end_frame(self.frames);
         self.frames += 1;
         let continuous = self.options.exit_after_frames.is_some() || self.session.is_replaying();
         if self

@@ -2,9 +2,10 @@
 //! back. What is recorded is what the app and the panel were handed each frame, after the
 //! window system's events were sorted out: the keys held and pressed, the drag and the scroll
 //! (`InputState`), the panel's own egui events, a file dropped on the window, the main window
-//! resized, and the frame's time step. A replay hands the same to the same frames, with the
-//! recorded time steps instead of the clock's, so it moves the camera exactly as the recording
-//! did, and draws the same pixels on every run.
+//! resized, the frame's time step, and how far a model loading in the background had come by
+//! the frame's end. A replay hands the same to the same frames, with the recorded time steps
+//! instead of the clock's and the recorded load's progress instead of the worker's, so it moves
+//! the camera exactly as the recording did, and draws the same pixels on every run.
 
 use std::collections::BTreeSet;
 use std::fs::File;
@@ -54,6 +55,10 @@ pub struct FrameInput {
     /// Files dropped on a window before this frame.
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub dropped: Vec<PathBuf>,
+    /// How far a model loading in the background was at the end of this frame, as the panel
+    /// showed it; none when nothing was loading (so a load in flight before it ended here).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub loading: Option<f32>,
 }
 
 fn is_zero(v: &[f32; 2]) -> bool {
@@ -94,6 +99,8 @@ pub struct Recorder {
     out: BufWriter<File>,
     /// What arrived between frames, for the next frame's line.
     pub pending: FrameInput,
+    /// The frame under way, written when it ends.
+    current: Option<Box<FrameInput>>,
 }
 
 impl Recorder {
@@ -104,6 +111,7 @@ impl Recorder {
             path: path.to_path_buf(),
             out: BufWriter::new(file),
             pending: FrameInput::default(),
+            current: None,
         };
         let header = Header {
             close2gl_recording: VERSION,
@@ -114,16 +122,23 @@ impl Recorder {
         Ok(recorder)
     }
 
-    /// Writes frame `input` with what arrived since the last frame.
-    pub fn frame(&mut self, input: FrameInput) -> Result<(), String> {
+    /// Starts frame `input`, with what arrived since the last frame.
+    pub fn begin_frame(&mut self, input: FrameInput) {
         let pending = std::mem::take(&mut self.pending);
-        let frame = FrameInput {
+        self.current = Some(Box::new(FrameInput {
             panel: pending.panel,
             resize: pending.resize,
             dropped: pending.dropped,
             ..input
-        };
-        self.line(&frame)
+        }));
+    }
+
+    /// Writes the frame begun last, with where a background load stood at its end.
+    pub fn end_frame(&mut self, loading: Option<f32>) -> Result<(), String> {
+        match self.current.take() {
+            Some(frame) => self.line(&FrameInput { loading, ..*frame }),
+            None => Ok(()),
+        }
     }
 
     fn line(&mut self, value: &impl Serialize) -> Result<(), String> {
@@ -185,6 +200,13 @@ impl Recording {
                     frame.dt
                 ));
             }
+            if let Some(fraction) = frame.loading
+                && !(0.0..=1.0).contains(&fraction)
+            {
+                return Err(format!(
+                    "{name}:{number}: expected a load's progress from 0 to 1, found {fraction}"
+                ));
+            }
             frames.push(frame);
         }
         if frames.is_empty() {
@@ -227,10 +249,10 @@ mod tests {
             .push(egui::Event::PointerMoved(egui::pos2(10.0, 20.5)));
         recorder.pending.resize = Some([640, 480]);
         recorder.pending.dropped.push("a model.in".into());
-        recorder.frame(FrameInput::from_state(0, &input)).unwrap();
-        recorder
-            .frame(FrameInput::from_state(1, &InputState::default()))
-            .unwrap();
+        recorder.begin_frame(FrameInput::from_state(0, &input));
+        recorder.end_frame(Some(0.25)).unwrap();
+        recorder.begin_frame(FrameInput::from_state(1, &InputState::default()));
+        recorder.end_frame(None).unwrap();
 
         let recording = Recording::read(&path).unwrap();
         assert_eq!(recording.header.size, [800, 600]);
@@ -253,6 +275,7 @@ mod tests {
             recording.frames[0].panel,
             vec![egui::Event::PointerMoved(egui::pos2(10.0, 20.5))]
         );
+        assert_eq!(recording.frames[0].loading, Some(0.25));
         assert_eq!(
             recording.frames[1],
             FrameInput {
@@ -285,6 +308,10 @@ mod tests {
             (
                 "{\"close2gl_recording\":1,\"size\":[1,1]}\n{\"frame\":0,\"dt\":-1}\n",
                 ":2: expected a time step",
+            ),
+            (
+                "{\"close2gl_recording\":1,\"size\":[1,1]}\n{\"frame\":0,\"loading\":2}\n",
+                ":2: expected a load's progress from 0 to 1, found 2",
             ),
             (
                 "{\"close2gl_recording\":1,\"size\":[1,1]}\nnot json\n",

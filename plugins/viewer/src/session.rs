@@ -4,7 +4,7 @@
 use std::time::{Duration, Instant};
 
 use bevy_ecs::world::World;
-use close2gl_core::InputState;
+use close2gl_core::{InputState, LoadPace, ModelStatus};
 use winit::dpi::PhysicalSize;
 use winit::window::Window;
 
@@ -92,7 +92,7 @@ impl Session {
                 let mut input = world.resource_mut::<InputState>();
                 input.dt = dt;
                 recorder.pending.panel = raw.events.clone();
-                recorder.frame(FrameInput::from_state(frame, &input))?;
+                recorder.begin_frame(FrameInput::from_state(frame, &input));
             }
             Session::Replaying(player) => {
                 let Some(recorded) = player.recording.frames.get(frame as usize) else {
@@ -103,6 +103,7 @@ impl Session {
                 raw.predicted_dt = recorded.dt;
                 player.time += recorded.dt as f64;
                 recorded.apply(&mut world.resource_mut::<InputState>());
+                world.insert_resource(LoadPace::Replay(recorded.loading));
                 for path in &recorded.dropped {
                     drop_file(world, path.clone());
                 }
@@ -111,14 +112,24 @@ impl Session {
         Ok(())
     }
 
-    /// After frame `frame`: a replay that has played its last frame hands over to the window
-    /// system (when the viewer stays open).
-    pub fn end_frame(&mut self, frame: u32) {
-        if let Session::Replaying(player) = self
-            && frame as usize + 1 >= player.recording.frames.len()
-        {
-            *self = Session::Live;
+    /// After frame `frame`: a recording writes the frame down, with where a background load
+    /// stood; a replay that has played its last frame hands over to the window system (when
+    /// the viewer stays open), and loads go at their own pace again.
+    pub fn end_frame(&mut self, frame: u32, world: &mut World) -> Result<(), String> {
+        match self {
+            Session::Live => {}
+            Session::Recording(recorder) => {
+                let status = world.resource::<ModelStatus>();
+                recorder.end_frame(status.loading.as_ref().map(|l| l.fraction))?;
+            }
+            Session::Replaying(player) => {
+                if frame as usize + 1 >= player.recording.frames.len() {
+                    *self = Session::Live;
+                    world.insert_resource(LoadPace::Live);
+                }
+            }
         }
+        Ok(())
     }
 
     /// A window event the recording must know of: the main window resized, a file dropped.
@@ -132,5 +143,50 @@ impl Session {
         if let Session::Recording(recorder) = self {
             recorder.pending.dropped.push(path.to_path_buf());
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use close2gl_core::{Loading, ModelSource, PrimitiveKind};
+
+    use super::*;
+
+    #[test]
+    fn a_recorded_loads_progress_paces_the_replay_frame_by_frame() {
+        let path = std::env::temp_dir().join(format!("close2gl-pace-{}.rec", std::process::id()));
+        let mut world = World::new();
+        world.init_resource::<InputState>();
+        world.init_resource::<ModelStatus>();
+        world.init_resource::<LoadPace>();
+        // Nothing loading, a load half way, then in.
+        let shown = [None, Some(0.0), Some(0.5), None];
+        let recorder = Recorder::create(&path, [64, 64], Vec::new()).expect("record");
+        let mut session = Session::Recording(recorder);
+        for (frame, fraction) in (0..).zip(shown) {
+            let mut raw = egui::RawInput::default();
+            session
+                .begin_frame(frame, 0.01, &mut raw, &mut world)
+                .unwrap();
+            world.resource_mut::<ModelStatus>().loading = fraction.map(|fraction| Loading {
+                source: ModelSource::Primitive(PrimitiveKind::Box),
+                fraction,
+            });
+            session.end_frame(frame, &mut world).unwrap();
+        }
+
+        let recording = Recording::read(&path).expect("read back");
+        let _ = std::fs::remove_file(&path);
+        let mut session = Session::Replaying(Player::new(recording));
+        for (frame, fraction) in (0..).zip(shown) {
+            let mut raw = egui::RawInput::default();
+            session
+                .begin_frame(frame, 0.5, &mut raw, &mut world)
+                .unwrap();
+            assert_eq!(*world.resource::<LoadPace>(), LoadPace::Replay(fraction));
+            session.end_frame(frame, &mut world).unwrap();
+        }
+        assert!(!session.is_replaying());
+        assert_eq!(*world.resource::<LoadPace>(), LoadPace::Live);
     }
 }
