@@ -166,52 +166,65 @@ fn window_shot(xvfb: &Xvfb, dir: &Path, name: &str, args: &[&str]) -> Image {
     png(&file)
 }
 
-/// The app recording while xdotool holds `d` on its window; returns the recording's path and
-/// the app's own last frame.
-fn record_a_flight(xvfb: &Xvfb, dir: &Path) -> (PathBuf, Image) {
+/// The app recording, live, while xdotool flies it (holds `d`, turns with an arrow key) and
+/// presses the screenshot key; then the window is closed. No frame budget: the app waits for
+/// the keys however long the window takes to appear. Returns the recording and the folder of
+/// the views the screenshot key saved.
+fn record_a_flight(xvfb: &Xvfb, dir: &Path) -> (PathBuf, PathBuf) {
     let recording = dir.join("recorded.rec");
-    let shot = dir.join("recorded.png");
-    let (recording_arg, shot_arg) = (recording.display().to_string(), shot.display().to_string());
+    let shots = dir.join("recorded-shots");
     let app = spawn_app(
         xvfb,
         &[
             "--size",
             "900x420",
-            "--exit-after-frames",
-            "120",
             "--record",
-            &recording_arg,
-            "--screenshot",
-            &shot_arg,
+            &recording.display().to_string(),
+            "--screenshot-dir",
+            &shots.display().to_string(),
         ],
     );
     let xdotool = |args: &[&str]| {
-        let status = Command::new("xdotool")
+        let output = Command::new("xdotool")
             .args(args)
             .env("DISPLAY", &xvfb.display)
-            .status();
-        match status {
-            Ok(status) => status.success(),
+            .output();
+        match output {
+            Ok(output) if output.status.success() => {
+                Some(String::from_utf8_lossy(&output.stdout).into_owned())
+            }
+            Ok(_) => None,
             Err(e) => panic!("xdotool is needed (apt-get install xdotool): {e}"),
         }
     };
-    // Wait for the window, then fly: hold d for a moment, turn with an arrow key.
     let deadline = Instant::now() + APP_TIMEOUT;
-    while !xdotool(&[
-        "search",
-        "--name",
-        "Close2GL viewer",
-        "windowfocus",
-        "--sync",
-    ]) {
-        assert!(Instant::now() < deadline, "the window did not appear");
-        std::thread::sleep(Duration::from_millis(200));
-    }
-    xdotool(&["keydown", "d"]);
+    let until = |what: &str, done: &mut dyn FnMut() -> bool| {
+        while !done() {
+            assert!(Instant::now() < deadline, "{what}");
+            std::thread::sleep(Duration::from_millis(100));
+        }
+    };
+    let mut window = String::new();
+    until("the window did not appear", &mut || {
+        let found = xdotool(&["search", "--name", "Close2GL viewer"]);
+        window = found
+            .and_then(|out| out.lines().next().map(str::to_string))
+            .unwrap_or_default();
+        !window.is_empty()
+    });
+    until("the window did not take the focus", &mut || {
+        xdotool(&["windowfocus", "--sync", &window]).is_some()
+    });
+    xdotool(&["keydown", "d"]).expect("keydown d");
     std::thread::sleep(Duration::from_millis(400));
-    xdotool(&["keyup", "d", "key", "Left"]);
+    xdotool(&["keyup", "d", "key", "Left", "key", "F12"]).expect("keyup d, Left, F12");
+    // The command is written after both views.
+    until("the screenshot key saved nothing", &mut || {
+        shots.join("close2gl-001-command.txt").exists()
+    });
+    xdotool(&["windowclose", &window]).expect("the window closes");
     finish(app, "the recording app");
-    (recording, png(&shot))
+    (recording, shots)
 }
 
 /// The two views of a 900x420 split window (the panel at the right).
@@ -233,24 +246,43 @@ fn a_recorded_flight_replays_to_the_same_image_every_time() {
     let xvfb = Xvfb::start();
     let (recording, recorded) = record_a_flight(&xvfb, &dir);
     let text = std::fs::read_to_string(&recording).expect("the recording");
+    // Left and F12 may come in one frame.
     assert!(
-        text.contains("\"held\":[\"d\"]") && text.contains("\"pressed\":[\"left\"]"),
+        text.contains("\"held\":[\"d\"]") && text.contains("\"left\"") && text.contains("\"f12\""),
         "the key presses were recorded: {text}"
     );
 
+    // Each replay saves its screenshot-key views in the same folder, moved away after it, so
+    // that the notice naming the files reads the same in both windows.
     let replay = recording.display().to_string();
-    let first = window_shot(&xvfb, &dir, "replay1", &["--replay", &replay]);
-    let second = window_shot(&xvfb, &dir, "replay2", &["--replay", &replay]);
+    let shots = dir.join("shots");
+    let replayed = |name: &str| {
+        let args = [
+            "--replay",
+            &replay,
+            "--screenshot-dir",
+            &shots.display().to_string(),
+        ];
+        let window = window_shot(&xvfb, &dir, name, &args);
+        let kept = dir.join(format!("{name}-shots"));
+        std::fs::rename(&shots, &kept).expect("the replay's screenshot-key views");
+        (window, kept)
+    };
+    let (first, first_shots) = replayed("replay1");
+    let (second, _) = replayed("replay2");
     assert!(
         first.pixels == second.pixels,
         "two replays drew different windows"
     );
-    // The replay flew where the recording flew: the same views (the panel differs, it showed
-    // live times while recording).
-    assert!(
-        views(&first).pixels == views(&recorded).pixels,
-        "the replay's views differ from the recorded run's"
-    );
+    // The replay flew where the recording flew: the screenshot key, replayed on its frame, saw
+    // the views the recording's saw.
+    for view in ["reference", "close2gl"] {
+        let file = format!("close2gl-001-{view}.png");
+        assert!(
+            png(&first_shots.join(&file)).pixels == png(&recorded.join(&file)).pixels,
+            "the replay's {view} view differs from the recorded run's"
+        );
+    }
     let start = window_shot(
         &xvfb,
         &dir,

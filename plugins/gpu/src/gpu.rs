@@ -101,6 +101,18 @@ impl Gpu {
         self.lost.lock().ok().and_then(|lost| lost.clone())
     }
 
+    /// Runs `f`, returning wgpu's validation error as a message instead of letting it reach
+    /// the uncaptured-error handler (which panics): for calls that can fail on what the
+    /// window system did, not on a bug of ours.
+    pub fn validated<T>(&self, f: impl FnOnce() -> T) -> Result<T, String> {
+        let scope = self.device.push_error_scope(wgpu::ErrorFilter::Validation);
+        let value = f();
+        match pollster::block_on(scope.pop()) {
+            Some(error) => Err(error.to_string()),
+            None => Ok(value),
+        }
+    }
+
     /// The adapter's name, e.g. "llvmpipe (LLVM 15.0.6, 256 bits)".
     pub fn adapter_name(&self) -> String {
         self.adapter.get_info().name

@@ -219,8 +219,13 @@ impl ApplicationHandler for Viewer {
             WindowEvent::RedrawRequested if is_main => return self.redraw(event_loop),
             // Not for egui: it would ask for another redraw, forever.
             WindowEvent::RedrawRequested => return windows.main.window.request_redraw(),
-            // Destroyed: another client (or a window manager) took the window away.
-            WindowEvent::CloseRequested | WindowEvent::Destroyed => return event_loop.exit(),
+            // Destroyed: another client (or a window manager) took the window away. The windows
+            // go at once: a redraw already queued must not ask X about a window that is gone
+            // (winit unwraps the error).
+            WindowEvent::CloseRequested | WindowEvent::Destroyed => {
+                self.windows = None;
+                return event_loop.exit();
+            }
             WindowEvent::Resized(size) => {
                 if is_main {
                     self.session.window_resized(size);

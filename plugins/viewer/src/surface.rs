@@ -14,7 +14,8 @@ pub struct WindowSurface {
     surface: wgpu::Surface<'static>,
     config: wgpu::SurfaceConfiguration,
     depth: Option<wgpu::TextureView>,
-    /// The last texture was suboptimal: configure again before the next one.
+    /// Configure again before the next texture: the last one was suboptimal, or the surface
+    /// refused its configuration.
     stale: bool,
     /// The last acquire got no texture though the window has pixels (a timeout, occluded): what
     /// it should have shown is still to be drawn.
@@ -90,13 +91,21 @@ impl WindowSurface {
         }
     }
 
-    /// A minimised window has no pixels: it is left unconfigured and skipped.
+    /// A minimised window has no pixels: it is left unconfigured and skipped. So is a surface
+    /// that refuses the configuration (its window destroyed under the app, before the event
+    /// that says so arrives), until the next frame tries again.
     fn configure(&mut self, gpu: &Gpu) {
+        self.depth = None;
         if self.config.width == 0 || self.config.height == 0 {
-            self.depth = None;
             return;
         }
-        self.surface.configure(&gpu.device, &self.config);
+        if gpu
+            .validated(|| self.surface.configure(&gpu.device, &self.config))
+            .is_err()
+        {
+            self.stale = true;
+            return;
+        }
         let depth = texture_2d(
             &gpu.device,
             "window depth",
@@ -122,11 +131,13 @@ impl WindowSurface {
     /// [`Self::missed`] says so.
     pub fn acquire(&mut self, gpu: &Gpu) -> Result<Option<wgpu::SurfaceTexture>, String> {
         self.missed = false;
-        if self.depth.is_none() {
-            return Ok(None);
-        }
         if std::mem::take(&mut self.stale) {
             self.configure(gpu);
+        }
+        if self.depth.is_none() {
+            // A surface that could not be configured is tried again shortly.
+            self.missed = self.stale;
+            return Ok(None);
         }
         for retried in [false, true] {
             let failure = match self.surface.get_current_texture() {
