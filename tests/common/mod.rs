@@ -37,6 +37,9 @@ impl Xvfb {
                     "1920x1080x24",
                     "-nolisten",
                     "tcp",
+                    // Without it the server resets when its last client leaves, and an app
+                    // started in that moment fails to connect (seen between two runs of a test).
+                    "-noreset",
                 ])
                 .stdout(Stdio::null())
                 .stderr(Stdio::null())
