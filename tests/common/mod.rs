@@ -6,7 +6,8 @@
 // Each test file that includes this module uses a part of it.
 #![allow(dead_code)]
 
-use std::path::{Path, PathBuf};
+use std::io::{BufRead, BufReader};
+use std::path::PathBuf;
 use std::process::{Child, Command, Output, Stdio};
 use std::sync::atomic::{AtomicU32, Ordering};
 use std::time::{Duration, Instant};
@@ -24,51 +25,47 @@ pub struct Xvfb {
 }
 
 impl Xvfb {
+    /// Xvfb picks a free display itself and names it (`-displayfd`) once it accepts clients:
+    /// tests running in parallel that each chose a number could take the same one, and one test
+    /// ending would kill the other's server.
     pub fn start() -> Xvfb {
-        for number in 90..190 {
-            if Path::new(&format!("/tmp/.X{number}-lock")).exists() {
-                continue;
+        let child = Command::new("Xvfb")
+            .args([
+                "-displayfd",
+                "1",
+                "-screen",
+                "0",
+                "1920x1080x24",
+                "-nolisten",
+                "tcp",
+                // Without it the server resets when its last client leaves, and an app started
+                // in that moment fails to connect (seen between two runs of a test).
+                "-noreset",
+            ])
+            .stdout(Stdio::piped())
+            .stderr(Stdio::null())
+            .spawn();
+        let mut child = match child {
+            Ok(child) => child,
+            Err(e) if e.kind() == std::io::ErrorKind::NotFound => {
+                panic!("Xvfb is not installed; the windowed tests need it: apt-get install xvfb")
             }
-            let child = Command::new("Xvfb")
-                .args([
-                    &format!(":{number}"),
-                    "-screen",
-                    "0",
-                    "1920x1080x24",
-                    "-nolisten",
-                    "tcp",
-                    // Without it the server resets when its last client leaves, and an app
-                    // started in that moment fails to connect (seen between two runs of a test).
-                    "-noreset",
-                ])
-                .stdout(Stdio::null())
-                .stderr(Stdio::null())
-                .spawn();
-            let mut child = match child {
-                Ok(child) => child,
-                Err(e) if e.kind() == std::io::ErrorKind::NotFound => panic!(
-                    "Xvfb is not installed; the windowed smoke test needs it: apt-get install xvfb"
-                ),
-                Err(e) => panic!("cannot start Xvfb: {e}"),
-            };
-            let socket = PathBuf::from(format!("/tmp/.X11-unix/X{number}"));
-            let deadline = Instant::now() + Duration::from_secs(10);
-            while Instant::now() < deadline {
-                if let Ok(Some(_)) = child.try_wait() {
-                    break; // The display was taken meanwhile (another test): try the next one.
-                }
-                if socket.exists() {
-                    return Xvfb {
-                        child,
-                        display: format!(":{number}"),
-                    };
-                }
-                std::thread::sleep(Duration::from_millis(50));
-            }
+            Err(e) => panic!("cannot start Xvfb: {e}"),
+        };
+        let mut number = String::new();
+        let stdout = child.stdout.take().expect("Xvfb's stdout");
+        // Ends with the display's number, or with nothing if Xvfb gave up.
+        let _ = BufReader::new(stdout).read_line(&mut number);
+        let number = number.trim();
+        if number.is_empty() {
             let _ = child.kill();
-            let _ = child.wait();
+            let status = child.wait();
+            panic!("Xvfb did not start: {status:?}");
         }
-        panic!("no free X display between :90 and :189 for Xvfb");
+        Xvfb {
+            display: format!(":{number}"),
+            child,
+        }
     }
 }
 
