@@ -6,14 +6,10 @@ use bevy_ecs::world::World;
 use close2gl_gpu::Gpu;
 use winit::window::Window;
 
-use crate::surface::drawable_size;
-
 pub struct Gui {
     pub ctx: egui::Context,
     state: egui_winit::State,
     renderer: egui_wgpu::Renderer,
-    /// The GPU's largest texture: no window is drawn wider or taller.
-    max_texture_side: u32,
 }
 
 /// One panel frame, ready to paint.
@@ -46,7 +42,6 @@ impl Gui {
             ctx,
             state,
             renderer,
-            max_texture_side,
         }
     }
 
@@ -64,20 +59,19 @@ impl Gui {
     }
 
     /// Runs the control panel over `world` with `input`; `both_views` when this window shows
-    /// both views.
+    /// both views. `size` is the window's surface, what the frame draws into.
     pub fn run(
         &mut self,
         window: &Window,
         world: &mut World,
         both_views: bool,
         mut input: egui::RawInput,
+        size: (u32, u32),
     ) -> GuiFrame {
-        // Laid out in the part of the window its surface draws, so that the panel of a window
-        // wider than the GPU can draw stays in sight (and egui's clip rectangles inside the
-        // surface).
-        let window_size = window.inner_size();
-        let size = drawable_size(window_size.width, window_size.height, self.max_texture_side)
-            .unwrap_or_default();
+        // Laid out in the surface, not in the window: the surface of a window wider than the
+        // GPU can draw is narrower (the panel stays in sight), and a window resized since its
+        // surface was configured has not told us yet (egui's clip rectangles must stay inside
+        // the texture it draws into, or wgpu panics).
         let pixels_per_point = egui_winit::pixels_per_point(&self.ctx, window);
         if let Some(rect) = &mut input.screen_rect {
             let drawn = egui::vec2(size.0 as f32, size.1 as f32) / pixels_per_point;

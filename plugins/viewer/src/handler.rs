@@ -85,9 +85,10 @@ impl Viewer {
         }
         world.resource_mut::<ViewStats>().replay = self.session.replay_progress(self.frames);
         let both_views = windows.close2gl.is_none();
+        let surface = windows.main.size();
         let mut gui_frame = windows
             .gui
-            .run(&windows.main.window, world, both_views, raw);
+            .run(&windows.main.window, world, both_views, raw, surface);
         windows.gui.upload_textures(&windows.gpu, &mut gui_frame);
         let placement = windows.placement(&gui_frame);
         update_viewport(world, placement.viewport);
