@@ -12,6 +12,7 @@ mod named;
 
 mod app;
 mod camera;
+mod fates;
 mod frame;
 mod input;
 mod layout;
@@ -31,6 +32,7 @@ pub use camera::{
     Camera, CameraAction, CameraActions, CameraHome, CameraMode, CameraSpeeds, Framing, KeepPose,
     Pose,
 };
+pub use fates::{ClipPlane, FateCounts, FateKind, Fates, TriangleFate};
 pub use frame::{
     Close2glFrame, CutVertex, RasterGeometry, RasterVertex, SoftwareFrame, StageCounts, Topology,
     Viewport,
@@ -45,7 +47,7 @@ pub use model::{
 pub use named::NamedEnum;
 pub use schedule::{FrameSet, PostUpdate, PreUpdate, Render, Startup, Update, frame_schedules};
 pub use settings::{
-    Clipping, FrontFace, Lighting, Rasterizer, RenderMode, RenderSettings, Shading, TextureFilter,
+    Clipping, FrontFace, Lighting, Overlay, Rasterizer, RenderMode, RenderSettings, Shading, TextureFilter,
 };
 pub use settings_plugin::SettingsPlugin;
 pub use texture::{Image8, Texture, checkerboard};

@@ -49,6 +49,20 @@ named_enum!(
     }
 );
 
+named_enum!(
+    /// What the two views show over the model: nothing, or one of the inspector's displays.
+    Overlay {
+        /// The model as rendered.
+        Off = "off",
+        /// Close2GL's view coloured by each triangle's fate (`Fates`), with ghosts of what
+        /// clipping and culling removed; the reference view with what its GPU knows (facing,
+        /// the depth test's outcome).
+        Fates = "fates",
+        /// Where the two views differ, live (the `render` command's diff image).
+        Difference = "difference"
+    }
+);
+
 /// One set of switches for both views.
 #[derive(Resource, Clone, Copy, Debug, PartialEq)]
 pub struct RenderSettings {
@@ -67,6 +81,8 @@ pub struct RenderSettings {
     /// colour).
     pub texture: bool,
     pub texture_filter: TextureFilter,
+    /// The inspector's display over both views.
+    pub overlay: Overlay,
 }
 
 impl Default for RenderSettings {
@@ -82,6 +98,7 @@ impl Default for RenderSettings {
             close2gl_raster: Rasterizer::Gpu,
             texture: true,
             texture_filter: TextureFilter::Trilinear,
+            overlay: Overlay::Off,
         }
     }
 }
