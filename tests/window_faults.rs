@@ -5,7 +5,9 @@
 //! and keeps drawing); then, read back from the X server, the window shows the model in both views
 //! again, and when the window is destroyed under it the app exits 0 with no panic and no wgpu
 //! error. X cannot make a 0x0 window, nor a surface outdated, lost or failing on demand: those are
-//! unit tests of the viewer's surface and layout. xdotool must be installed (`apt-get install
+//! unit tests of the viewer's surface and layout. Then the window is destroyed by another client
+//! at many different moments of a frame, fifty times: every run must end as if closed. xdotool
+//! must be installed (`apt-get install
 //! xdotool`); without it this fails, it never skips.
 
 mod common;
@@ -118,6 +120,46 @@ fn the_window_survives_resizes_minimising_and_huge_sizes_then_draws_the_model_ag
             !stderr.contains(bad),
             "the app's stderr has \"{bad}\": {stderr}"
         );
+    }
+}
+
+/// Runs of the app whose window is destroyed under it in [`a_window_destroyed_at_any_moment_of_a_frame_ends_the_run_cleanly`].
+const DESTROYED_RUNS: u32 = 50;
+
+#[test]
+fn a_window_destroyed_at_any_moment_of_a_frame_ends_the_run_cleanly() {
+    let xvfb = Xvfb::start();
+    let dir = temp_dir("destroyed");
+    let x = XServer::connect(&xvfb);
+    // Frame after frame without pause (`--exit-after-frames` draws continuously), each frame a
+    // few milliseconds to tens of them: a destroy a few milliseconds later every run lands in
+    // every part of a frame (acquire, configure, the panel's input, present) over the runs.
+    for run in 0..DESTROYED_RUNS {
+        let mut app = Running::start(
+            &xvfb,
+            &dir,
+            &[
+                "torus",
+                "--size",
+                "480x320",
+                "--exit-after-frames",
+                "1000000",
+            ],
+        );
+        let window = app.window(&xvfb);
+        std::thread::sleep(Duration::from_millis(u64::from(run * 7 % 97)));
+        x.destroy(&window);
+        let (status, stderr) = app.finish();
+        assert!(
+            status.success(),
+            "run {run}: the app exited with {status}: {stderr}"
+        );
+        for bad in ["panicked", "wgpu error", "Validation Error"] {
+            assert!(
+                !stderr.contains(bad),
+                "run {run}: the app's stderr has \"{bad}\": {stderr}"
+            );
+        }
     }
 }
 
@@ -312,6 +354,15 @@ impl XServer {
             "Xvfb's pixels are read as little-endian"
         );
         XServer(connection)
+    }
+
+    /// Destroys `window`, as another client (or a crashing window manager) may.
+    fn destroy(&self, window: &str) {
+        let id = window
+            .parse()
+            .expect("xdotool prints window ids in decimal");
+        self.0.destroy_window(id).expect("the destroy request sent");
+        self.0.flush().expect("the destroy request flushed");
     }
 
     /// The `size` pixels of `window` at `at`, as the X server shows them; `None` while they cannot

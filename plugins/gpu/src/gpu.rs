@@ -39,18 +39,36 @@ impl Gpu {
     }
 
     /// For windows: the caller made the instance (with a display handle) and a surface; the
-    /// adapter chosen can present to it.
+    /// adapter chosen can present to it. The primary backends (Vulkan, Metal, DX12) come first;
+    /// GL only when none of them has an adapter at all. Not merely when none can present to
+    /// this surface: a window destroyed by another client while the app starts makes every
+    /// adapter refuse it, and falling back to GL then crashed Mesa's EGL (a segfault configuring
+    /// the dead window) where Vulkan reports an error and the app ends as closed.
     pub fn for_surface(
         instance: wgpu::Instance,
         surface: &wgpu::Surface<'_>,
     ) -> Result<Gpu, String> {
-        let adapter = pollster::block_on(instance.request_adapter(&wgpu::RequestAdapterOptions {
-            power_preference: wgpu::PowerPreference::HighPerformance,
-            compatible_surface: Some(surface),
-            ..Default::default()
-        }))
-        .map_err(|_| no_adapter(wgpu::Backends::all()))?;
-        Self::with_adapter(instance, adapter)
+        let primary = pollster::block_on(instance.enumerate_adapters(wgpu::Backends::PRIMARY));
+        let candidates = if primary.is_empty() {
+            pollster::block_on(instance.enumerate_adapters(wgpu::Backends::all()))
+        } else {
+            primary
+        };
+        let names: Vec<String> = candidates.iter().map(|a| a.get_info().name).collect();
+        let mut presenting: Vec<wgpu::Adapter> = candidates
+            .into_iter()
+            .filter(|adapter| adapter.is_surface_supported(surface))
+            .collect();
+        // Real GPUs before software ones, as `PowerPreference::HighPerformance` would.
+        presenting.sort_by_key(|adapter| adapter.get_info().device_type == wgpu::DeviceType::Cpu);
+        match presenting.into_iter().next() {
+            Some(adapter) => Self::with_adapter(instance, adapter),
+            None if names.is_empty() => Err(no_adapter(wgpu::Backends::all())),
+            None => Err(format!(
+                "no GPU adapter can present to this window ({} cannot)",
+                names.join(", ")
+            )),
+        }
     }
 
     fn with_adapter(instance: wgpu::Instance, adapter: wgpu::Adapter) -> Result<Gpu, String> {
@@ -101,14 +119,28 @@ impl Gpu {
         self.lost.lock().ok().and_then(|lost| lost.clone())
     }
 
-    /// Runs `f`, returning wgpu's validation error as a message instead of letting it reach
-    /// the uncaptured-error handler (which panics): for calls that can fail on what the
-    /// window system did, not on a bug of ours.
+    /// Runs `f`, returning wgpu's error as a message instead of letting it reach the
+    /// uncaptured-error handler (which panics): for calls that can fail on what the window
+    /// system did, not on a bug of ours. Every kind of error is caught: a swapchain refused for
+    /// a window that is going away is a validation error or an internal one depending on the
+    /// driver.
     pub fn validated<T>(&self, f: impl FnOnce() -> T) -> Result<T, String> {
-        let scope = self.device.push_error_scope(wgpu::ErrorFilter::Validation);
+        let filters = [
+            wgpu::ErrorFilter::Validation,
+            wgpu::ErrorFilter::Internal,
+            wgpu::ErrorFilter::OutOfMemory,
+        ];
+        let scopes = filters.map(|filter| self.device.push_error_scope(filter));
         let value = f();
-        match pollster::block_on(scope.pop()) {
-            Some(error) => Err(error.to_string()),
+        // Scopes pop innermost first.
+        let mut error = None;
+        for scope in scopes.into_iter().rev() {
+            if let Some(e) = pollster::block_on(scope.pop()) {
+                error.get_or_insert(e.to_string());
+            }
+        }
+        match error {
+            Some(error) => Err(error),
             None => Ok(value),
         }
     }

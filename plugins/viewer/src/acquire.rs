@@ -178,7 +178,10 @@ mod tests {
         }
 
         fn next_texture(&mut self) -> Result<((), bool), NoTexture> {
-            assert!(self.configured, "a texture asked of an unconfigured surface");
+            assert!(
+                self.configured,
+                "a texture asked of an unconfigured surface"
+            );
             self.textures.remove(0).map(|suboptimal| ((), suboptimal))
         }
 
@@ -319,6 +322,9 @@ mod tests {
         assert_eq!(state.acquire(&mut surface, true), Ok(Some(())));
         assert!(state.stale);
         assert_eq!(state.acquire(&mut surface, true), Ok(Some(())));
-        assert!(surface.configures.is_empty(), "configured again before the second");
+        assert!(
+            surface.configures.is_empty(),
+            "configured again before the second"
+        );
     }
 }

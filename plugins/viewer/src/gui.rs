@@ -1,6 +1,6 @@
 //! egui in a winit window drawn by wgpu: events in, the panel over the world, paint out.
 
-use std::time::Duration;
+use std::time::{Duration, Instant};
 
 use bevy_ecs::world::World;
 use close2gl_gpu::Gpu;
@@ -10,6 +10,8 @@ pub struct Gui {
     pub ctx: egui::Context,
     state: egui_winit::State,
     renderer: egui_wgpu::Renderer,
+    /// egui's clock starts with the panel.
+    started: Instant,
 }
 
 /// One panel frame, ready to paint.
@@ -42,6 +44,7 @@ impl Gui {
             ctx,
             state,
             renderer,
+            started: Instant::now(),
         }
     }
 
@@ -53,30 +56,39 @@ impl Gui {
         self.state.on_window_event(window, event)
     }
 
-    /// The panel's input since the last frame, from the window system.
-    pub fn take_input(&mut self, window: &Window) -> egui::RawInput {
-        self.state.take_egui_input(window)
+    /// The panel's input since the last frame, laid out in `size`, the window's surface. Not
+    /// egui-winit's `take_egui_input`: that asks X for the window's size, and winit unwraps X's
+    /// answer, which is an error when the window was destroyed in that instant. The size comes
+    /// from the last `Resized` event instead; the scale factor is winit's cached one.
+    pub fn take_input(&mut self, window: &Window, size: (u32, u32)) -> egui::RawInput {
+        let native = window.scale_factor() as f32;
+        let pixels_per_point = self.ctx.zoom_factor() * native;
+        let input = self.state.egui_input_mut();
+        input.time = Some(self.started.elapsed().as_secs_f64());
+        input.screen_rect = (size.0 > 0 && size.1 > 0).then(|| {
+            let points = egui::vec2(size.0 as f32, size.1 as f32) / pixels_per_point;
+            egui::Rect::from_min_size(egui::Pos2::ZERO, points)
+        });
+        input.viewport_id = egui::ViewportId::ROOT;
+        input
+            .viewports
+            .entry(egui::ViewportId::ROOT)
+            .or_default()
+            .native_pixels_per_point = Some(native);
+        input.take()
     }
 
-    /// Runs the control panel over `world` with `input`; `both_views` when this window shows
-    /// both views. `size` is the window's surface, what the frame draws into.
+    /// Runs the control panel over `world` with `input` (from [`Self::take_input`], laid out in
+    /// the surface); `both_views` when this window shows both views. `size` is the window's
+    /// surface, what the frame draws into.
     pub fn run(
         &mut self,
         window: &Window,
         world: &mut World,
         both_views: bool,
-        mut input: egui::RawInput,
+        input: egui::RawInput,
         size: (u32, u32),
     ) -> GuiFrame {
-        // Laid out in the surface, not in the window: the surface of a window wider than the
-        // GPU can draw is narrower (the panel stays in sight), and a window resized since its
-        // surface was configured has not told us yet (egui's clip rectangles must stay inside
-        // the texture it draws into, or wgpu panics).
-        let pixels_per_point = egui_winit::pixels_per_point(&self.ctx, window);
-        if let Some(rect) = &mut input.screen_rect {
-            let drawn = egui::vec2(size.0 as f32, size.1 as f32) / pixels_per_point;
-            rect.max = rect.max.min(rect.min + drawn);
-        }
         let mut views_area = egui::Rect::NOTHING;
         let output = self.ctx.run_ui(input, |ui| {
             views_area = close2gl_ui::show(ui, world);

@@ -1,14 +1,14 @@
 //! The winit application: windows appear on `resumed`, events become input, and each redraw of
 //! the main window runs one app frame and draws every window.
 
-use std::time::Instant;
+use std::time::{Duration, Instant};
 
 use bevy_ecs::world::World;
 use close2gl_core::{App, InputState, ToolRequests, Viewport, Wake};
 use close2gl_ui::{Notice, ViewStats};
 use winit::application::ApplicationHandler;
 use winit::event::WindowEvent;
-use winit::event_loop::{ActiveEventLoop, EventLoop};
+use winit::event_loop::{ActiveEventLoop, ControlFlow, EventLoop};
 use winit::window::WindowId;
 
 use crate::ViewerOptions;
@@ -17,7 +17,7 @@ use crate::pacing::Pacing;
 use crate::present::{Capture, Shot};
 use crate::routing::{apply_input, offer_to_panel};
 use crate::session::Session;
-use crate::windows::Windows;
+use crate::windows::{Created, Windows, create_windows};
 
 pub struct Viewer {
     app: App,
@@ -29,7 +29,21 @@ pub struct Viewer {
     result: Result<(), String>,
     frames: u32,
     session: Session,
+    /// Windows whose drawing could not be set up, kept for a moment: see [`Opening`].
+    opening: Option<Opening>,
 }
+
+/// A window destroyed by another client while the app sets up its surface makes the setup fail
+/// (its surface offers no format, or no adapter can present to it), and that is a close, not a
+/// fault. Its `Destroyed` event is already on its way when the failure shows: the error stands
+/// only if none arrives within [`OPENING_GRACE`].
+struct Opening {
+    windows: Created,
+    error: String,
+    deadline: Instant,
+}
+
+const OPENING_GRACE: Duration = Duration::from_millis(500);
 
 impl Viewer {
     pub fn new(
@@ -52,6 +66,7 @@ impl Viewer {
             result: Ok(()),
             frames: 0,
             session,
+            opening: None,
         }
     }
 
@@ -70,22 +85,19 @@ impl Viewer {
         let Some(windows) = self.windows.as_mut() else {
             return;
         };
-        if self
-            .session
-            .wait_for_resize(self.frames, &windows.main.window)
-        {
+        if self.session.wait_for_resize(self.frames, &windows.main) {
             return windows.main.window.request_redraw();
         }
         let now = Instant::now();
         let world = self.app.world_mut();
-        let mut raw = windows.gui.take_input(&windows.main.window);
+        let surface = windows.main.size();
+        let mut raw = windows.gui.take_input(&windows.main.window, surface);
         let dt = self.pacing.frame_dt(now);
         if let Err(e) = self.session.begin_frame(self.frames, dt, &mut raw, world) {
             return self.fail(event_loop, e);
         }
         world.resource_mut::<ViewStats>().replay = self.session.replay_progress(self.frames);
         let both_views = windows.close2gl.is_none();
-        let surface = windows.main.size();
         let mut gui_frame = windows
             .gui
             .run(&windows.main.window, world, both_views, raw, surface);
@@ -122,6 +134,11 @@ impl Viewer {
             windows.main.window.request_redraw();
         }
     }
+}
+
+/// The user closed the window, or another client destroyed it.
+fn is_close(event: &WindowEvent) -> bool {
+    matches!(event, WindowEvent::CloseRequested | WindowEvent::Destroyed)
 }
 
 /// What frame number `frame` keeps of itself: the window for `--screenshot` on its frame, each
@@ -191,11 +208,15 @@ fn save(options: &ViewerOptions, world: &mut World, shot: Option<Shot>) -> Resul
 
 impl ApplicationHandler for Viewer {
     fn resumed(&mut self, event_loop: &ActiveEventLoop) {
-        if self.windows.is_some() {
+        if self.windows.is_some() || self.opening.is_some() {
             return;
         }
+        let created = match create_windows(event_loop, &self.options) {
+            Ok(created) => created,
+            Err(e) => return self.fail(event_loop, e),
+        };
         let world = self.app.world_mut();
-        match Windows::open(event_loop, &self.instance, &self.options, world) {
+        match Windows::open(created.clone(), &self.instance, world) {
             Ok(windows) => {
                 let window = windows.main.window.clone();
                 if let Some(wake) = world.get_resource::<Wake>() {
@@ -204,12 +225,30 @@ impl ApplicationHandler for Viewer {
                 windows.main.window.request_redraw();
                 self.windows = Some(windows);
             }
-            Err(e) => self.fail(event_loop, e),
+            Err(error) => {
+                self.opening = Some(Opening {
+                    windows: created,
+                    error,
+                    deadline: Instant::now() + OPENING_GRACE,
+                });
+            }
         }
     }
 
     fn window_event(&mut self, event_loop: &ActiveEventLoop, id: WindowId, event: WindowEvent) {
         let Some(windows) = self.windows.as_mut() else {
+            if let Some(opening) = &self.opening
+                && is_close(&event)
+                && (opening.windows.0.window.id() == id
+                    || opening
+                        .windows
+                        .1
+                        .as_ref()
+                        .is_some_and(|w| w.window.id() == id))
+            {
+                self.opening = None;
+                event_loop.exit();
+            }
             return;
         };
         let is_main = windows.main.window.id() == id;
@@ -223,7 +262,7 @@ impl ApplicationHandler for Viewer {
             // Destroyed: another client (or a window manager) took the window away. The windows
             // go at once: a redraw already queued must not ask X about a window that is gone
             // (winit unwraps the error).
-            WindowEvent::CloseRequested | WindowEvent::Destroyed => {
+            _ if is_close(&event) => {
                 self.windows = None;
                 return event_loop.exit();
             }
@@ -247,6 +286,14 @@ impl ApplicationHandler for Viewer {
     }
 
     fn about_to_wait(&mut self, event_loop: &ActiveEventLoop) {
+        if let Some(opening) = &self.opening {
+            if Instant::now() < opening.deadline {
+                return event_loop.set_control_flow(ControlFlow::WaitUntil(opening.deadline));
+            }
+            let error = opening.error.clone();
+            self.opening = None;
+            return self.fail(event_loop, error);
+        }
         let (control_flow, due) = self.pacing.wait(Instant::now());
         if due && let Some(windows) = &self.windows {
             windows.main.window.request_redraw();

@@ -14,6 +14,7 @@
 //! plugins' resources (checked before the windows open). It has no systems: its event loop runs
 //! the app's frames.
 
+mod acquire;
 mod draw;
 mod gui;
 mod handler;

@@ -126,7 +126,7 @@ fn draw_window(
     capture: Capture,
     mut draw: impl FnMut(&wgpu::TextureView, &wgpu::TextureView, Pass),
 ) -> Result<Option<Image>, String> {
-    if let Some(texture) = window.acquire(gpu)? {
+    if let Some(texture) = window.acquire()? {
         let target = texture.texture.create_view(&Default::default());
         if let Some(depth) = window.depth() {
             let shown = Pass {
@@ -135,7 +135,7 @@ fn draw_window(
             };
             draw(&target, depth, shown);
         }
-        gpu.queue.present(texture);
+        window.present(texture);
     }
     let Some(depth) = window.depth().filter(|_| capture != Capture::Nothing) else {
         return Ok(None);

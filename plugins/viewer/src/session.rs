@@ -3,10 +3,10 @@
 
 use std::time::{Duration, Instant};
 
+use crate::surface::WindowSurface;
 use bevy_ecs::world::World;
 use close2gl_core::{InputState, LoadPace, ModelStatus};
 use winit::dpi::PhysicalSize;
-use winit::window::Window;
 
 use crate::recording::{FrameInput, Recorder, Recording};
 use crate::routing::drop_file;
@@ -54,7 +54,7 @@ impl Session {
 
     /// A replay whose next frame resizes the window: asks for the size, and says to wait
     /// (draw nothing yet) until the window has it.
-    pub fn wait_for_resize(&mut self, frame: u32, window: &Window) -> bool {
+    pub fn wait_for_resize(&mut self, frame: u32, window: &WindowSurface) -> bool {
         let Session::Replaying(player) = self else {
             return false;
         };
@@ -65,12 +65,12 @@ impl Session {
             }) => PhysicalSize::new(*w, *h),
             _ => return false,
         };
-        if window.inner_size() == wanted {
+        if window.window_size() == wanted {
             player.resizing = None;
             return false;
         }
         let (_, since) = *player.resizing.get_or_insert_with(|| {
-            let _ = window.request_inner_size(wanted);
+            let _ = window.window.request_inner_size(wanted);
             (wanted, Instant::now())
         });
         since.elapsed() < RESIZE_WAIT

@@ -1,25 +1,35 @@
 //! A window and the wgpu surface that presents it: configure, resize, acquire (reconfiguring
 //! when the surface is outdated, recreating it when lost), and the depth buffer the reference
 //! view needs. What happens to a window (minimised to 0x0, wider than the GPU can draw, a surface
-//! that is outdated, lost or failing) is decided by the pure functions at the end, tested alone.
+//! that is outdated, lost, refused or gone) is decided by [`crate::acquire`] and the pure
+//! functions at the end, tested alone.
 
 use std::sync::Arc;
 
 use close2gl_gpu::texture::texture_2d;
 use close2gl_gpu::{DEPTH_FORMAT, Gpu};
+use winit::dpi::PhysicalSize;
 use winit::window::Window;
+
+use crate::acquire::{NoTexture, Presentable, SurfaceState};
+use crate::windows::NewWindow;
 
 pub struct WindowSurface {
     pub window: Arc<Window>,
+    wgpu: WgpuSurface,
+    /// The window's size from its last `Resized` event (or its creation): a frame never asks X,
+    /// which may have destroyed the window in that very instant (winit unwraps the error).
+    window_size: PhysicalSize<u32>,
+    depth: Option<wgpu::TextureView>,
+    state: SurfaceState,
+}
+
+/// The wgpu side of a window's surface: what [`SurfaceState`] asks of it.
+struct WgpuSurface {
+    gpu: Gpu,
+    window: Arc<Window>,
     surface: wgpu::Surface<'static>,
     config: wgpu::SurfaceConfiguration,
-    depth: Option<wgpu::TextureView>,
-    /// Configure again before the next texture: the last one was suboptimal, or the surface
-    /// refused its configuration.
-    stale: bool,
-    /// The last acquire got no texture though the window has pixels (a timeout, occluded): what
-    /// it should have shown is still to be drawn.
-    missed: bool,
 }
 
 impl WindowSurface {
@@ -41,7 +51,7 @@ impl WindowSurface {
     /// that windows and `close2gl render` show the same colours); later windows must offer it.
     pub fn new(
         gpu: &Gpu,
-        window: Arc<Window>,
+        NewWindow { window, size }: NewWindow,
         surface: wgpu::Surface<'static>,
         format: Option<wgpu::TextureFormat>,
     ) -> Result<Self, String> {
@@ -58,62 +68,82 @@ impl WindowSurface {
             view_formats: vec![],
             color_space: wgpu::SurfaceColorSpace::Auto,
         };
-        let size = window.inner_size();
         let mut this = Self {
-            window,
-            surface,
-            config,
+            window: window.clone(),
+            wgpu: WgpuSurface {
+                gpu: gpu.clone(),
+                window,
+                surface,
+                config,
+            },
+            window_size: size,
             depth: None,
-            stale: false,
-            missed: false,
+            state: SurfaceState::default(),
         };
-        this.resize(gpu, size.width, size.height);
+        this.resize(size);
         Ok(this)
     }
 
     pub fn format(&self) -> wgpu::TextureFormat {
-        self.config.format
+        self.wgpu.config.format
     }
 
     /// The size drawn: the window's, at most the GPU's largest texture (the rest of a wider
     /// window stays undrawn); 0x0 while minimised.
     pub fn size(&self) -> (u32, u32) {
-        (self.config.width, self.config.height)
+        (self.wgpu.config.width, self.wgpu.config.height)
     }
 
-    /// The window is now `width` x `height` pixels.
-    pub fn resize(&mut self, gpu: &Gpu, width: u32, height: u32) {
-        let max = gpu.device.limits().max_texture_dimension_2d;
-        let size = drawable_size(width, height, max).unwrap_or((0, 0));
-        if size != self.size() {
-            (self.config.width, self.config.height) = size;
-            self.configure(gpu);
+    /// The window's size as its last `Resized` event gave it.
+    pub fn window_size(&self) -> PhysicalSize<u32> {
+        self.window_size
+    }
+
+    /// The window is now `size` (its `Resized` event).
+    pub fn resize(&mut self, size: PhysicalSize<u32>) {
+        self.window_size = size;
+        let max = self.wgpu.gpu.device.limits().max_texture_dimension_2d;
+        let drawn = drawable_size(size.width, size.height, max).unwrap_or((0, 0));
+        if drawn != self.size() {
+            (self.wgpu.config.width, self.wgpu.config.height) = drawn;
+            self.configure();
         }
     }
 
     /// A minimised window has no pixels: it is left unconfigured and skipped. So is a surface
     /// that refuses the configuration (its window destroyed under the app, before the event
     /// that says so arrives), until the next frame tries again.
-    fn configure(&mut self, gpu: &Gpu) {
-        self.depth = None;
-        if self.config.width == 0 || self.config.height == 0 {
+    fn configure(&mut self) {
+        let has_pixels = self.has_pixels();
+        self.state.configure(&mut self.wgpu, has_pixels);
+        self.update_depth();
+    }
+
+    fn has_pixels(&self) -> bool {
+        self.size() != (0, 0)
+    }
+
+    /// A depth buffer the surface's size while it is configured, none otherwise.
+    fn update_depth(&mut self) {
+        if !self.state.configured {
+            self.depth = None;
             return;
         }
-        if gpu
-            .validated(|| self.surface.configure(&gpu.device, &self.config))
-            .is_err()
-        {
-            self.stale = true;
-            return;
+        let size = self.size();
+        let fits = |view: &wgpu::TextureView| {
+            let t = view.texture();
+            (t.width(), t.height()) == size
+        };
+        if !self.depth.as_ref().is_some_and(fits) {
+            let depth = texture_2d(
+                &self.wgpu.gpu.device,
+                "window depth",
+                size,
+                DEPTH_FORMAT,
+                wgpu::TextureUsages::RENDER_ATTACHMENT,
+            );
+            self.depth = Some(depth.create_view(&Default::default()));
         }
-        let depth = texture_2d(
-            &gpu.device,
-            "window depth",
-            self.size(),
-            DEPTH_FORMAT,
-            wgpu::TextureUsages::RENDER_ATTACHMENT,
-        );
-        self.depth = Some(depth.create_view(&Default::default()));
     }
 
     /// The depth buffer, the window's size; `None` while minimised.
@@ -123,53 +153,64 @@ impl WindowSurface {
 
     /// Whether the last [`Self::acquire`] skipped a frame that a visible window still needs.
     pub fn missed(&self) -> bool {
-        self.missed
+        self.state.missed
     }
 
     /// The next texture to draw into, or `None` when there is nothing to draw this time
-    /// (minimised, occluded, a timeout): the caller skips the frame, and draws again later when
-    /// [`Self::missed`] says so.
-    pub fn acquire(&mut self, gpu: &Gpu) -> Result<Option<wgpu::SurfaceTexture>, String> {
-        self.missed = false;
-        if std::mem::take(&mut self.stale) {
-            self.configure(gpu);
+    /// (minimised, occluded, a timeout, a surface refused or gone): the caller skips the frame,
+    /// and draws again later when [`Self::missed`] says so.
+    pub fn acquire(&mut self) -> Result<Option<wgpu::SurfaceTexture>, String> {
+        let has_pixels = self.has_pixels();
+        let texture = self.state.acquire(&mut self.wgpu, has_pixels);
+        self.update_depth();
+        texture
+    }
+
+    /// Shows `texture`. A present that wgpu refuses (the window went between acquire and
+    /// present) only means the surface is configured again before the next frame.
+    pub fn present(&mut self, texture: wgpu::SurfaceTexture) {
+        let gpu = &self.wgpu.gpu;
+        if gpu.validated(|| gpu.queue.present(texture)).is_err() {
+            self.state.stale = true;
+            self.state.missed = true;
         }
-        if self.depth.is_none() {
-            // A surface that could not be configured is tried again shortly.
-            self.missed = self.stale;
-            return Ok(None);
+    }
+}
+
+impl Presentable for WgpuSurface {
+    type Texture = wgpu::SurfaceTexture;
+
+    fn configure(&mut self) -> bool {
+        let Self {
+            gpu,
+            surface,
+            config,
+            ..
+        } = self;
+        gpu.validated(|| surface.configure(&gpu.device, config))
+            .is_ok()
+    }
+
+    fn recreate(&mut self) -> Result<(), String> {
+        self.surface = WindowSurface::create_surface(&self.gpu.instance, &self.window)?;
+        Ok(())
+    }
+
+    fn next_texture(&mut self) -> Result<(wgpu::SurfaceTexture, bool), NoTexture> {
+        let acquired = self.gpu.validated(|| self.surface.get_current_texture());
+        match acquired.unwrap_or(wgpu::CurrentSurfaceTexture::Validation) {
+            wgpu::CurrentSurfaceTexture::Success(texture) => Ok((texture, false)),
+            wgpu::CurrentSurfaceTexture::Suboptimal(texture) => Ok((texture, true)),
+            wgpu::CurrentSurfaceTexture::Timeout => Err(NoTexture::Timeout),
+            wgpu::CurrentSurfaceTexture::Occluded => Err(NoTexture::Occluded),
+            wgpu::CurrentSurfaceTexture::Outdated => Err(NoTexture::Outdated),
+            wgpu::CurrentSurfaceTexture::Lost => Err(NoTexture::Lost),
+            wgpu::CurrentSurfaceTexture::Validation => Err(NoTexture::Validation),
         }
-        for retried in [false, true] {
-            let failure = match self.surface.get_current_texture() {
-                wgpu::CurrentSurfaceTexture::Success(texture) => return Ok(Some(texture)),
-                wgpu::CurrentSurfaceTexture::Suboptimal(texture) => {
-                    // Show it; the next frame gets a surface that fits the window again.
-                    self.stale = true;
-                    return Ok(Some(texture));
-                }
-                wgpu::CurrentSurfaceTexture::Timeout => NoTexture::Timeout,
-                wgpu::CurrentSurfaceTexture::Occluded => NoTexture::Occluded,
-                wgpu::CurrentSurfaceTexture::Outdated => NoTexture::Outdated,
-                wgpu::CurrentSurfaceTexture::Lost => NoTexture::Lost,
-                wgpu::CurrentSurfaceTexture::Validation => NoTexture::Validation,
-            };
-            match recovery(failure, retried) {
-                Recovery::Reconfigure => self.configure(gpu),
-                Recovery::Recreate => {
-                    self.surface = Self::create_surface(&gpu.instance, &self.window)?;
-                    self.configure(gpu);
-                }
-                Recovery::SkipFrame => break,
-                // A lost device fails every acquire this way: say so rather than blame the surface.
-                Recovery::Fail => {
-                    return Err(gpu.lost().unwrap_or_else(|| {
-                        "the window's surface failed wgpu's validation".into()
-                    }));
-                }
-            }
-        }
-        self.missed = true;
-        Ok(None)
+    }
+
+    fn device_lost(&self) -> Option<String> {
+        self.gpu.lost()
     }
 }
 
@@ -178,41 +219,6 @@ impl WindowSurface {
 /// can draw still shows what fits instead of failing.
 pub fn drawable_size(width: u32, height: u32, max: u32) -> Option<(u32, u32)> {
     (width > 0 && height > 0).then(|| (width.min(max), height.min(max)))
-}
-
-/// Why the surface gave no texture: wgpu's `CurrentSurfaceTexture` without a texture.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-enum NoTexture {
-    Timeout,
-    Occluded,
-    Outdated,
-    Lost,
-    Validation,
-}
-
-/// What to do about it.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-enum Recovery {
-    /// Configure the surface again (it no longer matches the window) and try again.
-    Reconfigure,
-    /// Make a new surface for the window and try again.
-    Recreate,
-    /// Draw nothing now; the frame is drawn again shortly.
-    SkipFrame,
-    /// Stop with a one-line error.
-    Fail,
-}
-
-/// One repair per frame: a surface still outdated or lost after it has been tried is left until
-/// the next frame (a window being resized keeps outdating it), instead of spinning here.
-fn recovery(failure: NoTexture, retried: bool) -> Recovery {
-    match failure {
-        NoTexture::Validation => Recovery::Fail,
-        NoTexture::Timeout | NoTexture::Occluded => Recovery::SkipFrame,
-        _ if retried => Recovery::SkipFrame,
-        NoTexture::Outdated => Recovery::Reconfigure,
-        NoTexture::Lost => Recovery::Recreate,
-    }
 }
 
 /// The format asked for when the surface offers it; with none asked, the first linear one offered
@@ -248,19 +254,5 @@ mod tests {
         assert_eq!(drawable_size(1, 1, 16384), Some((1, 1)));
         assert_eq!(drawable_size(16384, 300, 16384), Some((16384, 300)));
         assert_eq!(drawable_size(20000, 40000, 16384), Some((16384, 16384)));
-    }
-
-    #[test]
-    fn each_failed_acquire_is_repaired_once_skipped_or_fatal() {
-        use NoTexture::*;
-        assert_eq!(recovery(Outdated, false), Recovery::Reconfigure);
-        assert_eq!(recovery(Lost, false), Recovery::Recreate);
-        for failure in [Outdated, Lost, Timeout, Occluded] {
-            assert_eq!(recovery(failure, true), Recovery::SkipFrame, "{failure:?}");
-        }
-        assert_eq!(recovery(Timeout, false), Recovery::SkipFrame);
-        assert_eq!(recovery(Occluded, false), Recovery::SkipFrame);
-        assert_eq!(recovery(Validation, false), Recovery::Fail);
-        assert_eq!(recovery(Validation, true), Recovery::Fail);
     }
 }

@@ -32,21 +32,19 @@ pub struct Windows {
 }
 
 impl Windows {
-    /// Opens the windows `options` ask for, on one GPU device that can present to them, and
-    /// gives the world the `Gpu` and `Views` resources and the adapter's name.
+    /// Draws into the windows `create_windows` opened, on one GPU device that can present to
+    /// them, and gives the world the `Gpu` and `Views` resources and the adapter's name.
     pub fn open(
-        event_loop: &ActiveEventLoop,
+        (main_window, close2gl_window): Created,
         instance: &wgpu::Instance,
-        options: &ViewerOptions,
         world: &mut World,
     ) -> Result<Windows, String> {
-        let (main_window, close2gl_window) = create_windows(event_loop, options)?;
-        let surface = WindowSurface::create_surface(instance, &main_window)?;
+        let surface = WindowSurface::create_surface(instance, &main_window.window)?;
         let gpu = Gpu::for_surface(instance.clone(), &surface)?;
         let main = WindowSurface::new(&gpu, main_window, surface, None)?;
         let close2gl = match close2gl_window {
             Some(window) => {
-                let surface = WindowSurface::create_surface(instance, &window)?;
+                let surface = WindowSurface::create_surface(instance, &window.window)?;
                 Some(WindowSurface::new(
                     &gpu,
                     window,
@@ -97,9 +95,8 @@ impl Windows {
     /// A window changed size: reconfigure it and, in the windows layout, ask the other window
     /// for the size that keeps the two views equal, unless this is the answer to our own ask.
     pub fn resized(&mut self, id: WindowId, size: PhysicalSize<u32>) {
-        let gpu = self.gpu.clone();
         if let Some(window) = self.window_mut(id) {
-            window.resize(&gpu, size.width, size.height);
+            window.resize(size);
         }
         if self.asked.get(&id) == Some(&size) {
             self.asked.remove(&id);
@@ -112,27 +109,35 @@ impl Windows {
             return;
         }
         let main_resized = id == self.main.window.id();
-        let other = if main_resized {
-            &close2gl.window
-        } else {
-            &self.main.window
-        };
+        let other = if main_resized { close2gl } else { &self.main };
         let (width, height) =
             layout::matching_size(main_resized, size.width, size.height, self.panel_width);
         let wanted = PhysicalSize::new(width, height);
-        if other.inner_size() != wanted {
-            self.asked.insert(other.id(), wanted);
+        if other.window_size() != wanted {
+            self.asked.insert(other.window.id(), wanted);
             // `Some` means the window took the size at once; the Resized event still follows.
-            let _ = other.request_inner_size(wanted);
+            let _ = other.window.request_inner_size(wanted);
         }
     }
 }
 
+/// A window just opened, and the size it was opened at: the size its surface starts with.
+/// Asking X for it instead could panic inside winit if another client destroyed the window in
+/// that instant; if the window manager gives another size, a `Resized` event says so.
+#[derive(Clone)]
+pub struct NewWindow {
+    pub window: Arc<Window>,
+    pub size: PhysicalSize<u32>,
+}
+
 /// The main window and, in the windows layout, the Close2GL window beside it.
-fn create_windows(
+pub type Created = (NewWindow, Option<NewWindow>);
+
+/// Opens the main window and, in the windows layout, the Close2GL window beside it.
+pub fn create_windows(
     event_loop: &ActiveEventLoop,
     options: &ViewerOptions,
-) -> Result<(Arc<Window>, Option<Arc<Window>>), String> {
+) -> Result<Created, String> {
     let (width, height) = (options.width, options.height);
     match options.layout {
         Layout::Split => {
@@ -140,25 +145,24 @@ fn create_windows(
             Ok((open_window(event_loop, title, width, height, None)?, None))
         }
         // The panel's window gets the panel on top of its half, so both views start equal.
+        // Placed side by side from the monitor's corner, as the assignment shows its two windows
+        // (a window manager may still place them elsewhere): from what we asked, not from where
+        // X says the first one is, which winit would panic on if it had gone.
         Layout::Windows => {
-            let scale = event_loop
-                .primary_monitor()
-                .map_or(1.0, |m| m.scale_factor());
+            let monitor = event_loop.primary_monitor();
+            let scale = monitor.as_ref().map_or(1.0, |m| m.scale_factor());
+            let corner = monitor.map_or(PhysicalPosition::new(0, 0), |m| m.position());
             let panel = (close2gl_ui::PANEL_WIDTH as f64 * scale) as u32;
+            let reference_width = width / 2 + panel;
             let reference = open_window(
                 event_loop,
                 "Reference (wgpu)",
-                width / 2 + panel,
+                reference_width,
                 height,
-                None,
+                Some(corner),
             )?;
-            // Beside the reference window, as the assignment shows its two windows (a window
-            // manager may still place it elsewhere).
-            let beside = reference
-                .outer_position()
-                .ok()
-                .map(|at| PhysicalPosition::new(at.x + reference.outer_size().width as i32, at.y));
-            let close2gl = open_window(event_loop, "Close2GL", width / 2, height, beside)?;
+            let beside = PhysicalPosition::new(corner.x + reference_width as i32, corner.y);
+            let close2gl = open_window(event_loop, "Close2GL", width / 2, height, Some(beside))?;
             Ok((reference, Some(close2gl)))
         }
     }
@@ -170,17 +174,21 @@ fn open_window(
     width: u32,
     height: u32,
     position: Option<PhysicalPosition<i32>>,
-) -> Result<Arc<Window>, String> {
+) -> Result<NewWindow, String> {
+    let size = PhysicalSize::new(width.max(1), height.max(1));
     let mut attributes = Window::default_attributes()
         .with_title(title)
-        .with_inner_size(PhysicalSize::new(width.max(1), height.max(1)));
+        .with_inner_size(size);
     if let Some(position) = position {
         attributes = attributes.with_position(position);
     }
-    event_loop
+    let window = event_loop
         .create_window(attributes)
-        .map(Arc::new)
-        .map_err(|e| format!("cannot open a window: {e}"))
+        .map_err(|e| format!("cannot open a window: {e}"))?;
+    Ok(NewWindow {
+        window: Arc::new(window),
+        size,
+    })
 }
 
 /// The GPU resources the upload systems wait for, and what the panel says about the adapter.
