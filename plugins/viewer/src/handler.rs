@@ -17,12 +17,14 @@ use crate::pacing::Pacing;
 use crate::present::{Capture, Shot};
 use crate::routing::{apply_input, offer_to_panel};
 use crate::session::Session;
+use crate::surface_source::{self, Connections};
 use crate::windows::{Created, Windows, create_windows};
 
 pub struct Viewer {
     app: App,
     options: ViewerOptions,
-    instance: wgpu::Instance,
+    /// What windows draw with, and on which X connections (see [`surface_source`]).
+    instance: (wgpu::Instance, Connections),
     windows: Option<Windows>,
     tracker: InputTracker,
     pacing: Pacing,
@@ -52,10 +54,7 @@ impl Viewer {
         session: Session,
         event_loop: &EventLoop<()>,
     ) -> Self {
-        let instance =
-            wgpu::Instance::new(wgpu::InstanceDescriptor::new_with_display_handle_from_env(
-                Box::new(event_loop.owned_display_handle()),
-            ));
+        let instance = surface_source::instance(&event_loop.owned_display_handle());
         Self {
             app,
             options,

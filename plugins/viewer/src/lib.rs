@@ -27,6 +27,7 @@ mod routing;
 mod screenshot;
 mod session;
 mod surface;
+mod surface_source;
 mod windows;
 
 use std::path::PathBuf;

@@ -12,6 +12,7 @@ use winit::dpi::PhysicalSize;
 use winit::window::Window;
 
 use crate::acquire::{NoTexture, Presentable, SurfaceState};
+use crate::surface_source::SurfaceSource;
 use crate::windows::NewWindow;
 
 pub struct WindowSurface {
@@ -27,32 +28,20 @@ pub struct WindowSurface {
 /// The wgpu side of a window's surface: what [`SurfaceState`] asks of it.
 struct WgpuSurface {
     gpu: Gpu,
-    window: Arc<Window>,
     surface: wgpu::Surface<'static>,
     config: wgpu::SurfaceConfiguration,
+    /// After `surface`: what it presents through must outlive it.
+    source: SurfaceSource,
 }
 
 impl WindowSurface {
-    pub fn create_surface(
-        instance: &wgpu::Instance,
-        window: &Arc<Window>,
-    ) -> Result<wgpu::Surface<'static>, String> {
-        instance.create_surface(window.clone()).map_err(|e| {
-            format!(
-                "cannot draw into the window ({e}): no GPU backend can present here; install \
-                     a Vulkan driver, e.g. `apt-get install mesa-vulkan-drivers` (Mesa's lavapipe \
-                     runs without a GPU)"
-            )
-        })
-    }
-
-    /// Configures `surface` for `window`. `format` is the colour format every view uses: `None`
+    /// Configures `surface` (made from `source`) for `window`. `format` is the colour format every view uses: `None`
     /// lets the first window choose (linear 8-bit when offered, as offscreen rendering uses, so
     /// that windows and `close2gl render` show the same colours); later windows must offer it.
     pub fn new(
         gpu: &Gpu,
         NewWindow { window, size }: NewWindow,
-        surface: wgpu::Surface<'static>,
+        (source, surface): (SurfaceSource, wgpu::Surface<'static>),
         format: Option<wgpu::TextureFormat>,
     ) -> Result<Self, String> {
         let caps = surface.get_capabilities(&gpu.adapter);
@@ -69,12 +58,12 @@ impl WindowSurface {
             color_space: wgpu::SurfaceColorSpace::Auto,
         };
         let mut this = Self {
-            window: window.clone(),
+            window,
             wgpu: WgpuSurface {
                 gpu: gpu.clone(),
-                window,
                 surface,
                 config,
+                source,
             },
             window_size: size,
             depth: None,
@@ -192,7 +181,7 @@ impl Presentable for WgpuSurface {
     }
 
     fn recreate(&mut self) -> Result<(), String> {
-        self.surface = WindowSurface::create_surface(&self.gpu.instance, &self.window)?;
+        self.surface = self.source.create_surface(&self.gpu.instance)?;
         Ok(())
     }
 

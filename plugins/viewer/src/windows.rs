@@ -15,6 +15,7 @@ use crate::ViewerOptions;
 use crate::gui::{Gui, GuiFrame};
 use crate::layout::{self, PixelRect, Placement};
 use crate::surface::WindowSurface;
+use crate::surface_source::{Connections, SurfaceSource};
 
 /// Everything that exists once the windows do.
 pub struct Windows {
@@ -36,15 +37,20 @@ impl Windows {
     /// them, and gives the world the `Gpu` and `Views` resources and the adapter's name.
     pub fn open(
         (main_window, close2gl_window): Created,
-        instance: &wgpu::Instance,
+        (instance, connections): &(wgpu::Instance, Connections),
         world: &mut World,
     ) -> Result<Windows, String> {
-        let surface = WindowSurface::create_surface(instance, &main_window.window)?;
-        let gpu = Gpu::for_surface(instance.clone(), &surface)?;
-        let main = WindowSurface::new(&gpu, main_window, surface, None)?;
+        let surface_for = |window: &NewWindow| {
+            let source = SurfaceSource::new(window.window.clone(), *connections)?;
+            let surface = source.create_surface(instance)?;
+            Ok::<_, String>((source, surface))
+        };
+        let main_surface = surface_for(&main_window)?;
+        let gpu = Gpu::for_surface(instance.clone(), &main_surface.1)?;
+        let main = WindowSurface::new(&gpu, main_window, main_surface, None)?;
         let close2gl = match close2gl_window {
             Some(window) => {
-                let surface = WindowSurface::create_surface(instance, &window.window)?;
+                let surface = surface_for(&window)?;
                 Some(WindowSurface::new(
                     &gpu,
                     window,
