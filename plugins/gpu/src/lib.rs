@@ -6,11 +6,13 @@
 //! `Texture`, `Close2glFrame` and `SoftwareFrame` and upload what changed into `Views`; whoever
 //! owns the target (a window, or [`render_offscreen`]) records the draws.
 //! Offscreen rendering, reading textures back ([`Readback`]), the texture and attachment
-//! descriptions every target shares ([`texture`]), PNG images and the coverage comparison behind
+//! descriptions every target shares ([`texture`]), the reference probe (an ID pass that says which
+//! mesh triangle the GPU drew at a pixel, [`probe_reference`]), PNG images and the coverage comparison behind
 //! `close2gl render` and the parity tests live here too. No window or UI crate is a dependency.
 
 mod close2gl_view;
 mod gpu;
+mod id_pass;
 pub mod image;
 mod offscreen;
 pub mod parity;
@@ -23,6 +25,7 @@ pub mod texture;
 mod views;
 
 pub use gpu::{Gpu, parse_backends};
+pub use id_pass::{ProbeScene, ReferenceHit, probe_reference};
 pub use image::Image;
 pub use offscreen::{OFFSCREEN_FORMAT, OffscreenPlugin, Snapshot, render_offscreen};
 pub use readback::Readback;

@@ -34,6 +34,15 @@ pub fn camera_matrices(camera: &Camera) -> (Mat4, Mat4) {
     (view, projection)
 }
 
+/// [`camera_matrices`] for a mesh uploaded relative to `origin` (see [`GpuMesh::origin`]): the
+/// camera is moved by the same amount, so eye space is unchanged.
+pub(crate) fn relative_matrices(camera: &Camera, origin: Vec3) -> (Mat4, Mat4) {
+    camera_matrices(&Camera {
+        position: camera.position - origin,
+        ..*camera
+    })
+}
+
 /// The uniform block of reference.wgsl, field for field.
 #[repr(C)]
 #[derive(Clone, Copy, Pod, Zeroable)]
@@ -61,11 +70,7 @@ impl Uniforms {
         origin: Vec3,
         textured: bool,
     ) -> Self {
-        let relative = Camera {
-            position: camera.position - origin,
-            ..*camera
-        };
-        let (view, projection) = camera_matrices(&relative);
+        let (view, projection) = relative_matrices(camera, origin);
         let light = view.transform_point3(lighting.light_position - origin);
         let [c0, c1, c2] = lighting.attenuation;
         Self {
@@ -85,7 +90,7 @@ impl Uniforms {
 
 /// What makes one reference pipeline differ from another.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-struct PipelineKey {
+pub(crate) struct PipelineKey {
     shading: Shading,
     mode: RenderMode,
     backface_culling: bool,
@@ -93,7 +98,7 @@ struct PipelineKey {
 }
 
 impl PipelineKey {
-    fn new(settings: &RenderSettings) -> Self {
+    pub(crate) fn new(settings: &RenderSettings) -> Self {
         Self {
             shading: settings.shading,
             mode: settings.mode,
@@ -287,39 +292,6 @@ impl Reference {
         (!missing.is_empty()).then(|| missing.join("; "))
     }
 
-    /// glPolygonMode as wgpu's polygon mode, or the nearest thing the adapter can draw.
-    fn primitive_state(&self, key: PipelineKey) -> wgpu::PrimitiveState {
-        let (topology, polygon_mode) = match key.mode {
-            RenderMode::Solid => (
-                wgpu::PrimitiveTopology::TriangleList,
-                wgpu::PolygonMode::Fill,
-            ),
-            RenderMode::Wireframe if self.features.contains(wgpu::Features::POLYGON_MODE_LINE) => (
-                wgpu::PrimitiveTopology::TriangleList,
-                wgpu::PolygonMode::Line,
-            ),
-            RenderMode::Wireframe => (
-                wgpu::PrimitiveTopology::TriangleList,
-                wgpu::PolygonMode::Fill,
-            ),
-            RenderMode::Points if self.features.contains(wgpu::Features::POLYGON_MODE_POINT) => (
-                wgpu::PrimitiveTopology::TriangleList,
-                wgpu::PolygonMode::Point,
-            ),
-            RenderMode::Points => (wgpu::PrimitiveTopology::PointList, wgpu::PolygonMode::Fill),
-        };
-        wgpu::PrimitiveState {
-            topology,
-            front_face: match key.front_face {
-                FrontFace::Ccw => wgpu::FrontFace::Ccw,
-                FrontFace::Cw => wgpu::FrontFace::Cw,
-            },
-            cull_mode: key.backface_culling.then_some(wgpu::Face::Back),
-            polygon_mode,
-            ..Default::default()
-        }
-    }
-
     fn create_pipeline(&self, device: &wgpu::Device, key: PipelineKey) -> wgpu::RenderPipeline {
         let (gouraud, phong, specular) = match key.shading {
             Shading::None => (0.0, 0.0, 0.0),
@@ -350,7 +322,7 @@ impl Reference {
                     attributes: &attributes,
                 })],
             },
-            primitive: self.primitive_state(key),
+            primitive: primitive_state(self.features, key),
             depth_stencil: Some(wgpu::DepthStencilState {
                 format: DEPTH_FORMAT,
                 depth_write_enabled: Some(true),
@@ -371,10 +343,44 @@ impl Reference {
     }
 }
 
+/// glPolygonMode as wgpu's polygon mode, or the nearest thing the adapter can draw, with the
+/// reference's culling and front face: the ID pass draws exactly what the reference draws.
+pub(crate) fn primitive_state(features: wgpu::Features, key: PipelineKey) -> wgpu::PrimitiveState {
+    let (topology, polygon_mode) = match key.mode {
+        RenderMode::Solid => (
+            wgpu::PrimitiveTopology::TriangleList,
+            wgpu::PolygonMode::Fill,
+        ),
+        RenderMode::Wireframe if features.contains(wgpu::Features::POLYGON_MODE_LINE) => (
+            wgpu::PrimitiveTopology::TriangleList,
+            wgpu::PolygonMode::Line,
+        ),
+        RenderMode::Wireframe => (
+            wgpu::PrimitiveTopology::TriangleList,
+            wgpu::PolygonMode::Fill,
+        ),
+        RenderMode::Points if features.contains(wgpu::Features::POLYGON_MODE_POINT) => (
+            wgpu::PrimitiveTopology::TriangleList,
+            wgpu::PolygonMode::Point,
+        ),
+        RenderMode::Points => (wgpu::PrimitiveTopology::PointList, wgpu::PolygonMode::Fill),
+    };
+    wgpu::PrimitiveState {
+        topology,
+        front_face: match key.front_face {
+            FrontFace::Ccw => wgpu::FrontFace::Ccw,
+            FrontFace::Cw => wgpu::FrontFace::Cw,
+        },
+        cull_mode: key.backface_culling.then_some(wgpu::Face::Back),
+        polygon_mode,
+        ..Default::default()
+    }
+}
+
 /// Whether a triangle has area by the rule Close2GL culls by (see `ZERO_AREA`), measured here in
 /// world space: a shape's area over its longest edge squared is the same after the projection,
 /// for a triangle that faces the camera.
-fn has_area([a, b, c]: [Vec3; 3]) -> bool {
+pub(crate) fn has_area([a, b, c]: [Vec3; 3]) -> bool {
     let longest = (b - a)
         .length_squared()
         .max((c - b).length_squared())
