@@ -4,9 +4,9 @@
 //! it on into both GPU views.
 
 use close2gl_core::{
-    CameraAction, CameraActions, Close2glFrame, InputBindings, ModelRequest, ModelSource,
-    ModelStatus, PrimitiveKind, RenderMode, RenderSettings, TextureFilter, TextureRequest,
-    ToolRequests, Topology,
+    CameraAction, CameraActions, Close2glFrame, FateKind, Fates, InputBindings, ModelRequest,
+    ModelSource, ModelStatus, Overlay, PrimitiveKind, RenderMode, RenderSettings, TextureFilter,
+    TextureRequest, ToolRequests, Topology, TriangleFate,
 };
 use close2gl_testkit::panel::Harness;
 use close2gl_ui::{Notice, PanelState};
@@ -197,4 +197,30 @@ fn a_model_loading_in_the_background_shows_a_bar_with_its_name_and_percent() {
     h.world().resource_mut::<ModelStatus>().loading = None;
     h.frame(Vec::new());
     assert!(!h.shows("loading big.in: 42%"), "gone once loaded");
+}
+
+#[test]
+fn the_inspector_switches_the_fate_view_and_shows_the_picked_triangles_fate_and_the_matrices() {
+    let mut h = Harness::new();
+    h.click(Role::Button, "fates");
+    assert_eq!(
+        h.world().resource::<RenderSettings>().overlay,
+        Overlay::Fates
+    );
+    // What Close2GL's pipeline records for the harness's back face.
+    let mut fates = Fates::default();
+    fates.triangles.push(TriangleFate {
+        kind: FateKind::Culled,
+        signed_area: -4.5,
+        ..Default::default()
+    });
+    fates.counts.add(FateKind::Culled);
+    h.world().insert_resource(fates);
+    h.set_value(Role::SpinButton, "Triangle", 0.0);
+    assert!(h.shows("Fate: culled"));
+    assert!(h.shows("Signed area (x2, y down): -4.500"));
+    assert!(h.shows("world 1"));
+    assert!(!h.shows("M (Close2GL)"), "the matrices start folded");
+    h.click(Role::DisclosureTriangle, "Matrices");
+    assert!(h.shows("M (Close2GL)") && h.shows("projection (reference)"));
 }
