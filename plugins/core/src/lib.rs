@@ -47,7 +47,8 @@ pub use model::{
 pub use named::NamedEnum;
 pub use schedule::{FrameSet, PostUpdate, PreUpdate, Render, Startup, Update, frame_schedules};
 pub use settings::{
-    Clipping, FrontFace, Lighting, Overlay, Rasterizer, RenderMode, RenderSettings, Shading, TextureFilter,
+    Clipping, FrontFace, Lighting, Overlay, Rasterizer, RenderMode, RenderSettings, Shading,
+    TextureFilter,
 };
 pub use settings_plugin::SettingsPlugin;
 pub use texture::{Image8, Texture, checkerboard};
