@@ -477,7 +477,14 @@ mod tests {
         };
         let mut frame = Close2glFrame::default();
         let settings = RenderSettings::default();
-        FastPipeline::default().run(&mesh, &camera, &settings, viewport, &mut frame);
+        FastPipeline::default().run(
+            &mesh,
+            &camera,
+            &settings,
+            viewport,
+            &mut frame,
+            &mut Default::default(),
+        );
         frame.counts.drawn == 1
     }
 
