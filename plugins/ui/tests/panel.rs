@@ -6,7 +6,7 @@
 use close2gl_core::{
     CameraAction, CameraActions, Close2glFrame, FateKind, Fates, InputBindings, ModelRequest,
     ModelSource, ModelStatus, Overlay, PrimitiveKind, RenderMode, RenderSettings, TextureFilter,
-    TextureRequest, ToolRequests, Topology, TriangleFate,
+    TextureRequest, ToolRequests, Topology,
 };
 use close2gl_testkit::panel::Harness;
 use close2gl_ui::{Notice, PanelState};
