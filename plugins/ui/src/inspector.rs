@@ -1,13 +1,15 @@
 //! The inspector section: the fate view's switch and legend (each fate's count, from the record
 //! Close2GL itself keeps, and the colours of the reference's overlays, which the GPU answers); a
-//! triangle picked by index with its fate; the matrices M, P, V with their current numbers beside
+//! triangle picked by index with its fate and its journey; the matrices M, P, V with their current numbers beside
 //! the reference's own view and projection, and their largest difference.
 
 use bevy_ecs::prelude::*;
 use close2gl_core::glam::Mat4;
 use close2gl_core::{
-    Camera, ClipPlane, FateKind, Fates, Mesh, Overlay, RenderSettings, Viewport, camera_matrices,
+    Camera, ClipPlane, FateKind, Fates, Mesh, Overlay, RenderSettings, TriangleFate, Viewport,
+    camera_matrices,
 };
+use close2gl_pipeline::journey::{Journey, journey};
 use close2gl_pipeline::matrices;
 
 use crate::PanelState;
@@ -18,7 +20,11 @@ pub fn section(ui: &mut egui::Ui, world: &mut World) {
     triangle(ui, world);
     egui::CollapsingHeader::new("Matrices")
         .default_open(false)
-        .show(ui, |ui| matrices_grid(ui, world));
+        .show(ui, |ui| {
+            egui::ScrollArea::horizontal()
+                .id_salt("matrices")
+                .show(ui, |ui| matrices_grid(ui, world));
+        });
 }
 
 fn overlay_switch(ui: &mut egui::Ui, world: &mut World) {
@@ -77,12 +83,13 @@ fn swatch(ui: &mut egui::Ui, [r, g, b]: [u8; 3]) {
         .rect_filled(rect, 2.0, egui::Color32::from_rgb(r, g, b));
 }
 
-/// The picked triangle: its corners in world coordinates and what Close2GL decided.
+/// The picked triangle: its fate (as recorded, with the rasterizer's verdicts, else as the
+/// journey decides it) and its journey through the pipeline, every stage's numbers.
 fn triangle(ui: &mut egui::Ui, world: &mut World) {
-    let count = {
-        let mut meshes = world.query::<&Mesh>();
-        meshes.iter(world).next().map_or(0, |m| m.triangles.len())
+    let Some((mesh, camera)) = mesh_and_camera(world) else {
+        return;
     };
+    let count = mesh.triangles.len();
     if count == 0 {
         return;
     }
@@ -96,50 +103,96 @@ fn triangle(ui: &mut egui::Ui, world: &mut World) {
         ui.weak(format!("of {count}"));
     });
     let index = *picked;
-    let fate = world
+    let settings = world
+        .get_resource::<RenderSettings>()
+        .copied()
+        .unwrap_or_default();
+    let viewport = world
+        .get_resource::<Viewport>()
+        .copied()
+        .unwrap_or_default();
+    let Some(journey) = journey(&mesh, index, &camera, &settings, viewport) else {
+        return;
+    };
+    let recorded = world
         .get_resource::<Fates>()
         .and_then(|f| f.of(index).copied());
-    match fate {
-        Some(fate) => {
-            let planes: Vec<&str> = ClipPlane::in_outcode(fate.planes)
-                .map(ClipPlane::name)
-                .collect();
-            ui.label(format!("Fate: {}", fate.kind.name()));
-            if !planes.is_empty() {
-                ui.label(format!("Planes: {}", planes.join(", ")));
-            }
-            if fate.behind_eye {
-                ui.label("Behind the eye (w <= 0 at every corner)");
-            }
-            if !fate.signed_area.is_nan() {
-                ui.label(format!("Signed area (x2, y down): {:.3}", fate.signed_area));
+    fate_lines(ui, recorded.unwrap_or(journey.fate));
+    egui::CollapsingHeader::new("Journey")
+        .default_open(true)
+        .show(ui, |ui| journey_grid(ui, &journey));
+}
+
+/// The world's one mesh and camera, copied out (the panel writes other resources meanwhile).
+fn mesh_and_camera(world: &mut World) -> Option<(Mesh, Camera)> {
+    let mesh = world.query::<&Mesh>().iter(world).next()?.clone();
+    let camera = *world.query::<&Camera>().iter(world).next()?;
+    Some((mesh, camera))
+}
+
+fn fate_lines(ui: &mut egui::Ui, fate: TriangleFate) {
+    ui.label(format!("Fate: {}", fate.kind.name()));
+    let planes: Vec<&str> = ClipPlane::in_outcode(fate.planes)
+        .map(ClipPlane::name)
+        .collect();
+    if !planes.is_empty() {
+        ui.label(format!("Planes: {}", planes.join(", ")));
+    }
+    if fate.behind_eye {
+        ui.label("Behind the eye (w <= 0 at every corner)");
+    }
+    if !fate.signed_area.is_nan() {
+        ui.label(format!("Signed area (x2, y down): {:.3}", fate.signed_area));
+    }
+}
+
+/// Each stage's points, one row each: world, eye = M·p, clip = P·M·p, the polygon after each
+/// clipping step, NDC (÷ w) and window (V·ndc: pixels, depth).
+fn journey_grid(ui: &mut egui::Ui, journey: &Journey) {
+    // Rows of four numbers are wider than the panel: they scroll sideways inside it.
+    egui::ScrollArea::horizontal()
+        .id_salt("journey")
+        .show(ui, |ui| points_grid(ui, journey));
+    let culling = journey.culling.map_or("kept", FateKind::name);
+    ui.label(format!("Culling: {culling}"));
+}
+
+fn points_grid(ui: &mut egui::Ui, journey: &Journey) {
+    egui::Grid::new("journey").striped(true).show(ui, |ui| {
+        let mut row = |name: String, values: &[f32]| {
+            ui.label(name);
+            let text: Vec<String> = values.iter().map(|v| format!("{v:>9.3}")).collect();
+            ui.monospace(text.join(" "));
+            ui.end_row();
+        };
+        for (i, p) in journey.world.iter().enumerate() {
+            row(format!("world {i}"), &p.to_array());
+        }
+        for (i, p) in journey.eye.iter().enumerate() {
+            row(format!("eye {i}"), &p.to_array());
+        }
+        for (i, p) in journey.clip.iter().enumerate() {
+            row(format!("clip {i}"), &p.to_array());
+        }
+        for step in &journey.clip_steps {
+            for (i, p) in step.polygon.iter().enumerate() {
+                row(format!("{} {i}", step.plane.name()), &p.to_array());
             }
         }
-        None => {
-            ui.weak("Fate: not recorded");
+        for (i, p) in journey.ndc.iter().enumerate() {
+            row(format!("ndc {i}"), &p.to_array());
         }
-    }
-    let mut meshes = world.query::<&Mesh>();
-    if let Some(mesh) = meshes.iter(world).next() {
-        egui::Grid::new("triangle_world").show(ui, |ui| {
-            for (corner, &i) in mesh.triangles[index].iter().enumerate() {
-                let p = mesh.positions[i as usize];
-                ui.label(format!("world {corner}"));
-                ui.monospace(format!("{:>9.3} {:>9.3} {:>9.3}", p.x, p.y, p.z));
-                ui.end_row();
-            }
-        });
-    }
+        for (i, p) in journey.window.iter().enumerate() {
+            row(format!("window {i}"), &p.to_array());
+        }
+    });
 }
 
 /// M, P and V as Close2GL builds them, the reference's view and projection (glam's), and how far
 /// apart they are. P is compared in wgpu's depth range (z' = (z + w) / 2), the one the reference
 /// projects to: OpenGL's -1..1 and WebGPU's 0..1 differ there by design.
 fn matrices_grid(ui: &mut egui::Ui, world: &mut World) {
-    let camera = {
-        let mut cameras = world.query::<&Camera>();
-        cameras.iter(world).next().copied()
-    };
+    let camera = world.query::<&Camera>().iter(world).next().copied();
     let (Some(camera), Some(viewport)) = (camera, world.get_resource::<Viewport>().copied()) else {
         return;
     };

@@ -216,7 +216,18 @@ fn the_inspector_switches_the_fate_view_and_shows_the_picked_triangles_fate_and_
     assert!(h.shows("Fate: culled"));
     let area = format!("Signed area (x2, y down): {:.3}", fate.signed_area);
     assert!(h.shows(&area), "{area}");
-    assert!(h.shows("world 1"));
+    // The journey: a triangle inside the volume has no clip steps, and is divided as it is.
+    for stage in [
+        "world 1",
+        "eye 2",
+        "clip 0",
+        "ndc 1",
+        "window 2",
+        "Culling: culled",
+    ] {
+        assert!(h.shows(stage), "{stage}");
+    }
+    assert!(!h.shows("left 0"), "no clip step");
     assert!(!h.shows("M (Close2GL)"), "the matrices start folded");
     h.click(Role::DisclosureTriangle, "Matrices");
     assert!(h.shows("M (Close2GL)") && h.shows("projection (reference)"));
