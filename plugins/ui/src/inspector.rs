@@ -161,8 +161,8 @@ fn points_grid(ui: &mut egui::Ui, journey: &Journey) {
     egui::Grid::new("journey").striped(true).show(ui, |ui| {
         let mut row = |name: String, values: &[f32]| {
             ui.label(name);
-            let text: Vec<String> = values.iter().map(|v| format!("{v:>9.3}")).collect();
-            ui.monospace(text.join(" "));
+            let text: Vec<String> = values.iter().map(|v| format!("{v:>8.3}")).collect();
+            ui.add(numbers(text.concat()));
             ui.end_row();
         };
         for (i, p) in journey.world.iter().enumerate() {
@@ -241,12 +241,18 @@ fn rows(ui: &mut egui::Ui, name: &str, matrix: Mat4) {
         .map(|r| {
             let row = matrix.row(r);
             format!(
-                "[{:>9.4}, {:>9.4}, {:>9.4}, {:>9.4}]",
+                "[{:>9.4},{:>9.4},{:>9.4},{:>9.4}]",
                 row.x, row.y, row.z, row.w
             )
         })
         .collect();
-    ui.monospace(text.join("\n"));
+    ui.add(numbers(text.join("\n")));
+}
+
+/// Small monospace numbers that keep their columns: never wrapped (the panel scrolls sideways).
+fn numbers(text: String) -> egui::Label {
+    egui::Label::new(egui::RichText::new(text).monospace().size(10.0))
+        .wrap_mode(egui::TextWrapMode::Extend)
 }
 
 fn largest_difference(a: Mat4, b: Mat4) -> f32 {
