@@ -17,6 +17,9 @@ pub struct InputState {
     pub scroll: f32,
     /// Seconds since the last frame.
     pub dt: f32,
+    /// Where a Ctrl+click on the main window asked for the pixel probe this frame, in the
+    /// window's physical pixels.
+    pub probe: Option<Vec2>,
 }
 
 impl InputState {
@@ -25,6 +28,7 @@ impl InputState {
         self.pressed.clear();
         self.drag = Vec2::ZERO;
         self.scroll = 0.0;
+        self.probe = None;
     }
 }
 

@@ -12,11 +12,37 @@ use close2gl_core::{
 use close2gl_pipeline::journey::{Journey, journey};
 use close2gl_pipeline::matrices;
 
+use close2gl_raster::probe::PixelProbe;
+
 use crate::PanelState;
+
+/// The last pixel probe (a Ctrl+click on a view), answered by both sides: the viewer fills it.
+#[derive(Resource, Clone, Debug)]
+pub struct ProbeAnswer {
+    /// The view clicked.
+    pub view: &'static str,
+    /// The GPU's ID pass: the reference's triangle and depth there (None: background), or why
+    /// it could not be read.
+    pub reference: Result<Option<(u32, f32)>, String>,
+    /// Close2GL's winner, depth and every candidate with why it lost.
+    pub close2gl: PixelProbe,
+}
+
+impl ProbeAnswer {
+    pub fn reference_triangle(&self) -> Option<u32> {
+        self.reference
+            .as_ref()
+            .ok()
+            .copied()
+            .flatten()
+            .map(|(t, _)| t)
+    }
+}
 
 pub fn section(ui: &mut egui::Ui, world: &mut World) {
     overlay_switch(ui, world);
     legend(ui, world);
+    probe_answer(ui, world);
     triangle(ui, world);
     egui::CollapsingHeader::new("Matrices")
         .default_open(false)
@@ -260,6 +286,52 @@ fn largest_difference(a: Mat4, b: Mat4) -> f32 {
         .to_cols_array()
         .iter()
         .fold(0.0, |m, d| m.max(d.abs()))
+}
+
+/// The probed pixel in both views: each winner with its depth, Close2GL's candidates with why
+/// each lost, and whether the two winners agree.
+fn probe_answer(ui: &mut egui::Ui, world: &mut World) {
+    let Some(answer) = world.get_resource::<ProbeAnswer>() else {
+        ui.weak("Ctrl+click a view to probe a pixel.");
+        return;
+    };
+    let [x, y] = answer.close2gl.pixel;
+    ui.label(format!(
+        "Probe: pixel {x}, {y} (clicked on {})",
+        answer.view
+    ));
+    let winner = |hit: Option<(u32, f32)>| {
+        hit.map_or("background".to_string(), |(t, d)| {
+            format!("triangle {t}, depth {d:.5}")
+        })
+    };
+    match &answer.reference {
+        Ok(hit) => ui.label(format!("Reference (GPU): {}", winner(*hit))),
+        Err(e) => ui.label(format!("Reference (GPU): {e}")),
+    };
+    let probe = &answer.close2gl;
+    let close2gl = probe.triangle.map(|t| (t, probe.depth));
+    ui.label(format!("Close2GL: {}", winner(close2gl)));
+    if let Some([r, g, b, _]) = probe.color {
+        ui.horizontal(|ui| {
+            ui.label("Close2GL colour");
+            swatch(ui, [r, g, b]);
+        });
+    }
+    for candidate in &probe.candidates {
+        ui.label(format!(
+            "  triangle {}: {} (depth {:.5})",
+            candidate.triangle,
+            candidate.outcome.name(),
+            candidate.depth
+        ));
+    }
+    if answer.reference.is_ok() && answer.reference_triangle() != probe.triangle {
+        ui.colored_label(
+            ui.visuals().warn_fg_color,
+            "The two views' winners differ here.",
+        );
+    }
 }
 
 #[cfg(test)]

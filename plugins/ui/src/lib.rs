@@ -25,6 +25,7 @@ use close2gl_core::{
     RenderSettings,
 };
 
+pub use inspector::ProbeAnswer;
 pub use stats::{FrameTimer, ViewStats};
 pub use tools::{Notice, REPRO_OUT};
 

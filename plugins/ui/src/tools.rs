@@ -181,6 +181,9 @@ pub fn cheat_sheet(ctx: &egui::Context, world: &mut World) {
                 ui.monospace("wheel");
                 ui.label("zoom (field of view)");
                 ui.end_row();
+                ui.monospace("ctrl+click");
+                ui.label("probe the pixel (Inspector)");
+                ui.end_row();
             });
         });
     if !open {
