@@ -57,7 +57,16 @@ fn geometry_stage(c: &mut Criterion) {
         let mut pipeline = FastPipeline::default();
         let mut frame = Close2glFrame::default();
         group.bench_function(BenchmarkId::new("fast", size), |b| {
-            b.iter(|| pipeline.run(&mesh, &camera, &config.render, viewport, &mut frame))
+            b.iter(|| {
+                pipeline.run(
+                    &mesh,
+                    &camera,
+                    &config.render,
+                    viewport,
+                    &mut frame,
+                    &mut Default::default(),
+                )
+            })
         });
         group.bench_function(BenchmarkId::new("baseline", size), |b| {
             b.iter(|| baseline::frame(&mesh, &camera, &config.render, viewport))
@@ -70,7 +79,16 @@ fn geometry_stage(c: &mut Criterion) {
     let mut pipeline = FastPipeline::default();
     let mut frame = Close2glFrame::default();
     group.bench_function(BenchmarkId::new("fast_near_cut", 1_000_000), |b| {
-        b.iter(|| pipeline.run(&mesh, &camera, &config.render, viewport, &mut frame))
+        b.iter(|| {
+            pipeline.run(
+                &mesh,
+                &camera,
+                &config.render,
+                viewport,
+                &mut frame,
+                &mut Default::default(),
+            )
+        })
     });
     assert!(frame.counts.clipped > 0, "the near plane cuts the sphere");
     group.finish();

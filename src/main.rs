@@ -3,7 +3,7 @@
 use std::process::ExitCode;
 
 use clap::{Parser, Subcommand};
-use close2gl::commands::{self, bench, render, run, stats};
+use close2gl::commands::{self, bench, inspect, render, run, stats};
 
 #[derive(Parser)]
 #[command(
@@ -26,6 +26,9 @@ enum Command {
     Render(render::RenderArgs),
     /// Time the Close2GL geometry stage against the straightforward version.
     Bench(bench::BenchArgs),
+    /// One triangle's journey through the pipeline (--triangle N), or who drew one pixel in
+    /// each view and why the others lost (--pixel X,Y), as JSON.
+    Inspect(inspect::InspectArgs),
 }
 
 fn main() -> ExitCode {
@@ -35,6 +38,7 @@ fn main() -> ExitCode {
         Some(Command::Stats(args)) => stats::run(args),
         Some(Command::Render(args)) => render::run(args),
         Some(Command::Bench(args)) => bench::run(args),
+        Some(Command::Inspect(args)) => inspect::run(args),
     };
     commands::exit(result)
 }

@@ -1,9 +1,9 @@
-//! The fast path writes exactly the textbook path's 2D buffer on the bundled models and the
+//! The fast path writes exactly the textbook path's 2D buffer and fates on the bundled models and the
 //! primitives, framed and from poses where the near plane and the view's sides cut the model.
 
 use close2gl::config::Config;
 use close2gl::core::{
-    Camera, Clipping, Close2glFrame, Mesh, ModelSource, RenderMode, RenderSettings, Viewport,
+    Camera, Clipping, Close2glFrame, Fates, Mesh, ModelSource, RenderMode, RenderSettings, Viewport,
 };
 use close2gl::pipeline::{FastPipeline, textbook};
 
@@ -75,14 +75,19 @@ fn fast_equals_textbook(model: &str, mesh: &Mesh, camera: &Camera) -> bool {
                 width: 640,
                 height: 360,
             };
-            let slow = textbook::run(mesh, camera, &settings, viewport);
+            let (slow, slow_fates) = textbook::run_recording(mesh, camera, &settings, viewport);
             let mut fast = Close2glFrame::default();
-            FastPipeline::default().run(mesh, camera, &settings, viewport, &mut fast);
-            assert_eq!(
-                slow, fast,
-                "{model} {mode:?} {clipping:?} from {:?}",
-                camera.position
-            );
+            let mut fates = Fates {
+                record: true,
+                ..Fates::default()
+            };
+            FastPipeline::default().run(mesh, camera, &settings, viewport, &mut fast, &mut fates);
+            let pose = format!("{model} {mode:?} {clipping:?} from {:?}", camera.position);
+            assert_eq!(slow, fast, "{pose}");
+            assert_eq!(slow_fates.counts, fates.counts, "{pose}");
+            // Debug text, so that the NaN areas of clipped triangles compare equal.
+            let text = |f: &Fates| format!("{:?}", f.triangles);
+            assert!(text(&slow_fates) == text(&fates), "fates differ: {pose}");
             clipped |= slow.counts.clipped > 0;
         }
     }

@@ -11,8 +11,8 @@ use arbitrary::Arbitrary;
 use close2gl_core::glam::{Vec2, Vec3};
 use close2gl_core::limits::FOV_RANGE;
 use close2gl_core::{
-    Camera, Clipping, Close2glFrame, FrontFace, Image8, Lighting, Mesh, Rasterizer, RenderMode,
-    RenderSettings, Shading, SoftwareFrame, Texture, TextureFilter, Topology, Viewport,
+    Camera, Clipping, Close2glFrame, Fates, FrontFace, Image8, Lighting, Mesh, Overlay, Rasterizer,
+    RenderMode, RenderSettings, Shading, SoftwareFrame, Texture, TextureFilter, Topology, Viewport,
 };
 use close2gl_fuzz::{Num, vec3};
 use close2gl_pipeline::{FastPipeline, textbook};
@@ -66,6 +66,7 @@ struct SettingsIn {
     software: bool,
     texture: bool,
     filter: u8,
+    overlay: u8,
     color: [Num; 3],
     background: [Num; 3],
 }
@@ -126,6 +127,7 @@ fn settings(s: &SettingsIn) -> RenderSettings {
         },
         texture: s.texture,
         texture_filter: pick(TextureFilter::ALL, s.filter),
+        overlay: pick(Overlay::ALL, s.overlay),
     }
 }
 
@@ -307,13 +309,27 @@ fuzz_target!(|input: Input| {
     let mut pipeline = FastPipeline::default();
     let mut rasterizer = SoftwareRasterizer::default();
     let mut frame = Close2glFrame::default();
+    let mut fates = Fates::default();
     let mut image = SoftwareFrame::default();
     let frames = usize::from(input.frame_count % 3) + 1;
     for s in &input.frames[..frames] {
         let settings = settings(s);
-        pipeline.run(&mesh, &camera, &settings, viewport, &mut frame);
-        let expected = textbook::run(&mesh, &camera, &settings, viewport);
+        // The inspector records fates while one of its overlays is shown.
+        fates.record = settings.overlay != Overlay::Off;
+        pipeline.run(&mesh, &camera, &settings, viewport, &mut frame, &mut fates);
+        let (expected, expected_fates) =
+            textbook::run_recording(&mesh, &camera, &settings, viewport);
         assert_eq!(frame.counts, expected.counts);
+        assert_eq!(fates.counts, expected_fates.counts);
+        if fates.record {
+            assert_eq!(
+                format!("{:?}", fates.triangles),
+                format!("{:?}", expected_fates.triangles),
+                "the fast path's fates differ from the textbook path's"
+            );
+        } else {
+            assert!(fates.triangles.is_empty());
+        }
         assert_eq!(frame.topology, expected.topology);
         assert_eq!(
             bits(&frame.vertices),
@@ -329,11 +345,16 @@ fuzz_target!(|input: Input| {
                 &lighting,
                 texture.as_ref(),
                 &mut image,
+                &mut fates,
             );
             assert_eq!(
                 (image.width, image.height),
                 (viewport.width, viewport.height)
             );
+            // The rasterizer moves drawn triangles to no_pixels or hidden, never others.
+            let (c, e) = (fates.counts, expected_fates.counts);
+            assert_eq!(c.drawn + c.cut + c.no_pixels + c.hidden, e.drawn + e.cut);
+            assert_eq!((c.clipped, c.culled, c.zero_area), (e.clipped, e.culled, e.zero_area));
             assert_eq!(
                 image.pixels.len(),
                 (viewport.width * viewport.height) as usize

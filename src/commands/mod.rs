@@ -1,6 +1,7 @@
 //! One module per subcommand; each parses its own arguments and returns a [`CliError`].
 
 pub mod bench;
+pub mod inspect;
 pub mod render;
 pub mod run;
 pub mod scene;

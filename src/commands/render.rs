@@ -5,7 +5,7 @@ use std::f32::consts::TAU;
 use std::path::{Path, PathBuf};
 
 use bevy_ecs::prelude::DetectChangesMut;
-use close2gl_core::{App, Camera, CameraAction, CameraActions};
+use close2gl_core::{App, Camera, CameraAction, CameraActions, Fates};
 use close2gl_gpu::parity::{ColorComparison, Comparison, diff_image};
 use close2gl_gpu::{Gpu, OffscreenPlugin, Snapshot, parse_backends, render_offscreen};
 use serde_json::{Value, json};
@@ -43,6 +43,7 @@ pub fn run(args: RenderArgs) -> Result<(), CliError> {
     print_warnings(&app);
     let gpu = Gpu::headless(backends).map_err(CliError::Runtime)?;
     app.add_plugins(OffscreenPlugin(gpu.clone()));
+    app.world_mut().resource_mut::<Fates>().record = true;
     std::fs::create_dir_all(&args.out).map_err(|e| {
         CliError::Runtime(format!(
             "{}: cannot create the directory: {e}",
@@ -108,6 +109,7 @@ fn render_pose(app: &mut App, args: &RenderArgs, gpu: &Gpu, pose: u32) -> Result
     report["reference_ms"] = json!(reference_ms);
     report["close2gl_ms"] = json!(close2gl_ms);
     report["frames"] = json!(args.frames);
+    report["fates"] = json!(app.world().resource::<Fates>().counts);
     if args.orbit.is_some() {
         report["pose"] = json!(pose);
         report["yaw_degrees"] = json!(360.0 * pose as f64 / poses as f64);

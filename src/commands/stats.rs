@@ -1,13 +1,14 @@
 //! `close2gl stats`: the Close2GL pipeline once, headless; its counts as one JSON object (and,
-//! with the software rasterizer, its time and the pixels it covered).
+//! with the software rasterizer, its time and the pixels it covered), and how many triangles
+//! met each fate (`no_pixels` and `hidden` only with the software rasterizer).
 
 use std::path::{Path, PathBuf};
 
-use close2gl_core::{Close2glFrame, Rasterizer, SoftwareFrame};
+use close2gl_core::{Close2glFrame, Fates, Rasterizer, SoftwareFrame};
 use serde_json::json;
 
 use super::CliError;
-use super::scene::{SceneArgs, print_warnings, viewport};
+use super::scene::{SceneArgs, print_warnings, record_fates, viewport};
 
 #[derive(clap::Args, Debug, Default)]
 pub struct StatsArgs {
@@ -24,8 +25,9 @@ pub struct StatsArgs {
 pub fn run(args: StatsArgs) -> Result<(), CliError> {
     let config = args.scene.config()?;
     let viewport = viewport(args.size.as_deref(), &config)?;
-    let app = crate::build_app(&config, viewport).map_err(CliError::Input)?;
+    let mut app = crate::build_app(&config, viewport).map_err(CliError::Input)?;
     print_warnings(&app);
+    record_fates(&mut app);
     let frame = app.world().resource::<Close2glFrame>();
     if let Some(path) = &args.dump {
         dump(frame, path)
@@ -33,6 +35,7 @@ pub fn run(args: StatsArgs) -> Result<(), CliError> {
     }
     let mut report = json!(frame.counts);
     report["bounds_px"] = json!(frame.bounds_px());
+    report["fates"] = json!(app.world().resource::<Fates>().counts);
     if config.render.close2gl_raster == Rasterizer::Software {
         report["stage_ms"] = json!(frame.stage_ms);
         let image = app.world().resource::<SoftwareFrame>();

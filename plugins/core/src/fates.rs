@@ -109,6 +109,13 @@ impl FateCounts {
         *self.get_mut(kind) += 1;
     }
 
+    /// Adds another tally (a parallel chunk's) to this one.
+    pub fn merge(&mut self, other: &FateCounts) {
+        for &kind in FateKind::ALL {
+            *self.get_mut(kind) += other.get(kind);
+        }
+    }
+
     pub fn get(&self, kind: FateKind) -> usize {
         let mut copy = *self;
         *copy.get_mut(kind)

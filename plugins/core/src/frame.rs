@@ -73,6 +73,10 @@ pub struct RasterGeometry {
     pub cuts: Vec<CutVertex>,
     /// One index per point, two per line, three per triangle (the frame's topology).
     pub primitives: Vec<u32>,
+    /// The mesh triangle each primitive came from, one per primitive; filled only while
+    /// `Fates::record` is set (the rasterizer then finds which triangles cover no pixel centre
+    /// and which win none), empty otherwise.
+    pub triangles: Vec<u32>,
     /// Whether the mesh has texture coordinates.
     pub textured: bool,
 }

@@ -17,6 +17,9 @@ pub struct InputState {
     pub scroll: f32,
     /// Seconds since the last frame.
     pub dt: f32,
+    /// Where a Ctrl+click on the main window asked for the pixel probe this frame, in the
+    /// window's physical pixels.
+    pub probe: Option<Vec2>,
 }
 
 impl InputState {
@@ -25,6 +28,7 @@ impl InputState {
         self.pressed.clear();
         self.drag = Vec2::ZERO;
         self.scroll = 0.0;
+        self.probe = None;
     }
 }
 
@@ -34,7 +38,7 @@ pub struct InputBindings(pub BTreeMap<String, String>);
 
 impl InputBindings {
     /// Every bindable action with its default key.
-    pub const DEFAULTS: [(&'static str, &'static str); 20] = [
+    pub const DEFAULTS: [(&'static str, &'static str); 21] = [
         ("forward", "w"),
         ("back", "s"),
         ("left", "a"),
@@ -55,6 +59,7 @@ impl InputBindings {
         ("help", "f1 ?"),
         ("screenshot", "f12"),
         ("copy_command", "c"),
+        ("fate_view", "i"),
     ];
 
     /// The binding as written: one key, or several separated by spaces (`"f1 ?"`).

@@ -5,6 +5,8 @@ use bytemuck::{Pod, Zeroable};
 use close2gl_core::{Close2glFrame, Topology};
 use glam::Vec3;
 
+use crate::grow_buffer::GrowBuffer;
+
 /// The uniform block of close2gl.wgsl.
 #[repr(C)]
 #[derive(Clone, Copy, Pod, Zeroable)]
@@ -22,8 +24,7 @@ pub(crate) struct Close2glView {
     bind_group: wgpu::BindGroup,
     /// Points, lines, triangles: made when first needed.
     pipelines: [Option<wgpu::RenderPipeline>; 3],
-    /// Grows by doubling, so a steady frame allocates nothing.
-    vertices: wgpu::Buffer,
+    vertices: GrowBuffer,
     vertex_count: u32,
     topology: Topology,
 }
@@ -53,7 +54,7 @@ impl Close2glView {
             uniforms,
             bind_group,
             pipelines: [None, None, None],
-            vertices: vertex_buffer(device, 1024 * VERTEX_SIZE),
+            vertices: GrowBuffer::new(device, "close2gl vertices", wgpu::BufferUsages::VERTEX),
             vertex_count: 0,
             topology: Topology::Triangles,
         }
@@ -68,18 +69,8 @@ impl Close2glView {
         frame: &Close2glFrame,
         color: Vec3,
     ) {
-        let bytes: &[u8] = bytemuck::cast_slice(&frame.vertices);
-        let needed = bytes.len() as u64;
-        if needed > self.vertices.size() {
-            let mut size = self.vertices.size();
-            while size < needed {
-                size *= 2;
-            }
-            self.vertices = vertex_buffer(device, size);
-        }
-        if !bytes.is_empty() {
-            queue.write_buffer(&self.vertices, 0, bytes);
-        }
+        self.vertices
+            .write(device, queue, bytemuck::cast_slice(&frame.vertices));
         self.vertex_count = frame.vertices.len() as u32;
         self.topology = frame.topology;
         let uniforms = FrameUniforms {
@@ -106,7 +97,7 @@ impl Close2glView {
         }
         pass.set_pipeline(pipeline);
         pass.set_bind_group(0, &self.bind_group, &[]);
-        pass.set_vertex_buffer(0, self.vertices.slice(..));
+        pass.set_vertex_buffer(0, self.vertices.slice());
         pass.draw(0..self.vertex_count, 0..1);
     }
 
@@ -146,13 +137,4 @@ impl Close2glView {
             cache: None,
         })
     }
-}
-
-fn vertex_buffer(device: &wgpu::Device, size: u64) -> wgpu::Buffer {
-    device.create_buffer(&wgpu::BufferDescriptor {
-        label: Some("close2gl vertices"),
-        size,
-        usage: wgpu::BufferUsages::VERTEX | wgpu::BufferUsages::COPY_DST,
-        mapped_at_creation: false,
-    })
 }

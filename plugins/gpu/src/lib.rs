@@ -1,16 +1,22 @@
 //! The GPU side of close2gl, on wgpu: the shared device ([`Gpu`], which says when it is lost),
 //! the reference renderer (the mesh drawn from glam's own camera matrices, standing in for OpenGL)
 //! and the Close2GL view (the 2D buffer drawn through a pass-through pipeline, or the software
-//! rasterizer's image drawn as one textured triangle), both held in [`Views`]. [`GpuPlugin`] adds
+//! rasterizer's image drawn as one textured triangle, or in the fate view each triangle in its
+//! fate's colour), both held in [`Views`]. [`GpuPlugin`] adds
 //! the `Render` systems that read `Camera`, `Mesh`, `ModelStatus`, `RenderSettings`, `Lighting`,
-//! `Texture`, `Close2glFrame` and `SoftwareFrame` and upload what changed into `Views`; whoever
+//! `Texture`, `Close2glFrame`, `SoftwareFrame` and `Fates` (asking for it to be recorded while the
+//! fate view is shown) and upload what changed into `Views`; whoever
 //! owns the target (a window, or [`render_offscreen`]) records the draws.
 //! Offscreen rendering, reading textures back ([`Readback`]), the texture and attachment
-//! descriptions every target shares ([`texture`]), PNG images and the coverage comparison behind
+//! descriptions every target shares ([`texture`]), the reference probe (an ID pass that says which
+//! mesh triangle the GPU drew at a pixel, [`probe_reference`]), PNG images and the coverage comparison behind
 //! `close2gl render` and the parity tests live here too. No window or UI crate is a dependency.
 
 mod close2gl_view;
+mod fate_view;
 mod gpu;
+mod grow_buffer;
+mod id_pass;
 pub mod image;
 mod offscreen;
 pub mod parity;
@@ -22,11 +28,13 @@ mod systems;
 pub mod texture;
 mod views;
 
+pub use close2gl_core::camera_matrices;
 pub use gpu::{Gpu, parse_backends};
+pub use id_pass::{ProbeScene, ReferenceHit, probe_reference};
 pub use image::Image;
 pub use offscreen::{OFFSCREEN_FORMAT, OffscreenPlugin, Snapshot, render_offscreen};
 pub use readback::Readback;
-pub use reference::{camera_matrices, clear_color};
+pub use reference::clear_color;
 pub use systems::GpuPlugin;
 pub use views::Views;
 /// Re-exported so that users of this crate name the same wgpu types.

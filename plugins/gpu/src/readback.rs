@@ -65,21 +65,8 @@ impl Readback {
 
     /// Maps the buffer once the copies are done and unpads the first `layers` layers.
     fn map(&self, gpu: &Gpu, layers: usize) -> Result<Vec<Vec<[u8; 4]>>, String> {
-        let failed =
-            |e: &dyn std::fmt::Display| format!("cannot read the image back from the GPU: {e}");
         let slice = self.buffer.slice(..);
-        let (sender, receiver) = std::sync::mpsc::channel();
-        slice.map_async(wgpu::MapMode::Read, move |result| {
-            let _ = sender.send(result);
-        });
-        gpu.device
-            .poll(wgpu::PollType::wait_indefinitely())
-            .map_err(|e| failed(&e))?;
-        receiver
-            .recv()
-            .map_err(|e| failed(&e))?
-            .map_err(|e| failed(&e))?;
-        let bytes = slice.get_mapped_range().map_err(|e| failed(&e))?;
+        let bytes = map_read(gpu, &slice, "the image")?;
         let row = self.width as usize * 4;
         Ok(bytes
             .chunks_exact(self.layer_bytes())
@@ -93,4 +80,25 @@ impl Readback {
             })
             .collect())
     }
+}
+
+/// Maps `slice` for reading once the GPU is done with it; `what` names it in the error.
+pub(crate) fn map_read<'a>(
+    gpu: &Gpu,
+    slice: &wgpu::BufferSlice<'a>,
+    what: &str,
+) -> Result<wgpu::BufferView, String> {
+    let failed = |e: &dyn std::fmt::Display| format!("cannot read {what} back from the GPU: {e}");
+    let (sender, receiver) = std::sync::mpsc::channel();
+    slice.map_async(wgpu::MapMode::Read, move |result| {
+        let _ = sender.send(result);
+    });
+    gpu.device
+        .poll(wgpu::PollType::wait_indefinitely())
+        .map_err(|e| failed(&e))?;
+    receiver
+        .recv()
+        .map_err(|e| failed(&e))?
+        .map_err(|e| failed(&e))?;
+    slice.get_mapped_range().map_err(|e| failed(&e))
 }

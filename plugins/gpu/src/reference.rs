@@ -1,37 +1,33 @@
 //! The reference renderer: the mesh drawn by the GPU from glam's own camera matrices, with depth
 //! test, glPolygonMode-style points / wireframe / solid, culling, the four shading modes, and the
-//! texture modulating the shaded colour.
+//! texture modulating the shaded colour; in the fate view, the GPU's own facing and depth-test
+//! answers over it ([`overlay`]).
+
+mod overlay;
 
 use std::collections::HashMap;
 
 use bytemuck::{Pod, Zeroable};
+use close2gl_core::camera_matrices;
 use close2gl_core::limits::has_no_area;
 use close2gl_core::{
-    Camera, FrontFace, Lighting, Mesh, RenderMode, RenderSettings, Shading, Texture, TextureFilter,
+    Camera, FrontFace, Lighting, Mesh, Overlay, RenderMode, RenderSettings, Shading, Texture,
+    TextureFilter,
 };
-use glam::camera::rh::proj::directx::perspective;
-use glam::camera::rh::view::look_at_mat4;
 use glam::{Mat4, Vec3};
 use wgpu::util::DeviceExt;
 
 use crate::DEPTH_FORMAT;
 use crate::reference_texture::ReferenceBindings;
+use overlay::OverlayPipelines;
 
-/// The camera's view and projection from glam's own functions, deliberately independent of
-/// Close2GL's hand-written matrices so that agreement between the views means something. The
-/// projection's aspect comes from the two fields of view, not from the window, as in Close2GL;
-/// depth maps to wgpu's 0..1 (glam's right-handed look-at and WebGPU perspective).
-pub fn camera_matrices(camera: &Camera) -> (Mat4, Mat4) {
-    let view = look_at_mat4(camera.position, camera.position - camera.n, camera.v);
-    let half_h = (camera.hfov.to_radians() * 0.5).tan();
-    let half_v = (camera.vfov.to_radians() * 0.5).tan();
-    let projection = perspective(
-        camera.vfov.to_radians(),
-        half_h / half_v,
-        camera.near,
-        camera.far,
-    );
-    (view, projection)
+/// [`camera_matrices`] for a mesh uploaded relative to `origin` (see [`GpuMesh::origin`]): the
+/// camera is moved by the same amount, so eye space is unchanged.
+pub(crate) fn relative_matrices(camera: &Camera, origin: Vec3) -> (Mat4, Mat4) {
+    camera_matrices(&Camera {
+        position: camera.position - origin,
+        ..*camera
+    })
 }
 
 /// The uniform block of reference.wgsl, field for field.
@@ -61,11 +57,7 @@ impl Uniforms {
         origin: Vec3,
         textured: bool,
     ) -> Self {
-        let relative = Camera {
-            position: camera.position - origin,
-            ..*camera
-        };
-        let (view, projection) = camera_matrices(&relative);
+        let (view, projection) = relative_matrices(camera, origin);
         let light = view.transform_point3(lighting.light_position - origin);
         let [c0, c1, c2] = lighting.attenuation;
         Self {
@@ -85,7 +77,7 @@ impl Uniforms {
 
 /// What makes one reference pipeline differ from another.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-struct PipelineKey {
+pub(crate) struct PipelineKey {
     shading: Shading,
     mode: RenderMode,
     backface_culling: bool,
@@ -93,7 +85,7 @@ struct PipelineKey {
 }
 
 impl PipelineKey {
-    fn new(settings: &RenderSettings) -> Self {
+    pub(crate) fn new(settings: &RenderSettings) -> Self {
         Self {
             shading: settings.shading,
             mode: settings.mode,
@@ -161,6 +153,8 @@ pub(crate) struct Reference {
     /// One pipeline per (shading, polygon mode, culling, front face), made the first time that
     /// combination is drawn: building all 48 up front would cost seconds on a software GPU.
     pipelines: HashMap<PipelineKey, wgpu::RenderPipeline>,
+    /// The fate view's overlays for each key, made the first time they are shown.
+    overlays: HashMap<PipelineKey, OverlayPipelines>,
     current: Option<(PipelineKey, TextureFilter)>,
     mesh: Option<GpuMesh>,
 }
@@ -178,6 +172,7 @@ impl Reference {
             features: device.features(),
             bindings: ReferenceBindings::new(device, queue, size_of::<Uniforms>()),
             pipelines: HashMap::new(),
+            overlays: HashMap::new(),
             current: None,
             mesh: None,
         }
@@ -253,23 +248,22 @@ impl Reference {
             let pipeline = self.create_pipeline(device, key);
             self.pipelines.insert(key, pipeline);
         }
+        if settings.overlay == Overlay::Fates && !self.overlays.contains_key(&key) {
+            let overlays = self.create_overlays(device, key);
+            self.overlays.insert(key, overlays);
+        }
         self.current = Some((key, settings.texture_filter));
     }
 
-    pub(crate) fn draw(&self, pass: &mut wgpu::RenderPass<'_>) {
-        let (Some(mesh), Some((key, filter))) = (&self.mesh, self.current) else {
+    /// The shaded model, and with `overlays` the GPU's own facing and depth-test answers over it.
+    pub(crate) fn draw(&self, pass: &mut wgpu::RenderPass<'_>, overlays: bool) {
+        let Some((key, _)) = self.current else {
             return;
         };
-        pass.set_pipeline(&self.pipelines[&key]);
-        pass.set_bind_group(0, self.bindings.bind_group(filter), &[]);
-        pass.set_vertex_buffer(0, mesh.vertices.slice(..));
-        pass.set_index_buffer(mesh.indices.slice(..), wgpu::IndexFormat::Uint32);
-        let count = if key.backface_culling {
-            mesh.culled_index_count
-        } else {
-            mesh.index_count
-        };
-        pass.draw_indexed(0..count, 0, 0..1);
+        self.draw_with(pass, &self.pipelines[&key]);
+        if overlays {
+            self.draw_overlays(pass);
+        }
     }
 
     /// What this adapter cannot draw as asked, if anything.
@@ -287,58 +281,36 @@ impl Reference {
         (!missing.is_empty()).then(|| missing.join("; "))
     }
 
-    /// glPolygonMode as wgpu's polygon mode, or the nearest thing the adapter can draw.
-    fn primitive_state(&self, key: PipelineKey) -> wgpu::PrimitiveState {
-        let (topology, polygon_mode) = match key.mode {
-            RenderMode::Solid => (
-                wgpu::PrimitiveTopology::TriangleList,
-                wgpu::PolygonMode::Fill,
-            ),
-            RenderMode::Wireframe if self.features.contains(wgpu::Features::POLYGON_MODE_LINE) => (
-                wgpu::PrimitiveTopology::TriangleList,
-                wgpu::PolygonMode::Line,
-            ),
-            RenderMode::Wireframe => (
-                wgpu::PrimitiveTopology::TriangleList,
-                wgpu::PolygonMode::Fill,
-            ),
-            RenderMode::Points if self.features.contains(wgpu::Features::POLYGON_MODE_POINT) => (
-                wgpu::PrimitiveTopology::TriangleList,
-                wgpu::PolygonMode::Point,
-            ),
-            RenderMode::Points => (wgpu::PrimitiveTopology::PointList, wgpu::PolygonMode::Fill),
-        };
-        wgpu::PrimitiveState {
-            topology,
-            front_face: match key.front_face {
-                FrontFace::Ccw => wgpu::FrontFace::Ccw,
-                FrontFace::Cw => wgpu::FrontFace::Cw,
-            },
-            cull_mode: key.backface_culling.then_some(wgpu::Face::Back),
-            polygon_mode,
-            ..Default::default()
-        }
+    fn create_pipeline(&self, device: &wgpu::Device, key: PipelineKey) -> wgpu::RenderPipeline {
+        self.create_drawing(device, key, &SHADED)
     }
 
-    fn create_pipeline(&self, device: &wgpu::Device, key: PipelineKey) -> wgpu::RenderPipeline {
+    /// One of the reference's pipelines for `key`: the shaded model, or an overlay over it.
+    fn create_drawing(
+        &self,
+        device: &wgpu::Device,
+        key: PipelineKey,
+        drawing: &Drawing<'_>,
+    ) -> wgpu::RenderPipeline {
         let (gouraud, phong, specular) = match key.shading {
             Shading::None => (0.0, 0.0, 0.0),
             Shading::GouraudAd => (1.0, 0.0, 0.0),
             Shading::GouraudAds => (1.0, 0.0, 1.0),
             Shading::Phong => (0.0, 1.0, 1.0),
         };
-        let constants = [
+        let mut constants = vec![
             ("GOURAUD", gouraud),
             ("PHONG", phong),
             ("SPECULAR", specular),
         ];
+        constants.extend_from_slice(drawing.constants);
         let options = wgpu::PipelineCompilationOptions {
             constants: &constants,
             ..Default::default()
         };
         let attributes = wgpu::vertex_attr_array![0 => Float32x3, 1 => Float32x3, 2 => Float32x2];
         device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
-            label: Some("reference"),
+            label: Some(drawing.fragment),
             layout: Some(&self.bindings.pipeline_layout),
             vertex: wgpu::VertexState {
                 module: &self.shader,
@@ -350,31 +322,105 @@ impl Reference {
                     attributes: &attributes,
                 })],
             },
-            primitive: self.primitive_state(key),
+            primitive: primitive_state(self.features, key),
             depth_stencil: Some(wgpu::DepthStencilState {
                 format: DEPTH_FORMAT,
-                depth_write_enabled: Some(true),
-                depth_compare: Some(wgpu::CompareFunction::Less),
+                depth_write_enabled: Some(drawing.depth_write),
+                depth_compare: Some(drawing.depth_compare),
                 stencil: Default::default(),
                 bias: Default::default(),
             }),
             multisample: Default::default(),
             fragment: Some(wgpu::FragmentState {
                 module: &self.shader,
-                entry_point: Some("fs_main"),
+                entry_point: Some(drawing.fragment),
                 compilation_options: options,
-                targets: &[Some(self.color_format.into())],
+                targets: &[Some(wgpu::ColorTargetState {
+                    format: self.color_format,
+                    blend: drawing.blend,
+                    write_mask: wgpu::ColorWrites::ALL,
+                })],
             }),
             multiview_mask: None,
             cache: None,
         })
+    }
+
+    /// Records the mesh (only the triangles with area when culling is on) with `pipeline`.
+    fn draw_with(&self, pass: &mut wgpu::RenderPass<'_>, pipeline: &wgpu::RenderPipeline) {
+        let (Some(mesh), Some((key, filter))) = (&self.mesh, self.current) else {
+            return;
+        };
+        pass.set_pipeline(pipeline);
+        pass.set_bind_group(0, self.bindings.bind_group(filter), &[]);
+        pass.set_vertex_buffer(0, mesh.vertices.slice(..));
+        pass.set_index_buffer(mesh.indices.slice(..), wgpu::IndexFormat::Uint32);
+        let count = if key.backface_culling {
+            mesh.culled_index_count
+        } else {
+            mesh.index_count
+        };
+        pass.draw_indexed(0..count, 0, 0..1);
+    }
+}
+
+/// How one of the reference's pipelines draws: its fragment entry point, depth test, blending
+/// and the override constants it adds to the shading's.
+struct Drawing<'a> {
+    fragment: &'a str,
+    depth_write: bool,
+    depth_compare: wgpu::CompareFunction,
+    blend: Option<wgpu::BlendState>,
+    constants: &'a [(&'a str, f64)],
+}
+
+/// The shaded model itself.
+const SHADED: Drawing<'static> = Drawing {
+    fragment: "fs_main",
+    depth_write: true,
+    depth_compare: wgpu::CompareFunction::Less,
+    blend: None,
+    constants: &[],
+};
+
+/// glPolygonMode as wgpu's polygon mode, or the nearest thing the adapter can draw, with the
+/// reference's culling and front face: the ID pass draws exactly what the reference draws.
+pub(crate) fn primitive_state(features: wgpu::Features, key: PipelineKey) -> wgpu::PrimitiveState {
+    let (topology, polygon_mode) = match key.mode {
+        RenderMode::Solid => (
+            wgpu::PrimitiveTopology::TriangleList,
+            wgpu::PolygonMode::Fill,
+        ),
+        RenderMode::Wireframe if features.contains(wgpu::Features::POLYGON_MODE_LINE) => (
+            wgpu::PrimitiveTopology::TriangleList,
+            wgpu::PolygonMode::Line,
+        ),
+        RenderMode::Wireframe => (
+            wgpu::PrimitiveTopology::TriangleList,
+            wgpu::PolygonMode::Fill,
+        ),
+        RenderMode::Points if features.contains(wgpu::Features::POLYGON_MODE_POINT) => (
+            wgpu::PrimitiveTopology::TriangleList,
+            wgpu::PolygonMode::Point,
+        ),
+        RenderMode::Points => (wgpu::PrimitiveTopology::PointList, wgpu::PolygonMode::Fill),
+    };
+    wgpu::PrimitiveState {
+        topology,
+        front_face: match key.front_face {
+            FrontFace::Ccw => wgpu::FrontFace::Ccw,
+            FrontFace::Cw => wgpu::FrontFace::Cw,
+        },
+        cull_mode: key.backface_culling.then_some(wgpu::Face::Back),
+        polygon_mode,
+        ..Default::default()
     }
 }
 
 /// Whether a triangle has area by the rule Close2GL culls by (see `ZERO_AREA`), measured here in
 /// world space: a shape's area over its longest edge squared is the same after the projection,
 /// for a triangle that faces the camera.
-fn has_area([a, b, c]: [Vec3; 3]) -> bool {
+pub(crate) fn has_area([a, b, c]: [Vec3; 3]) -> bool {
     let longest = (b - a)
         .length_squared()
         .max((c - b).length_squared())
@@ -431,7 +477,14 @@ mod tests {
         };
         let mut frame = Close2glFrame::default();
         let settings = RenderSettings::default();
-        FastPipeline::default().run(&mesh, &camera, &settings, viewport, &mut frame);
+        FastPipeline::default().run(
+            &mesh,
+            &camera,
+            &settings,
+            viewport,
+            &mut frame,
+            &mut Default::default(),
+        );
         frame.counts.drawn == 1
     }
 

@@ -95,3 +95,21 @@ fn fs_main(in: Varyings) -> @location(0) vec4<f32> {
     let modulation = mix(vec3<f32>(1.0), texel, u.texturing.x);
     return vec4<f32>(u.color.rgb * mix(vec3<f32>(1.0), light, lit) * modulation, 1.0);
 }
+
+// The inspector's overlays: what the GPU itself answers, drawn over the shaded reference with the
+// same vertex stage (so the same fragments). Colours are FateKind's legend, packed 0x00BBGGRR.
+override FRONT_COLOR: u32 = 0u;
+override BACK_COLOR: u32 = 0u;
+override FAILED_COLOR: u32 = 0u;
+
+// Facing as the rasterizer decided it, on the fragments that won the depth test.
+@fragment
+fn fs_facing(@builtin(front_facing) front: bool) -> @location(0) vec4<f32> {
+    return vec4<f32>(unpack4x8unorm(select(BACK_COLOR, FRONT_COLOR, front)).rgb, 0.6);
+}
+
+// Fragments the depth test rejected (drawn with the test reversed): more layers, more colour.
+@fragment
+fn fs_depth_failed() -> @location(0) vec4<f32> {
+    return vec4<f32>(unpack4x8unorm(FAILED_COLOR).rgb, 0.35);
+}

@@ -2,17 +2,21 @@
 
 use bevy_ecs::prelude::*;
 use close2gl_core::{
-    App, Camera, Close2glFrame, FrameSet, Lighting, Mesh, ModelStatus, Plugin, Render,
-    RenderSettings, SoftwareFrame, Texture,
+    App, Camera, Close2glFrame, Fates, FrameSet, Lighting, Mesh, ModelStatus, Overlay, Plugin,
+    PostUpdate, Render, RenderSettings, SoftwareFrame, Texture,
 };
 
+use crate::fate_view::record_fates_while_shown;
 use crate::reference::clear_color;
 use crate::{Gpu, Views};
 
 /// Adds the `Render` systems that upload what changed: the mesh again only when
 /// `ModelStatus.generation` changes, the texture only when `Texture.generation` does; the
 /// reference uniforms from `Camera`, `RenderSettings` and `Lighting`; the Close2GL 2D buffer
-/// from `Close2glFrame`, or the software rasterizer's image from `SoftwareFrame`. They run once
+/// from `Close2glFrame`, or the software rasterizer's image from `SoftwareFrame`; in the fate
+/// view (`RenderSettings::overlay`), each triangle in its colour from `Fates`, which it asks
+/// Close2GL to record (`Fates::record`) while that view is shown (it inserts `Fates` if no one
+/// has). They run once
 /// the `Gpu` and `Views` resources exist (inserted by whoever owns the target), so a window may
 /// arrive late. It owns no resource: the model, settings and Close2GL plugins provide what it
 /// reads, the model plugin the texture (without one the reference draws untextured), and the
@@ -25,6 +29,11 @@ impl Plugin for GpuPlugin {
             .requires::<RenderSettings>("GpuPlugin", "SettingsPlugin")
             .requires::<Lighting>("GpuPlugin", "SettingsPlugin")
             .requires::<Close2glFrame>("GpuPlugin", "Close2glPlugin")
+            .init_resource::<Fates>()
+            .add_systems(
+                PostUpdate,
+                record_fates_while_shown.in_set(FrameSet::Camera),
+            )
             .add_systems(
                 Render,
                 (
@@ -33,6 +42,7 @@ impl Plugin for GpuPlugin {
                     upload_reference,
                     upload_close2gl,
                     upload_software,
+                    upload_fates,
                 )
                     .chain()
                     .in_set(FrameSet::Render)
@@ -99,5 +109,22 @@ fn upload_software(
         && (image.is_changed() || views.is_added())
     {
         views.software.update(&gpu.device, &gpu.queue, &image);
+    }
+}
+
+/// The fate view, every frame while it is shown: the fates change with every Close2GL frame.
+fn upload_fates(
+    gpu: Res<Gpu>,
+    mesh: Single<&Mesh>,
+    camera: Single<&Camera>,
+    fates: Res<Fates>,
+    settings: Res<RenderSettings>,
+    mut views: ResMut<Views>,
+) {
+    views.overlay = settings.overlay;
+    if settings.overlay == Overlay::Fates {
+        views
+            .fates
+            .update(&gpu.device, &gpu.queue, &mesh, &camera, &fates);
     }
 }

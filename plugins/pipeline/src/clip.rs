@@ -83,46 +83,56 @@ impl Polygon {
     }
 }
 
-/// Sutherland–Hodgman: cuts the polygon by every plane named in `planes`, in turn. The result
-/// may be empty (fewer than 3 vertices) when the polygon lies outside. Where an edge leaves the
-/// volume, the new vertex starts an edge along the plane (not original); where an edge comes
-/// back in, the new vertex starts what remains of the outside vertex's edge.
-///
-/// The result is empty too when the cutting would pass [`MAX_POLYGON`] vertices. A convex
-/// polygon gains at most one vertex per plane, but with coordinates near f32's limits the
-/// distances to the planes overflow or round into a polygon that is no longer convex, and a
-/// plane may then add several: such a piece is rounding noise, dropped as clipped rather than
-/// overrunning the arrays.
+/// Sutherland–Hodgman: cuts the polygon by every plane named in `planes`, in turn (each by
+/// [`clip_step`]). The result may be empty (fewer than 3 vertices) when the polygon lies
+/// outside, or when a step would pass [`MAX_POLYGON`] vertices.
 pub fn clip_polygon(polygon: &Polygon, planes: Outcode) -> Polygon {
     let mut current = *polygon;
-    for (bit, plane) in PLANES.iter().enumerate() {
+    for bit in 0..PLANES.len() {
         if planes & (1 << bit) == 0 || current.len < 3 {
             continue;
         }
-        let input = current;
-        current.len = 0;
-        for i in 0..input.len {
-            let j = (i + 1) % input.len;
-            let (a, b) = (input.points[i], input.points[j]);
-            let (da, db) = (plane(a), plane(b));
-            if da >= 0.0 && !current.push(a, input.original[i], input.weights[i]) {
-                return Polygon { len: 0, ..current };
-            }
-            if (da >= 0.0) != (db >= 0.0) {
-                let t = da / (da - db);
-                let cut = a + (b - a) * t;
-                let weights = input.weights[i] + (input.weights[j] - input.weights[i]) * t;
-                let leaving = da >= 0.0;
-                if !current.push(cut, !leaving && input.original[i], weights) {
-                    return Polygon { len: 0, ..current };
-                }
-            }
+        match clip_step(&current, bit) {
+            Some(next) => current = next,
+            None => return Polygon { len: 0, ..current },
         }
     }
     if current.len < 3 {
         current.len = 0;
     }
     current
+}
+
+/// One step of Sutherland–Hodgman: the polygon cut by plane `bit` (its bit in an outcode).
+/// Where an edge leaves the volume, the new vertex starts an edge along the plane (not
+/// original); where an edge comes back in, the new vertex starts what remains of the outside
+/// vertex's edge. Each new vertex's weights are its edge's ends' weights, interpolated.
+///
+/// None when the cut would pass [`MAX_POLYGON`] vertices. A convex polygon gains at most one
+/// vertex per plane, but with coordinates near f32's limits the distances to the planes
+/// overflow or round into a polygon that is no longer convex, and a plane may then add several:
+/// such a piece is rounding noise, dropped as clipped rather than overrunning the arrays.
+pub fn clip_step(input: &Polygon, bit: usize) -> Option<Polygon> {
+    let plane = PLANES[bit];
+    let mut output = Polygon { len: 0, ..*input };
+    for i in 0..input.len {
+        let j = (i + 1) % input.len;
+        let (a, b) = (input.points[i], input.points[j]);
+        let (da, db) = (plane(a), plane(b));
+        if da >= 0.0 && !output.push(a, input.original[i], input.weights[i]) {
+            return None;
+        }
+        if (da >= 0.0) != (db >= 0.0) {
+            let t = da / (da - db);
+            let cut = a + (b - a) * t;
+            let weights = input.weights[i] + (input.weights[j] - input.weights[i]) * t;
+            let leaving = da >= 0.0;
+            if !output.push(cut, !leaving && input.original[i], weights) {
+                return None;
+            }
+        }
+    }
+    Some(output)
 }
 
 #[cfg(test)]

@@ -6,16 +6,17 @@
 
 use bevy_ecs::prelude::Resource;
 use close2gl_core::{
-    Camera, Close2glFrame, Mesh, RasterGeometry, RasterVertex, Rasterizer, RenderSettings,
-    StageCounts, Viewport,
+    Camera, Close2glFrame, Fates, Mesh, RasterGeometry, RasterVertex, Rasterizer, RenderSettings,
+    TriangleFate, Viewport,
 };
 use glam::Vec3;
+use rayon::iter::Either;
 use rayon::prelude::*;
 
+use crate::Tally;
 use crate::clip::Outcode;
 use crate::matrices::ClipTransform;
 use crate::stage::{CUT, Emit, RasterEmit, RasterOut, Stage, corner, process, to_window_depth};
-use crate::tally;
 
 /// Vertices and triangles per parallel task: big enough to amortise scheduling, small enough to
 /// balance two cores when one side of the model is clipped away.
@@ -27,7 +28,7 @@ const TRIANGLE_CHUNK: usize = 16 * 1024;
 struct Chunk {
     vertices: Vec<[f32; 2]>,
     raster: RasterOut,
-    counts: StageCounts,
+    counts: Tally,
 }
 
 /// The reusable buffers of the fast path.
@@ -43,7 +44,8 @@ pub struct FastPipeline {
 }
 
 impl FastPipeline {
-    /// Fills `frame` with exactly what [`crate::textbook::run`] returns.
+    /// Fills `frame` and `fates` with exactly what [`crate::textbook::run_recording`] returns
+    /// (each triangle's fate only when `fates.record` is set).
     pub fn run(
         &mut self,
         mesh: &Mesh,
@@ -51,6 +53,7 @@ impl FastPipeline {
         settings: &RenderSettings,
         viewport: Viewport,
         frame: &mut Close2glFrame,
+        fates: &mut Fates,
     ) {
         let transform = ClipTransform::new(camera);
         let stage = Stage::new(settings, viewport);
@@ -62,18 +65,33 @@ impl FastPipeline {
             frame.raster.textured = !mesh.uvs.is_empty();
         }
 
-        // Clip, divide, map, cull and emit the triangles, chunk by chunk.
+        // Clip, divide, map, cull and emit the triangles, chunk by chunk; each chunk writes its
+        // triangles' fates into its own slice of `fates` when they are recorded.
         let (positions, codes, window) = (&mesh.positions, &self.codes, &self.window);
         let tasks = mesh.triangles.len().div_ceil(TRIANGLE_CHUNK);
         self.chunks.resize_with(tasks, Chunk::default);
+        let recorded = if fates.record {
+            mesh.triangles.len()
+        } else {
+            0
+        };
+        fates.triangles.resize(recorded, TriangleFate::default());
+        let fate_slices = match fates.record {
+            true => Either::Left(fates.triangles.par_chunks_mut(TRIANGLE_CHUNK)),
+            false => Either::Right((0..tasks).into_par_iter().map(|_| <&mut [_]>::default())),
+        };
         self.chunks
             .par_iter_mut()
             .zip(mesh.triangles.par_chunks(TRIANGLE_CHUNK))
-            .for_each(|(chunk, triangles)| {
+            .zip(fate_slices)
+            .enumerate()
+            .for_each(|(task, ((chunk, triangles), fates))| {
                 chunk.vertices.clear();
                 chunk.raster.primitives.clear();
                 chunk.raster.cuts.clear();
+                chunk.raster.triangles.clear();
                 let corners = Corners {
+                    first: (task * TRIANGLE_CHUNK) as u32,
                     positions,
                     codes,
                     window,
@@ -84,9 +102,9 @@ impl FastPipeline {
                         window: &mut chunk.vertices,
                         raster: &mut chunk.raster,
                     };
-                    corners.process(triangles, &stage, &mut out)
+                    corners.process(triangles, &stage, &mut out, fates)
                 } else {
-                    corners.process(triangles, &stage, &mut chunk.vertices)
+                    corners.process(triangles, &stage, &mut chunk.vertices, fates)
                 };
             });
 
@@ -103,10 +121,14 @@ impl FastPipeline {
             frame.raster.vertices.clear();
             frame.raster.cuts.clear();
             frame.raster.primitives.clear();
+            frame.raster.triangles.clear();
         }
         frame.topology = stage.topology();
         frame.viewport = viewport;
-        frame.counts = total_counts(chunks);
+        let mut total = Tally::default();
+        chunks.iter().for_each(|chunk| total.merge(&chunk.counts));
+        frame.counts = total.stage;
+        fates.counts = total.fates;
     }
 
     /// Transforms every unique vertex once, into its outcode and window position.
@@ -126,19 +148,6 @@ impl FastPipeline {
     }
 }
 
-/// The chunks' counts added up.
-fn total_counts(chunks: &[Chunk]) -> StageCounts {
-    let mut counts = StageCounts::default();
-    for chunk in chunks {
-        counts.triangles_in += chunk.counts.triangles_in;
-        counts.clipped += chunk.counts.clipped;
-        counts.culled += chunk.counts.culled;
-        counts.drawn += chunk.counts.drawn;
-        counts.output_primitives += chunk.counts.output_primitives;
-    }
-    counts
-}
-
 /// Copies the chunks' vertices, in order, into `out` (exactly as long as all of them), splitting
 /// the work in halves across threads.
 fn join(chunks: &[Chunk], out: &mut [[f32; 2]]) {
@@ -156,8 +165,9 @@ fn join(chunks: &[Chunk], out: &mut [[f32; 2]]) {
 }
 
 /// What the triangle loop reads per corner: positions (for the few triangles clipping cuts),
-/// outcodes and window positions.
+/// outcodes and window positions; and the mesh index of its first triangle.
 struct Corners<'a> {
+    first: u32,
     positions: &'a [Vec3],
     codes: &'a [Outcode],
     window: &'a [[f32; 2]],
@@ -165,11 +175,19 @@ struct Corners<'a> {
 }
 
 impl Corners<'_> {
-    /// Clip, divide, map, cull and emit `triangles` into `out`; their counts.
+    /// Clip, divide, map, cull and emit `triangles` into `out`, and their fates into `fates`
+    /// (one per triangle, or empty when not recorded, when the rasterizer is also told each
+    /// primitive's mesh triangle); their counts.
     #[inline(always)]
-    fn process(&self, triangles: &[[u32; 3]], stage: &Stage, out: &mut impl Emit) -> StageCounts {
-        let mut counts = StageCounts::default();
-        for triangle in triangles {
+    fn process(
+        &self,
+        triangles: &[[u32; 3]],
+        stage: &Stage,
+        out: &mut impl Emit,
+        fates: &mut [TriangleFate],
+    ) -> Tally {
+        let mut counts = Tally::default();
+        for (i, triangle) in triangles.iter().enumerate() {
             let [a, b, c] = triangle.map(|i| i as usize);
             let fate = process(
                 *triangle,
@@ -179,7 +197,16 @@ impl Corners<'_> {
                 stage,
                 out,
             );
-            tally(&mut counts, fate);
+            counts.add(&fate);
+            if let Some(slot) = fates.get_mut(i) {
+                *slot = fate.fate;
+                if let Some(raster) = out.raster() {
+                    let index = self.first + i as u32;
+                    raster
+                        .triangles
+                        .extend(std::iter::repeat_n(index, fate.primitives));
+                }
+            }
         }
         counts
     }
@@ -218,9 +245,11 @@ fn raster_vertices(
 fn join_raster(chunks: &[Chunk], out: &mut RasterGeometry) {
     out.cuts.clear();
     out.primitives.clear();
+    out.triangles.clear();
     let mut base = out.vertices.len() as u32;
     for chunk in chunks {
         out.cuts.extend_from_slice(&chunk.raster.cuts);
+        out.triangles.extend_from_slice(&chunk.raster.triangles);
         out.primitives
             .extend(chunk.raster.primitives.iter().map(|&i| match i & CUT {
                 0 => i,

@@ -3,11 +3,15 @@
 //! the perspective division, backface culling, and the `Close2glPlugin` whose system reads the
 //! `Camera` and `Mesh` components and the `RenderSettings` and `Viewport` resources (owned by the
 //! core's `SettingsPlugin`), and writes the `Close2glFrame` resource, which it owns: the 2D vertex
-//! buffer in window pixels (which the GPU only draws) and the stage counts. It depends on no GPU,
-//! window or UI crate; glam only holds the numbers.
+//! buffer in window pixels (which the GPU only draws) and the stage counts. It also owns the
+//! core's `Fates` resource: every frame it writes each fate's count, and, while `Fates::record`
+//! is set, each mesh triangle's fate (the software rasterizer then adds `no_pixels` and
+//! `hidden`). [`journey`] follows one triangle through every stage with its numbers, for the
+//! inspector. It depends on no GPU, window or UI crate; glam only holds the numbers.
 
 pub mod clip;
 pub mod fast;
+pub mod journey;
 pub mod matrices;
 pub mod stage;
 pub mod textbook;
@@ -16,28 +20,31 @@ use std::time::Instant;
 
 use bevy_ecs::prelude::*;
 use close2gl_core::{
-    App, Camera, Close2glFrame, FrameSet, Mesh, Plugin, PostUpdate, RenderSettings, StageCounts,
-    Viewport,
+    App, Camera, Close2glFrame, FateCounts, FateKind, Fates, FrameSet, Mesh, Plugin, PostUpdate,
+    RenderSettings, StageCounts, Viewport,
 };
 
 pub use fast::FastPipeline;
 use stage::Fate;
 
 /// Runs the Close2GL pipeline in `PostUpdate` (`FrameSet::Close2gl`), after the camera has moved.
-/// It owns `FastPipeline` and `Close2glFrame`; the core's `SettingsPlugin` provides the rest.
+/// It owns `FastPipeline`, `Close2glFrame` and `Fates`; the core's `SettingsPlugin` provides the
+/// rest.
 pub struct Close2glPlugin;
 
 impl Plugin for Close2glPlugin {
     fn build(&self, app: &mut App) {
         app.init_resource::<FastPipeline>()
             .init_resource::<Close2glFrame>()
+            .init_resource::<Fates>()
             .requires::<RenderSettings>("Close2glPlugin", "SettingsPlugin")
             .requires::<Viewport>("Close2glPlugin", "SettingsPlugin")
             .add_systems(PostUpdate, close2gl_system.in_set(FrameSet::Close2gl));
     }
 }
 
-/// Recomputes the 2D buffer when the camera, the mesh, the settings or the viewport changed.
+/// Recomputes the 2D buffer and the fates when the camera, the mesh, the settings or the
+/// viewport changed, or when someone started or stopped recording fates.
 pub fn close2gl_system(
     camera: Single<Ref<Camera>>,
     mesh: Single<Ref<Mesh>>,
@@ -45,26 +52,54 @@ pub fn close2gl_system(
     viewport: Res<Viewport>,
     mut pipeline: ResMut<FastPipeline>,
     mut frame: ResMut<Close2glFrame>,
+    mut fates: ResMut<Fates>,
 ) {
     let changed =
         camera.is_changed() || mesh.is_changed() || settings.is_changed() || viewport.is_changed();
-    if !changed {
+    let recorded = match fates.record {
+        true => fates.triangles.len() == mesh.triangles.len(),
+        false => fates.triangles.is_empty(),
+    };
+    if !changed && recorded {
         return;
     }
     let start = Instant::now();
-    pipeline.run(&mesh, &camera, &settings, *viewport, &mut frame);
+    pipeline.run(&mesh, &camera, &settings, *viewport, &mut frame, &mut fates);
     frame.stage_ms = start.elapsed().as_secs_f64() * 1e3;
 }
 
-/// Adds one triangle's fate to the counts.
-fn tally(counts: &mut StageCounts, fate: Fate) {
-    counts.triangles_in += 1;
-    match fate {
-        Fate::Clipped => counts.clipped += 1,
-        Fate::Culled => counts.culled += 1,
-        Fate::Drawn(primitives) => {
-            counts.drawn += 1;
-            counts.output_primitives += primitives;
+/// The stage counts and the fate counts of some triangles.
+#[derive(Clone, Copy, Debug, Default)]
+struct Tally {
+    stage: StageCounts,
+    fates: FateCounts,
+}
+
+impl Tally {
+    /// Adds one triangle's fate.
+    #[inline(always)]
+    fn add(&mut self, fate: &Fate) {
+        let counts = &mut self.stage;
+        counts.triangles_in += 1;
+        self.fates.add(fate.fate.kind);
+        match fate.fate.kind {
+            FateKind::Clipped => counts.clipped += 1,
+            FateKind::Culled | FateKind::ZeroArea => counts.culled += 1,
+            _ => {
+                counts.drawn += 1;
+                counts.output_primitives += fate.primitives;
+            }
         }
+    }
+
+    /// Adds another tally (a parallel chunk's).
+    fn merge(&mut self, other: &Tally) {
+        let (counts, more) = (&mut self.stage, &other.stage);
+        counts.triangles_in += more.triangles_in;
+        counts.clipped += more.clipped;
+        counts.culled += more.culled;
+        counts.drawn += more.drawn;
+        counts.output_primitives += more.output_primitives;
+        self.fates.merge(&other.fates);
     }
 }

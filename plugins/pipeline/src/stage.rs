@@ -4,7 +4,8 @@
 
 use close2gl_core::limits::has_no_area;
 use close2gl_core::{
-    Clipping, CutVertex, FrontFace, RenderMode, RenderSettings, Topology, Viewport,
+    Clipping, CutVertex, FateKind, FrontFace, RenderMode, RenderSettings, Topology, TriangleFate,
+    Viewport,
 };
 use glam::{Mat4, Vec4};
 
@@ -66,25 +67,80 @@ pub fn to_window_depth(clip: Vec4, viewport: &Mat4) -> [f32; 4] {
     [window.x, window.y, window.z, inv_w]
 }
 
-/// What happened to a triangle.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Fate {
-    Clipped,
-    Culled,
-    /// Drawn as this many points, lines or triangles.
-    Drawn(usize),
+/// What happened to a triangle, and how many points, lines or triangles it was drawn as (none
+/// unless its fate is drawn or cut).
+#[derive(Clone, Copy, Debug)]
+pub struct Fate {
+    pub fate: TriangleFate,
+    pub primitives: usize,
+}
+
+impl Fate {
+    /// Drawn, whole (`planes` = 0) or cut by `planes`, as `primitives` primitives.
+    fn drawn(planes: Outcode, signed_area: f32, primitives: usize) -> Self {
+        let kind = if planes == 0 {
+            FateKind::Drawn
+        } else {
+            FateKind::Cut
+        };
+        let fate = TriangleFate {
+            kind,
+            planes,
+            behind_eye: false,
+            signed_area,
+        };
+        Fate { fate, primitives }
+    }
+
+    /// Culled as a back face or as having no area.
+    fn culled(kind: FateKind, planes: Outcode, signed_area: f32) -> Self {
+        let fate = TriangleFate {
+            kind,
+            planes,
+            behind_eye: false,
+            signed_area,
+        };
+        Fate {
+            fate,
+            primitives: 0,
+        }
+    }
+
+    /// Removed whole by clipping (the planes it lay outside of).
+    fn clipped(planes: Outcode, behind_eye: bool) -> Self {
+        let fate = TriangleFate {
+            kind: FateKind::Clipped,
+            planes,
+            behind_eye,
+            signed_area: f32::NAN,
+        };
+        Fate {
+            fate,
+            primitives: 0,
+        }
+    }
+}
+
+/// Whether every corner is at or behind the eye (w <= 0), where no division means anything.
+/// Only asked when every corner is outside the near plane (`outside_all`'s near bit), which
+/// w <= 0 implies, so the clip coordinates are rarely needed.
+#[inline(always)]
+fn behind_eye(outside_all: Outcode, clip: impl FnOnce() -> [Vec4; 3]) -> bool {
+    outside_all & NEAR != 0 && clip().iter().all(|p| p.w <= 0.0)
 }
 
 /// An index in [`RasterOut::primitives`] with this bit set names a vertex of `cuts` (the bit
 /// cleared), not a mesh vertex. The fast path rebases these when it joins its chunks.
 pub const CUT: u32 = 1 << 31;
 
-/// The software rasterizer's share of the output: the primitives as vertex indices, and the
-/// vertices that clipping made.
+/// The software rasterizer's share of the output: the primitives as vertex indices, the
+/// vertices that clipping made, and (only while fates are recorded) each primitive's mesh
+/// triangle.
 #[derive(Debug, Default)]
 pub struct RasterOut {
     pub primitives: Vec<u32>,
     pub cuts: Vec<CutVertex>,
+    pub triangles: Vec<u32>,
 }
 
 /// Where a triangle's primitives go: the 2D buffer alone (a `Vec` of window positions), or with
@@ -143,14 +199,18 @@ pub fn process(
     let outside_any = codes[0] | codes[1] | codes[2];
     if outside_any == 0 {
         // Trivially inside: the corners' window positions are already known.
-        if is_culled(&window, stage.culling) {
-            return Fate::Culled;
+        let (area, culled) = face(&window, stage.culling);
+        if let Some(kind) = culled {
+            return Fate::culled(kind, 0, area);
         }
-        return Fate::Drawn(emit_inside(&window, corners, stage.mode, out));
+        return Fate::drawn(0, area, emit_inside(&window, corners, stage.mode, out));
     }
     let outside_all = codes[0] & codes[1] & codes[2];
-    if stage.clipping == Clipping::Simple || outside_all != 0 {
-        return Fate::Clipped;
+    if stage.clipping == Clipping::Simple {
+        return Fate::clipped(outside_any, behind_eye(outside_all, clip));
+    }
+    if outside_all != 0 {
+        return Fate::clipped(outside_all, behind_eye(outside_all, clip));
     }
     cut(corners, clip(), outside_any, stage, out)
 }
@@ -174,14 +234,15 @@ fn cut(
     }
     let piece_window = &piece_window[..piece.len];
     if piece_window.is_empty() || piece_window.iter().flatten().any(|x| !x.is_finite()) {
-        return Fate::Clipped;
+        return Fate::clipped(outside_any, false);
     }
-    if is_culled(piece_window, stage.culling) {
-        return Fate::Culled;
+    let (area, culled) = face(piece_window, stage.culling);
+    if let Some(kind) = culled {
+        return Fate::culled(kind, outside_any, area);
     }
     if stage.mode == RenderMode::Points {
         let points = clip_polygon(&triangle, outside_any & NEAR);
-        return Fate::Drawn(emit_points(&points, corners, stage, out));
+        return Fate::drawn(outside_any, area, emit_points(&points, corners, stage, out));
     }
     let ids = push_cuts(&piece, corners, stage, out);
     let before = out.window().len();
@@ -195,14 +256,14 @@ fn cut(
         for i in 1..piece.len - 1 {
             [0, i, i + 1].into_iter().for_each(&mut emit);
         }
-        return Fate::Drawn(piece.len - 2);
+        return Fate::drawn(outside_any, area, piece.len - 2);
     }
     // A GPU draws a clipped polygon in line mode as what is left of the triangle's own edges;
     // the edges clipping added along the planes are not drawn.
     for i in (0..piece.len).filter(|&i| piece.original[i]) {
         [i, (i + 1) % piece.len].into_iter().for_each(&mut emit);
     }
-    Fate::Drawn((out.window().len() - before) / 2)
+    Fate::drawn(outside_any, area, (out.window().len() - before) / 2)
 }
 
 /// With the rasterizer, every vertex of a cut piece becomes a [`CutVertex`]; returns their
@@ -248,20 +309,31 @@ fn longest_edge_squared(window: &[[f32; 2]]) -> f32 {
     longest
 }
 
+/// Backface culling: twice the polygon's signed window area, and, when culling is on and
+/// removes it, why: a back face, or no area to speak of (a back face too, as in OpenGL; see
+/// `ZERO_AREA`, which the reference view uses). A sliver's sign is rounding, so it is told
+/// apart by its size whichever way it faces.
 #[inline(always)]
-fn is_culled(window: &[[f32; 2]], culling: Option<FrontFace>) -> bool {
-    let Some(front) = culling else { return false };
+pub fn face(window: &[[f32; 2]], culling: Option<FrontFace>) -> (f32, Option<FateKind>) {
     let area = match window {
         [a, b, c] => (b[0] - a[0]) * (c[1] - a[1]) - (c[0] - a[0]) * (b[1] - a[1]),
         polygon => signed_area(polygon),
+    };
+    let Some(front) = culling else {
+        return (area, None);
     };
     let front_facing = match front {
         FrontFace::Ccw => area < 0.0,
         FrontFace::Cw => area > 0.0,
     };
-    // Only front faces need the size check: most back faces are culled without it. A polygon
-    // with no area is a back face, as in OpenGL (see `ZERO_AREA`, which the reference view uses).
-    !front_facing || has_no_area(area, longest_edge_squared(window))
+    let culled = if has_no_area(area, longest_edge_squared(window)) {
+        Some(FateKind::ZeroArea)
+    } else if !front_facing {
+        Some(FateKind::Culled)
+    } else {
+        None
+    };
+    (area, culled)
 }
 
 /// The triangle itself, its three edges as lines, or its three corners as points. The solid
@@ -329,11 +401,12 @@ mod tests {
         let sliver = [[10.0, 10.0], [60.0, 40.0], [60.0, 40.0 + 1e-5]];
         let reversed = [sliver[0], sliver[2], sliver[1]];
         for front in [FrontFace::Ccw, FrontFace::Cw] {
-            assert!(is_culled(&sliver, Some(front)));
-            assert!(is_culled(&reversed, Some(front)));
+            assert_eq!(face(&sliver, Some(front)).1, Some(FateKind::ZeroArea));
+            assert_eq!(face(&reversed, Some(front)).1, Some(FateKind::ZeroArea));
         }
-        assert!(
-            !is_culled(&sliver, None),
+        assert_eq!(
+            face(&sliver, None).1,
+            None,
             "without culling every triangle is drawn"
         );
     }
@@ -343,9 +416,7 @@ mod tests {
         // 1 pixel tall over 100 pixels long: thin, but a triangle any rasteriser can fill.
         let thin = [[0.0, 0.0], [100.0, 0.0], [50.0, 1.0]];
         let reversed = [thin[0], thin[2], thin[1]];
-        assert_ne!(
-            is_culled(&thin, Some(FrontFace::Ccw)),
-            is_culled(&reversed, Some(FrontFace::Ccw))
-        );
+        assert_eq!(face(&thin, Some(FrontFace::Ccw)).1, Some(FateKind::Culled));
+        assert_eq!(face(&reversed, Some(FrontFace::Ccw)).1, None);
     }
 }

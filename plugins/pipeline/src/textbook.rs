@@ -2,11 +2,11 @@
 //! send it down the stage. Slow (shared vertices are transformed once per triangle) and easy to
 //! check; the fast path must produce exactly its output.
 
-use close2gl_core::{Camera, Close2glFrame, Mesh, RenderSettings, Viewport};
+use close2gl_core::{Camera, Close2glFrame, Fates, Mesh, RenderSettings, Viewport};
 
+use crate::Tally;
 use crate::matrices::ClipTransform;
 use crate::stage::{Stage, corner, process};
-use crate::tally;
 
 /// The 2D buffer and counts for this camera, mesh, settings and viewport, in a new frame (the
 /// fast path reuses one instead).
@@ -16,6 +16,16 @@ pub fn run(
     settings: &RenderSettings,
     viewport: Viewport,
 ) -> Close2glFrame {
+    run_recording(mesh, camera, settings, viewport).0
+}
+
+/// [`run`], and every triangle's fate, recorded.
+pub fn run_recording(
+    mesh: &Mesh,
+    camera: &Camera,
+    settings: &RenderSettings,
+    viewport: Viewport,
+) -> (Close2glFrame, Fates) {
     let transform = ClipTransform::new(camera);
     let stage = Stage::new(settings, viewport);
     let mut frame = Close2glFrame {
@@ -23,6 +33,11 @@ pub fn run(
         viewport,
         ..Close2glFrame::default()
     };
+    let mut fates = Fates {
+        record: true,
+        ..Fates::default()
+    };
+    let mut counts = Tally::default();
     for triangle in &mesh.triangles {
         let clip = triangle.map(|i| transform.apply(mesh.positions[i as usize]));
         let corners = clip.map(|c| corner(c, &stage));
@@ -36,7 +51,10 @@ pub fn run(
             &stage,
             &mut frame.vertices,
         );
-        tally(&mut frame.counts, fate);
+        counts.add(&fate);
+        fates.triangles.push(fate.fate);
     }
-    frame
+    frame.counts = counts.stage;
+    fates.counts = counts.fates;
+    (frame, fates)
 }

@@ -224,7 +224,14 @@ fn the_counts_follow_the_assignments_rules_on_random_models_and_cameras() {
         let settings = random_settings(&mut random);
         let viewport = viewports[case % 2];
 
-        pipeline.run(&mesh, &camera, &settings, viewport, &mut frame);
+        pipeline.run(
+            &mesh,
+            &camera,
+            &settings,
+            viewport,
+            &mut frame,
+            &mut Default::default(),
+        );
         let mut got = frame.counts;
         got.output_primitives = 0;
         let expected = counts_by_the_rules(&stored, &camera, &settings, viewport);

@@ -42,7 +42,14 @@ fn a_triangle_near_f32_limits_clips_without_overrunning_the_polygon() {
                 ..RenderSettings::default()
             };
             let mut frame = Close2glFrame::default();
-            FastPipeline::default().run(&mesh, &camera, &settings, viewport, &mut frame);
+            FastPipeline::default().run(
+                &mesh,
+                &camera,
+                &settings,
+                viewport,
+                &mut frame,
+                &mut Default::default(),
+            );
             let textbook = textbook::run(&mesh, &camera, &settings, viewport);
             assert_eq!(
                 frame.counts, textbook.counts,

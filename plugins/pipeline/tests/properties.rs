@@ -4,7 +4,7 @@
 
 use close2gl_core::glam::Vec3;
 use close2gl_core::{
-    Camera, Clipping, Close2glFrame, FrontFace, Mesh, RenderMode, RenderSettings, Viewport,
+    Camera, Clipping, Close2glFrame, Fates, FrontFace, Mesh, RenderMode, RenderSettings, Viewport,
 };
 use close2gl_pipeline::{FastPipeline, textbook};
 use proptest::prelude::*;
@@ -111,16 +111,92 @@ proptest! {
     }
 
     #[test]
-    fn the_fast_path_writes_the_textbook_buffer(
+    fn the_fast_path_writes_the_textbook_buffer_and_fates(
         mesh in mesh(200), camera in camera(), settings in settings(), viewport in viewport(), simple in any::<bool>(),
     ) {
         let settings = RenderSettings {
             clipping: if simple { Clipping::Simple } else { Clipping::Full },
             ..settings
         };
-        let slow = textbook::run(&mesh, &camera, &settings, viewport);
+        let (slow, slow_fates) = textbook::run_recording(&mesh, &camera, &settings, viewport);
         let mut fast = Close2glFrame::default();
-        FastPipeline::default().run(&mesh, &camera, &settings, viewport, &mut fast);
+        let mut fates = Fates { record: true, ..Fates::default() };
+        FastPipeline::default().run(&mesh, &camera, &settings, viewport, &mut fast, &mut fates);
         prop_assert_eq!(slow, fast);
+        prop_assert_eq!(slow_fates.counts, fates.counts);
+        // Debug text, so that the NaN areas of clipped triangles compare equal.
+        prop_assert_eq!(format!("{:?}", slow_fates.triangles), format!("{:?}", fates.triangles));
     }
+}
+
+/// A mesh big enough for several of the fast path's parallel chunks: each chunk writes its own
+/// slice of the fates, and they must line up with the mesh's triangles.
+#[test]
+fn the_fast_paths_chunks_write_their_fates_in_mesh_order() {
+    let n = 160u32;
+    let positions: Vec<Vec3> = (0..=n)
+        .flat_map(|i| {
+            (0..=n).map(move |j| {
+                Vec3::new(
+                    i as f32 / 8.0 - 10.0,
+                    j as f32 / 8.0 - 10.0,
+                    (i * j % 7) as f32 * 0.3,
+                )
+            })
+        })
+        .collect();
+    let at = |i: u32, j: u32| i * (n + 1) + j;
+    let triangles = (0..n)
+        .flat_map(|i| {
+            (0..n).flat_map(move |j| {
+                [
+                    [at(i, j), at(i + 1, j), at(i + 1, j + 1)],
+                    [at(i, j), at(i, j + 1), at(i + 1, j + 1)],
+                ]
+            })
+        })
+        .collect();
+    let mesh = Mesh {
+        name: "grid".into(),
+        normals: vec![Vec3::Z; positions.len()],
+        positions,
+        uvs: Vec::new(),
+        triangles,
+    };
+    let camera = Camera::default()
+        .looking_at(
+            Vec3::new(2.0, -3.0, 6.0),
+            Vec3::new(-1.0, 0.0, 0.0),
+            Vec3::Y,
+        )
+        .expect("a valid pose");
+    let viewport = Viewport {
+        width: 400,
+        height: 300,
+    };
+    let settings = RenderSettings::default();
+    let (_, slow) = textbook::run_recording(&mesh, &camera, &settings, viewport);
+    let mut fates = Fates {
+        record: true,
+        ..Fates::default()
+    };
+    FastPipeline::default().run(
+        &mesh,
+        &camera,
+        &settings,
+        viewport,
+        &mut Close2glFrame::default(),
+        &mut fates,
+    );
+    assert!(mesh.triangles.len() > 40_000);
+    let c = fates.counts;
+    assert!(
+        c.drawn > 0 && c.cut > 0 && c.clipped > 0 && c.culled > 0,
+        "{c:?}"
+    );
+    assert_eq!(slow.counts, fates.counts);
+    assert_eq!(
+        format!("{:?}", slow.triangles),
+        format!("{:?}", fates.triangles)
+    );
 }

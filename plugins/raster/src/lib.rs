@@ -7,12 +7,17 @@
 //! pipeline, when `RenderSettings::close2gl_raster` is `software`; it reads `Close2glFrame`
 //! (the Close2GL plugin's), `Camera`, `RenderSettings` and `Lighting` (the settings plugin's),
 //! and the model's `Texture` when there is one. Textures are sampled by its own code, from its
-//! own mipmap chain (nearest, bilinear, trilinear). Like the
-//! pipeline, it knows no GPU, window or UI.
+//! own mipmap chain (nearest, bilinear, trilinear). While `Fates::record` is set it also writes
+//! the `Fates` resource (the pipeline's): the drawn triangles that covered no pixel centre or
+//! won none become `no_pixels` and `hidden`, and it keeps who drew each pixel
+//! ([`SoftwareRasterizer::owner`]) for the inspector's probe. Like the pipeline, it knows no
+//! GPU, window or UI.
 
 mod bin;
+mod fates;
 mod lanes;
 mod primitives;
+pub mod probe;
 mod rasterizer;
 mod setup;
 pub mod shading;
@@ -24,8 +29,8 @@ use std::time::Instant;
 
 use bevy_ecs::prelude::*;
 use close2gl_core::{
-    App, Camera, Close2glFrame, FrameSet, Lighting, Plugin, PostUpdate, Rasterizer, RenderSettings,
-    SoftwareFrame, Texture,
+    App, Camera, Close2glFrame, Fates, FrameSet, Lighting, Plugin, PostUpdate, Rasterizer,
+    RenderSettings, SoftwareFrame, Texture,
 };
 
 pub use rasterizer::SoftwareRasterizer;
@@ -40,6 +45,7 @@ impl Plugin for RasterPlugin {
             .requires::<Close2glFrame>("RasterPlugin", "Close2glPlugin")
             .requires::<RenderSettings>("RasterPlugin", "SettingsPlugin")
             .requires::<Lighting>("RasterPlugin", "SettingsPlugin")
+            .requires::<Fates>("RasterPlugin", "Close2glPlugin")
             .add_systems(
                 PostUpdate,
                 raster_system
@@ -49,8 +55,8 @@ impl Plugin for RasterPlugin {
     }
 }
 
-/// Draws a new image when the pipeline's output or the lighting changed (and the software
-/// rasterizer is the one asked for).
+/// Draws a new image (and, while recording, the rasterizer's fates) when the pipeline's output
+/// or the lighting changed (and the software rasterizer is the one asked for).
 pub fn raster_system(
     camera: Single<&Camera>,
     frame: Res<Close2glFrame>,
@@ -58,7 +64,7 @@ pub fn raster_system(
     lighting: Res<Lighting>,
     texture: Option<Res<Texture>>,
     mut rasterizer: ResMut<SoftwareRasterizer>,
-    mut image: ResMut<SoftwareFrame>,
+    (mut image, mut fates): (ResMut<SoftwareFrame>, ResMut<Fates>),
 ) {
     let wanted = settings.close2gl_raster == Rasterizer::Software;
     let new_texture = texture.as_ref().is_some_and(|t| t.is_changed());
@@ -68,7 +74,14 @@ pub fn raster_system(
     }
     let start = Instant::now();
     let texture = texture.as_deref();
-    rasterizer.draw(&frame, &camera, &settings, &lighting, texture, &mut image);
+    // Fates are written only while recorded; otherwise nobody needs telling.
+    let fates = match fates.record {
+        true => fates.into_inner(),
+        false => fates.bypass_change_detection(),
+    };
+    rasterizer.draw(
+        &frame, &camera, &settings, &lighting, texture, &mut image, fates,
+    );
     image.raster_ms = start.elapsed().as_secs_f64() * 1e3;
     image.generation += 1;
 }

@@ -1,26 +1,29 @@
 //! One software frame, top to bottom: the vertex stage (varyings for each vertex), setup (each
 //! primitive to triangles with edges and planes), binning into tiles, the tiles drawn in
-//! parallel (clear, rasterize, depth test, shade), and the tiles copied out as an image.
+//! parallel (clear, rasterize, depth test, shade), and the tiles copied out as an image; while
+//! fates are recorded, which triangles covered no pixel centre and which won none.
 
 use bevy_ecs::prelude::Resource;
 use close2gl_core::{
-    Camera, Close2glFrame, Lighting, RenderSettings, Shading, SoftwareFrame, Texture,
+    Camera, Close2glFrame, Fates, Lighting, RenderSettings, Shading, SoftwareFrame, Texture,
     TextureFilter, Topology,
 };
 use close2gl_pipeline::matrices::ClipTransform;
 use glam::Vec3;
+use rayon::iter::Either;
 use rayon::prelude::*;
 
 use crate::bin::Bins;
+use crate::fates::Rasterized;
 use crate::primitives::{self, SetupParams, Vertex};
 use crate::setup::{Triangle, Used, VARYINGS};
 use crate::shading::{
     Colour, Flat, Gouraud, Light, Phong, PixelShader, Shaded, Textured, Untextured, pack,
     varyings_used, vertex_varyings,
 };
-use crate::target::{TILE_PIXELS, Target};
+use crate::target::{NO_TRIANGLE, TILE_PIXELS, Target};
 use crate::texture::{Bilinear, Filter, Mips, Nearest, Trilinear};
-use crate::tile::draw_tile;
+use crate::tile::{TileBuffers, draw_tile};
 
 /// Primitives set up per parallel task.
 const SETUP_CHUNK: usize = 4096;
@@ -33,6 +36,8 @@ pub struct SoftwareRasterizer {
     bins: Bins,
     target: Target,
     mips: Mips,
+    /// Scratch space for recording fates.
+    flags: Vec<u8>,
 }
 
 /// A frame's constants.
@@ -47,7 +52,11 @@ struct Frame<'a> {
 impl SoftwareRasterizer {
     /// Draws the pipeline's output `geometry` (which must have been made with the software
     /// rasterizer on, for `camera`) into `out`, textured with `texture` when there is one, the
-    /// settings ask for it and the mesh has texture coordinates.
+    /// settings ask for it and the mesh has texture coordinates. While `fates.record` is set
+    /// (and `fates` holds the pipeline's fates for `geometry`), also notes who drew each pixel
+    /// ([`Self::owner`]) and moves the drawn triangles that covered no pixel centre or won
+    /// none to `no_pixels` and `hidden`.
+    #[allow(clippy::too_many_arguments)]
     pub fn draw(
         &mut self,
         geometry: &Close2glFrame,
@@ -56,6 +65,7 @@ impl SoftwareRasterizer {
         lighting: &Lighting,
         texture: Option<&Texture>,
         out: &mut SoftwareFrame,
+        fates: &mut Fates,
     ) {
         let light_eye = ClipTransform::new(camera).eye(lighting.light_position);
         if let Some(texture) = texture {
@@ -68,7 +78,7 @@ impl SoftwareRasterizer {
             textured: settings.texture && geometry.raster.textured && texture.is_some(),
         };
         let size = geometry.viewport;
-        self.target.resize(size.width, size.height);
+        self.target.resize(size.width, size.height, fates.record);
         self.vertex_stage(&frame);
         self.setup(&frame);
         self.bins.fill(self.target.grid, &self.triangles);
@@ -86,6 +96,26 @@ impl SoftwareRasterizer {
         }
         self.target.resolve(&mut out.pixels);
         (out.width, out.height) = (size.width, size.height);
+        if fates.record {
+            let rasterized = Rasterized {
+                triangles: &self.triangles,
+                per_primitive: triangles_per_primitive(geometry.topology),
+                mesh_triangles: &geometry.raster.triangles,
+            };
+            rasterized.record(&mut self.target.ids, &mut self.flags, fates);
+        }
+    }
+
+    /// The mesh triangle that drew pixel (x, y) (the depth test's winner) in the last frame
+    /// drawn while fates were recorded; None where no triangle drew, or when not recorded.
+    pub fn owner(&self, x: u32, y: u32) -> Option<u32> {
+        let id = *self.target.ids.get(self.target.index(x, y)?)?;
+        (id != NO_TRIANGLE).then_some(id)
+    }
+
+    /// The depth buffer at pixel (x, y) after the last frame (1 where nothing drew).
+    pub fn depth(&self, x: u32, y: u32) -> Option<f32> {
+        self.target.depth.get(self.target.index(x, y)?).copied()
     }
 
     /// Each vertex's window position and varyings: the mesh's vertices lit in parallel, then
@@ -146,11 +176,12 @@ impl SoftwareRasterizer {
                 textured: frame.textured,
             },
         };
-        let (per_primitive, triangles_per) = match geometry.topology {
-            Topology::Triangles => (3, 1),
-            Topology::Lines => (2, 2),
-            Topology::Points => (1, 2),
+        let per_primitive = match geometry.topology {
+            Topology::Triangles => 3,
+            Topology::Lines => 2,
+            Topology::Points => 1,
         };
+        let triangles_per = triangles_per_primitive(geometry.topology);
         let indices = &geometry.raster.primitives;
         let count = indices.len() / per_primitive;
         self.triangles
@@ -216,6 +247,14 @@ impl SoftwareRasterizer {
     }
 }
 
+/// How many triangles setup makes of each primitive: a line's and a point's rectangles are two.
+fn triangles_per_primitive(topology: Topology) -> usize {
+    match topology {
+        Topology::Triangles => 1,
+        Topology::Lines | Topology::Points => 2,
+    }
+}
+
 /// What every tile is drawn from, and into.
 struct Tiles<'a> {
     target: &'a mut Target,
@@ -233,26 +272,29 @@ impl Tiles<'_> {
         });
     }
 
-    /// Every tile, in parallel: cleared, then its bin drawn with `shader`.
+    /// Every tile, in parallel: cleared, then its bin drawn with `shader`. Each tile gets its
+    /// own piece of the id buffer, or an empty one when it is not recorded.
     fn draw<S: PixelShader>(self, shader: &S) {
         let grid = self.target.grid;
         let (bins, triangles, background) = (&self.bins.tiles, self.triangles, self.background);
+        let ids = match self.target.ids.is_empty() {
+            true => Either::Left(
+                (0..grid.tiles())
+                    .into_par_iter()
+                    .map(|_| <&mut [u32]>::default()),
+            ),
+            false => Either::Right(self.target.ids.par_chunks_mut(TILE_PIXELS)),
+        };
         self.target
             .color
             .par_chunks_mut(TILE_PIXELS)
             .zip(self.target.depth.par_chunks_mut(TILE_PIXELS))
+            .zip(ids)
             .enumerate()
-            .for_each(|(tile, (color, depth))| {
+            .for_each(|(tile, ((color, depth), ids))| {
                 let rect = grid.tile_rect(tile);
-                draw_tile(
-                    rect,
-                    color,
-                    depth,
-                    background,
-                    &bins[tile],
-                    triangles,
-                    shader,
-                );
+                let buffers = TileBuffers { color, depth, ids };
+                draw_tile(rect, buffers, background, &bins[tile], triangles, shader);
             });
     }
 }

@@ -64,6 +64,27 @@ impl Edge {
     }
 }
 
+impl Edge {
+    /// The edge function at the centre of pixel (x, y): the sample is inside when it is > 0.
+    pub(crate) fn at(&self, x: i32, y: i32) -> i64 {
+        self.c + self.dcdy * (y as i64 * FIXED_ONE) - self.dcdx * (x as i64 * FIXED_ONE)
+    }
+
+    /// The fill rule's share of `c`: 1 for a left or a horizontal top edge, else 0.
+    fn fill_rule_bias(&self) -> i64 {
+        (self.dcdx < 0 || (self.dcdx == 0 && self.dcdy > 0)) as i64
+    }
+}
+
+/// How a triangle's coverage meets one pixel centre.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Coverage {
+    Inside,
+    /// Exactly on an edge that the top-left rule gives to the neighbour across it.
+    LostToFillRule,
+    Outside,
+}
+
 fn clamp_i32(x: i64) -> i32 {
     x.clamp(i32::MIN as i64, i32::MAX as i64) as i32
 }
@@ -118,6 +139,35 @@ impl Triangle {
 
     pub(crate) fn is_empty(&self) -> bool {
         self.bbox[0] > self.bbox[2] || self.bbox[1] > self.bbox[3]
+    }
+
+    /// Whether the centre of pixel (x, y) is covered, by the same integer edge functions the
+    /// tiles solve for their runs.
+    pub(crate) fn coverage(&self, x: i32, y: i32) -> Coverage {
+        let [x0, y0, x1, y1] = self.bbox;
+        if self.is_empty() || x < x0 || x > x1 || y < y0 || y > y1 {
+            return Coverage::Outside;
+        }
+        let f = self.edges.map(|e| e.at(x, y));
+        if f.iter().all(|&f| f > 0) {
+            Coverage::Inside
+        } else if (0..3).all(|i| f[i] - self.edges[i].fill_rule_bias() >= 0) {
+            Coverage::LostToFillRule
+        } else {
+            Coverage::Outside
+        }
+    }
+
+    /// Whether its coverage reaches any pixel centre of the viewport: a row at a time, as the
+    /// tiles find their runs, stopping at the first row with one.
+    pub(crate) fn covers_any_centre(&self) -> bool {
+        let [x0, y0, x1, y1] = self.bbox;
+        (y0..=y1).any(|y| {
+            let spans = self.edges.map(|e| e.span(y));
+            let lo = spans.iter().map(|s| s.0).fold(x0, i32::max);
+            let hi = spans.iter().map(|s| s.1).fold(x1, i32::min);
+            lo <= hi
+        })
     }
 
     /// A plane's value at the centre of pixel (x, y).
@@ -343,6 +393,38 @@ mod tests {
             .map(|(i, c)| (i as i32 % size[0], i as i32 / size[0], *c))
             .collect();
         assert!(wrong.is_empty(), "pixels drawn other than once: {wrong:?}");
+    }
+
+    #[test]
+    fn a_single_centre_agrees_with_the_runs() {
+        // Every pixel the runs cover is Inside, every other one is not; a centre exactly on the
+        // shared diagonal is Inside one of the two halves and LostToFillRule in the other.
+        let size = [16, 16];
+        let halves = [
+            [corner(2.5, 1.5), corner(9.5, 1.5), corner(9.5, 8.5)],
+            [corner(2.5, 1.5), corner(9.5, 8.5), corner(2.5, 8.5)],
+        ]
+        .map(|c| setup(c, size, Used::default()));
+        for t in &halves {
+            assert!(t.covers_any_centre());
+            let runs = covered(t);
+            for (x, y) in (0..16).flat_map(|y| (0..16).map(move |x| (x, y))) {
+                let inside = t.coverage(x, y) == Coverage::Inside;
+                assert_eq!(inside, runs.contains(&(x, y)), "({x}, {y})");
+            }
+        }
+        let on_diagonal = halves.map(|t| t.coverage(5, 4));
+        assert!(on_diagonal.contains(&Coverage::Inside), "{on_diagonal:?}");
+        assert!(
+            on_diagonal.contains(&Coverage::LostToFillRule),
+            "{on_diagonal:?}"
+        );
+        let tiny = setup(
+            [corner(3.6, 3.6), corner(3.9, 3.6), corner(3.6, 3.9)],
+            size,
+            Used::default(),
+        );
+        assert!(!tiny.covers_any_centre(), "between centres");
     }
 
     #[test]

@@ -25,18 +25,25 @@ pub(crate) struct Grid {
     pub tiles_y: i32,
 }
 
-/// Tiled colour (RGBA8 packed) and depth (f32, the reference's Depth32Float).
+/// The id buffer's value where no triangle drew.
+pub(crate) const NO_TRIANGLE: u32 = u32::MAX;
+
+/// Tiled colour (RGBA8 packed) and depth (f32, the reference's Depth32Float); while fates are
+/// recorded, beside the depth buffer, which triangle drew each pixel last (the depth test's
+/// winner): first the index of its set-up triangle, then, once the frame is drawn, its mesh
+/// triangle.
 #[derive(Debug, Default)]
 pub(crate) struct Target {
     pub grid: Grid,
     pub color: Vec<u32>,
     pub depth: Vec<f32>,
+    pub ids: Vec<u32>,
 }
 
 impl Target {
-    /// Sizes the buffers for a viewport; keeps them (and allocates nothing) when the size is
-    /// the same as last frame's.
-    pub(crate) fn resize(&mut self, width: u32, height: u32) {
+    /// Sizes the buffers for a viewport, the id buffer only when `record` (empty otherwise);
+    /// keeps them (and allocates nothing) when the size is the same as last frame's.
+    pub(crate) fn resize(&mut self, width: u32, height: u32, record: bool) {
         let (width, height) = (width as i32, height as i32);
         self.grid = Grid {
             width,
@@ -47,6 +54,18 @@ impl Target {
         let pixels = self.grid.tiles() * TILE_PIXELS;
         self.color.resize(pixels, 0);
         self.depth.resize(pixels, 1.0);
+        self.ids
+            .resize(if record { pixels } else { 0 }, NO_TRIANGLE);
+    }
+
+    /// Where pixel (x, y) is stored, when it is inside the viewport.
+    pub(crate) fn index(&self, x: u32, y: u32) -> Option<usize> {
+        let (x, y) = (x as i32, y as i32);
+        if x >= self.grid.width || y >= self.grid.height {
+            return None;
+        }
+        let tile = (y / TILE * self.grid.tiles_x + x / TILE) as usize;
+        Some(tile * TILE_PIXELS + ((y % TILE) * TILE + x % TILE) as usize)
     }
 
     /// Copies the tiles into `out` as rows from the top (`width` pixels each), in parallel by

@@ -1,36 +1,60 @@
 //! Drawing one tile: for each triangle binned there, in order, the edges that cross the tile
 //! (the others are left out of every row), then each row's run of covered pixels (solved exactly
 //! from those edges, no per-pixel edge test), the depth test and the pixel shader over the run,
-//! eight pixels at a time.
+//! eight pixels at a time; while fates are recorded, the winner's index in the id buffer.
 
 use crate::lanes::{F8, LANES};
 use crate::setup::{Edge, FIXED_ONE, Triangle};
 use crate::shading::PixelShader;
-use crate::target::{TILE, TileRect};
+use crate::target::{NO_TRIANGLE, TILE, TileRect};
 
 const ROW: usize = TILE as usize;
 
-/// Clears the tile to `background` and the far plane, then draws `bin`'s triangles into it.
+/// One tile's buffers: colour, depth, and the id buffer (empty when not recorded).
+pub(crate) struct TileBuffers<'a> {
+    pub color: &'a mut [u32],
+    pub depth: &'a mut [f32],
+    pub ids: &'a mut [u32],
+}
+
+/// Clears the tile to `background`, the far plane and no triangle, then draws `bin`'s
+/// triangles into it.
 pub(crate) fn draw_tile<S: PixelShader>(
     rect: TileRect,
-    color: &mut [u32],
-    depth: &mut [f32],
+    tile: TileBuffers<'_>,
     background: u32,
     bin: &[u32],
     triangles: &[Triangle],
     shader: &S,
 ) {
-    color.fill(background);
-    depth.fill(1.0);
+    tile.color.fill(background);
+    tile.depth.fill(1.0);
+    tile.ids.fill(NO_TRIANGLE);
+    let (color_rows, _) = tile.color.as_chunks_mut::<ROW>();
+    let (depth_rows, _) = tile.depth.as_chunks_mut::<ROW>();
+    let (id_rows, _) = tile.ids.as_chunks_mut::<ROW>();
+    let mut rows = Rows {
+        color: color_rows,
+        depth: depth_rows,
+        ids: id_rows,
+    };
     for &index in bin {
-        draw_triangle(rect, color, depth, &triangles[index as usize], shader);
+        let t = &triangles[index as usize];
+        draw_triangle(rect, &mut rows, index, t, shader);
     }
+}
+
+/// A tile's buffers as rows (`ids` has none when not recorded).
+struct Rows<'a> {
+    color: &'a mut [[u32; ROW]],
+    depth: &'a mut [[f32; ROW]],
+    ids: &'a mut [[u32; ROW]],
 }
 
 fn draw_triangle<S: PixelShader>(
     rect: TileRect,
-    color: &mut [u32],
-    depth: &mut [f32],
+    rows: &mut Rows<'_>,
+    index: u32,
     t: &Triangle,
     shader: &S,
 ) {
@@ -55,8 +79,6 @@ fn draw_triangle<S: PixelShader>(
             }
         }
     }
-    let (color_rows, _) = color.as_chunks_mut::<ROW>();
-    let (depth_rows, _) = depth.as_chunks_mut::<ROW>();
     for y in area.y0..=area.y1 {
         let (mut lo, mut hi) = (area.x0, area.x1);
         for edge in &crossing[..count] {
@@ -72,7 +94,15 @@ fn draw_triangle<S: PixelShader>(
                 hi: hi - rect.x0,
                 x0: rect.x0,
             };
-            draw_run(shader, t, run, &mut color_rows[row], &mut depth_rows[row]);
+            let ids = rows.ids.get_mut(row).map(|ids| (index, ids));
+            draw_run(
+                shader,
+                t,
+                run,
+                &mut rows.color[row],
+                &mut rows.depth[row],
+                ids,
+            );
         }
     }
 }
@@ -121,14 +151,15 @@ fn draw_run<S: PixelShader>(
     run: Run,
     color: &mut [u32; ROW],
     depth: &mut [f32; ROW],
+    ids: Option<(u32, &mut [u32; ROW])>,
 ) {
     #[cfg(target_arch = "x86_64")]
     if std::arch::is_x86_feature_detected!("avx2") && std::arch::is_x86_feature_detected!("fma") {
         // SAFETY: the CPU has the features the function is compiled for, checked just above.
-        unsafe { draw_run_avx2(shader, t, run, color, depth) };
+        unsafe { draw_run_avx2(shader, t, run, color, depth, ids) };
         return;
     }
-    draw_run_portable(shader, t, run, color, depth);
+    draw_run_portable(shader, t, run, color, depth, ids);
 }
 
 #[cfg(target_arch = "x86_64")]
@@ -140,13 +171,15 @@ fn draw_run_avx2<S: PixelShader>(
     run: Run,
     color: &mut [u32; ROW],
     depth: &mut [f32; ROW],
+    ids: Option<(u32, &mut [u32; ROW])>,
 ) {
-    draw_run_portable(shader, t, run, color, depth);
+    draw_run_portable(shader, t, run, color, depth, ids);
 }
 
 /// Works on whole groups of eight pixels of the tile's row (the row is 64 wide, so they always
 /// exist), with lanes outside the run masked off: fixed-size, branch-free code is what the
-/// compiler vectorises.
+/// compiler vectorises. `ids`, while fates are recorded: this triangle's index, written where
+/// it passes the depth test.
 #[inline(always)]
 fn draw_run_portable<S: PixelShader>(
     shader: &S,
@@ -154,6 +187,7 @@ fn draw_run_portable<S: PixelShader>(
     run: Run,
     color: &mut [u32; ROW],
     depth: &mut [f32; ROW],
+    mut ids: Option<(u32, &mut [u32; ROW])>,
 ) {
     let fy = run.y as f32 + 0.5;
     let z_row = t.at(&t.depth, run.x0 as f32 + 0.5, fy);
@@ -186,6 +220,12 @@ fn draw_run_portable<S: PixelShader>(
         }
         if pass == [0; LANES] {
             continue;
+        }
+        if let Some((index, ids)) = ids.as_mut() {
+            let ids = &mut ids[base..base + LANES];
+            for (id, p) in ids.iter_mut().zip(pass) {
+                *id = (*index & p) | (*id & !p);
+            }
         }
         let x = F8::ramp((run.x0 + base as i32) as f32 + 0.5);
         let shaded = shader.shade(t, x, fy);

@@ -20,7 +20,14 @@ fn draw_every_mode(mesh: &Mesh, camera: &Camera, viewport: Viewport) {
             ..RenderSettings::default()
         };
         let mut frame = Close2glFrame::default();
-        FastPipeline::default().run(mesh, camera, &settings, viewport, &mut frame);
+        FastPipeline::default().run(
+            mesh,
+            camera,
+            &settings,
+            viewport,
+            &mut frame,
+            &mut Default::default(),
+        );
         let mut image = SoftwareFrame::default();
         SoftwareRasterizer::default().draw(
             &frame,
@@ -29,6 +36,7 @@ fn draw_every_mode(mesh: &Mesh, camera: &Camera, viewport: Viewport) {
             &Lighting::default(),
             None,
             &mut image,
+            &mut Default::default(),
         );
         let pixels = (viewport.width * viewport.height) as usize;
         assert_eq!(image.pixels.len(), pixels, "{mode:?}");

@@ -7,7 +7,7 @@ use std::sync::atomic::{AtomicUsize, Ordering};
 
 use close2gl_core::glam::Vec3;
 use close2gl_core::{
-    Camera, Clipping, Close2glFrame, Lighting, Mesh, Rasterizer, RenderMode, RenderSettings,
+    Camera, Clipping, Close2glFrame, Fates, Lighting, Mesh, Rasterizer, RenderMode, RenderSettings,
     Shading, SoftwareFrame, Viewport,
 };
 use close2gl_pipeline::FastPipeline;
@@ -113,8 +113,10 @@ fn steady_frames() {
     let mut rasterizer = SoftwareRasterizer::default();
     let mut frame = Close2glFrame::default();
     let mut image = SoftwareFrame::default();
-    let mut run = |settings: &RenderSettings| {
-        pipeline.run(&mesh, &camera, settings, viewport, &mut frame);
+    let mut fates = Fates::default();
+    let mut run = |settings: &RenderSettings, record: bool| {
+        fates.record = record;
+        pipeline.run(&mesh, &camera, settings, viewport, &mut frame, &mut fates);
         if settings.close2gl_raster == Rasterizer::Software {
             rasterizer.draw(
                 &frame,
@@ -123,21 +125,26 @@ fn steady_frames() {
                 &lighting,
                 Some(&texture),
                 &mut image,
+                &mut fates,
             );
         }
         frame.counts
     };
     let before = ALLOCATIONS.load(Ordering::SeqCst);
-    run(&RenderSettings::default());
+    run(&RenderSettings::default(), false);
     assert!(
         ALLOCATIONS.load(Ordering::SeqCst) > before,
         "the counter sees a first frame's buffers"
     );
     let software = [Shading::None, Shading::GouraudAds, Shading::Phong]
         .map(|shading| (Rasterizer::Software, shading));
-    for (close2gl_raster, shading) in [(Rasterizer::Gpu, Shading::None)]
+    let every = [(Rasterizer::Gpu, Shading::None)]
         .into_iter()
-        .chain(software)
+        .chain(software);
+    // The inspector off, then on: recording fates reuses its buffers too.
+    for (record, (close2gl_raster, shading)) in [false, true]
+        .into_iter()
+        .flat_map(|record| every.clone().map(move |every| (record, every)))
     {
         for mode in [RenderMode::Solid, RenderMode::Wireframe, RenderMode::Points] {
             let settings = RenderSettings {
@@ -149,15 +156,15 @@ fn steady_frames() {
                 ..RenderSettings::default()
             };
             // Two warm-up frames size every buffer (and start rayon's pool).
-            run(&settings);
-            let counts = run(&settings);
+            run(&settings, record);
+            let counts = run(&settings, record);
             assert!(counts.clipped > 0 && counts.drawn > 0, "{counts:?}");
             let before = ALLOCATIONS.load(Ordering::SeqCst);
-            run(&settings);
+            run(&settings, record);
             let allocated = ALLOCATIONS.load(Ordering::SeqCst) - before;
             assert_eq!(
                 allocated, 0,
-                "{close2gl_raster:?} {shading:?} {mode:?}: a steady frame allocated {allocated} times"
+                "{close2gl_raster:?} {shading:?} {mode:?} recording {record}: a steady frame allocated {allocated} times"
             );
         }
     }

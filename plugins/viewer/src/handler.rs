@@ -104,6 +104,7 @@ impl Viewer {
         let placement = windows.placement(&gui_frame);
         update_viewport(world, placement.viewport);
         self.app.update();
+        crate::probe::answer(self.app.world_mut(), &windows.gpu, &placement);
 
         let capture = capture(&self.options, self.frames, self.app.world_mut());
         let drawn = windows.draw(self.app.world_mut(), &gui_frame, &placement, capture);

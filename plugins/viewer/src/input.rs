@@ -103,6 +103,15 @@ impl InputTracker {
         self.dragging = pressed;
     }
 
+    /// A probe click: the pixel under the cursor in `window`, when the cursor was last seen there.
+    pub fn probe(&self, input: &mut InputState, window: WindowId) {
+        if let Some((w, position)) = self.cursor
+            && w == window
+        {
+            input.probe = Some(Vec2::new(position.x as f32, position.y as f32));
+        }
+    }
+
     /// The cursor moved in `window`; while dragging, the movement adds to `drag`. Returns whether
     /// it did.
     pub fn cursor(

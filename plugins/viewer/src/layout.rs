@@ -105,6 +105,11 @@ impl PixelRect {
         }
     }
 
+    /// Whether pixel (`x`, `y`) of the window lies in the rectangle.
+    pub fn contains(&self, x: u32, y: u32) -> bool {
+        (self.x..self.x + self.width).contains(&x) && (self.y..self.y + self.height).contains(&y)
+    }
+
     pub fn is_empty(&self) -> bool {
         self.width == 0 || self.height == 0
     }

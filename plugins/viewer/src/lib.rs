@@ -22,6 +22,7 @@ pub mod input;
 pub mod layout;
 mod pacing;
 mod present;
+mod probe;
 mod recording;
 mod routing;
 mod screenshot;

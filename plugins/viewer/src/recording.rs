@@ -1,7 +1,7 @@
 //! `--record FILE` and `--replay FILE`: every frame's input, written as one JSON line, and read
 //! back. What is recorded is what the app and the panel were handed each frame, after the
 //! window system's events were sorted out: the keys held and pressed, the drag and the scroll
-//! (`InputState`), the panel's own egui events, a file dropped on the window, the main window
+//! and a probe click (`InputState`), the panel's own egui events, a file dropped on the window, the main window
 //! resized, the frame's time step, and how far a model loading in the background had come by
 //! the frame's end. A replay hands the same to the same frames, with the recorded time steps
 //! instead of the clock's and the recorded load's progress instead of the worker's, so it moves
@@ -46,6 +46,9 @@ pub struct FrameInput {
     pub drag: [f32; 2],
     #[serde(skip_serializing_if = "is_zero_f32")]
     pub scroll: f32,
+    /// A probe click's window pixel (Ctrl+click).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub probe: Option<[f32; 2]>,
     /// What the panel received (pointer, clicks, typed text, its keys).
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub panel: Vec<egui::Event>,
@@ -79,6 +82,7 @@ impl FrameInput {
             pressed: input.pressed.clone(),
             drag: input.drag.to_array(),
             scroll: input.scroll,
+            probe: input.probe.map(|p| p.to_array()),
             ..FrameInput::default()
         }
     }
@@ -90,6 +94,7 @@ impl FrameInput {
         input.pressed = self.pressed.clone();
         input.drag = Vec2::from_array(self.drag);
         input.scroll = self.scroll;
+        input.probe = self.probe.map(Vec2::from_array);
     }
 }
 

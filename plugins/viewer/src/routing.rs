@@ -14,6 +14,8 @@ use crate::input::InputTracker;
 pub struct PanelTook {
     pub keys: bool,
     pub pointer: bool,
+    /// The event came to the main window (the one with the panel).
+    pub main: bool,
 }
 
 /// Hands `event` to the panel when it may be the panel's. Key presses reach egui only while a
@@ -32,6 +34,7 @@ pub fn offer_to_panel(
         return PanelTook {
             keys,
             pointer: false,
+            main: is_main,
         };
     }
     let response = gui.on_event(window, event);
@@ -41,6 +44,7 @@ pub fn offer_to_panel(
     PanelTook {
         keys,
         pointer: response.consumed,
+        main: is_main,
     }
 }
 
@@ -66,7 +70,15 @@ pub fn apply_input(
             state,
             button: MouseButton::Left,
             ..
-        } => tracker.button(state == ElementState::Pressed && !panel.pointer),
+        } => {
+            let pressed = state == ElementState::Pressed && !panel.pointer;
+            if pressed && panel.main && input.held.contains("ctrl") {
+                // Ctrl+click probes the pixel instead of starting a drag.
+                tracker.probe(&mut input, window);
+            } else {
+                tracker.button(pressed);
+            }
+        }
         WindowEvent::CursorMoved { position, .. } => {
             return tracker.cursor(&mut input, window, position);
         }

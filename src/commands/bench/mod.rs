@@ -112,9 +112,10 @@ fn geometry(args: &BenchArgs, pool: &rayon::ThreadPool) -> Result<serde_json::Va
     let settings = config.render;
     let mut pipeline = FastPipeline::default();
     let mut frame = Close2glFrame::default();
+    let mut fates = Default::default();
     let fast = pool.install(|| {
         median_ms(args.frames, || {
-            pipeline.run(mesh, camera, &settings, viewport, &mut frame)
+            pipeline.run(mesh, camera, &settings, viewport, &mut frame, &mut fates)
         })
     });
     let slow = median_ms(args.frames, || {

@@ -3,8 +3,8 @@
 //! fill rate on a screen of large triangles.
 
 use close2gl_core::{
-    Camera, Close2glFrame, Lighting, Mesh, Rasterizer, RenderSettings, SoftwareFrame, Texture,
-    Viewport,
+    Camera, Close2glFrame, Fates, Lighting, Mesh, Rasterizer, RenderSettings, SoftwareFrame,
+    Texture, Viewport,
 };
 use close2gl_gpu::{Gpu, OffscreenPlugin, render_offscreen};
 use close2gl_pipeline::FastPipeline;
@@ -92,6 +92,7 @@ pub struct SoftwareTimer {
     pipeline: FastPipeline,
     rasterizer: SoftwareRasterizer,
     geometry: Close2glFrame,
+    fates: Fates,
     image: SoftwareFrame,
     /// The model's texture, if it has one.
     pub texture: Option<Texture>,
@@ -107,8 +108,14 @@ impl SoftwareTimer {
         lighting: &Lighting,
         viewport: Viewport,
     ) {
-        self.pipeline
-            .run(mesh, camera, settings, viewport, &mut self.geometry);
+        self.pipeline.run(
+            mesh,
+            camera,
+            settings,
+            viewport,
+            &mut self.geometry,
+            &mut self.fates,
+        );
         self.rasterizer.draw(
             &self.geometry,
             camera,
@@ -116,6 +123,7 @@ impl SoftwareTimer {
             lighting,
             self.texture.as_ref(),
             &mut self.image,
+            &mut self.fates,
         );
     }
 

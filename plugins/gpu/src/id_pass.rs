@@ -1,0 +1,257 @@
+//! The reference probe: which mesh triangle the GPU itself drew at one pixel, and at what depth.
+//!
+//! An ID pass draws the mesh as the reference does (glam's matrices, the same culling, front
+//! face, polygon mode and depth test) into an R32Uint target holding each fragment's mesh
+//! triangle index + 1 and an R32Float target holding its depth; one texel of each is read back.
+//! The index comes from a flat per-triangle vertex attribute of a non-indexed draw rather than
+//! WGSL's `primitive_index`: that builtin is an optional feature (Vulkan needs geometry shaders
+//! for it, WebGPU and older Metal GPUs lack it), and the reference's index buffer is reordered
+//! (zero-area triangles last), so a primitive index would need a table back to mesh order anyway.
+//! A flat attribute works on every adapter and carries the mesh's own index.
+
+use bytemuck::{Pod, Zeroable};
+use close2gl_core::{Camera, Mesh, RenderSettings, Viewport};
+use wgpu::util::DeviceExt;
+
+use crate::reference::{PipelineKey, has_area, primitive_state, relative_matrices};
+use crate::texture::texture_2d;
+use crate::{DEPTH_FORMAT, Gpu, UniformSetup};
+
+/// The GPU's answer for one pixel of the reference view.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ReferenceHit {
+    /// The mesh triangle (its index in `Mesh::triangles`) that won the depth test there.
+    pub triangle: u32,
+    /// Its depth there, wgpu's 0 (near) .. 1 (far).
+    pub depth: f32,
+}
+
+/// What the reference draws: the probe needs exactly this to draw the same.
+#[derive(Clone, Copy)]
+pub struct ProbeScene<'a> {
+    pub mesh: &'a Mesh,
+    pub camera: &'a Camera,
+    pub settings: &'a RenderSettings,
+    pub viewport: Viewport,
+}
+
+/// One vertex of the ID pass: a corner (relative to the mesh's origin) and its triangle's index.
+#[repr(C)]
+#[derive(Clone, Copy, Pod, Zeroable)]
+struct IdVertex {
+    position: [f32; 3],
+    triangle: u32,
+}
+
+const ID_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::R32Uint;
+const DEPTH_OUT_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::R32Float;
+
+/// The reference's triangle at pixel (`x`, `y`) of the viewport (from the top-left), or `None`
+/// where it drew only background. Draws the whole viewport once and reads back one texel: for a
+/// click or a headless question, not for every frame.
+pub fn probe_reference(
+    gpu: &Gpu,
+    scene: ProbeScene<'_>,
+    (x, y): (u32, u32),
+) -> Result<Option<ReferenceHit>, String> {
+    let Viewport { width, height } = scene.viewport;
+    if x >= width || y >= height {
+        return Err(format!(
+            "pixel {x},{y} is outside the {width}x{height} viewport"
+        ));
+    }
+    scene
+        .mesh
+        .validate()
+        .map_err(|e| format!("cannot probe an invalid mesh: {e}"))?;
+    let vertices = id_vertices(scene.mesh, scene.settings.backface_culling);
+    if vertices.is_empty() {
+        return Ok(None);
+    }
+    let targets = Targets::new(&gpu.device, (width, height));
+    draw(gpu, scene, &vertices, &targets);
+    let (id, depth) = read_texel(gpu, &targets, (x, y))?;
+    Ok(id
+        .checked_sub(1)
+        .map(|triangle| ReferenceHit { triangle, depth }))
+}
+
+/// Three vertices per drawn triangle, each carrying the triangle's mesh index. With culling on,
+/// triangles without area are left out, as the reference leaves them out.
+fn id_vertices(mesh: &Mesh, culling: bool) -> Vec<IdVertex> {
+    let origin = mesh.bounding_sphere().0;
+    let corners = |t: &[u32; 3]| t.map(|i| mesh.positions[i as usize]);
+    mesh.triangles
+        .iter()
+        .enumerate()
+        .filter(|(_, t)| !culling || has_area(corners(t)))
+        .flat_map(|(index, t)| {
+            corners(t).map(|p| IdVertex {
+                position: (p - origin).to_array(),
+                triangle: index as u32,
+            })
+        })
+        .collect()
+}
+
+/// The ID pass's attachments: triangle ids, their depth as a colour, and the depth buffer.
+struct Targets {
+    id: wgpu::Texture,
+    depth_out: wgpu::Texture,
+    depth: wgpu::Texture,
+}
+
+impl Targets {
+    fn new(device: &wgpu::Device, size: (u32, u32)) -> Targets {
+        let readable = crate::texture::READABLE_TARGET;
+        Targets {
+            id: texture_2d(device, "probe ids", size, ID_FORMAT, readable),
+            depth_out: texture_2d(device, "probe depth", size, DEPTH_OUT_FORMAT, readable),
+            depth: texture_2d(
+                device,
+                "probe depth buffer",
+                size,
+                DEPTH_FORMAT,
+                wgpu::TextureUsages::RENDER_ATTACHMENT,
+            ),
+        }
+    }
+}
+
+fn draw(gpu: &Gpu, scene: ProbeScene<'_>, vertices: &[IdVertex], targets: &Targets) {
+    let device = &gpu.device;
+    let setup = UniformSetup::new(device, "probe", size_of::<[[f32; 4]; 4]>());
+    let (view, projection) = relative_matrices(scene.camera, scene.mesh.bounding_sphere().0);
+    let view_projection = (projection * view).to_cols_array_2d();
+    gpu.queue
+        .write_buffer(&setup.buffer, 0, bytemuck::bytes_of(&view_projection));
+    let buffer = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
+        label: Some("probe vertices"),
+        contents: bytemuck::cast_slice(vertices),
+        usage: wgpu::BufferUsages::VERTEX,
+    });
+    let pipeline = create_pipeline(device, &setup.layout, PipelineKey::new(scene.settings));
+    let id_view = targets.id.create_view(&Default::default());
+    let depth_out_view = targets.depth_out.create_view(&Default::default());
+    let depth_view = targets.depth.create_view(&Default::default());
+    let far = wgpu::Color {
+        r: 1.0,
+        ..wgpu::Color::TRANSPARENT
+    };
+    let mut encoder = device.create_command_encoder(&Default::default());
+    {
+        let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
+            label: Some("probe"),
+            color_attachments: &[
+                Some(crate::texture::color_attachment(
+                    &id_view,
+                    wgpu::LoadOp::Clear(wgpu::Color::TRANSPARENT),
+                )),
+                Some(crate::texture::color_attachment(
+                    &depth_out_view,
+                    wgpu::LoadOp::Clear(far),
+                )),
+            ],
+            depth_stencil_attachment: Some(wgpu::RenderPassDepthStencilAttachment {
+                view: &depth_view,
+                depth_ops: Some(wgpu::Operations {
+                    load: wgpu::LoadOp::Clear(1.0),
+                    store: wgpu::StoreOp::Discard,
+                }),
+                stencil_ops: None,
+            }),
+            timestamp_writes: None,
+            occlusion_query_set: None,
+            multiview_mask: None,
+        });
+        pass.set_pipeline(&pipeline);
+        pass.set_bind_group(0, &setup.bind_group, &[]);
+        pass.set_vertex_buffer(0, buffer.slice(..));
+        pass.draw(0..vertices.len() as u32, 0..1);
+    }
+    gpu.queue.submit([encoder.finish()]);
+}
+
+fn create_pipeline(
+    device: &wgpu::Device,
+    layout: &wgpu::PipelineLayout,
+    key: PipelineKey,
+) -> wgpu::RenderPipeline {
+    let shader = device.create_shader_module(wgpu::include_wgsl!("id_pass.wgsl"));
+    let attributes = wgpu::vertex_attr_array![0 => Float32x3, 1 => Uint32];
+    device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
+        label: Some("probe"),
+        layout: Some(layout),
+        vertex: wgpu::VertexState {
+            module: &shader,
+            entry_point: Some("vs_main"),
+            compilation_options: Default::default(),
+            buffers: &[Some(wgpu::VertexBufferLayout {
+                array_stride: size_of::<IdVertex>() as u64,
+                step_mode: wgpu::VertexStepMode::Vertex,
+                attributes: &attributes,
+            })],
+        },
+        primitive: primitive_state(device.features(), key),
+        depth_stencil: Some(wgpu::DepthStencilState {
+            format: DEPTH_FORMAT,
+            depth_write_enabled: Some(true),
+            depth_compare: Some(wgpu::CompareFunction::Less),
+            stencil: Default::default(),
+            bias: Default::default(),
+        }),
+        multisample: Default::default(),
+        fragment: Some(wgpu::FragmentState {
+            module: &shader,
+            entry_point: Some("fs_main"),
+            compilation_options: Default::default(),
+            targets: &[Some(ID_FORMAT.into()), Some(DEPTH_OUT_FORMAT.into())],
+        }),
+        multiview_mask: None,
+        cache: None,
+    })
+}
+
+/// Copies texel (`x`, `y`) of the id and depth targets into one buffer (each at a copy-aligned
+/// offset), maps it and reads both.
+fn read_texel(gpu: &Gpu, targets: &Targets, (x, y): (u32, u32)) -> Result<(u32, f32), String> {
+    let stride = wgpu::COPY_BYTES_PER_ROW_ALIGNMENT as u64;
+    let buffer = gpu.device.create_buffer(&wgpu::BufferDescriptor {
+        label: Some("probe readback"),
+        size: 2 * stride,
+        usage: wgpu::BufferUsages::MAP_READ | wgpu::BufferUsages::COPY_DST,
+        mapped_at_creation: false,
+    });
+    let mut encoder = gpu.device.create_command_encoder(&Default::default());
+    for (layer, texture) in [&targets.id, &targets.depth_out].into_iter().enumerate() {
+        encoder.copy_texture_to_buffer(
+            wgpu::TexelCopyTextureInfo {
+                texture,
+                mip_level: 0,
+                origin: wgpu::Origin3d { x, y, z: 0 },
+                aspect: wgpu::TextureAspect::All,
+            },
+            wgpu::TexelCopyBufferInfo {
+                buffer: &buffer,
+                layout: wgpu::TexelCopyBufferLayout {
+                    offset: layer as u64 * stride,
+                    bytes_per_row: None,
+                    rows_per_image: None,
+                },
+            },
+            wgpu::Extent3d {
+                width: 1,
+                height: 1,
+                depth_or_array_layers: 1,
+            },
+        );
+    }
+    gpu.queue.submit([encoder.finish()]);
+    let slice = buffer.slice(..);
+    let bytes = crate::readback::map_read(gpu, &slice, "the probed pixel")?;
+    let word = |at: usize| [bytes[at], bytes[at + 1], bytes[at + 2], bytes[at + 3]];
+    Ok((
+        u32::from_le_bytes(word(0)),
+        f32::from_le_bytes(word(stride as usize)),
+    ))
+}

@@ -1,0 +1,137 @@
+//! The fate view on a real adapter: Close2GL's view colours each triangle by the fate recorded in
+//! `Fates` and outlines what clipping removed where it would project; the reference view gets
+//! the GPU's own facing and depth-test answers.
+
+use close2gl_core::glam::Vec3;
+use close2gl_core::{
+    App, Camera, Close2glFrame, FateKind, Fates, Mesh, ModelStatus, Overlay, RenderSettings,
+    Shading, TriangleFate, Viewport,
+};
+use close2gl_gpu::{OffscreenPlugin, Snapshot, render_offscreen};
+use close2gl_testkit::gpu;
+
+const SIZE: u32 = 64;
+
+/// Seen from the origin down -z on a 64x64 viewport: triangle 0 in the middle at z = -5; 1
+/// reaching out over the left border; 2 bigger, behind 0 at z = -10.
+fn scene() -> Mesh {
+    let positions = vec![
+        Vec3::new(-1.0, -1.0, -5.0),
+        Vec3::new(1.0, -1.0, -5.0),
+        Vec3::new(0.0, 1.0, -5.0),
+        Vec3::new(-5.0, -1.0, -5.0),
+        Vec3::new(-2.0, 0.0, -5.0),
+        Vec3::new(-5.0, 1.0, -5.0),
+        Vec3::new(-3.0, -3.0, -10.0),
+        Vec3::new(3.0, -3.0, -10.0),
+        Vec3::new(0.0, 3.0, -10.0),
+    ];
+    Mesh {
+        name: "fates".into(),
+        normals: vec![Vec3::Z; positions.len()],
+        positions,
+        uvs: Vec::new(),
+        triangles: vec![[0, 1, 2], [3, 4, 5], [6, 7, 8]],
+    }
+}
+
+/// Renders the scene with the fate view on, the fates recorded as `kinds` (what Close2GL's
+/// pipeline records; set here so that the view is tested on its own).
+fn render(kinds: [FateKind; 3]) -> (App, Snapshot) {
+    let settings = RenderSettings {
+        overlay: Overlay::Fates,
+        shading: Shading::None,
+        ..Default::default()
+    };
+    let viewport = Viewport {
+        width: SIZE,
+        height: SIZE,
+    };
+    let mut app = close2gl_testkit::world_with(scene(), Camera::default(), settings, viewport);
+    let fates = Fates {
+        triangles: kinds
+            .map(|kind| TriangleFate {
+                kind,
+                ..Default::default()
+            })
+            .to_vec(),
+        ..Default::default()
+    };
+    app.insert_resource(ModelStatus {
+        generation: 1,
+        ..Default::default()
+    })
+    .insert_resource(fates)
+    .init_resource::<Close2glFrame>()
+    .add_plugins(OffscreenPlugin(gpu()));
+    let snapshot = render_offscreen(&mut app).expect("both views render");
+    (app, snapshot)
+}
+
+fn rgb(pixel: [u8; 4]) -> [f32; 3] {
+    [pixel[0], pixel[1], pixel[2]].map(f32::from)
+}
+
+/// `over` blended over `under` with `alpha`, as the GPU's alpha blending does.
+fn blend(under: [f32; 3], over: [u8; 3], alpha: f32) -> [f32; 3] {
+    [0, 1, 2].map(|i| under[i] * (1.0 - alpha) + f32::from(over[i]) * alpha)
+}
+
+fn near(a: [f32; 3], b: [f32; 3]) -> bool {
+    a.iter().zip(&b).all(|(a, b)| (a - b).abs() <= 2.0)
+}
+
+#[test]
+fn close2gl_fills_each_triangle_in_its_fate_colour_and_outlines_what_clipping_removed() {
+    let (app, snapshot) = render([FateKind::Drawn, FateKind::Clipped, FateKind::Hidden]);
+    assert!(
+        app.world().resource::<Fates>().record,
+        "the view asks for fates"
+    );
+    let close2gl = &snapshot.close2gl;
+    let [r, g, b] = FateKind::Drawn.color();
+    // The middle: triangle 0 over the hidden triangle 2 (painted far to near).
+    assert_eq!(close2gl.pixel(32, 36), [r, g, b, 255]);
+    let [r, g, b] = FateKind::Hidden.color();
+    assert_eq!(
+        close2gl.pixel(21, 40),
+        [r, g, b, 255],
+        "triangle 2 left of 0"
+    );
+    // Triangle 1's outline where it reaches into the view: its corner at x ≈ 9.8, y = 32.
+    let [r, g, b] = FateKind::Clipped.color();
+    let outlined = (28..37).any(|y| (0..12).any(|x| close2gl.pixel(x, y) == [r, g, b, 255]));
+    assert!(
+        outlined,
+        "the clipped triangle's outline shows at the border"
+    );
+    assert_ne!(
+        close2gl.pixel(3, 32),
+        [r, g, b, 255],
+        "an outline, not a fill"
+    );
+}
+
+#[test]
+fn the_reference_shows_the_gpus_facing_and_its_depth_test_failures() {
+    let (_, snapshot) = render([FateKind::Drawn; 3]);
+    let shaded = RenderSettings::default()
+        .color
+        .to_array()
+        .map(|c| c * 255.0);
+    let front = blend(shaded, FateKind::Drawn.color(), 0.6);
+    let reference = &snapshot.reference;
+    // Triangle 2 left of triangle 0: a front face that won the depth test.
+    assert!(
+        near(rgb(reference.pixel(21, 40)), front),
+        "{:?}",
+        reference.pixel(21, 40)
+    );
+    // The middle: triangle 0 won, triangle 2 behind it failed the test there.
+    let failed = blend(front, FateKind::Hidden.color(), 0.35);
+    assert!(
+        near(rgb(reference.pixel(32, 36)), failed),
+        "{:?}",
+        reference.pixel(32, 36)
+    );
+}

@@ -1,0 +1,67 @@
+//! The pixel probe a Ctrl+click asks for (`InputState::probe`): which view was clicked (from the
+//! layout), the pixel in that view's coordinates, and both answers for it: the reference's from
+//! the GPU's ID pass, Close2GL's (winner and every candidate) from the raster crate's probe.
+//! The answer goes to the panel ([`ProbeAnswer`]), and its winner becomes the inspected triangle.
+
+use bevy_ecs::prelude::*;
+use close2gl_core::{Camera, Fates, InputState, Mesh, Rasterizer, RenderSettings, SoftwareFrame};
+use close2gl_gpu::{Gpu, probe_reference};
+use close2gl_raster::SoftwareRasterizer;
+use close2gl_raster::probe::{Drawn, ProbeScene, probe};
+use close2gl_ui::{PanelState, ProbeAnswer};
+
+use crate::layout::{Placement, View};
+
+/// Answers this frame's probe click, if any, once the frame's pipeline has run.
+pub fn answer(world: &mut World, gpu: &Gpu, placement: &Placement) {
+    let Some(at) = world.resource::<InputState>().probe else {
+        return;
+    };
+    let (Some(viewport), x, y) = (placement.viewport, at.x as u32, at.y as u32) else {
+        return;
+    };
+    let Some(placed) = placement.main.iter().find(|p| p.rect.contains(x, y)) else {
+        return;
+    };
+    let pixel = (x - placed.rect.x, y - placed.rect.y);
+    let mesh = world.query::<&Mesh>().iter(world).next().cloned();
+    let camera = world.query::<&Camera>().iter(world).next().copied();
+    let (Some(mesh), Some(camera)) = (mesh, camera) else {
+        return;
+    };
+    let settings = *world.resource::<RenderSettings>();
+    let reference = probe_reference(
+        gpu,
+        close2gl_gpu::ProbeScene {
+            mesh: &mesh,
+            camera: &camera,
+            settings: &settings,
+            viewport,
+        },
+        pixel,
+    );
+    let drawn = (settings.close2gl_raster == Rasterizer::Software).then(|| Drawn {
+        rasterizer: world.resource::<SoftwareRasterizer>(),
+        image: world.resource::<SoftwareFrame>(),
+    });
+    let scene = ProbeScene {
+        mesh: &mesh,
+        camera: &camera,
+        settings: &settings,
+        viewport,
+        fates: world.resource::<Fates>(),
+    };
+    let close2gl = probe(scene, pixel.0, pixel.1, drawn);
+    let answer = ProbeAnswer {
+        view: match placed.view {
+            View::Reference => "reference",
+            View::Close2gl => "Close2GL",
+        },
+        reference: reference.map(|hit| hit.map(|h| (h.triangle, h.depth))),
+        close2gl,
+    };
+    if let Some(triangle) = answer.close2gl.triangle.or(answer.reference_triangle()) {
+        world.resource_mut::<PanelState>().inspected_triangle = triangle as usize;
+    }
+    world.insert_resource(answer);
+}

@@ -1,0 +1,247 @@
+//! `close2gl inspect`: the pipeline inspector, headless. `--triangle N` prints one triangle's
+//! journey through M, P, clipping, the division and V, beside the matrices (Close2GL's and the
+//! reference's); `--pixel X,Y` prints who drew that pixel in each view, and for Close2GL every
+//! triangle that reached it and why each lost. JSON, with the keys the panel shows.
+
+use close2gl_core::{
+    App, Camera, Fates, Mesh, Rasterizer, RenderSettings, SoftwareFrame, Viewport,
+};
+use close2gl_gpu::{Gpu, ReferenceHit, probe_reference};
+use close2gl_pipeline::journey::{Journey, journey};
+use close2gl_pipeline::matrices;
+use close2gl_raster::SoftwareRasterizer;
+use close2gl_raster::probe::{self, Drawn, PixelProbe, ProbeScene};
+use glam::{Mat4, Vec3, Vec4};
+use serde_json::{Value, json};
+
+use super::CliError;
+use super::scene::{SceneArgs, print_warnings, record_fates, viewport};
+
+#[derive(clap::Args, Debug, Default)]
+#[group(id = "question", required = true, multiple = false, args = ["pixel", "triangle"])]
+pub struct InspectArgs {
+    #[command(flatten)]
+    pub scene: SceneArgs,
+    /// The viewport, WIDTHxHEIGHT (default: the configured window size).
+    #[arg(long, value_name = "WxH")]
+    pub size: Option<String>,
+    /// Who drew pixel X,Y (from the top-left) in each view, and who else reached it.
+    #[arg(long, value_name = "X,Y")]
+    pub pixel: Option<String>,
+    /// Mesh triangle N's journey through the pipeline (0 is the first).
+    #[arg(long, value_name = "N")]
+    pub triangle: Option<usize>,
+}
+
+pub fn run(args: InspectArgs) -> Result<(), CliError> {
+    let config = args.scene.config()?;
+    let viewport = viewport(args.size.as_deref(), &config)?;
+    let pixel = args
+        .pixel
+        .as_deref()
+        .map(|p| parse_pixel(p, viewport))
+        .transpose()?;
+    let mut app = crate::build_app(&config, viewport).map_err(CliError::Input)?;
+    print_warnings(&app);
+    record_fates(&mut app);
+    let report = match (args.triangle, pixel) {
+        (Some(index), _) => triangle_report(&mut app, index, viewport)?,
+        (None, Some(pixel)) => pixel_report(&mut app, pixel, viewport)?,
+        (None, None) => unreachable!("clap requires --pixel or --triangle"),
+    };
+    println!("{report}");
+    Ok(())
+}
+
+/// `X,Y`, inside the viewport.
+fn parse_pixel(text: &str, viewport: Viewport) -> Result<(u32, u32), CliError> {
+    let bad = || {
+        CliError::Input(format!(
+            "inspect: --pixel {text}: expected X,Y inside the {}x{} viewport (0,0 is the top-left)",
+            viewport.width, viewport.height
+        ))
+    };
+    let (x, y) = text.split_once(',').ok_or_else(bad)?;
+    let (x, y) = (x.trim().parse::<u32>(), y.trim().parse::<u32>());
+    match (x, y) {
+        (Ok(x), Ok(y)) if x < viewport.width && y < viewport.height => Ok((x, y)),
+        _ => Err(bad()),
+    }
+}
+
+/// The scene as the app left it: mesh, camera, settings.
+fn scene(app: &mut App) -> Result<(Mesh, Camera, RenderSettings), CliError> {
+    let world = app.world_mut();
+    let mesh = world.query::<&Mesh>().single(world).ok().cloned();
+    let camera = world.query::<&Camera>().single(world).ok().copied();
+    match (mesh, camera) {
+        (Some(mesh), Some(camera)) => Ok((mesh, camera, *world.resource::<RenderSettings>())),
+        _ => Err(CliError::Runtime(
+            "inspect: no model or camera was set up".into(),
+        )),
+    }
+}
+
+fn triangle_report(app: &mut App, index: usize, viewport: Viewport) -> Result<Value, CliError> {
+    let (mesh, camera, settings) = scene(app)?;
+    let Some(j) = journey(&mesh, index, &camera, &settings, viewport) else {
+        return Err(CliError::Input(format!(
+            "inspect: --triangle {index}: the model has {} triangles (0..={})",
+            mesh.triangles.len(),
+            mesh.triangles.len() as i64 - 1
+        )));
+    };
+    // The recorded fate: the pipeline's, with the rasterizer's no_pixels and hidden.
+    let fate = app
+        .world()
+        .resource::<Fates>()
+        .of(index)
+        .copied()
+        .unwrap_or(j.fate);
+    let mut report = journey_json(&j);
+    report["fate"] = json!(fate.kind.name());
+    report["matrices"] = matrices_json(&camera, viewport);
+    Ok(report)
+}
+
+/// The journey's numbers under the keys.
+fn journey_json(j: &Journey) -> Value {
+    let v3 = |v: &Vec3| v.to_array();
+    let v4 = |v: &Vec4| v.to_array();
+    let steps: Vec<Value> = j
+        .clip_steps
+        .iter()
+        .map(|s| {
+            json!({
+                "plane": s.plane.name(),
+                "polygon": s.polygon.iter().map(v4).collect::<Vec<_>>(),
+                "weights": s.weights.iter().map(v3).collect::<Vec<_>>(),
+            })
+        })
+        .collect();
+    let planes: Vec<&str> = close2gl_core::ClipPlane::in_outcode(j.fate.planes)
+        .map(|p| p.name())
+        .collect();
+    json!({
+        "triangle": j.triangle,
+        "planes": planes,
+        "behind_eye": j.fate.behind_eye,
+        "signed_area": finite(j.signed_area),
+        "culling": j.culling.map(|k| k.name()),
+        "world": j.world.iter().map(v3).collect::<Vec<_>>(),
+        "eye": j.eye.iter().map(v3).collect::<Vec<_>>(),
+        "clip": j.clip.iter().map(v4).collect::<Vec<_>>(),
+        "outcodes": j.outcodes,
+        "clip_steps": steps,
+        "ndc": j.ndc.iter().map(v3).collect::<Vec<_>>(),
+        "window": j.window.iter().map(v3).collect::<Vec<_>>(),
+    })
+}
+
+/// A number, or null for NaN and infinities (which JSON cannot hold).
+fn finite(x: f32) -> Value {
+    if x.is_finite() { json!(x) } else { Value::Null }
+}
+
+/// M, P, V and the reference's view and projection (glam's), as rows, with the largest
+/// differences between the two sides' matrices. The reference's projection maps depth to
+/// wgpu's 0..1 where P maps it to OpenGL's -1..1, so P is compared after that remap
+/// (z' = (z + w) / 2).
+pub fn matrices_json(camera: &Camera, viewport: Viewport) -> Value {
+    let m = matrices::modelview(camera);
+    let p = matrices::projection(camera.hfov, camera.vfov, camera.near, camera.far);
+    let v = matrices::viewport(viewport.width as f32, viewport.height as f32);
+    let (view, projection) = close2gl_gpu::camera_matrices(camera);
+    let rows = |m: Mat4| m.transpose().to_cols_array_2d();
+    json!({
+        "M": rows(m),
+        "P": rows(p),
+        "V": rows(v),
+        "reference_view": rows(view),
+        "reference_projection": rows(projection),
+        "max_difference": {
+            "view": max_difference(m, view),
+            "projection": max_difference(depth_to_unit_range() * p, projection),
+        },
+    })
+}
+
+/// The largest absolute difference between two matrices' entries.
+pub fn max_difference(a: Mat4, b: Mat4) -> f32 {
+    let (a, b) = (a.to_cols_array(), b.to_cols_array());
+    a.iter()
+        .zip(&b)
+        .map(|(x, y)| (x - y).abs())
+        .fold(0.0, f32::max)
+}
+
+/// Clip z from OpenGL's -w..w to wgpu's 0..w: z' = (z + w) / 2.
+fn depth_to_unit_range() -> Mat4 {
+    Mat4::from_cols(
+        Vec4::X,
+        Vec4::Y,
+        Vec4::new(0.0, 0.0, 0.5, 0.0),
+        Vec4::new(0.0, 0.0, 0.5, 1.0),
+    )
+}
+
+fn pixel_report(app: &mut App, (x, y): (u32, u32), viewport: Viewport) -> Result<Value, CliError> {
+    let (mesh, camera, settings) = scene(app)?;
+    let world = app.world();
+    let fates = world.resource::<Fates>();
+    let drawn = (settings.close2gl_raster == Rasterizer::Software).then(|| Drawn {
+        rasterizer: world.resource::<SoftwareRasterizer>(),
+        image: world.resource::<SoftwareFrame>(),
+    });
+    let scene = ProbeScene {
+        mesh: &mesh,
+        camera: &camera,
+        settings: &settings,
+        viewport,
+        fates,
+    };
+    let close2gl = probe::probe(scene, x, y, drawn);
+    let reference = reference_probe(&mesh, &camera, &settings, viewport, (x, y))?;
+    let agree = reference.as_ref().map(|r| r.triangle) == close2gl.triangle;
+    Ok(json!({
+        "pixel": [x, y],
+        "reference": {
+            "triangle": reference.as_ref().map(|r| r.triangle),
+            "depth": reference.as_ref().map_or(1.0, |r| r.depth),
+        },
+        "close2gl": close2gl_json(&close2gl),
+        "agree": agree,
+    }))
+}
+
+fn close2gl_json(probe: &PixelProbe) -> Value {
+    let candidates: Vec<Value> = probe
+        .candidates
+        .iter()
+        .map(|c| json!({"triangle": c.triangle, "outcome": c.outcome.name(), "depth": c.depth}))
+        .collect();
+    json!({
+        "triangle": probe.triangle,
+        "depth": probe.depth,
+        "color": probe.color,
+        "candidates": candidates,
+    })
+}
+
+/// The reference view's answer, from the GPU's own ID pass.
+fn reference_probe(
+    mesh: &Mesh,
+    camera: &Camera,
+    settings: &RenderSettings,
+    viewport: Viewport,
+    pixel: (u32, u32),
+) -> Result<Option<ReferenceHit>, CliError> {
+    let gpu = Gpu::headless(close2gl_gpu::wgpu::Backends::PRIMARY).map_err(CliError::Runtime)?;
+    let scene = close2gl_gpu::ProbeScene {
+        mesh,
+        camera,
+        settings,
+        viewport,
+    };
+    probe_reference(&gpu, scene, pixel).map_err(CliError::Runtime)
+}
