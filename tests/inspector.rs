@@ -64,6 +64,10 @@ const VIEW: [&str; 12] = [
     "--set",
     "render.close2gl_raster=software",
 ];
+const SIZE: Viewport = Viewport {
+    width: 100,
+    height: 100,
+};
 const FOV: [&str; 4] = ["--set", "camera.hfov=90", "--set", "camera.vfov=90"];
 
 /// The scene as an OBJ file, written once for all the tests (which run in parallel).
@@ -199,6 +203,13 @@ fn stats_counts_each_fate() {
     assert_eq!(gpu["fates"]["drawn"], 4, "{gpu}");
 }
 
+#[test]
+fn render_reports_the_same_fates_as_stats() {
+    let out = scene_file().with_file_name("render");
+    let render = json("render", &["--out", out.to_str().expect("UTF-8")]);
+    assert_eq!(render["fates"], json("stats", &[])["fates"], "{render}");
+}
+
 /// The scene as a headless World, fates recorded.
 fn world_app(extra: &[&str]) -> close2gl::core::App {
     let model = scene_file();
@@ -209,11 +220,7 @@ fn world_app(extra: &[&str]) -> close2gl::core::App {
         .collect();
     let mut config = close2gl::config::load(None, &sets).expect("the settings");
     config.model = close2gl::core::ModelSource::parse(model.to_str().expect("UTF-8"));
-    let size = Viewport {
-        width: 100,
-        height: 100,
-    };
-    let mut app = close2gl::build_app(&config, size).expect("the scene");
+    let mut app = close2gl::build_app(&config, SIZE).expect("the scene");
     app.world_mut().resource_mut::<Fates>().record = true;
     app.update();
     app
@@ -271,10 +278,7 @@ impl Probed {
             mesh: &self.mesh,
             camera: &self.camera,
             settings: &self.settings,
-            viewport: Viewport {
-                width: 100,
-                height: 100,
-            },
+            viewport: SIZE,
             fates: world.resource::<Fates>(),
         };
         let drawn = Drawn {
@@ -289,10 +293,7 @@ impl Probed {
             mesh: &self.mesh,
             camera: &self.camera,
             settings: &self.settings,
-            viewport: Viewport {
-                width: 100,
-                height: 100,
-            },
+            viewport: SIZE,
         };
         probe_reference(&self.gpu, scene, (x, y))
             .expect("the reference probe")
