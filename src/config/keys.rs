@@ -54,6 +54,7 @@ pub fn set(
         ("render", "close2gl_raster") => c.render.close2gl_raster = named(value)?,
         ("render", "texture") => c.render.texture = boolean(value)?,
         ("render", "texture_filter") => c.render.texture_filter = named(value)?,
+        ("render", "overlay") => c.render.overlay = named(value)?,
         ("render", "color") => c.render.color = color(value)?,
         ("render", "background") => c.render.background = color(value)?,
 

@@ -19,6 +19,7 @@ mod layout;
 pub mod limits;
 mod mesh;
 mod model;
+mod reference_camera;
 pub mod repro;
 mod schedule;
 mod settings;
@@ -45,6 +46,7 @@ pub use model::{
     TextureRequest,
 };
 pub use named::NamedEnum;
+pub use reference_camera::camera_matrices;
 pub use schedule::{FrameSet, PostUpdate, PreUpdate, Render, Startup, Update, frame_schedules};
 pub use settings::{
     Clipping, FrontFace, Lighting, Overlay, Rasterizer, RenderMode, RenderSettings, Shading,

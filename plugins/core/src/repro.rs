@@ -123,6 +123,7 @@ impl Repro {
         );
         sets.flag_if("render.texture", s.texture, d.texture);
         sets.named_if("render.texture_filter", s.texture_filter, d.texture_filter);
+        sets.named_if("render.overlay", s.overlay, d.overlay);
     }
 
     fn lighting_overrides(&self, sets: &mut Overrides) {

@@ -30,23 +30,39 @@ struct FateVertex {
 pub(crate) struct FateView {
     fill: wgpu::RenderPipeline,
     outline: wgpu::RenderPipeline,
-    fills: GrowBuffer,
-    outlines: GrowBuffer,
-    fill_count: u32,
-    outline_count: u32,
-    /// Kept between frames: the triangles to fill, far to near, and the vertices.
+    /// Drawn in this order: culled outlines (mostly behind what is filled, so under it), the
+    /// fills, then clipped outlines (over everything: what vanished at the border).
+    layers: [Layer; 3],
+    /// Kept between frames: the triangles to fill, far to near.
     order: Vec<(f32, u32)>,
-    fill_vertices: Vec<FateVertex>,
-    outline_vertices: Vec<FateVertex>,
 }
 
-/// Whether a fate reaches the screen (filled) or was removed before it (outlined).
-fn is_filled(kind: FateKind) -> bool {
-    !matches!(
-        kind,
-        FateKind::Clipped | FateKind::Culled | FateKind::ZeroArea
-    )
+/// One draw of the fate view: its vertices on the CPU (kept between frames) and the GPU.
+struct Layer {
+    vertices: Vec<FateVertex>,
+    buffer: GrowBuffer,
+    count: u32,
 }
+
+impl Layer {
+    fn new(device: &wgpu::Device, label: &'static str) -> Self {
+        Self {
+            vertices: Vec::new(),
+            buffer: GrowBuffer::new(device, label, wgpu::BufferUsages::VERTEX),
+            count: 0,
+        }
+    }
+
+    fn upload(&mut self, device: &wgpu::Device, queue: &wgpu::Queue) {
+        self.buffer
+            .write(device, queue, bytemuck::cast_slice(&self.vertices));
+        self.count = self.vertices.len() as u32;
+    }
+}
+
+const UNDER: usize = 0;
+const FILLS: usize = 1;
+const OVER: usize = 2;
 
 impl FateView {
     pub(crate) fn new(device: &wgpu::Device, color_format: wgpu::TextureFormat) -> Self {
@@ -60,13 +76,9 @@ impl FateView {
         Self {
             fill: pipeline(wgpu::PrimitiveTopology::TriangleList),
             outline: pipeline(wgpu::PrimitiveTopology::LineList),
-            fills: GrowBuffer::new(device, "fate fills", wgpu::BufferUsages::VERTEX),
-            outlines: GrowBuffer::new(device, "fate outlines", wgpu::BufferUsages::VERTEX),
-            fill_count: 0,
-            outline_count: 0,
+            layers: ["fate outlines under", "fate fills", "fate outlines over"]
+                .map(|label| Layer::new(device, label)),
             order: Vec::new(),
-            fill_vertices: Vec::new(),
-            outline_vertices: Vec::new(),
         }
     }
 
@@ -85,44 +97,42 @@ impl FateView {
             |t: &[u32; 3]| t.map(|i| gl_to_wgpu_depth(transform.apply(mesh.positions[i as usize])));
         let recorded = mesh.triangles.iter().zip(&fates.triangles);
         self.order.clear();
-        self.outline_vertices.clear();
+        for layer in &mut self.layers {
+            layer.vertices.clear();
+        }
         for (index, (triangle, fate)) in recorded.enumerate() {
             let corners = clip(triangle);
-            if is_filled(fate.kind) {
-                self.order.push((mean_depth(corners), index as u32));
-            } else {
-                push_outline(&mut self.outline_vertices, corners, fate);
+            match fate.kind {
+                FateKind::Clipped => push_outline(&mut self.layers[OVER].vertices, corners, fate),
+                FateKind::Culled | FateKind::ZeroArea => {
+                    push_outline(&mut self.layers[UNDER].vertices, corners, fate);
+                }
+                _ => self.order.push((mean_depth(corners), index as u32)),
             }
         }
         // The painter's order, far to near: no depth buffer in Close2GL's view pass.
         self.order.sort_by(|a, b| b.0.total_cmp(&a.0));
-        self.fill_vertices.clear();
         for &(_, index) in &self.order {
             let color = rgba(fates.triangles[index as usize].kind);
             let corners = clip(&mesh.triangles[index as usize]);
-            self.fill_vertices.extend(corners.map(|c| FateVertex {
+            let vertex = |c: Vec4| FateVertex {
                 clip: c.to_array(),
                 color,
-            }));
+            };
+            self.layers[FILLS].vertices.extend(corners.map(vertex));
         }
-        self.fills
-            .write(device, queue, bytemuck::cast_slice(&self.fill_vertices));
-        self.outlines
-            .write(device, queue, bytemuck::cast_slice(&self.outline_vertices));
-        self.fill_count = self.fill_vertices.len() as u32;
-        self.outline_count = self.outline_vertices.len() as u32;
+        for layer in &mut self.layers {
+            layer.upload(device, queue);
+        }
     }
 
-    /// Fills first, outlines over them: what was removed stays visible where it would be.
     pub(crate) fn draw(&self, pass: &mut wgpu::RenderPass<'_>) {
-        for (pipeline, buffer, count) in [
-            (&self.fill, &self.fills, self.fill_count),
-            (&self.outline, &self.outlines, self.outline_count),
-        ] {
-            if count > 0 {
+        let pipelines = [&self.outline, &self.fill, &self.outline];
+        for (pipeline, layer) in pipelines.into_iter().zip(&self.layers) {
+            if layer.count > 0 {
                 pass.set_pipeline(pipeline);
-                pass.set_vertex_buffer(0, buffer.slice());
-                pass.draw(0..count, 0..1);
+                pass.set_vertex_buffer(0, layer.buffer.slice());
+                pass.draw(0..layer.count, 0..1);
             }
         }
     }

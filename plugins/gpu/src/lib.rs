@@ -28,12 +28,13 @@ mod systems;
 pub mod texture;
 mod views;
 
+pub use close2gl_core::camera_matrices;
 pub use gpu::{Gpu, parse_backends};
 pub use id_pass::{ProbeScene, ReferenceHit, probe_reference};
 pub use image::Image;
 pub use offscreen::{OFFSCREEN_FORMAT, OffscreenPlugin, Snapshot, render_offscreen};
 pub use readback::Readback;
-pub use reference::{camera_matrices, clear_color};
+pub use reference::clear_color;
 pub use systems::GpuPlugin;
 pub use views::Views;
 /// Re-exported so that users of this crate name the same wgpu types.

@@ -8,36 +8,18 @@ mod overlay;
 use std::collections::HashMap;
 
 use bytemuck::{Pod, Zeroable};
+use close2gl_core::camera_matrices;
 use close2gl_core::limits::has_no_area;
 use close2gl_core::{
     Camera, FrontFace, Lighting, Mesh, Overlay, RenderMode, RenderSettings, Shading, Texture,
     TextureFilter,
 };
-use glam::camera::rh::proj::directx::perspective;
-use glam::camera::rh::view::look_at_mat4;
 use glam::{Mat4, Vec3};
 use wgpu::util::DeviceExt;
 
 use crate::DEPTH_FORMAT;
 use crate::reference_texture::ReferenceBindings;
 use overlay::OverlayPipelines;
-
-/// The camera's view and projection from glam's own functions, deliberately independent of
-/// Close2GL's hand-written matrices so that agreement between the views means something. The
-/// projection's aspect comes from the two fields of view, not from the window, as in Close2GL;
-/// depth maps to wgpu's 0..1 (glam's right-handed look-at and WebGPU perspective).
-pub fn camera_matrices(camera: &Camera) -> (Mat4, Mat4) {
-    let view = look_at_mat4(camera.position, camera.position - camera.n, camera.v);
-    let half_h = (camera.hfov.to_radians() * 0.5).tan();
-    let half_v = (camera.vfov.to_radians() * 0.5).tan();
-    let projection = perspective(
-        camera.vfov.to_radians(),
-        half_h / half_v,
-        camera.near,
-        camera.far,
-    );
-    (view, projection)
-}
 
 /// [`camera_matrices`] for a mesh uploaded relative to `origin` (see [`GpuMesh::origin`]): the
 /// camera is moved by the same amount, so eye space is unchanged.

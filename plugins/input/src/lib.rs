@@ -9,8 +9,8 @@
 
 use bevy_ecs::prelude::*;
 use close2gl_core::{
-    App, CameraAction, CameraActions, CameraSpeeds, FrameSet, InputBindings, InputState, Plugin,
-    PreUpdate, RenderSettings, Shading, ToolRequests,
+    App, CameraAction, CameraActions, CameraSpeeds, FrameSet, InputBindings, InputState, Overlay,
+    Plugin, PreUpdate, RenderSettings, Shading, ToolRequests,
 };
 
 pub struct InputPlugin;
@@ -112,5 +112,10 @@ fn apply_press(
         tools.screenshot = true;
     } else if is("copy_command") {
         tools.copy_command = true;
+    } else if is("fate_view") {
+        settings.overlay = match settings.overlay {
+            Overlay::Fates => Overlay::Off,
+            _ => Overlay::Fates,
+        };
     }
 }

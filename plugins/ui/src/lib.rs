@@ -5,11 +5,14 @@
 //! `Close2glFrame` and [`ViewStats`] (frame times, the adapter's name and limitations, which the
 //! viewer fills). Tools sets `ToolRequests` (the input plugin's), carries out copy as command
 //! (clipboard and terminal) and the key cheat sheet (from `InputBindings`), and shows the
-//! [`Notice`] a tool leaves. It owns `PanelState`, `ViewStats` and `Notice`; the other plugins provide what it reads.
+//! [`Notice`] a tool leaves. Inspector reads `Fates`, `Mesh`, `Camera` and `Viewport` (the
+//! legend's counts, the picked triangle's fate, the matrices) and writes
+//! `RenderSettings::overlay`. It owns `PanelState`, `ViewStats` and `Notice`; the other plugins provide what it reads.
 //! It has no systems: it knows no window system or GPU, and the viewer hands it an `egui::Ui`
 //! and the world once a frame (before the app's frame runs), and so can a test.
 
 mod camera;
+mod inspector;
 mod model;
 mod render;
 mod stats;
@@ -57,6 +60,8 @@ pub struct PanelState {
     pub texture_path: String,
     /// The key cheat sheet is shown.
     pub help: bool,
+    /// The mesh triangle the inspector shows.
+    pub inspected_triangle: usize,
 }
 
 /// Shows the panel at the right of `ui` and returns the rectangle left for the views, in points.
@@ -117,6 +122,9 @@ fn sections(ui: &mut egui::Ui, world: &mut World) {
     egui::CollapsingHeader::new("Tools")
         .default_open(true)
         .show(ui, |ui| tools::section(ui, world));
+    egui::CollapsingHeader::new("Inspector")
+        .default_open(true)
+        .show(ui, |ui| inspector::section(ui, world));
     egui::CollapsingHeader::new("Stats")
         .default_open(true)
         .show(ui, |ui| stats::section(ui, world));

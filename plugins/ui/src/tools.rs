@@ -120,7 +120,7 @@ pub fn show_notice(ui: &egui::Ui, area: egui::Rect, world: &mut World) {
 }
 
 /// What each action does, in the cheat sheet's words.
-const DESCRIPTIONS: [(&str, &str); 20] = [
+const DESCRIPTIONS: [(&str, &str); 21] = [
     ("forward", "move forward (along -n)"),
     ("back", "move back (along n)"),
     ("left", "move left (along -u)"),
@@ -141,6 +141,7 @@ const DESCRIPTIONS: [(&str, &str); 20] = [
     ("help", "show or hide these keys"),
     ("screenshot", "save both views as PNGs"),
     ("copy_command", "copy the command for this view"),
+    ("fate_view", "inspector: the fate view on / off"),
 ];
 
 /// `action`'s keys as the user reads them: "f1 or ?".

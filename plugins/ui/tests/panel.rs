@@ -4,9 +4,9 @@
 //! it on into both GPU views.
 
 use close2gl_core::{
-    CameraAction, CameraActions, Close2glFrame, InputBindings, ModelRequest, ModelSource,
-    ModelStatus, PrimitiveKind, RenderMode, RenderSettings, TextureFilter, TextureRequest,
-    ToolRequests, Topology,
+    CameraAction, CameraActions, Close2glFrame, FateKind, Fates, InputBindings, ModelRequest,
+    ModelSource, ModelStatus, Overlay, PrimitiveKind, RenderMode, RenderSettings, TextureFilter,
+    TextureRequest, ToolRequests, Topology,
 };
 use close2gl_testkit::panel::Harness;
 use close2gl_ui::{Notice, PanelState};
@@ -197,4 +197,38 @@ fn a_model_loading_in_the_background_shows_a_bar_with_its_name_and_percent() {
     h.world().resource_mut::<ModelStatus>().loading = None;
     h.frame(Vec::new());
     assert!(!h.shows("loading big.in: 42%"), "gone once loaded");
+}
+
+#[test]
+fn the_inspector_switches_the_fate_view_and_shows_the_picked_triangles_fate_and_the_matrices() {
+    let mut h = Harness::new();
+    // The GPU plugin asks for fates while the fate view is shown; the harness has no GPU.
+    h.world().resource_mut::<Fates>().record = true;
+    h.click(Role::Button, "fates");
+    assert_eq!(
+        h.world().resource::<RenderSettings>().overlay,
+        Overlay::Fates
+    );
+    // The real pipeline recorded the harness's back face.
+    let fate = *h.world().resource::<Fates>().of(0).expect("recorded");
+    assert_eq!(fate.kind, FateKind::Culled);
+    h.set_value(Role::SpinButton, "Triangle", 0.0);
+    assert!(h.shows("Fate: culled"));
+    let area = format!("Signed area (x2, y down): {:.3}", fate.signed_area);
+    assert!(h.shows(&area), "{area}");
+    // The journey: a triangle inside the volume has no clip steps, and is divided as it is.
+    for stage in [
+        "world 1",
+        "eye 2",
+        "clip 0",
+        "ndc 1",
+        "window 2",
+        "Culling: culled",
+    ] {
+        assert!(h.shows(stage), "{stage}");
+    }
+    assert!(!h.shows("left 0"), "no clip step");
+    assert!(!h.shows("M (Close2GL)"), "the matrices start folded");
+    h.click(Role::DisclosureTriangle, "Matrices");
+    assert!(h.shows("M (Close2GL)") && h.shows("projection (reference)"));
 }

@@ -1,0 +1,289 @@
+//! The inspector section: the fate view's switch and legend (each fate's count, from the record
+//! Close2GL itself keeps, and the colours of the reference's overlays, which the GPU answers); a
+//! triangle picked by index with its fate and its journey; the matrices M, P, V with their current numbers beside
+//! the reference's own view and projection, and their largest difference.
+
+use bevy_ecs::prelude::*;
+use close2gl_core::glam::Mat4;
+use close2gl_core::{
+    Camera, ClipPlane, FateKind, Fates, Mesh, Overlay, RenderSettings, TriangleFate, Viewport,
+    camera_matrices,
+};
+use close2gl_pipeline::journey::{Journey, journey};
+use close2gl_pipeline::matrices;
+
+use crate::PanelState;
+
+pub fn section(ui: &mut egui::Ui, world: &mut World) {
+    overlay_switch(ui, world);
+    legend(ui, world);
+    triangle(ui, world);
+    egui::CollapsingHeader::new("Matrices")
+        .default_open(false)
+        .show(ui, |ui| {
+            egui::ScrollArea::horizontal()
+                .id_salt("matrices")
+                .show(ui, |ui| matrices_grid(ui, world));
+        });
+}
+
+fn overlay_switch(ui: &mut egui::Ui, world: &mut World) {
+    let Some(mut settings) = world.get_resource::<RenderSettings>().copied() else {
+        return;
+    };
+    ui.horizontal(|ui| {
+        ui.label("Overlay");
+        for overlay in [Overlay::Off, Overlay::Fates] {
+            ui.selectable_value(&mut settings.overlay, overlay, overlay.name());
+        }
+    })
+    .response
+    .on_hover_text(
+        "fates: Close2GL's view in each triangle's fate colour (its own record), with outlines \
+         of what clipping and culling removed; the reference view with the GPU's own facing \
+         and depth-test answers.",
+    );
+    crate::write_if_changed(world, &settings);
+}
+
+/// The two halves of the fate view's legend: Close2GL's fates with their counts, and what the
+/// GPU paints over the reference.
+fn legend(ui: &mut egui::Ui, world: &mut World) {
+    let Some(fates) = world.get_resource::<Fates>() else {
+        return;
+    };
+    if fates.triangles.is_empty() {
+        ui.weak("No fates recorded (turn the fate view on).");
+    }
+    egui::Grid::new("fate_legend").show(ui, |ui| {
+        for &kind in FateKind::ALL {
+            swatch(ui, kind.color());
+            ui.label(kind.name());
+            ui.label(fates.counts.get(kind).to_string());
+            ui.end_row();
+        }
+    });
+    ui.label("Reference (the GPU's answers):");
+    egui::Grid::new("reference_legend").show(ui, |ui| {
+        for (kind, meaning) in [
+            (FateKind::Drawn, "front facing, won the depth test"),
+            (FateKind::Culled, "back facing, won the depth test"),
+            (FateKind::Hidden, "failed the depth test"),
+        ] {
+            swatch(ui, kind.color());
+            ui.label(meaning);
+            ui.end_row();
+        }
+    });
+}
+
+fn swatch(ui: &mut egui::Ui, [r, g, b]: [u8; 3]) {
+    let (rect, _) = ui.allocate_exact_size(egui::vec2(12.0, 12.0), egui::Sense::hover());
+    ui.painter()
+        .rect_filled(rect, 2.0, egui::Color32::from_rgb(r, g, b));
+}
+
+/// The picked triangle: its fate (as recorded, with the rasterizer's verdicts, else as the
+/// journey decides it) and its journey through the pipeline, every stage's numbers.
+fn triangle(ui: &mut egui::Ui, world: &mut World) {
+    let Some((mesh, camera)) = mesh_and_camera(world) else {
+        return;
+    };
+    let count = mesh.triangles.len();
+    if count == 0 {
+        return;
+    }
+    let mut panel = world.resource_mut::<PanelState>();
+    let picked = &mut panel.inspected_triangle;
+    *picked = (*picked).min(count - 1);
+    ui.horizontal(|ui| {
+        let label = ui.label("Triangle");
+        ui.add(egui::DragValue::new(picked).range(0..=count - 1))
+            .labelled_by(label.id);
+        ui.weak(format!("of {count}"));
+    });
+    let index = *picked;
+    let settings = world
+        .get_resource::<RenderSettings>()
+        .copied()
+        .unwrap_or_default();
+    let viewport = world
+        .get_resource::<Viewport>()
+        .copied()
+        .unwrap_or_default();
+    let Some(journey) = journey(&mesh, index, &camera, &settings, viewport) else {
+        return;
+    };
+    let recorded = world
+        .get_resource::<Fates>()
+        .and_then(|f| f.of(index).copied());
+    fate_lines(ui, recorded.unwrap_or(journey.fate));
+    egui::CollapsingHeader::new("Journey")
+        .default_open(true)
+        .show(ui, |ui| journey_grid(ui, &journey));
+}
+
+/// The world's one mesh and camera, copied out (the panel writes other resources meanwhile).
+fn mesh_and_camera(world: &mut World) -> Option<(Mesh, Camera)> {
+    let mesh = world.query::<&Mesh>().iter(world).next()?.clone();
+    let camera = *world.query::<&Camera>().iter(world).next()?;
+    Some((mesh, camera))
+}
+
+fn fate_lines(ui: &mut egui::Ui, fate: TriangleFate) {
+    ui.label(format!("Fate: {}", fate.kind.name()));
+    let planes: Vec<&str> = ClipPlane::in_outcode(fate.planes)
+        .map(ClipPlane::name)
+        .collect();
+    if !planes.is_empty() {
+        ui.label(format!("Planes: {}", planes.join(", ")));
+    }
+    if fate.behind_eye {
+        ui.label("Behind the eye (w <= 0 at every corner)");
+    }
+    if !fate.signed_area.is_nan() {
+        ui.label(format!("Signed area (x2, y down): {:.3}", fate.signed_area));
+    }
+}
+
+/// Each stage's points, one row each: world, eye = M·p, clip = P·M·p, the polygon after each
+/// clipping step, NDC (÷ w) and window (V·ndc: pixels, depth).
+fn journey_grid(ui: &mut egui::Ui, journey: &Journey) {
+    // Rows of four numbers are wider than the panel: they scroll sideways inside it.
+    egui::ScrollArea::horizontal()
+        .id_salt("journey")
+        .show(ui, |ui| points_grid(ui, journey));
+    let culling = journey.culling.map_or("kept", FateKind::name);
+    ui.label(format!("Culling: {culling}"));
+}
+
+fn points_grid(ui: &mut egui::Ui, journey: &Journey) {
+    egui::Grid::new("journey").striped(true).show(ui, |ui| {
+        let mut row = |name: String, values: &[f32]| {
+            ui.label(name);
+            let text: Vec<String> = values.iter().map(|v| format!("{v:>9.3}")).collect();
+            ui.monospace(text.join(" "));
+            ui.end_row();
+        };
+        for (i, p) in journey.world.iter().enumerate() {
+            row(format!("world {i}"), &p.to_array());
+        }
+        for (i, p) in journey.eye.iter().enumerate() {
+            row(format!("eye {i}"), &p.to_array());
+        }
+        for (i, p) in journey.clip.iter().enumerate() {
+            row(format!("clip {i}"), &p.to_array());
+        }
+        for step in &journey.clip_steps {
+            for (i, p) in step.polygon.iter().enumerate() {
+                row(format!("{} {i}", step.plane.name()), &p.to_array());
+            }
+        }
+        for (i, p) in journey.ndc.iter().enumerate() {
+            row(format!("ndc {i}"), &p.to_array());
+        }
+        for (i, p) in journey.window.iter().enumerate() {
+            row(format!("window {i}"), &p.to_array());
+        }
+    });
+}
+
+/// M, P and V as Close2GL builds them, the reference's view and projection (glam's), and how far
+/// apart they are. P is compared in wgpu's depth range (z' = (z + w) / 2), the one the reference
+/// projects to: OpenGL's -1..1 and WebGPU's 0..1 differ there by design.
+fn matrices_grid(ui: &mut egui::Ui, world: &mut World) {
+    let camera = world.query::<&Camera>().iter(world).next().copied();
+    let (Some(camera), Some(viewport)) = (camera, world.get_resource::<Viewport>().copied()) else {
+        return;
+    };
+    let v = matrices::viewport(viewport.width as f32, viewport.height as f32);
+    let (view, projection) = camera_matrices(&camera);
+    for (name, matrix) in [
+        ("M (Close2GL)", matrices::modelview(&camera)),
+        (
+            "P (Close2GL)",
+            matrices::projection(camera.hfov, camera.vfov, camera.near, camera.far),
+        ),
+        ("V (Close2GL)", v),
+        ("view (reference)", view),
+        ("projection (reference)", projection),
+    ] {
+        rows(ui, name, matrix);
+    }
+    let (dm, dp) = differences(&camera);
+    ui.label(format!(
+        "Largest difference: M vs view {dm:.2e}, P vs projection {dp:.2e}"
+    ));
+}
+
+/// The largest entry of M − view and of P − projection, P taken to wgpu's depth range.
+fn differences(camera: &Camera) -> (f32, f32) {
+    let m = matrices::modelview(camera);
+    let p = matrices::projection(camera.hfov, camera.vfov, camera.near, camera.far);
+    let (view, projection) = camera_matrices(camera);
+    // z' = (z + w) / 2, column-major.
+    let gl_to_wgpu = Mat4::from_cols_array_2d(&[
+        [1.0, 0.0, 0.0, 0.0],
+        [0.0, 1.0, 0.0, 0.0],
+        [0.0, 0.0, 0.5, 0.0],
+        [0.0, 0.0, 0.5, 1.0],
+    ]);
+    (
+        largest_difference(m, view),
+        largest_difference(gl_to_wgpu * p, projection),
+    )
+}
+
+/// A 4x4 matrix as four row literals.
+fn rows(ui: &mut egui::Ui, name: &str, matrix: Mat4) {
+    ui.label(name);
+    let text: Vec<String> = (0..4)
+        .map(|r| {
+            let row = matrix.row(r);
+            format!(
+                "[{:>9.4}, {:>9.4}, {:>9.4}, {:>9.4}]",
+                row.x, row.y, row.z, row.w
+            )
+        })
+        .collect();
+    ui.monospace(text.join("\n"));
+}
+
+fn largest_difference(a: Mat4, b: Mat4) -> f32 {
+    (a - b)
+        .to_cols_array()
+        .iter()
+        .fold(0.0, |m, d| m.max(d.abs()))
+}
+
+#[cfg(test)]
+mod tests {
+    use close2gl_core::glam::Vec3;
+
+    use super::*;
+
+    #[test]
+    fn the_reference_matrices_equal_close2gls_within_a_millionth_of_their_size() {
+        for (position, hfov, vfov, near, far) in [
+            (Vec3::new(3.0, 4.0, 5.0), 60.0, 60.0, 0.1, 100.0),
+            (Vec3::new(-200.0, 10.0, 40.0), 90.0, 45.0, 1.0, 5000.0),
+        ] {
+            let camera = Camera {
+                hfov,
+                vfov,
+                near,
+                far,
+                ..Camera::default()
+            }
+            .looking_at(position, Vec3::ZERO, Vec3::Y)
+            .expect("a valid pose");
+            let (dm, dp) = differences(&camera);
+            let size = position.length();
+            assert!(
+                dm <= 1e-6 * size.max(1.0) * 4.0,
+                "M vs view: {dm} at {position}"
+            );
+            assert!(dp <= 1e-5, "P vs projection: {dp}");
+        }
+    }
+}
