@@ -2,6 +2,7 @@
 //! primitives, framed and from poses where the near plane and the view's sides cut the model.
 
 use close2gl::config::Config;
+use close2gl::core::glam::Vec3;
 use close2gl::core::{
     Camera, Clipping, Close2glFrame, Fates, Mesh, ModelSource, RenderMode, RenderSettings, Viewport,
 };
@@ -92,4 +93,34 @@ fn fast_equals_textbook(model: &str, mesh: &Mesh, camera: &Camera) -> bool {
         }
     }
     clipped
+}
+
+/// A sphere big enough for several of the fast path's parallel chunks, seen from close by: each
+/// chunk writes its own slice of the fates, and they must line up with the mesh's triangles.
+#[test]
+fn the_fast_paths_chunks_write_their_fates_in_mesh_order() {
+    let mesh = close2gl_testkit::sphere(Vec3::ZERO, 3.0, 160, 160);
+    assert!(mesh.triangles.len() > 40_000);
+    let camera = Camera::default()
+        .looking_at(Vec3::new(0.5, 0.3, 3.1), Vec3::new(3.0, 0.0, 0.0), Vec3::Y)
+        .expect("a valid pose");
+    let viewport = Viewport {
+        width: 400,
+        height: 300,
+    };
+    let settings = RenderSettings::default();
+    let (_, slow) = textbook::run_recording(&mesh, &camera, &settings, viewport);
+    let mut fates = Fates {
+        record: true,
+        ..Fates::default()
+    };
+    let mut frame = Close2glFrame::default();
+    FastPipeline::default().run(&mesh, &camera, &settings, viewport, &mut frame, &mut fates);
+    let c = fates.counts;
+    assert!(
+        c.drawn > 0 && c.cut > 0 && c.clipped > 0 && c.culled > 0,
+        "{c:?}"
+    );
+    assert_eq!(slow.counts, fates.counts);
+    assert!(format!("{:?}", slow.triangles) == format!("{:?}", fates.triangles));
 }

@@ -64,6 +64,10 @@ const VIEW: [&str; 12] = [
     "--set",
     "render.close2gl_raster=software",
 ];
+const SIZE: Viewport = Viewport {
+    width: 100,
+    height: 100,
+};
 const FOV: [&str; 4] = ["--set", "camera.hfov=90", "--set", "camera.vfov=90"];
 
 /// The scene as an OBJ file, written once for all the tests (which run in parallel).
@@ -199,6 +203,13 @@ fn stats_counts_each_fate() {
     assert_eq!(gpu["fates"]["drawn"], 4, "{gpu}");
 }
 
+#[test]
+fn render_reports_the_same_fates_as_stats() {
+    let out = scene_file().with_file_name("render");
+    let render = json("render", &["--out", out.to_str().expect("UTF-8")]);
+    assert_eq!(render["fates"], json("stats", &[])["fates"], "{render}");
+}
+
 /// The scene as a headless World, fates recorded.
 fn world_app(extra: &[&str]) -> close2gl::core::App {
     let model = scene_file();
@@ -209,11 +220,7 @@ fn world_app(extra: &[&str]) -> close2gl::core::App {
         .collect();
     let mut config = close2gl::config::load(None, &sets).expect("the settings");
     config.model = close2gl::core::ModelSource::parse(model.to_str().expect("UTF-8"));
-    let size = Viewport {
-        width: 100,
-        height: 100,
-    };
-    let mut app = close2gl::build_app(&config, size).expect("the scene");
+    let mut app = close2gl::build_app(&config, SIZE).expect("the scene");
     app.world_mut().resource_mut::<Fates>().record = true;
     app.update();
     app
@@ -265,23 +272,27 @@ fn probed(extra: &[&str]) -> Probed {
 }
 
 impl Probed {
+    /// Close2GL's probe, its winner from the software rasterizer's id buffer.
     fn close2gl(&self, x: u32, y: u32) -> probe::PixelProbe {
+        self.close2gl_probe(x, y, true)
+    }
+
+    /// Close2GL's probe; with `from_rasterizer` false, its winner worked out by the probe
+    /// itself (as when the GPU draws Close2GL's 2D buffer).
+    fn close2gl_probe(&self, x: u32, y: u32, from_rasterizer: bool) -> probe::PixelProbe {
         let world = self.app.world();
         let scene = probe::ProbeScene {
             mesh: &self.mesh,
             camera: &self.camera,
             settings: &self.settings,
-            viewport: Viewport {
-                width: 100,
-                height: 100,
-            },
+            viewport: SIZE,
             fates: world.resource::<Fates>(),
         };
         let drawn = Drawn {
             rasterizer: world.resource::<SoftwareRasterizer>(),
             image: world.resource::<SoftwareFrame>(),
         };
-        probe::probe(scene, x, y, Some(drawn))
+        probe::probe(scene, x, y, from_rasterizer.then_some(drawn))
     }
 
     fn reference(&self, x: u32, y: u32) -> Option<u32> {
@@ -289,10 +300,7 @@ impl Probed {
             mesh: &self.mesh,
             camera: &self.camera,
             settings: &self.settings,
-            viewport: Viewport {
-                width: 100,
-                height: 100,
-            },
+            viewport: SIZE,
         };
         probe_reference(&self.gpu, scene, (x, y))
             .expect("the reference probe")
@@ -353,4 +361,47 @@ fn the_probe_names_what_simple_clipping_removed() {
         .map(|c| (c.triangle, c.outcome))
         .collect();
     assert_eq!(outcomes, [(10, Outcome::Won), (11, Outcome::Depth)]);
+}
+
+#[test]
+fn the_probes_own_winner_is_the_rasterizers() {
+    let p = probed(&[]);
+    let mut covered = 0;
+    for (x, y) in (0..100).flat_map(|y| (0..100).map(move |x| (x, y))) {
+        let (drawn, computed) = (p.close2gl(x, y), p.close2gl_probe(x, y, false));
+        assert_eq!(
+            computed.triangle, drawn.triangle,
+            "pixel {x},{y}: {computed:?}"
+        );
+        covered += usize::from(drawn.triangle.is_some());
+    }
+    assert!(covered > 300, "{covered}");
+}
+
+/// Two triangles sharing a diagonal through pixel centres: on the diagonal, one draws the
+/// centre and the top-left rule gives it away from the other, which the probe says.
+#[test]
+fn the_probe_names_the_fill_rule_on_a_shared_edge() {
+    let square =
+        "v -2.95 2.95 -5\nv -2.95 0.95 -5\nv -0.95 0.95 -5\nv -0.95 2.95 -5\nf 1 2 3\nf 1 3 4\n";
+    let path = scene_file().with_file_name("square.obj");
+    std::fs::write(&path, square).expect("write the square");
+    let model = path.to_str().expect("UTF-8");
+    let args = [&["inspect", model][..], &VIEW, &FOV, &["--pixel", "30,30"]].concat();
+    let out = close2gl(&args);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let j: Value = serde_json::from_slice(&out.stdout).expect("JSON");
+    let mut outcomes: Vec<&str> = j["close2gl"]["candidates"]
+        .as_array()
+        .expect("candidates")
+        .iter()
+        .map(|c| c["outcome"].as_str().expect("an outcome"))
+        .collect();
+    outcomes.sort();
+    assert_eq!(outcomes, ["fill_rule", "won"], "{j}");
+    assert_eq!(j["agree"], true, "{j}");
 }

@@ -47,7 +47,10 @@ pub fn run(args: InspectArgs) -> Result<(), CliError> {
     let report = match (args.triangle, pixel) {
         (Some(index), _) => triangle_report(&mut app, index, viewport)?,
         (None, Some(pixel)) => pixel_report(&mut app, pixel, viewport)?,
-        (None, None) => unreachable!("clap requires --pixel or --triangle"),
+        (None, None) => {
+            let text = "inspect: expected --pixel X,Y or --triangle N";
+            return Err(CliError::Input(text.into()));
+        }
     };
     println!("{report}");
     Ok(())

@@ -105,6 +105,8 @@ pub struct FateCounts {
 }
 
 impl FateCounts {
+    /// Counts one more triangle of `kind`. Inlined: the pipeline calls it for every triangle.
+    #[inline]
     pub fn add(&mut self, kind: FateKind) {
         *self.get_mut(kind) += 1;
     }
@@ -121,6 +123,7 @@ impl FateCounts {
         *copy.get_mut(kind)
     }
 
+    #[inline]
     fn get_mut(&mut self, kind: FateKind) -> &mut usize {
         match kind {
             FateKind::Drawn => &mut self.drawn,

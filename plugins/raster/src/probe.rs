@@ -4,7 +4,9 @@
 //! (`setup`), on the polygon the pipeline drew (its clipped piece), or, for a triangle that
 //! clipping removed, on where it would have projected: the whole triangle when every corner
 //! has w > 0, and otherwise the part in front of the near plane, since behind the eye (w <= 0)
-//! nothing projects at all, which is why every GPU cuts at the near plane.
+//! nothing projects at all, which is why every GPU cuts at the near plane. Candidates are found
+//! by the triangles' areas, as in solid mode; in wireframe and point modes the winner is still
+//! the rasterizer's own when it drew the view.
 
 use close2gl_core::{
     Camera, Clipping, FateKind, Fates, Mesh, RenderSettings, SoftwareFrame, Viewport,
