@@ -8,7 +8,9 @@
 
 pub mod clip;
 pub mod fast;
+pub mod frustum;
 pub mod matrices;
+pub mod morph;
 pub mod stage;
 pub mod textbook;
 
