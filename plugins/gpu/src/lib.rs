@@ -7,12 +7,15 @@
 //! owns the target (a window, or [`render_offscreen`]) records the draws.
 //! Offscreen rendering, reading textures back ([`Readback`]), the texture and attachment
 //! descriptions every target shares ([`texture`]), PNG images and the coverage comparison behind
-//! `close2gl render` and the parity tests live here too. No window or UI crate is a dependency.
+//! `close2gl render` and the parity tests live here too. [`outside`] is the third view, the
+//! pipeline seen from outside: its [`outside::OutsidePlugin`] reads the camera, the mesh, the
+//! settings, `OutsideView`, `OutsideOrbit` and `Fates`, and fills [`outside::OutsideRenderer`]. No window or UI crate is a dependency.
 
 mod close2gl_view;
 mod gpu;
 pub mod image;
 mod offscreen;
+pub mod outside;
 pub mod parity;
 mod readback;
 mod reference;

@@ -1,0 +1,95 @@
+//! The pipeline seen from outside: a third view, drawn by wgpu, with its own orbit camera, of
+//! the model, the Close2GL camera's view volume (from the real matrices) and the camera as a
+//! gizmo, at a stage between world, eye and normalised device coordinates. It is an
+//! illustration, not one of the two pipelines compared.
+
+mod camera;
+mod offscreen;
+mod renderer;
+mod scene;
+
+use bevy_ecs::prelude::*;
+use close2gl_core::{
+    App, Camera, Fates, FrameSet, Mesh, OutsideOrbit, OutsideView, Overlay, Plugin, PostUpdate,
+    Render, RenderSettings, Viewport,
+};
+use close2gl_pipeline::morph::{StageFrame, StageMorph};
+
+pub use camera::OutsideCamera;
+pub use offscreen::render_outside;
+pub use renderer::OutsideRenderer;
+use scene::SceneInput;
+
+use crate::Gpu;
+
+/// Adds the outside view's systems: asking the pipeline for each triangle's fate while the view
+/// shows the fate colours, and, in `Render`, placing the scene at the stage and uploading it
+/// into [`OutsideRenderer`] (inserted by whoever owns the target). Nothing runs while
+/// `OutsideView::show` is off. It owns `Fates` when nobody else added it; it reads `Camera`,
+/// `Mesh`, `RenderSettings`, `Viewport`, `OutsideView` and `OutsideOrbit` (the settings plugin's).
+pub struct OutsidePlugin;
+
+impl Plugin for OutsidePlugin {
+    fn build(&self, app: &mut App) {
+        app.init_resource::<Fates>()
+            .requires::<OutsideView>("OutsidePlugin", "SettingsPlugin")
+            .requires::<OutsideOrbit>("OutsidePlugin", "SettingsPlugin")
+            .add_systems(
+                PostUpdate,
+                request_fates.in_set(FrameSet::Camera).run_if(outside_shown),
+            )
+            .add_systems(
+                Render,
+                upload_outside.in_set(FrameSet::Render).run_if(
+                    outside_shown
+                        .and_then(resource_exists::<Gpu>)
+                        .and_then(resource_exists::<OutsideRenderer>),
+                ),
+            );
+    }
+}
+
+fn outside_shown(outside: Res<OutsideView>) -> bool {
+    outside.show
+}
+
+/// The fate colours need every triangle's fate: ask the pipeline (which runs after this, in
+/// `FrameSet::Close2gl`) to record them. Never turned off here: the inspector may want them too.
+fn request_fates(settings: Res<RenderSettings>, mut fates: ResMut<Fates>) {
+    if settings.overlay == Overlay::Fates && !fates.record {
+        fates.record = true;
+    }
+}
+
+/// Places the model, the volume and the gizmo at the stage and uploads them, every frame the
+/// view shows (the viewer draws only frames in which something changed).
+#[allow(clippy::too_many_arguments)]
+fn upload_outside(
+    gpu: Res<Gpu>,
+    camera: Single<&Camera>,
+    mesh: Single<&Mesh>,
+    settings: Res<RenderSettings>,
+    viewport: Res<Viewport>,
+    outside: Res<OutsideView>,
+    orbit: Res<OutsideOrbit>,
+    fates: Res<Fates>,
+    mut renderer: ResMut<OutsideRenderer>,
+) {
+    if mesh.validate().is_err() {
+        return;
+    }
+    let frame = StageFrame::new(&camera, mesh.bounds());
+    let morph = StageMorph::new(&camera, &frame, outside.stage);
+    let aspect = viewport.width.max(1) as f32 / viewport.height.max(1) as f32;
+    let view = OutsideCamera::new(&orbit, &frame, morph.blend(frame.centres), aspect);
+    renderer.scene.build(&SceneInput {
+        camera: &camera,
+        mesh: &mesh,
+        settings: &settings,
+        fates: &fates,
+        frame: &frame,
+        stage: outside.stage,
+        billboard: OutsideCamera::billboard(&orbit),
+    });
+    renderer.upload(&gpu, view);
+}
