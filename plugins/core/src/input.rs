@@ -34,7 +34,7 @@ pub struct InputBindings(pub BTreeMap<String, String>);
 
 impl InputBindings {
     /// Every bindable action with its default key.
-    pub const DEFAULTS: [(&'static str, &'static str); 20] = [
+    pub const DEFAULTS: [(&'static str, &'static str); 21] = [
         ("forward", "w"),
         ("back", "s"),
         ("left", "a"),
@@ -55,6 +55,7 @@ impl InputBindings {
         ("help", "f1 ?"),
         ("screenshot", "f12"),
         ("copy_command", "c"),
+        ("outside_view", "o"),
     ];
 
     /// The binding as written: one key, or several separated by spaces (`"f1 ?"`).

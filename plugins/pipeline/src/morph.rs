@@ -15,6 +15,11 @@ use crate::matrices::ClipTransform;
 /// 0 divides to near infinity, and the outside camera needs finite numbers.
 const NDC_LIMIT: f32 = 1e3;
 
+/// How far from the cube's centre the outside view shows what the division threw, in cube
+/// half-widths: a point just in front of or behind the eye (w near 0) lands arbitrarily far
+/// away, and its triangles would fill the view and hide the cube.
+pub const SHOWN_LIMIT: f32 = 2.0;
+
 /// A point as the outside view draws it at one stage.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Placed {
@@ -26,6 +31,17 @@ pub struct Placed {
     /// Past the eye stage with w <= 0 (at or behind the eye): the division throws it to the
     /// wrong side, and the outside view draws it in its warning colour.
     pub behind_eye: bool,
+    /// Past the eye stage, divided to more than [`SHOWN_LIMIT`] cube half-widths away.
+    pub thrown_far: bool,
+}
+
+/// Whether the segment or triangle with these corners has an image to show at its stage. Past
+/// the eye stage, one with corners on both sides of w = 0 has none (its edges pass through
+/// infinity, where the division sends w = 0), nor has one with a corner thrown beyond
+/// [`SHOWN_LIMIT`].
+pub fn has_image(corners: &[Placed]) -> bool {
+    let behind = corners.iter().filter(|c| c.behind_eye).count();
+    (behind == 0 || behind == corners.len()) && !corners.iter().any(|c| c.thrown_far)
 }
 
 /// The stage morph for one camera. World positions are drawn relative to `origin` (the model's
@@ -55,15 +71,19 @@ impl StageMorph {
     pub fn place(&self, p: Vec3) -> Placed {
         let clip = self.transform.apply(p);
         let eye = self.transform.eye(p);
-        let position = if self.stage <= 1.0 {
-            (p - self.origin).lerp(eye, self.stage)
+        let divided = self.stage > 1.0;
+        let (position, thrown_far) = if divided {
+            let ndc = self.ndc(clip);
+            let far = ndc.abs().max_element() > SHOWN_LIMIT * self.ndc_scale;
+            (eye.lerp(ndc, self.stage - 1.0), far)
         } else {
-            eye.lerp(self.ndc(clip), self.stage - 1.0)
+            ((p - self.origin).lerp(eye, self.stage), false)
         };
         Placed {
             position,
             clip,
-            behind_eye: self.stage > 1.0 && clip.w <= 0.0,
+            behind_eye: divided && clip.w <= 0.0,
+            thrown_far,
         }
     }
 
@@ -231,11 +251,35 @@ mod tests {
     }
 
     #[test]
+    fn past_the_eye_stage_a_triangle_across_w_0_has_no_image() {
+        let (camera, bounds) = scene();
+        let frame = StageFrame::new(&camera, bounds);
+        let target = frame.origin;
+        let corners = [
+            target,
+            target + camera.u * 50.0,
+            camera.position + camera.n * 100.0,
+        ];
+        for (stage, expected) in [(0.0, true), (1.0, true), (1.01, false), (2.0, false)] {
+            let morph = StageMorph::new(&camera, &frame, stage);
+            let placed = corners.map(|c| morph.place(c));
+            assert_eq!(has_image(&placed), expected, "stage {stage}");
+        }
+        let in_front = StageMorph::new(&camera, &frame, 2.0);
+        assert!(has_image(
+            &corners[..2]
+                .iter()
+                .map(|c| in_front.place(*c))
+                .collect::<Vec<_>>()
+        ));
+    }
+
+    #[test]
     fn a_point_on_the_eye_plane_stays_finite() {
         let (camera, bounds) = scene();
         let frame = StageFrame::new(&camera, bounds);
         let morph = StageMorph::new(&camera, &frame, 2.0);
         let placed = morph.place(camera.position + camera.u * 10.0);
-        assert!(placed.position.is_finite() && placed.behind_eye);
+        assert!(placed.position.is_finite() && placed.behind_eye && placed.thrown_far);
     }
 }

@@ -8,7 +8,7 @@
 use bytemuck::{Pod, Zeroable};
 use close2gl_core::{Camera, FateKind, Fates, Mesh, Overlay, RenderSettings};
 use close2gl_pipeline::frustum::{EDGES, world_corners};
-use close2gl_pipeline::morph::{Placed, StageFrame, StageMorph};
+use close2gl_pipeline::morph::{Placed, StageFrame, StageMorph, has_image};
 use glam::Vec3;
 
 use crate::parity::to_rgb8;
@@ -116,9 +116,12 @@ impl OutsideScene {
         let model = rgba(input.settings.color);
         self.mesh.clear();
         for (t, corners) in mesh.triangles.iter().enumerate() {
+            let corners = corners.map(|i| self.placed[i as usize]);
+            if !has_image(&corners) {
+                continue;
+            }
             let color = fates.map_or(model, |f| fate_color(f.triangles[t].kind));
-            for &i in corners {
-                let placed = &self.placed[i as usize];
+            for placed in &corners {
                 self.mesh
                     .push(OutsideVertex::of(placed, input.stage, color));
             }
@@ -132,10 +135,7 @@ impl OutsideScene {
         self.lines.clear();
         for (e, [a, b]) in EDGES.iter().enumerate() {
             let color = if e < 4 { WINDOW } else { EDGE };
-            for c in [&corners[*a], &corners[*b]] {
-                self.lines
-                    .push(OutsideVertex::plain(c.position, c.behind_eye, color));
-            }
+            self.segment(&[corners[*a], corners[*b]], color);
         }
         self.faces.clear();
         for (face, color) in [([0, 1, 3, 2], NEAR_FACE), ([4, 5, 7, 6], FAR_FACE)] {
@@ -161,9 +161,8 @@ impl OutsideScene {
             .zip(LETTERS)
         {
             let tip = morph.place(camera.position + axis * length);
-            for p in [&origin, &tip] {
-                self.lines
-                    .push(OutsideVertex::plain(p.position, p.behind_eye, color));
+            if !self.segment(&[origin, tip], color) {
+                continue;
             }
             let at = tip.position + (right + up) * (size * 0.4);
             for pair in letter.windows(2) {
@@ -174,6 +173,20 @@ impl OutsideScene {
                 }
             }
         }
+    }
+}
+
+impl OutsideScene {
+    /// A line from `ends[0]` to `ends[1]` when it has an image at the stage; returns whether.
+    fn segment(&mut self, ends: &[Placed; 2], color: [u8; 4]) -> bool {
+        let shown = has_image(ends);
+        if shown {
+            for p in ends {
+                self.lines
+                    .push(OutsideVertex::plain(p.position, p.behind_eye, color));
+            }
+        }
+        shown
     }
 }
 
