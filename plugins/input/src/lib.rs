@@ -12,8 +12,8 @@ mod outside;
 
 use bevy_ecs::prelude::*;
 use close2gl_core::{
-    App, CameraAction, CameraActions, CameraSpeeds, FrameSet, InputBindings, InputState,
-    OutsideView, Plugin, PreUpdate, RenderSettings, Shading, ToolRequests,
+    App, CameraAction, CameraActions, CameraSpeeds, FrameSet, InputBindings, InputState, Plugin,
+    PreUpdate, RenderSettings, Shading, ToolRequests,
 };
 
 pub struct InputPlugin;
@@ -26,7 +26,6 @@ impl Plugin for InputPlugin {
             .requires::<CameraActions>("InputPlugin", "CameraPlugin")
             .requires::<CameraSpeeds>("InputPlugin", "CameraPlugin")
             .requires::<RenderSettings>("InputPlugin", "SettingsPlugin")
-            .requires::<OutsideView>("InputPlugin", "SettingsPlugin")
             .add_systems(
                 PreUpdate,
                 (map_input, outside::toggle_outside).in_set(FrameSet::Input),

@@ -1,19 +1,20 @@
 use bevy_ecs::prelude::*;
 use close2gl_core::{InputBindings, InputState, OutsideView};
 
-/// The `outside_view` key shows or hides the outside view. `OutsideView` is written only when
-/// the key is pressed, so that it is not marked changed every frame.
+/// The `outside_view` key shows or hides the outside view (the settings plugin's `OutsideView`;
+/// an app without it has no outside view to show). `OutsideView` is written only when the key
+/// is pressed, so that it is not marked changed every frame.
 pub fn toggle_outside(
     input: Res<InputState>,
     bindings: Res<InputBindings>,
-    mut outside: ResMut<OutsideView>,
+    outside: Option<ResMut<OutsideView>>,
 ) {
     let presses = input
         .pressed
         .iter()
         .filter(|pressed| bindings.matches("outside_view", pressed))
         .count();
-    if presses % 2 == 1 {
+    if let Some(mut outside) = outside.filter(|_| presses % 2 == 1) {
         outside.show = !outside.show;
     }
 }

@@ -25,15 +25,15 @@ use crate::Gpu;
 /// Adds the outside view's systems: asking the pipeline for each triangle's fate while the view
 /// shows the fate colours, and, in `Render`, placing the scene at the stage and uploading it
 /// into [`OutsideRenderer`] (inserted by whoever owns the target). Nothing runs while
-/// `OutsideView::show` is off. It owns `Fates` when nobody else added it; it reads `Camera`,
-/// `Mesh`, `RenderSettings`, `Viewport`, `OutsideView` and `OutsideOrbit` (the settings plugin's).
+/// `OutsideView::show` is off (or missing: it and `OutsideOrbit` are the settings plugin's, and
+/// an app without them, a test of the two compared views, say, never shows this one). It owns
+/// `Fates` when nobody else added it; it reads `Camera`, `Mesh`, `RenderSettings` and
+/// `Viewport` too.
 pub struct OutsidePlugin;
 
 impl Plugin for OutsidePlugin {
     fn build(&self, app: &mut App) {
         app.init_resource::<Fates>()
-            .requires::<OutsideView>("OutsidePlugin", "SettingsPlugin")
-            .requires::<OutsideOrbit>("OutsidePlugin", "SettingsPlugin")
             .add_systems(
                 PostUpdate,
                 request_fates.in_set(FrameSet::Camera).run_if(outside_shown),
@@ -42,6 +42,7 @@ impl Plugin for OutsidePlugin {
                 Render,
                 upload_outside.in_set(FrameSet::Render).run_if(
                     outside_shown
+                        .and_then(resource_exists::<OutsideOrbit>)
                         .and_then(resource_exists::<Gpu>)
                         .and_then(resource_exists::<OutsideRenderer>),
                 ),
@@ -49,8 +50,9 @@ impl Plugin for OutsidePlugin {
     }
 }
 
-fn outside_shown(outside: Res<OutsideView>) -> bool {
-    outside.show
+/// Shown, when the settings plugin's `OutsideView` says so (an app without it never shows it).
+fn outside_shown(outside: Option<Res<OutsideView>>) -> bool {
+    outside.is_some_and(|o| o.show)
 }
 
 /// The fate colours need every triangle's fate: ask the pipeline (which runs after this, in
