@@ -3,7 +3,9 @@
 //! the perspective division, backface culling, and the `Close2glPlugin` whose system reads the
 //! `Camera` and `Mesh` components and the `RenderSettings` and `Viewport` resources (owned by the
 //! core's `SettingsPlugin`), and writes the `Close2glFrame` resource, which it owns: the 2D vertex
-//! buffer in window pixels (which the GPU only draws) and the stage counts. It depends on no GPU,
+//! buffer in window pixels (which the GPU only draws) and the stage counts. For the outside view
+//! it gives the view volume's world corners from the real matrices ([`frustum`]) and the stage
+//! morph from world to eye to NDC coordinates ([`morph`]), as pure functions. It depends on no GPU,
 //! window or UI crate; glam only holds the numbers.
 
 pub mod clip;
