@@ -81,12 +81,13 @@ pub fn build_app(config: &Config, viewport: Viewport) -> Result<App, String> {
 }
 
 /// The settings of `config` that a running app takes as they are: render switches, lighting,
-/// primitives, key bindings and the framing rules (the camera, the model and the speeds are the
+/// primitives, the outside view, key bindings and the framing rules (the camera, the model and the speeds are the
 /// caller's, who knows whether they are new).
 pub fn apply_settings(world: &mut World, config: &Config) {
     world.insert_resource(config.render);
     world.insert_resource(config.lighting);
     world.insert_resource(config.primitives);
+    world.insert_resource(config.outside);
     world.insert_resource(config.input.clone());
     world.insert_resource(Framing {
         pose: config.camera.pose(),

@@ -189,6 +189,19 @@ fn bad_input_is_one_line_and_exit_code_2() {
             "render.close2gl_raster",
         ),
         (vec!["bench", "--raster", "--fill"], "--fill"),
+        (vec!["stats", "--set", "outside.stage=3"], "outside.stage"),
+        (
+            vec!["stats", "--set", "outside.stage=\"clip\""],
+            "\"world\", \"eye\", \"ndc\"",
+        ),
+        (
+            vec!["render", "--view", "inside", "--out", "/nonexistent"],
+            "--view",
+        ),
+        (
+            vec!["render", "--stage", "4", "--out", "/nonexistent"],
+            "--stage",
+        ),
     ] {
         let out = close2gl(&args);
         let stderr = String::from_utf8_lossy(&out.stderr);
@@ -197,4 +210,62 @@ fn bad_input_is_one_line_and_exit_code_2() {
         assert_eq!(stderr.trim().lines().count(), 1, "{args:?}: {stderr}");
         assert!(!stderr.contains("panicked"), "{stderr}");
     }
+}
+
+#[test]
+fn render_view_outside_writes_the_picture_and_the_volumes_corners() {
+    let out_dir = temp("outside");
+    let dir = out_dir.to_str().expect("utf-8");
+    let near = 2.0f64;
+    let out = close2gl(&[
+        "render",
+        "box",
+        "--size",
+        "160x120",
+        "--view",
+        "outside",
+        "--stage",
+        "ndc",
+        "--set",
+        "camera.position=[0, 0, 5]",
+        "--set",
+        "camera.target=[0, 0, 0]",
+        "--set",
+        "camera.near=2",
+        "--set",
+        "camera.far=9",
+        "--set",
+        "camera.hfov=90",
+        "--set",
+        "camera.vfov=60",
+        "--out",
+        dir,
+    ]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let report: Value = serde_json::from_slice(&out.stdout).expect("one JSON object");
+    assert_eq!(report["outside_stage"], 2.0);
+    assert!(out_dir.join("outside.png").is_file());
+    let corners: Vec<[f64; 3]> =
+        serde_json::from_value(report["frustum_world"].clone()).expect("eight corners");
+    // The near corners at z = 5 - near, x = ±near·tan(45°), y = ±near·tan(30°), in the NDC
+    // corners' order: x fastest, then y, near before far.
+    let (x, y) = (near, near * 30f64.to_radians().tan());
+    for (corner, expected) in corners[..4].iter().zip([
+        [-x, -y, 5.0 - near],
+        [x, -y, 5.0 - near],
+        [-x, y, 5.0 - near],
+        [x, y, 5.0 - near],
+    ]) {
+        for (a, b) in corner.iter().zip(expected) {
+            assert!((a - b).abs() < 1e-4, "{corner:?} != {expected:?}");
+        }
+    }
+    assert!(
+        corners[4..].iter().all(|c| (c[2] + 4.0).abs() < 1e-4),
+        "far at z = -4"
+    );
 }

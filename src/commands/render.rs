@@ -5,9 +5,11 @@ use std::f32::consts::TAU;
 use std::path::{Path, PathBuf};
 
 use bevy_ecs::prelude::DetectChangesMut;
-use close2gl_core::{App, Camera, CameraAction, CameraActions, Fates};
+use close2gl_core::{App, Camera, CameraAction, CameraActions, Fates, OutsideView};
+use close2gl_gpu::outside::render_outside;
 use close2gl_gpu::parity::{ColorComparison, Comparison, diff_image};
 use close2gl_gpu::{Gpu, OffscreenPlugin, Snapshot, parse_backends, render_offscreen};
+use close2gl_pipeline::frustum::world_corners;
 use serde_json::{Value, json};
 
 use super::CliError;
@@ -33,11 +35,20 @@ pub struct RenderArgs {
     /// vulkan, gl, metal, dx12 or all (default: the platform's primary backends, no GL).
     #[arg(long, value_name = "NAME")]
     pub backend: Option<String>,
+    /// `outside`: also draw the pipeline seen from outside, as outside.png (as
+    /// --set outside.show=true does); the report adds the view volume's corners.
+    #[arg(long, value_name = "VIEW")]
+    pub view: Option<String>,
+    /// The outside view's stage: world, eye, ndc, or a number in 0..=2 (as --set
+    /// outside.stage=...).
+    #[arg(long, value_name = "STAGE")]
+    pub stage: Option<String>,
 }
 
 pub fn run(args: RenderArgs) -> Result<(), CliError> {
     let backends = check(&args)?;
-    let config = args.scene.config()?;
+    let mut config = args.scene.config()?;
+    outside_args(&args, &mut config)?;
     let viewport = viewport(args.size.as_deref(), &config)?;
     let mut app = crate::build_app(&config, viewport).map_err(CliError::Input)?;
     print_warnings(&app);
@@ -86,6 +97,24 @@ fn check(args: &RenderArgs) -> Result<close2gl_gpu::wgpu::Backends, CliError> {
     }
 }
 
+/// `--view outside` and `--stage`, into the config's `[outside]`.
+fn outside_args(args: &RenderArgs, config: &mut crate::config::Config) -> Result<(), CliError> {
+    match args.view.as_deref() {
+        None => {}
+        Some("outside") => config.outside.show = true,
+        Some(other) => {
+            return Err(CliError::Input(format!(
+                "render: --view: expected \"outside\", found \"{other}\""
+            )));
+        }
+    }
+    if let Some(stage) = &args.stage {
+        config.outside.stage = crate::config::parse_stage(stage)
+            .map_err(|e| CliError::Input(format!("render: --stage: {e}")))?;
+    }
+    Ok(())
+}
+
 /// Pose number `pose` (turned that many steps around the look-at point with `--orbit`): its
 /// images written and its report.
 fn render_pose(app: &mut App, args: &RenderArgs, gpu: &Gpu, pose: u32) -> Result<Value, CliError> {
@@ -106,6 +135,9 @@ fn render_pose(app: &mut App, args: &RenderArgs, gpu: &Gpu, pose: u32) -> Result
         .map(|_| format!("_{pose:03}"))
         .unwrap_or_default();
     let mut report = write_pose(&args.out, &suffix, &snapshot, gpu)?;
+    if app.world().resource::<OutsideView>().show {
+        write_outside(app, &args.out, &suffix, &mut report)?;
+    }
     report["reference_ms"] = json!(reference_ms);
     report["close2gl_ms"] = json!(close2gl_ms);
     report["frames"] = json!(args.frames);
@@ -183,6 +215,31 @@ fn write_pose(dir: &Path, suffix: &str, snapshot: &Snapshot, gpu: &Gpu) -> Resul
         "stats": snapshot.counts,
         "images": {"reference": names[0], "close2gl": names[1], "diff": names[2]},
     }))
+}
+
+/// The outside view of the frame just rendered, as outside{suffix}.png, and the view volume's
+/// world corners in the report.
+fn write_outside(
+    app: &mut App,
+    dir: &Path,
+    suffix: &str,
+    report: &mut Value,
+) -> Result<(), CliError> {
+    let image = render_outside(app).map_err(CliError::Runtime)?;
+    let name = format!("outside{suffix}.png");
+    image
+        .write_png(&dir.join(&name))
+        .map_err(CliError::Runtime)?;
+    let world = app.world_mut();
+    let camera = *world
+        .query::<&Camera>()
+        .single(world)
+        .map_err(|e| CliError::Runtime(format!("no camera: {e}")))?;
+    let corners = world_corners(&camera).map(|c| c.to_array());
+    report["frustum_world"] = json!(corners);
+    report["outside_stage"] = json!(world.resource::<OutsideView>().stage);
+    report["images"]["outside"] = json!(name);
+    Ok(())
 }
 
 fn unwritable(path: &Path, e: std::io::Error) -> CliError {

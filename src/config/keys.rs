@@ -8,7 +8,7 @@ use close2gl_core::glam::Vec3;
 use close2gl_core::limits::{
     FOV_RANGE, MAX_PIXELS, MAX_SEGMENTS, MOVE_SPEED_RANGE, ROTATE_SPEED_RANGE,
 };
-use close2gl_core::{ModelSource, NamedEnum, PrimitiveKind};
+use close2gl_core::{ModelSource, NamedEnum, OutsideView, PrimitiveKind, STAGE_NAMES};
 use toml::Value;
 
 use super::Config;
@@ -85,6 +85,9 @@ pub fn set(
         ("window", "width") => c.window.width = pixels(value)?,
         ("window", "height") => c.window.height = pixels(value)?,
         ("window", "layout") => c.window.layout = named(value)?,
+
+        ("outside", "show") => c.outside.show = boolean(value)?,
+        ("outside", "stage") => c.outside.stage = stage(value)?,
 
         ("input", action) if c.input.0.contains_key(action) => {
             let key = string(value)?;
@@ -193,6 +196,32 @@ fn triple(
         *slot = item(v).map_err(|e| format!("{} ({e})", wrong()))?;
     }
     Ok(out)
+}
+
+/// A stage of the outside view as `--stage` gives it: a stop's name or a number.
+pub fn parse_stage(text: &str) -> Result<f32, String> {
+    let value = text
+        .parse::<f64>()
+        .map_or_else(|_| Value::String(text.into()), Value::Float);
+    stage(&value)
+}
+
+/// A stage of the outside view: a number in 0..=2, or a stop's name.
+fn stage(value: &Value) -> Result<f32, String> {
+    let names: Vec<String> = STAGE_NAMES
+        .iter()
+        .map(|(n, _)| format!("\"{n}\""))
+        .collect();
+    let range = format!("in 0..=2 or one of {}", names.join(", "));
+    match value {
+        Value::String(name) => OutsideView::stage_named(name)
+            .ok_or_else(|| format!("expected a number {range}, found \"{name}\"")),
+        _ => in_range(
+            value,
+            |x| (0.0..=OutsideView::MAX_STAGE).contains(&x),
+            &range,
+        ),
+    }
 }
 
 fn vec3(value: &Value) -> Result<Vec3, String> {

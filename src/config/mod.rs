@@ -10,10 +10,11 @@ pub use close2gl_core::Layout;
 use close2gl_core::glam::Vec3;
 use close2gl_core::limits::DEFAULT_FOV;
 use close2gl_core::{
-    CameraMode, CameraSpeeds, InputBindings, Lighting, ModelSource, Pose, PrimitiveParams,
-    RenderSettings,
+    CameraMode, CameraSpeeds, InputBindings, Lighting, ModelSource, OutsideView, Pose,
+    PrimitiveParams, RenderSettings,
 };
 
+pub use keys::parse_stage;
 pub use load::{file_to_read, load, load_text, parse_size};
 
 /// `[camera]`: the optional pose and the lens; near and far follow the model unless pinned.
@@ -56,6 +57,8 @@ pub struct Config {
     pub primitives: PrimitiveParams,
     pub window: WindowConfig,
     pub input: InputBindings,
+    /// `[outside]`: the outside view shown or not, and its stage.
+    pub outside: OutsideView,
 }
 
 impl Default for Config {
@@ -87,6 +90,7 @@ impl Default for Config {
                 layout: Layout::Split,
             },
             input: InputBindings::default(),
+            outside: OutsideView::default(),
         }
     }
 }

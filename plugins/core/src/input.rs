@@ -38,7 +38,7 @@ pub struct InputBindings(pub BTreeMap<String, String>);
 
 impl InputBindings {
     /// Every bindable action with its default key.
-    pub const DEFAULTS: [(&'static str, &'static str); 21] = [
+    pub const DEFAULTS: [(&'static str, &'static str); 22] = [
         ("forward", "w"),
         ("back", "s"),
         ("left", "a"),
@@ -60,6 +60,7 @@ impl InputBindings {
         ("screenshot", "f12"),
         ("copy_command", "c"),
         ("fate_view", "i"),
+        ("outside_view", "o"),
     ];
 
     /// The binding as written: one key, or several separated by spaces (`"f1 ?"`).

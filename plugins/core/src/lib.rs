@@ -1,7 +1,7 @@
 //! The shared ECS vocabulary of close2gl. This crate owns the small `App`/`Plugin` pair (a World
 //! with named frame schedules, and the [`FrameSet`]s that order every plugin's systems in them),
 //! every component and resource that more than one plugin touches (the camera, the mesh, the
-//! render settings and lighting, the raw input and the camera actions it becomes, the viewport,
+//! render settings and lighting, the outside view's settings and orbit, the raw input and the camera actions it becomes, the viewport,
 //! and the Close2GL frame: the 2D vertex buffer and its stage counts), and the limits and names
 //! they share ([`limits`], [`NamedEnum`]). Its one plugin, [`SettingsPlugin`], owns the settings
 //! both views follow. It reads and writes nothing itself; every other crate depends on it, so
@@ -19,6 +19,7 @@ mod layout;
 pub mod limits;
 mod mesh;
 mod model;
+mod outside;
 mod reference_camera;
 pub mod repro;
 mod schedule;
@@ -46,6 +47,7 @@ pub use model::{
     TextureRequest,
 };
 pub use named::NamedEnum;
+pub use outside::{OutsideOrbit, OutsideView, STAGE_NAMES};
 pub use reference_camera::camera_matrices;
 pub use schedule::{FrameSet, PostUpdate, PreUpdate, Render, Startup, Update, frame_schedules};
 pub use settings::{

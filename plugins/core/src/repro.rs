@@ -10,8 +10,8 @@ use bevy_ecs::world::World;
 use glam::Vec3;
 
 use crate::{
-    Camera, Lighting, ModelSource, ModelStatus, NamedEnum, PrimitiveParams, RenderSettings,
-    Texture, Viewport,
+    Camera, Lighting, ModelSource, ModelStatus, NamedEnum, OutsideView, PrimitiveParams,
+    RenderSettings, Texture, Viewport,
 };
 
 /// Everything that decides the two views' pixels.
@@ -26,6 +26,8 @@ pub struct Repro {
     pub primitives: PrimitiveParams,
     /// The size of each view.
     pub size: Viewport,
+    /// The outside view, shown or not, and its stage (`render` writes outside.png when shown).
+    pub outside: OutsideView,
 }
 
 impl Repro {
@@ -47,6 +49,10 @@ impl Repro {
                 .copied()
                 .unwrap_or_default(),
             size: *world.get_resource::<Viewport>()?,
+            outside: world
+                .get_resource::<OutsideView>()
+                .copied()
+                .unwrap_or_default(),
         })
     }
 
@@ -97,6 +103,9 @@ impl Repro {
         }
         self.render_overrides(&mut sets);
         self.lighting_overrides(&mut sets);
+        let (o, d) = (&self.outside, &OutsideView::default());
+        sets.flag_if("outside.show", o.show, d.show);
+        sets.number_if("outside.stage", o.stage, d.stage);
         if matches!(self.model, ModelSource::Primitive(_)) {
             self.primitive_overrides(&mut sets);
         }
@@ -269,6 +278,7 @@ mod tests {
                 width: 640,
                 height: 480,
             },
+            outside: OutsideView::default(),
         }
     }
 
@@ -290,12 +300,16 @@ mod tests {
         r.settings.shading = Shading::Phong;
         r.primitives.torus_n0 = 7;
         r.lighting.attenuation = [1.0, 0.5, 0.0];
+        r.outside.show = true;
+        r.outside.stage = 1.25;
         let changed = r.args("out");
         for set in [
             "render.shading=phong",
             "primitives.torus_n0=7",
             "lighting.attenuation=[1.0,0.5,0.0]",
             "camera.u=[1.0,0.0,0.0]",
+            "outside.show=true",
+            "outside.stage=1.25",
         ] {
             assert!(changed.iter().any(|a| a == set), "{set} in {changed:?}");
         }

@@ -1,12 +1,14 @@
 //! The owner of the settings both views follow.
 
-use crate::{App, Lighting, Plugin, RenderSettings, Viewport, Wake};
+use crate::{App, Lighting, OutsideOrbit, OutsideView, Plugin, RenderSettings, Viewport, Wake};
 
 /// Owns [`RenderSettings`] (one set of switches for both views), [`Lighting`] (both views light
 /// the model with it) and [`Viewport`] (the size both views share): neither view owns what the
 /// other must follow too. The input plugin, the panel
 /// and the viewer write them; the Close2GL pipeline and the GPU views read them. Values inserted
-/// before the plugin is added (the configuration's) are kept. It owns [`Wake`] too, which the
+/// before the plugin is added (the configuration's) are kept. [`OutsideView`] (shown or not, and
+/// its stage) and [`OutsideOrbit`] (its own camera) are settings of the same kind: the config,
+/// the panel and the keys write them, the GPU's outside renderer reads them. It owns [`Wake`] too, which the
 /// viewer fills and any plugin's background work clones.
 pub struct SettingsPlugin;
 
@@ -15,6 +17,8 @@ impl Plugin for SettingsPlugin {
         app.init_resource::<RenderSettings>()
             .init_resource::<Lighting>()
             .init_resource::<Viewport>()
+            .init_resource::<OutsideView>()
+            .init_resource::<OutsideOrbit>()
             .init_resource::<Wake>();
     }
 }

@@ -9,8 +9,11 @@
 //! owns the target (a window, or [`render_offscreen`]) records the draws.
 //! Offscreen rendering, reading textures back ([`Readback`]), the texture and attachment
 //! descriptions every target shares ([`texture`]), the reference probe (an ID pass that says which
-//! mesh triangle the GPU drew at a pixel, [`probe_reference`]), PNG images and the coverage comparison behind
-//! `close2gl render` and the parity tests live here too. No window or UI crate is a dependency.
+//! mesh triangle the GPU drew at a pixel, [`probe_reference`]), PNG images and the coverage
+//! comparison behind `close2gl render` and the parity tests live here too. [`outside`] is the
+//! third view, the pipeline seen from outside: its [`outside::OutsidePlugin`] reads the camera,
+//! the mesh, the settings, `OutsideView`, `OutsideOrbit` and `Fates`, and fills
+//! [`outside::OutsideRenderer`]. No window or UI crate is a dependency.
 
 mod close2gl_view;
 mod fate_view;
@@ -19,6 +22,7 @@ mod grow_buffer;
 mod id_pass;
 pub mod image;
 mod offscreen;
+pub mod outside;
 pub mod parity;
 mod readback;
 mod reference;

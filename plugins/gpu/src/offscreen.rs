@@ -8,6 +8,7 @@ use close2gl_core::{
     App, Close2glFrame, Plugin, Rasterizer, RenderSettings, SoftwareFrame, StageCounts, Viewport,
 };
 
+use crate::outside::{OutsidePlugin, OutsideRenderer};
 use crate::parity::to_rgb8;
 use crate::readback::Readback;
 use crate::texture::{READABLE_TARGET, texture_2d};
@@ -17,17 +18,21 @@ use crate::{DEPTH_FORMAT, Gpu, GpuPlugin, Image, Views};
 /// shaders wrote (times 255) and the background can be recognised exactly.
 pub const OFFSCREEN_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rgba8Unorm;
 
-/// Makes an app render offscreen on `gpu`: inserts `Gpu` and `Views` (in [`OFFSCREEN_FORMAT`])
-/// and adds [`GpuPlugin`] (unless the app has it). Then call [`render_offscreen`] for each frame
+/// Makes an app render offscreen on `gpu`: inserts `Gpu`, `Views` and the outside view's
+/// renderer (in [`OFFSCREEN_FORMAT`]) and adds [`GpuPlugin`] and the outside view's plugin
+/// (unless the app has them). Then call [`render_offscreen`] for each frame
 /// wanted.
 pub struct OffscreenPlugin(pub Gpu);
 
 impl Plugin for OffscreenPlugin {
     fn build(&self, app: &mut App) {
         let views = Views::new(&self.0, OFFSCREEN_FORMAT);
+        let outside = OutsideRenderer::new(&self.0, OFFSCREEN_FORMAT);
         app.insert_resource(self.0.clone())
             .insert_resource(views)
-            .add_plugin_once(GpuPlugin);
+            .insert_resource(outside)
+            .add_plugin_once(GpuPlugin)
+            .add_plugin_once(OutsidePlugin);
     }
 }
 

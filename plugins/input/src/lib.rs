@@ -2,10 +2,13 @@
 //! held and pressed, mouse drag, scroll, frame time), `InputBindings` and `CameraSpeeds`, and
 //! writes `CameraActions` (moves scaled by the model's size, rotations, zoom, reset, mode toggle)
 //! and, for the lecture's Shift+D / Shift+P / Shift+G keys, `RenderSettings::shading`, and the
-//! tool keys (cheat sheet, screenshot, copy as command) into `ToolRequests`. It knows
+//! tool keys (cheat sheet, screenshot, copy as command) into `ToolRequests`, and the outside
+//! view's key into `OutsideView::show`. It knows
 //! no window system: the viewer fills `InputState`, and so can a test. It owns `InputState` and
 //! `InputBindings` and `ToolRequests`; the camera plugin provides the actions and speeds, the core's
 //! `SettingsPlugin` the render settings. Its system runs in `FrameSet::Input`.
+
+mod outside;
 
 use bevy_ecs::prelude::*;
 use close2gl_core::{
@@ -23,7 +26,10 @@ impl Plugin for InputPlugin {
             .requires::<CameraActions>("InputPlugin", "CameraPlugin")
             .requires::<CameraSpeeds>("InputPlugin", "CameraPlugin")
             .requires::<RenderSettings>("InputPlugin", "SettingsPlugin")
-            .add_systems(PreUpdate, map_input.in_set(FrameSet::Input));
+            .add_systems(
+                PreUpdate,
+                (map_input, outside::toggle_outside).in_set(FrameSet::Input),
+            );
     }
 }
 

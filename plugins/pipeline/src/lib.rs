@@ -7,12 +7,16 @@
 //! core's `Fates` resource: every frame it writes each fate's count, and, while `Fates::record`
 //! is set, each mesh triangle's fate (the software rasterizer then adds `no_pixels` and
 //! `hidden`). [`journey`] follows one triangle through every stage with its numbers, for the
-//! inspector. It depends on no GPU, window or UI crate; glam only holds the numbers.
+//! inspector. For the outside view it gives the view volume's world corners from the real
+//! matrices ([`frustum`]) and the stage morph from world to eye to NDC coordinates ([`morph`]),
+//! as pure functions. It depends on no GPU, window or UI crate; glam only holds the numbers.
 
 pub mod clip;
 pub mod fast;
+pub mod frustum;
 pub mod journey;
 pub mod matrices;
+pub mod morph;
 pub mod stage;
 pub mod textbook;
 

@@ -1,7 +1,8 @@
 //! The control panel: an egui side panel over the ECS world, in four sections. Model reads
 //! `ModelStatus` and `Mesh` and writes `ModelRequest` (a path, a primitive, a reload). Render
 //! reads and writes `RenderSettings`. Camera reads and writes the `Camera` component and
-//! `CameraSpeeds`, and pushes `CameraAction::Reset` into `CameraActions`. Stats reads
+//! `CameraSpeeds`, and pushes `CameraAction::Reset` into `CameraActions`. Outside view reads
+//! and writes `OutsideView` (shown, stage) and resets `OutsideOrbit`. Stats reads
 //! `Close2glFrame` and [`ViewStats`] (frame times, the adapter's name and limitations, which the
 //! viewer fills). Tools sets `ToolRequests` (the input plugin's), carries out copy as command
 //! (clipboard and terminal) and the key cheat sheet (from `InputBindings`), and shows the
@@ -14,6 +15,7 @@
 mod camera;
 mod inspector;
 mod model;
+mod outside;
 mod render;
 mod stats;
 mod texture;
@@ -89,11 +91,18 @@ pub fn show(ui: &mut egui::Ui, world: &mut World) -> egui::Rect {
 }
 
 /// Names the views in their top-left corners: the reference on the left of `area` and, when the
-/// two views share it (the split layout), Close2GL on the right.
-pub fn label_views(ui: &egui::Ui, area: egui::Rect, shared: bool) {
+/// views share it (the split layout), Close2GL beside it, and the outside view in a third
+/// column when it shows.
+pub fn label_views(ui: &egui::Ui, area: egui::Rect, shared: bool, outside: bool) {
     let mut labels = vec![(area.left_top(), "Reference (wgpu)")];
     if shared {
-        labels.push((area.center_top(), "Close2GL"));
+        let columns = if outside { 3.0 } else { 2.0 };
+        let column = area.width() / columns;
+        labels.push((area.left_top() + egui::vec2(column, 0.0), "Close2GL"));
+        if outside {
+            let at = area.left_top() + egui::vec2(2.0 * column, 0.0);
+            labels.push((at, "Outside (drag, scroll)"));
+        }
     }
     let painter = ui.painter();
     for (corner, text) in labels {
@@ -120,6 +129,9 @@ fn sections(ui: &mut egui::Ui, world: &mut World) {
     egui::CollapsingHeader::new("Camera")
         .default_open(true)
         .show(ui, |ui| camera::section(ui, world));
+    egui::CollapsingHeader::new("Outside view")
+        .default_open(true)
+        .show(ui, |ui| outside::section(ui, world));
     egui::CollapsingHeader::new("Tools")
         .default_open(true)
         .show(ui, |ui| tools::section(ui, world));

@@ -2,34 +2,43 @@
 
 use std::time::{Duration, Instant};
 
+use close2gl_gpu::outside::OutsideRenderer;
 use close2gl_gpu::{Gpu, Views};
 use close2gl_ui::ViewStats;
 
 use crate::layout::{Placed, View};
 
+/// The GPU state of every view: the two compared, and the outside view when there is one.
+#[derive(Clone, Copy)]
+pub struct AllViews<'a> {
+    pub views: &'a Views,
+    pub outside: Option<&'a OutsideRenderer>,
+}
+
 /// Clears `target` to the background and draws `placed` into it. Each view is its own
 /// submission, waited on, so that its time covers the GPU's work as well as the recording;
-/// the times go to `stats` when given.
+/// the two compared views' times go to `stats` when given.
 pub fn draw_views(
     gpu: &Gpu,
-    views: &Views,
+    all: AllViews<'_>,
     target: &wgpu::TextureView,
     depth: &wgpu::TextureView,
     placed: &[Placed],
     mut stats: Option<&mut ViewStats>,
 ) {
-    let mut load = wgpu::LoadOp::Clear(views.clear_color());
+    let mut load = wgpu::LoadOp::Clear(all.views.clear_color());
     if placed.is_empty() {
         submit(gpu, target, None, load, |_| ());
     }
     for p in placed {
         let start = Instant::now();
-        draw_view(gpu, views, target, depth, *p, load);
+        draw_view(gpu, all, target, depth, *p, load);
         load = wgpu::LoadOp::Load;
         if let Some(stats) = stats.as_deref_mut() {
             let timer = match p.view {
                 View::Reference => &mut stats.reference,
                 View::Close2gl => &mut stats.close2gl,
+                View::Outside => continue,
             };
             timer.record(start, start.elapsed());
         }
@@ -39,7 +48,7 @@ pub fn draw_views(
 /// One view into its rectangle of `target` (the reference with the depth buffer).
 fn draw_view(
     gpu: &Gpu,
-    views: &Views,
+    AllViews { views, outside }: AllViews<'_>,
     target: &wgpu::TextureView,
     depth: &wgpu::TextureView,
     placed: Placed,
@@ -58,6 +67,12 @@ fn draw_view(
         View::Close2gl => submit(gpu, target, None, load, |pass| {
             set_viewport(pass);
             views.draw_close2gl(pass);
+        }),
+        View::Outside => submit(gpu, target, Some(depth), load, |pass| {
+            set_viewport(pass);
+            if let Some(outside) = outside {
+                outside.draw(pass);
+            }
         }),
     }
 }

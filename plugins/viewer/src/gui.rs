@@ -3,6 +3,7 @@
 use std::time::{Duration, Instant};
 
 use bevy_ecs::world::World;
+use close2gl_core::OutsideView;
 use close2gl_gpu::Gpu;
 use winit::window::Window;
 
@@ -92,7 +93,8 @@ impl Gui {
         let mut views_area = egui::Rect::NOTHING;
         let output = self.ctx.run_ui(input, |ui| {
             views_area = close2gl_ui::show(ui, world);
-            close2gl_ui::label_views(ui, views_area, both_views);
+            let outside = world.get_resource::<OutsideView>().is_some_and(|o| o.show);
+            close2gl_ui::label_views(ui, views_area, both_views, outside);
         });
         self.state
             .handle_platform_output(window, output.platform_output);

@@ -4,7 +4,7 @@
 use std::time::{Duration, Instant};
 
 use bevy_ecs::world::World;
-use close2gl_core::{App, InputState, ToolRequests, Viewport, Wake};
+use close2gl_core::{App, InputState, OutsideView, ToolRequests, Viewport, Wake};
 use close2gl_ui::{Notice, ViewStats};
 use winit::application::ApplicationHandler;
 use winit::event::WindowEvent;
@@ -13,6 +13,7 @@ use winit::window::WindowId;
 
 use crate::ViewerOptions;
 use crate::input::InputTracker;
+use crate::orbit_input::OrbitInput;
 use crate::pacing::Pacing;
 use crate::present::{Capture, Shot};
 use crate::routing::{apply_input, offer_to_panel};
@@ -27,6 +28,7 @@ pub struct Viewer {
     instance: (wgpu::Instance, Connections),
     windows: Option<Windows>,
     tracker: InputTracker,
+    orbit: OrbitInput,
     pacing: Pacing,
     result: Result<(), String>,
     frames: u32,
@@ -61,6 +63,7 @@ impl Viewer {
             instance,
             windows: None,
             tracker: InputTracker::default(),
+            orbit: OrbitInput::default(),
             pacing: Pacing::new(Instant::now()),
             result: Ok(()),
             frames: 0,
@@ -101,7 +104,8 @@ impl Viewer {
             .gui
             .run(&windows.main.window, world, both_views, raw, surface);
         windows.gui.upload_textures(&windows.gpu, &mut gui_frame);
-        let placement = windows.placement(&gui_frame);
+        let outside = world.get_resource::<OutsideView>().is_some_and(|o| o.show);
+        let placement = windows.placement(&gui_frame, outside);
         update_viewport(world, placement.viewport);
         self.app.update();
         crate::probe::answer(self.app.world_mut(), &windows.gpu, &placement);
@@ -279,7 +283,13 @@ impl ApplicationHandler for Viewer {
             _ => {}
         }
         let panel = offer_to_panel(&mut windows.gui, &windows.main.window, is_main, &event);
-        let redraw = apply_input(&mut self.tracker, self.app.world_mut(), id, event, panel);
+        let world = self.app.world_mut();
+        let (taken, orbited) = if is_main {
+            self.orbit.offer(world, windows.outside_area, &event, panel)
+        } else {
+            (false, false)
+        };
+        let redraw = orbited || (!taken && apply_input(&mut self.tracker, world, id, event, panel));
         if redraw {
             windows.main.window.request_redraw();
         }

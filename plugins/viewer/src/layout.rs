@@ -7,6 +7,8 @@ use close2gl_core::Viewport;
 pub enum View {
     Reference,
     Close2gl,
+    /// The pipeline seen from outside (close2gl_gpu::outside).
+    Outside,
 }
 
 /// A view and where it goes in its window.
@@ -28,25 +30,26 @@ pub struct Placement {
 }
 
 /// The split layout: the reference view on the left half of `area` (what the panel leaves of the
-/// window), Close2GL on the right half.
-pub fn split(area: PixelRect) -> Placement {
-    let [left, right] = area.halves();
-    if left.is_empty() {
+/// window), Close2GL on the right half; with the `outside` view, three equal columns, the
+/// outside view on the right.
+pub fn split(area: PixelRect, outside: bool) -> Placement {
+    let rects = if outside {
+        area.thirds().to_vec()
+    } else {
+        area.halves().to_vec()
+    };
+    if rects[0].is_empty() {
         return Placement::default();
     }
+    let views = [View::Reference, View::Close2gl, View::Outside];
     Placement {
-        main: vec![
-            Placed {
-                view: View::Reference,
-                rect: left,
-            },
-            Placed {
-                view: View::Close2gl,
-                rect: right,
-            },
-        ],
+        main: views
+            .into_iter()
+            .zip(&rects)
+            .map(|(view, rect)| Placed { view, rect: *rect })
+            .collect(),
         close2gl: Vec::new(),
-        viewport: Some(left.size()),
+        viewport: Some(rects[0].size()),
     }
 }
 
@@ -146,6 +149,16 @@ impl PixelRect {
         };
         [left, right]
     }
+
+    /// Three equal columns side by side (the pixel columns left over go on the right).
+    pub fn thirds(&self) -> [PixelRect; 3] {
+        let width = self.width / 3;
+        [0, 1, 2].map(|i| PixelRect {
+            x: self.x + i * width,
+            width,
+            ..*self
+        })
+    }
 }
 
 #[cfg(test)]
@@ -206,7 +219,7 @@ mod tests {
 
     #[test]
     fn the_split_layout_shares_the_area_and_needs_two_columns() {
-        let placement = split(PixelRect::whole(991, 720));
+        let placement = split(PixelRect::whole(991, 720), false);
         assert_eq!(placement.main.len(), 2);
         assert!(placement.close2gl.is_empty());
         assert_eq!(
@@ -216,7 +229,23 @@ mod tests {
                 height: 720
             })
         );
-        assert_eq!(split(PixelRect::whole(1, 720)), Placement::default());
+        assert_eq!(split(PixelRect::whole(1, 720), false), Placement::default());
+    }
+
+    #[test]
+    fn the_outside_view_takes_a_third_column_of_the_same_size() {
+        let placement = split(PixelRect::whole(992, 720), true);
+        let views: Vec<View> = placement.main.iter().map(|p| p.view).collect();
+        assert_eq!(views, [View::Reference, View::Close2gl, View::Outside]);
+        let rects: Vec<PixelRect> = placement.main.iter().map(|p| p.rect).collect();
+        assert!(
+            rects
+                .iter()
+                .all(|r| r.size() == rects[0].size() && r.width == 330)
+        );
+        assert_eq!(rects[2].x, 660, "side by side, no overlap");
+        assert_eq!(placement.viewport, Some(rects[0].size()));
+        assert_eq!(split(PixelRect::whole(2, 720), true), Placement::default());
     }
 
     #[test]
@@ -244,7 +273,8 @@ mod tests {
         for (width, height) in [(0, 0), (0, 400), (800, 0), (1, 1)] {
             let area = PixelRect::from_points(panel, 1.0, width, height);
             assert!(area.width <= width && area.height <= height);
-            assert_eq!(split(area), Placement::default(), "{width}x{height}");
+            assert_eq!(split(area, false), Placement::default(), "{width}x{height}");
+            assert_eq!(split(area, true), Placement::default(), "{width}x{height}");
             let two = two_windows(area, width, height);
             assert_eq!(two.viewport.is_some(), width == 1, "{width}x{height}");
         }

@@ -5,7 +5,9 @@
 //! size, runs one app frame per redraw, and draws both views and the panel (skipping a window
 //! without pixels, drawing one wider than the GPU's largest texture up to that size, and ending
 //! the run with its reason when the GPU device is lost). It inserts the `Gpu`
-//! and `Views` resources the GPU plugin's upload systems need, and fills `ViewStats`. Redraws
+//! and `Views` resources the GPU plugin's upload systems need (and the `OutsideRenderer` of the
+//! third view, the pipeline seen from outside, a third column of the split layout, whose orbit
+//! camera takes the drags and scrolls over it), and fills `ViewStats`. Redraws
 //! are on demand (input, held keys, the panel's own animations, a `Wake` from background work),
 //! so an idle viewer sleeps. It carries out the screenshot key (`ToolRequests::screenshot`:
 //! both views as PNGs beside the command that renders them again, and a `Notice`), and records
@@ -20,6 +22,7 @@ mod gui;
 mod handler;
 pub mod input;
 pub mod layout;
+mod orbit_input;
 mod pacing;
 mod present;
 mod probe;
@@ -67,6 +70,7 @@ pub struct ViewerPlugin(pub ViewerOptions);
 impl Plugin for ViewerPlugin {
     fn build(&self, app: &mut App) {
         app.add_plugin_once(close2gl_gpu::GpuPlugin)
+            .add_plugin_once(close2gl_gpu::outside::OutsidePlugin)
             .add_plugin_once(close2gl_ui::UiPlugin)
             .requires::<InputState>("ViewerPlugin", "InputPlugin")
             .requires::<ModelRequest>("ViewerPlugin", "ModelPlugin")

@@ -2,10 +2,11 @@
 //! (`--screenshot`) or each view alone (the screenshot key).
 
 use bevy_ecs::world::World;
+use close2gl_gpu::outside::OutsideRenderer;
 use close2gl_gpu::{Gpu, Image, Views};
 use close2gl_ui::ViewStats;
 
-use crate::draw::draw_views;
+use crate::draw::{AllViews, draw_views};
 use crate::gui::GuiFrame;
 use crate::layout::{Placed, Placement, View};
 use crate::screenshot;
@@ -52,8 +53,12 @@ impl Windows {
         // Taken out for the frame, so that the views can be borrowed from the world beside it
         // (`Views` must stay put: its upload systems watch when it was added).
         let mut stats = world.remove_resource::<ViewStats>().unwrap_or_default();
+        let outside = world.get_resource::<OutsideRenderer>();
         let result = match world.get_resource::<Views>() {
-            Some(views) => self.draw_with(views, &mut stats, gui, placement, capture),
+            Some(views) => {
+                let all = AllViews { views, outside };
+                self.draw_with(all, &mut stats, gui, placement, capture)
+            }
             None => Err("the GPU views are gone".into()),
         };
         world.insert_resource(stats);
@@ -62,7 +67,7 @@ impl Windows {
 
     fn draw_with(
         &mut self,
-        views: &Views,
+        views: AllViews<'_>,
         stats: &mut ViewStats,
         gui_frame: &GuiFrame,
         placement: &Placement,

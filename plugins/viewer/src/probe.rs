@@ -10,7 +10,7 @@ use close2gl_raster::SoftwareRasterizer;
 use close2gl_raster::probe::{Drawn, ProbeScene, probe};
 use close2gl_ui::{PanelState, ProbeAnswer};
 
-use crate::layout::{Placement, View};
+use crate::layout::{Placed, Placement, View};
 
 /// Answers this frame's probe click, if any, once the frame's pipeline has run.
 pub fn answer(world: &mut World, gpu: &Gpu, placement: &Placement) {
@@ -20,7 +20,9 @@ pub fn answer(world: &mut World, gpu: &Gpu, placement: &Placement) {
     let (Some(viewport), x, y) = (placement.viewport, at.x as u32, at.y as u32) else {
         return;
     };
-    let Some(placed) = placement.main.iter().find(|p| p.rect.contains(x, y)) else {
+    // The outside view is an illustration: a click there turns its camera, it probes nothing.
+    let probed = |p: &&Placed| p.view != View::Outside && p.rect.contains(x, y);
+    let Some(placed) = placement.main.iter().find(probed) else {
         return;
     };
     let pixel = (x - placed.rect.x, y - placed.rect.y);
@@ -55,7 +57,7 @@ pub fn answer(world: &mut World, gpu: &Gpu, placement: &Placement) {
     let answer = ProbeAnswer {
         view: match placed.view {
             View::Reference => "reference",
-            View::Close2gl => "Close2GL",
+            View::Close2gl | View::Outside => "Close2GL",
         },
         reference: reference.map(|hit| hit.map(|h| (h.triangle, h.depth))),
         close2gl,

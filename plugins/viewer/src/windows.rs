@@ -5,6 +5,7 @@ use std::sync::Arc;
 
 use bevy_ecs::world::World;
 use close2gl_core::Layout;
+use close2gl_gpu::outside::OutsideRenderer;
 use close2gl_gpu::{Gpu, Views};
 use close2gl_ui::ViewStats;
 use winit::dpi::{PhysicalPosition, PhysicalSize};
@@ -30,6 +31,8 @@ pub struct Windows {
     asked: HashMap<WindowId, PhysicalSize<u32>>,
     /// Pixels of the main window's width that are not the reference view (the panel).
     panel_width: u32,
+    /// Where the outside view was last placed in the main window, for its orbit's input.
+    pub outside_area: Option<PixelRect>,
 }
 
 impl Windows {
@@ -69,6 +72,7 @@ impl Windows {
             gui,
             asked: HashMap::new(),
             panel_width: 0,
+            outside_area: None,
         })
     }
 
@@ -76,18 +80,25 @@ impl Windows {
         self.main.missed() || self.close2gl.as_ref().is_some_and(WindowSurface::missed)
     }
 
-    /// Where each view goes this frame, given what the panel left of the main window.
-    pub fn placement(&mut self, gui: &GuiFrame) -> Placement {
+    /// Where each view goes this frame, given what the panel left of the main window and
+    /// whether the outside view shows (a third column of the split layout).
+    pub fn placement(&mut self, gui: &GuiFrame, outside: bool) -> Placement {
         let (width, height) = self.main.size();
         let area = PixelRect::from_points(gui.views_area, gui.pixels_per_point, width, height);
         self.panel_width = width.saturating_sub(area.width);
-        match &self.close2gl {
-            None => layout::split(area),
+        let placement = match &self.close2gl {
+            None => layout::split(area, outside),
             Some(close2gl) => {
                 let (w, h) = close2gl.size();
                 layout::two_windows(area, w, h)
             }
-        }
+        };
+        self.outside_area = placement
+            .main
+            .iter()
+            .find(|p| p.view == layout::View::Outside)
+            .map(|p| p.rect);
+        placement
     }
 
     pub fn window_mut(&mut self, id: WindowId) -> Option<&mut WindowSurface> {
@@ -202,6 +213,7 @@ fn install(world: &mut World, gpu: &Gpu, format: wgpu::TextureFormat) {
     let views = Views::new(gpu, format);
     let limitations = views.limitations();
     world.insert_resource(views);
+    world.insert_resource(OutsideRenderer::new(gpu, format));
     let mut stats = world.resource_mut::<ViewStats>();
     stats.adapter = format!("{} ({})", gpu.adapter_name(), gpu.backend_name());
     stats.limitations = limitations;

@@ -1,0 +1,84 @@
+//! The pipeline seen from outside: a third view, drawn by wgpu, with its own orbit camera, of
+//! the model, the Close2GL camera's view volume (from the real matrices) and the camera as a
+//! gizmo, at a stage between world, eye and normalised device coordinates. It is an
+//! illustration, not one of the two pipelines compared.
+
+mod camera;
+mod offscreen;
+mod renderer;
+mod scene;
+
+use bevy_ecs::prelude::*;
+use close2gl_core::{
+    App, Camera, Fates, FrameSet, Mesh, OutsideOrbit, OutsideView, Plugin, Render, RenderSettings,
+    Viewport,
+};
+use close2gl_pipeline::morph::{StageFrame, StageMorph};
+
+pub use camera::OutsideCamera;
+pub use offscreen::render_outside;
+pub use renderer::OutsideRenderer;
+use scene::SceneInput;
+
+use crate::Gpu;
+
+/// Adds the outside view's system: in `Render`, placing the scene at the stage (in the fate
+/// colours while the fate view, which has the pipeline record them, is on) and uploading it
+/// into [`OutsideRenderer`] (inserted by whoever owns the target). Nothing runs while
+/// `OutsideView::show` is off (or missing: it and `OutsideOrbit` are the settings plugin's, and
+/// an app without them, a test of the two compared views, say, never shows this one). It owns
+/// `Fates` when nobody else added it; it reads `Camera`, `Mesh`, `RenderSettings` and
+/// `Viewport` too.
+pub struct OutsidePlugin;
+
+impl Plugin for OutsidePlugin {
+    fn build(&self, app: &mut App) {
+        app.init_resource::<Fates>().add_systems(
+            Render,
+            upload_outside.in_set(FrameSet::Render).run_if(
+                outside_shown
+                    .and_then(resource_exists::<OutsideOrbit>)
+                    .and_then(resource_exists::<Gpu>)
+                    .and_then(resource_exists::<OutsideRenderer>),
+            ),
+        );
+    }
+}
+
+/// Shown, when the settings plugin's `OutsideView` says so (an app without it never shows it).
+fn outside_shown(outside: Option<Res<OutsideView>>) -> bool {
+    outside.is_some_and(|o| o.show)
+}
+
+/// Places the model, the volume and the gizmo at the stage and uploads them, every frame the
+/// view shows (the viewer draws only frames in which something changed).
+#[allow(clippy::too_many_arguments)]
+fn upload_outside(
+    gpu: Res<Gpu>,
+    camera: Single<&Camera>,
+    mesh: Single<&Mesh>,
+    settings: Res<RenderSettings>,
+    viewport: Res<Viewport>,
+    outside: Res<OutsideView>,
+    orbit: Res<OutsideOrbit>,
+    fates: Res<Fates>,
+    mut renderer: ResMut<OutsideRenderer>,
+) {
+    if mesh.validate().is_err() {
+        return;
+    }
+    let frame = StageFrame::new(&camera, mesh.bounds());
+    let morph = StageMorph::new(&camera, &frame, outside.stage);
+    let aspect = viewport.width.max(1) as f32 / viewport.height.max(1) as f32;
+    let view = OutsideCamera::new(&orbit, &frame, morph.blend(frame.centres), aspect);
+    renderer.scene.build(&SceneInput {
+        camera: &camera,
+        mesh: &mesh,
+        settings: &settings,
+        fates: &fates,
+        frame: &frame,
+        stage: outside.stage,
+        billboard: OutsideCamera::billboard(&orbit),
+    });
+    renderer.upload(&gpu, view);
+}

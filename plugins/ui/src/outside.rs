@@ -1,0 +1,39 @@
+use bevy_ecs::prelude::*;
+use close2gl_core::{OutsideOrbit, OutsideView, STAGE_NAMES};
+
+/// The pipeline seen from outside: shown or not, the stage slider (world, eye, NDC, and every
+/// stage between), and the orbit camera's reset.
+pub fn section(ui: &mut egui::Ui, world: &mut World) {
+    let Some(mut outside) = world.get_resource::<OutsideView>().copied() else {
+        return;
+    };
+    ui.checkbox(&mut outside.show, "Show the outside view")
+        .on_hover_text("The camera, its view volume and the model, seen from outside");
+    ui.add_enabled_ui(outside.show, |ui| {
+        ui.add(
+            egui::Slider::new(&mut outside.stage, 0.0..=OutsideView::MAX_STAGE)
+                .text("stage")
+                .custom_formatter(|stage, _| stage_label(stage as f32)),
+        )
+        .on_hover_text("0 world, 1 eye (M applied), 2 NDC (P applied and divided)");
+        ui.horizontal(|ui| {
+            for (name, stage) in STAGE_NAMES {
+                if ui.button(name).clicked() {
+                    outside.stage = stage;
+                }
+            }
+            if ui.button("Reset orbit").clicked() {
+                super::write_if_changed(world, &OutsideOrbit::default());
+            }
+        });
+    });
+    super::write_if_changed(world, &outside);
+}
+
+/// The stage's number, with the stop's name when it is on one.
+fn stage_label(stage: f32) -> String {
+    match STAGE_NAMES.iter().find(|(_, at)| *at == stage) {
+        Some((name, _)) => format!("{stage:.2} {name}"),
+        None => format!("{stage:.2}"),
+    }
+}
