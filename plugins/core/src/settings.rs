@@ -57,9 +57,7 @@ named_enum!(
         /// Close2GL's view coloured by each triangle's fate (`Fates`), with ghosts of what
         /// clipping and culling removed; the reference view with what its GPU knows (facing,
         /// the depth test's outcome).
-        Fates = "fates",
-        /// Where the two views differ, live (the `render` command's diff image).
-        Difference = "difference"
+        Fates = "fates"
     }
 );
 
