@@ -3,13 +3,10 @@
 //! reference's); `--pixel X,Y` prints who drew that pixel in each view, and for Close2GL every
 //! triangle that reached it and why each lost. JSON, with the keys the panel shows.
 
-use close2gl_core::{
-    App, Camera, Fates, Mesh, Rasterizer, RenderSettings, SoftwareFrame, Viewport,
-};
+use close2gl_core::{App, Camera, Fates, Mesh, RenderSettings, Viewport};
 use close2gl_gpu::{Gpu, ReferenceHit, probe_reference};
 use close2gl_pipeline::journey::{Journey, journey};
 use close2gl_pipeline::matrices;
-use close2gl_raster::SoftwareRasterizer;
 use close2gl_raster::probe::{self, Drawn, PixelProbe, ProbeScene};
 use glam::{Mat4, Vec3, Vec4};
 use serde_json::{Value, json};
@@ -192,10 +189,7 @@ fn pixel_report(app: &mut App, (x, y): (u32, u32), viewport: Viewport) -> Result
     let (mesh, camera, settings) = scene(app)?;
     let world = app.world();
     let fates = world.resource::<Fates>();
-    let drawn = (settings.close2gl_raster == Rasterizer::Software).then(|| Drawn {
-        rasterizer: world.resource::<SoftwareRasterizer>(),
-        image: world.resource::<SoftwareFrame>(),
-    });
+    let drawn = Drawn::last_frame(world, &settings);
     let scene = ProbeScene {
         mesh: &mesh,
         camera: &camera,

@@ -152,14 +152,7 @@ fn draw(gpu: &Gpu, scene: ProbeScene<'_>, vertices: &[IdVertex], targets: &Targe
                     wgpu::LoadOp::Clear(far),
                 )),
             ],
-            depth_stencil_attachment: Some(wgpu::RenderPassDepthStencilAttachment {
-                view: &depth_view,
-                depth_ops: Some(wgpu::Operations {
-                    load: wgpu::LoadOp::Clear(1.0),
-                    store: wgpu::StoreOp::Discard,
-                }),
-                stencil_ops: None,
-            }),
+            depth_stencil_attachment: Some(crate::texture::depth_attachment(&depth_view)),
             timestamp_writes: None,
             occlusion_query_set: None,
             multiview_mask: None,

@@ -61,14 +61,7 @@ pub fn submit_pass(
         let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
             label: Some("view"),
             color_attachments: &[Some(texture::color_attachment(target, load))],
-            depth_stencil_attachment: depth.map(|view| wgpu::RenderPassDepthStencilAttachment {
-                view,
-                depth_ops: Some(wgpu::Operations {
-                    load: wgpu::LoadOp::Clear(1.0),
-                    store: wgpu::StoreOp::Discard,
-                }),
-                stencil_ops: None,
-            }),
+            depth_stencil_attachment: depth.map(texture::depth_attachment),
             timestamp_writes: None,
             occlusion_query_set: None,
             multiview_mask: None,

@@ -29,6 +29,19 @@ pub fn texture_2d(
 pub const READABLE_TARGET: wgpu::TextureUsages =
     wgpu::TextureUsages::RENDER_ATTACHMENT.union(wgpu::TextureUsages::COPY_SRC);
 
+/// A depth buffer cleared to the far plane (1.0) for one pass and not kept after it: every pass
+/// that depth-tests (the views, the ID pass) starts from an empty one.
+pub fn depth_attachment(view: &wgpu::TextureView) -> wgpu::RenderPassDepthStencilAttachment<'_> {
+    wgpu::RenderPassDepthStencilAttachment {
+        view,
+        depth_ops: Some(wgpu::Operations {
+            load: wgpu::LoadOp::Clear(1.0),
+            store: wgpu::StoreOp::Discard,
+        }),
+        stencil_ops: None,
+    }
+}
+
 /// Draws into `target`, first cleared or loaded as `load` says, and keeps the result.
 pub fn color_attachment(
     target: &wgpu::TextureView,

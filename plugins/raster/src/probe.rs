@@ -8,8 +8,9 @@
 //! by the triangles' areas, as in solid mode; in wireframe and point modes the winner is still
 //! the rasterizer's own when it drew the view.
 
+use bevy_ecs::world::World;
 use close2gl_core::{
-    Camera, Clipping, FateKind, Fates, Mesh, RenderSettings, SoftwareFrame, Viewport,
+    Camera, Clipping, FateKind, Fates, Mesh, Rasterizer, RenderSettings, SoftwareFrame, Viewport,
 };
 use close2gl_pipeline::clip::{NEAR, Polygon, clip_polygon, outcode};
 use close2gl_pipeline::matrices::{ClipTransform, viewport as viewport_matrix};
@@ -85,6 +86,17 @@ pub struct ProbeScene<'a> {
 pub struct Drawn<'a> {
     pub rasterizer: &'a SoftwareRasterizer,
     pub image: &'a SoftwareFrame,
+}
+
+impl<'a> Drawn<'a> {
+    /// What the software rasterizer drew in `world`'s last frame, when it is the one drawing
+    /// Close2GL's view: the viewer's Ctrl+click and `close2gl inspect` probe the same image.
+    pub fn last_frame(world: &'a World, settings: &RenderSettings) -> Option<Self> {
+        (settings.close2gl_raster == Rasterizer::Software).then(|| Drawn {
+            rasterizer: world.resource::<SoftwareRasterizer>(),
+            image: world.resource::<SoftwareFrame>(),
+        })
+    }
 }
 
 /// Probes pixel (x, y). The winner is the software rasterizer's own (its id buffer) when it

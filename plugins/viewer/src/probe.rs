@@ -4,9 +4,8 @@
 //! The answer goes to the panel ([`ProbeAnswer`]), and its winner becomes the inspected triangle.
 
 use bevy_ecs::prelude::*;
-use close2gl_core::{Camera, Fates, InputState, Mesh, Rasterizer, RenderSettings, SoftwareFrame};
+use close2gl_core::{Camera, Fates, InputState, Mesh, RenderSettings};
 use close2gl_gpu::{Gpu, probe_reference};
-use close2gl_raster::SoftwareRasterizer;
 use close2gl_raster::probe::{Drawn, ProbeScene, probe};
 use close2gl_ui::{PanelState, ProbeAnswer};
 
@@ -42,10 +41,7 @@ pub fn answer(world: &mut World, gpu: &Gpu, placement: &Placement) {
         },
         pixel,
     );
-    let drawn = (settings.close2gl_raster == Rasterizer::Software).then(|| Drawn {
-        rasterizer: world.resource::<SoftwareRasterizer>(),
-        image: world.resource::<SoftwareFrame>(),
-    });
+    let drawn = Drawn::last_frame(world, &settings);
     let scene = ProbeScene {
         mesh: &mesh,
         camera: &camera,
