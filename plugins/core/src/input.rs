@@ -38,7 +38,7 @@ pub struct InputBindings(pub BTreeMap<String, String>);
 
 impl InputBindings {
     /// Every bindable action with its default key.
-    pub const DEFAULTS: [(&'static str, &'static str); 22] = [
+    pub const DEFAULTS: [(&'static str, &'static str); 23] = [
         ("forward", "w"),
         ("back", "s"),
         ("left", "a"),
@@ -60,6 +60,7 @@ impl InputBindings {
         ("screenshot", "f12"),
         ("copy_command", "c"),
         ("fate_view", "i"),
+        ("difference_view", "v"),
         ("outside_view", "o"),
     ];
 

@@ -16,7 +16,9 @@
 //! [`outside::OutsideRenderer`]. No window or UI crate is a dependency.
 
 mod close2gl_view;
+mod difference_view;
 mod fate_view;
+mod fullscreen;
 mod gpu;
 mod grow_buffer;
 mod id_pass;

@@ -3,10 +3,11 @@
 use bevy_ecs::prelude::*;
 use close2gl_core::{
     App, Camera, Close2glFrame, Fates, FrameSet, Lighting, Mesh, ModelStatus, Overlay, Plugin,
-    PostUpdate, Render, RenderSettings, SoftwareFrame, Texture,
+    PostUpdate, Render, RenderSettings, SoftwareFrame, Texture, Viewport,
 };
 
 use crate::fate_view::record_fates_while_shown;
+use crate::parity::to_rgb8;
 use crate::reference::clear_color;
 use crate::{Gpu, Views};
 
@@ -16,7 +17,8 @@ use crate::{Gpu, Views};
 /// from `Close2glFrame`, or the software rasterizer's image from `SoftwareFrame`; in the fate
 /// view (`RenderSettings::overlay`), each triangle in its colour from `Fates`, which it asks
 /// Close2GL to record (`Fates::record`) while that view is shown (it inserts `Fates` if no one
-/// has). They run once
+/// has); in the live difference, both views drawn again into textures of the `Viewport`'s size
+/// and compared. They run once
 /// the `Gpu` and `Views` resources exist (inserted by whoever owns the target), so a window may
 /// arrive late. It owns no resource: the model, settings and Close2GL plugins provide what it
 /// reads, the model plugin the texture (without one the reference draws untextured), and the
@@ -29,6 +31,7 @@ impl Plugin for GpuPlugin {
             .requires::<RenderSettings>("GpuPlugin", "SettingsPlugin")
             .requires::<Lighting>("GpuPlugin", "SettingsPlugin")
             .requires::<Close2glFrame>("GpuPlugin", "Close2glPlugin")
+            .requires::<Viewport>("GpuPlugin", "SettingsPlugin")
             .init_resource::<Fates>()
             .add_systems(
                 PostUpdate,
@@ -43,6 +46,7 @@ impl Plugin for GpuPlugin {
                     upload_close2gl,
                     upload_software,
                     upload_fates,
+                    render_difference,
                 )
                     .chain()
                     .in_set(FrameSet::Render)
@@ -126,5 +130,19 @@ fn upload_fates(
         views
             .fates
             .update(&gpu.device, &gpu.queue, &mesh, &camera, &fates);
+    }
+}
+
+/// The live difference, every frame while it is shown: both views drawn again, after every
+/// upload, into the textures it compares.
+fn render_difference(
+    gpu: Res<Gpu>,
+    viewport: Res<Viewport>,
+    settings: Res<RenderSettings>,
+    mut views: ResMut<Views>,
+) {
+    if settings.overlay == Overlay::Difference {
+        let size = (viewport.width, viewport.height);
+        views.render_difference(&gpu, size, to_rgb8(settings.background));
     }
 }

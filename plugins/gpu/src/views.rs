@@ -6,6 +6,7 @@ use crate::Gpu;
 use close2gl_core::{Overlay, Rasterizer};
 
 use crate::close2gl_view::Close2glView;
+use crate::difference_view::DifferenceView;
 use crate::fate_view::FateView;
 use crate::reference::{Reference, clear_color};
 use crate::software_view::SoftwareView;
@@ -19,6 +20,7 @@ pub struct Views {
     pub(crate) close2gl: Close2glView,
     pub(crate) software: SoftwareView,
     pub(crate) fates: FateView,
+    pub(crate) difference: DifferenceView,
     /// The inspector's display over both views.
     pub(crate) overlay: Overlay,
     /// Which of the two Close2GL views is shown.
@@ -35,6 +37,7 @@ impl Views {
             close2gl: Close2glView::new(&gpu.device, color_format),
             software: SoftwareView::new(&gpu.device, color_format),
             fates: FateView::new(&gpu.device, color_format),
+            difference: DifferenceView::new(&gpu.device, color_format),
             overlay: Overlay::Off,
             rasterizer: Rasterizer::Gpu,
             background: clear_color(close2gl_core::RenderSettings::default().background),
@@ -52,13 +55,40 @@ impl Views {
     /// Records the Close2GL view (2D, no depth attachment needed): its 2D buffer drawn by the
     /// GPU, or the software rasterizer's image. The caller sets the viewport rectangle, which
     /// should have the size of `Viewport`. In the fate view, every triangle in its fate's colour
-    /// instead.
+    /// instead; in the live difference, where the two views differ.
     pub fn draw_close2gl(&self, pass: &mut wgpu::RenderPass<'_>) {
-        match (self.overlay, self.rasterizer) {
-            (Overlay::Fates, _) => self.fates.draw(pass),
-            (_, Rasterizer::Gpu) => self.close2gl.draw(pass),
-            (_, Rasterizer::Software) => self.software.draw(pass),
+        match self.overlay {
+            Overlay::Fates => self.fates.draw(pass),
+            Overlay::Difference => self.difference.draw(pass),
+            Overlay::Off => self.draw_compared_close2gl(pass),
         }
+    }
+
+    /// The Close2GL view the reference is compared with: drawn by the GPU or rasterized.
+    fn draw_compared_close2gl(&self, pass: &mut wgpu::RenderPass<'_>) {
+        match self.rasterizer {
+            Rasterizer::Gpu => self.close2gl.draw(pass),
+            Rasterizer::Software => self.software.draw(pass),
+        }
+    }
+
+    /// For the live difference: draws this frame's two views, as they are without an overlay,
+    /// into the difference's own `size` textures, which `draw_close2gl` then compares against
+    /// `background` (as the target stores it).
+    pub(crate) fn render_difference(&mut self, gpu: &Gpu, size: (u32, u32), background: [u8; 3]) {
+        self.difference
+            .prepare(&gpu.device, &gpu.queue, size, background);
+        let Some(inputs) = self.difference.inputs() else {
+            return;
+        };
+        let clear = wgpu::LoadOp::Clear(self.background);
+        let depth = Some(&inputs.depth);
+        crate::submit_pass(gpu, &inputs.reference, depth, clear, |pass| {
+            self.reference.draw(pass, false)
+        });
+        crate::submit_pass(gpu, &inputs.close2gl, None, clear, |pass| {
+            self.draw_compared_close2gl(pass)
+        });
     }
 
     /// RenderSettings.background as a clear colour: both views clear to it.

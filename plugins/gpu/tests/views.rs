@@ -5,10 +5,10 @@ use std::path::PathBuf;
 
 use close2gl_core::glam::{Vec2, Vec3};
 use close2gl_core::{
-    App, Camera, FrontFace, Image8, Mesh, ModelStatus, RenderMode, RenderSettings, Shading,
-    Texture, TextureFilter, Viewport,
+    App, Camera, Clipping, FrontFace, Image8, Mesh, ModelStatus, Overlay, RenderMode,
+    RenderSettings, Shading, Texture, TextureFilter, Viewport,
 };
-use close2gl_gpu::parity::{Comparison, coverage, diff_image, to_rgb8};
+use close2gl_gpu::parity::{Comparison, ONLY_REFERENCE, coverage, diff_image, to_rgb8};
 use close2gl_gpu::{Gpu, OffscreenPlugin, Snapshot, render_offscreen};
 use close2gl_pipeline::Close2glPlugin;
 use close2gl_testkit::{gpu, sphere};
@@ -472,4 +472,43 @@ fn the_filters_differ_on_a_grazing_floor_and_trilinear_calms_the_far_half() {
     assert_ne!(nearest.reference, trilinear.reference);
     let (near, tri) = (far_half_energy(&nearest), far_half_energy(&trilinear));
     assert!(tri < 0.5 * near, "trilinear {tri}, nearest {near}");
+}
+
+#[test]
+fn the_live_difference_is_the_render_commands_diff_image() {
+    // Close enough that the sphere crosses the border, where simple clipping drops whole
+    // triangles that the GPU still draws.
+    let settings = RenderSettings {
+        clipping: Clipping::Simple,
+        shading: Shading::Phong,
+        ..Default::default()
+    };
+    let mut app = app(
+        sphere(Vec3::ZERO, 1.0, 16, 32),
+        camera_at(Vec3::new(0.3, 0.5, 1.6), Vec3::ZERO),
+        settings,
+        SMALL,
+    );
+    let plain = render_offscreen(&mut app).expect("both views render");
+    app.world_mut().resource_mut::<RenderSettings>().overlay = Overlay::Difference;
+    let live = render_offscreen(&mut app).expect("the difference renders");
+
+    let expected = diff_image(&plain.reference, &plain.close2gl, plain.background);
+    let missing = expected
+        .pixels
+        .iter()
+        .filter(|&&p| p == ONLY_REFERENCE)
+        .count();
+    assert!(
+        missing > 50,
+        "simple clipping drops border triangles: {missing} pixels"
+    );
+    assert!(
+        live.close2gl.pixels == expected.pixels,
+        "the live difference is diff.png"
+    );
+    assert!(
+        live.reference.pixels == plain.reference.pixels,
+        "the reference is left alone"
+    );
 }

@@ -119,9 +119,17 @@ fn apply_press(
     } else if is("copy_command") {
         tools.copy_command = true;
     } else if is("fate_view") {
-        settings.overlay = match settings.overlay {
-            Overlay::Fates => Overlay::Off,
-            _ => Overlay::Fates,
-        };
+        settings.overlay = toggled(settings.overlay, Overlay::Fates);
+    } else if is("difference_view") {
+        settings.overlay = toggled(settings.overlay, Overlay::Difference);
+    }
+}
+
+/// `overlay` switched off if it is already shown, else shown in place of any other.
+fn toggled(current: Overlay, overlay: Overlay) -> Overlay {
+    if current == overlay {
+        Overlay::Off
+    } else {
+        overlay
     }
 }

@@ -1,5 +1,6 @@
-//! The inspector section: the fate view's switch and legend (each fate's count, from the record
-//! Close2GL itself keeps, and the colours of the reference's overlays, which the GPU answers); a
+//! The inspector section: the overlay switch and its legend (the fate view's: each fate's count,
+//! from the record Close2GL itself keeps, and the colours of the reference's overlays, which the
+//! GPU answers; the live difference's colours); a
 //! triangle picked by index with its fate and its journey; the matrices M, P, V with their current numbers beside
 //! the reference's own view and projection, and their largest difference.
 
@@ -59,7 +60,7 @@ fn overlay_switch(ui: &mut egui::Ui, world: &mut World) {
     };
     ui.horizontal(|ui| {
         ui.label("Overlay");
-        for overlay in [Overlay::Off, Overlay::Fates] {
+        for &overlay in Overlay::ALL {
             ui.selectable_value(&mut settings.overlay, overlay, overlay.name());
         }
     })
@@ -67,7 +68,8 @@ fn overlay_switch(ui: &mut egui::Ui, world: &mut World) {
     .on_hover_text(
         "fates: Close2GL's view in each triangle's fate colour (its own record), with outlines \
          of what clipping and culling removed; the reference view with the GPU's own facing \
-         and depth-test answers.",
+         and depth-test answers.\ndifference: Close2GL's view replaced by where the two views \
+         differ (as `close2gl render` writes diff.png); Ctrl+click any pixel to probe it.",
     );
     crate::write_if_changed(world, &settings);
 }
@@ -75,6 +77,12 @@ fn overlay_switch(ui: &mut egui::Ui, world: &mut World) {
 /// The two halves of the fate view's legend: Close2GL's fates with their counts, and what the
 /// GPU paints over the reference.
 fn legend(ui: &mut egui::Ui, world: &mut World) {
+    if world
+        .get_resource::<RenderSettings>()
+        .is_some_and(|s| s.overlay == Overlay::Difference)
+    {
+        return difference_legend(ui);
+    }
     let Some(fates) = world.get_resource::<Fates>() else {
         return;
     };
@@ -97,6 +105,21 @@ fn legend(ui: &mut egui::Ui, world: &mut World) {
             (FateKind::Hidden, "failed the depth test"),
         ] {
             swatch(ui, kind.color());
+            ui.label(meaning);
+            ui.end_row();
+        }
+    });
+}
+
+/// The live difference's colours (`close2gl_gpu::parity`'s, without depending on the GPU crate).
+fn difference_legend(ui: &mut egui::Ui) {
+    egui::Grid::new("difference_legend").show(ui, |ui| {
+        for (color, meaning) in [
+            ([255, 0, 255], "covered in the reference only"),
+            ([0, 255, 0], "covered in Close2GL only"),
+            ([230, 230, 230], "the same in both (the reference, faded)"),
+        ] {
+            swatch(ui, color);
             ui.label(meaning);
             ui.end_row();
         }

@@ -1,0 +1,137 @@
+//! The live difference (`Overlay::Difference`): this frame's two views drawn again into
+//! textures of the viewport's size, then compared pixel by pixel in the Close2GL view's place,
+//! exactly as `close2gl render` writes diff.png ([`crate::parity::diff_image`]). A student who
+//! switches to simple clipping sees at once, in magenta, what Close2GL no longer draws.
+
+use wgpu::util::DeviceExt;
+
+use crate::texture::texture_2d;
+use crate::{DEPTH_FORMAT, fullscreen};
+
+/// The two views' images for one viewport size, and the bind group that compares them.
+pub(crate) struct Inputs {
+    pub(crate) reference: wgpu::TextureView,
+    pub(crate) close2gl: wgpu::TextureView,
+    pub(crate) depth: wgpu::TextureView,
+    size: (u32, u32),
+    bind_group: wgpu::BindGroup,
+}
+
+pub(crate) struct DifferenceView {
+    pipeline: wgpu::RenderPipeline,
+    layout: wgpu::BindGroupLayout,
+    color_format: wgpu::TextureFormat,
+    /// The background as a UNORM target stores it (0..255), what "not covered" looks like.
+    background: wgpu::Buffer,
+    /// None until the first frame of the difference.
+    inputs: Option<Inputs>,
+}
+
+impl DifferenceView {
+    pub(crate) fn new(device: &wgpu::Device, color_format: wgpu::TextureFormat) -> Self {
+        let uniform = wgpu::BindGroupLayoutEntry {
+            binding: 2,
+            visibility: wgpu::ShaderStages::FRAGMENT,
+            ty: wgpu::BindingType::Buffer {
+                ty: wgpu::BufferBindingType::Uniform,
+                has_dynamic_offset: false,
+                min_binding_size: None,
+            },
+            count: None,
+        };
+        let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
+            label: Some("difference"),
+            entries: &[
+                fullscreen::texture_entry(0),
+                fullscreen::texture_entry(1),
+                uniform,
+            ],
+        });
+        let fragment = include_str!("difference.wgsl");
+        let background = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
+            label: Some("difference background"),
+            contents: bytemuck::cast_slice(&[0.0f32; 4]),
+            usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
+        });
+        Self {
+            pipeline: fullscreen::pipeline(device, "difference", fragment, &layout, color_format),
+            layout,
+            color_format,
+            background,
+            inputs: None,
+        }
+    }
+
+    /// Makes the textures the two views are drawn into for a `size` viewport (again when the
+    /// size changes), and sets the background they are compared against.
+    pub(crate) fn prepare(
+        &mut self,
+        device: &wgpu::Device,
+        queue: &wgpu::Queue,
+        size: (u32, u32),
+        background: [u8; 3],
+    ) {
+        let [r, g, b] = background.map(f32::from);
+        queue.write_buffer(&self.background, 0, bytemuck::cast_slice(&[r, g, b, 255.0]));
+        if self
+            .inputs
+            .as_ref()
+            .is_none_or(|inputs| inputs.size != size)
+        {
+            self.inputs = Some(self.make_inputs(device, size));
+        }
+    }
+
+    pub(crate) fn inputs(&self) -> Option<&Inputs> {
+        self.inputs.as_ref()
+    }
+
+    fn make_inputs(&self, device: &wgpu::Device, size: (u32, u32)) -> Inputs {
+        let usage = wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::TEXTURE_BINDING;
+        let view = |label, format, usage| {
+            texture_2d(device, label, size, format, usage).create_view(&Default::default())
+        };
+        let reference = view("difference: reference", self.color_format, usage);
+        let close2gl = view("difference: close2gl", self.color_format, usage);
+        let depth = view(
+            "difference: depth",
+            DEPTH_FORMAT,
+            wgpu::TextureUsages::RENDER_ATTACHMENT,
+        );
+        let bind_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
+            label: Some("difference"),
+            layout: &self.layout,
+            entries: &[
+                wgpu::BindGroupEntry {
+                    binding: 0,
+                    resource: wgpu::BindingResource::TextureView(&reference),
+                },
+                wgpu::BindGroupEntry {
+                    binding: 1,
+                    resource: wgpu::BindingResource::TextureView(&close2gl),
+                },
+                wgpu::BindGroupEntry {
+                    binding: 2,
+                    resource: self.background.as_entire_binding(),
+                },
+            ],
+        });
+        Inputs {
+            reference,
+            close2gl,
+            depth,
+            size,
+            bind_group,
+        }
+    }
+
+    /// The comparison, one texel per pixel of the viewport the caller set.
+    pub(crate) fn draw(&self, pass: &mut wgpu::RenderPass<'_>) {
+        let Some(inputs) = &self.inputs else {
+            return;
+        };
+        pass.set_pipeline(&self.pipeline);
+        pass.set_bind_group(0, &inputs.bind_group, &[]);
+        pass.draw(0..3, 0..1);
+    }
+}
