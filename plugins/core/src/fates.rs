@@ -111,11 +111,13 @@ impl FateCounts {
         *self.get_mut(kind) += 1;
     }
 
-    /// Adds another tally (a parallel chunk's) to this one.
-    pub fn merge(&mut self, other: &FateCounts) {
+    /// The counts `count` gives each fate.
+    pub fn from_fn(count: impl Fn(FateKind) -> usize) -> Self {
+        let mut counts = Self::default();
         for &kind in FateKind::ALL {
-            *self.get_mut(kind) += other.get(kind);
+            *counts.get_mut(kind) = count(kind);
         }
+        counts
     }
 
     pub fn get(&self, kind: FateKind) -> usize {

@@ -6,8 +6,8 @@
 
 use bevy_ecs::prelude::Resource;
 use close2gl_core::{
-    Camera, Close2glFrame, Fates, Mesh, RasterGeometry, RasterVertex, Rasterizer, RenderSettings,
-    TriangleFate, Viewport,
+    Camera, Close2glFrame, FateCounts, Fates, Mesh, RasterGeometry, RasterVertex, Rasterizer,
+    RenderSettings, TriangleFate, Viewport,
 };
 use glam::Vec3;
 use rayon::iter::Either;
@@ -70,13 +70,10 @@ impl FastPipeline {
         let (positions, codes, window) = (&mesh.positions, &self.codes, &self.window);
         let tasks = mesh.triangles.len().div_ceil(TRIANGLE_CHUNK);
         self.chunks.resize_with(tasks, Chunk::default);
-        let recorded = if fates.record {
-            mesh.triangles.len()
-        } else {
-            0
-        };
+        let record = fates.record;
+        let recorded = if record { mesh.triangles.len() } else { 0 };
         fates.triangles.resize(recorded, TriangleFate::default());
-        let fate_slices = match fates.record {
+        let fate_slices = match record {
             true => Either::Left(fates.triangles.par_chunks_mut(TRIANGLE_CHUNK)),
             false => Either::Right((0..tasks).into_par_iter().map(|_| <&mut [_]>::default())),
         };
@@ -97,14 +94,17 @@ impl FastPipeline {
                     window,
                     transform: &transform,
                 };
-                chunk.counts = if raster {
-                    let mut out = RasterEmit {
-                        window: &mut chunk.vertices,
-                        raster: &mut chunk.raster,
-                    };
-                    corners.process(triangles, &stage, &mut out, fates)
-                } else {
-                    corners.process(triangles, &stage, &mut chunk.vertices, fates)
+                let mut out = RasterEmit {
+                    window: &mut chunk.vertices,
+                    raster: &mut chunk.raster,
+                };
+                chunk.counts = match (raster, record) {
+                    (true, true) => corners.process::<true>(triangles, &stage, &mut out, fates),
+                    (true, false) => corners.process::<false>(triangles, &stage, &mut out, fates),
+                    (false, true) => corners.process::<true>(triangles, &stage, out.window, fates),
+                    (false, false) => {
+                        corners.process::<false>(triangles, &stage, out.window, fates)
+                    }
                 };
             });
 
@@ -127,8 +127,11 @@ impl FastPipeline {
         frame.viewport = viewport;
         let mut total = Tally::default();
         chunks.iter().for_each(|chunk| total.merge(&chunk.counts));
-        frame.counts = total.stage;
-        fates.counts = total.fates;
+        frame.counts = total.stage_counts();
+        fates.counts = match record {
+            true => total.fate_counts(),
+            false => FateCounts::default(),
+        };
     }
 
     /// Transforms every unique vertex once, into its outcode and window position.
@@ -175,11 +178,11 @@ struct Corners<'a> {
 }
 
 impl Corners<'_> {
-    /// Clip, divide, map, cull and emit `triangles` into `out`, and their fates into `fates`
-    /// (one per triangle, or empty when not recorded, when the rasterizer is also told each
-    /// primitive's mesh triangle); their counts.
+    /// Clip, divide, map, cull and emit `triangles` into `out`; their counts. With `RECORD`, also
+    /// their fates into `fates` (one per triangle), and the rasterizer is told each primitive's
+    /// mesh triangle.
     #[inline(always)]
-    fn process(
+    fn process<const RECORD: bool>(
         &self,
         triangles: &[[u32; 3]],
         stage: &Stage,
@@ -189,7 +192,7 @@ impl Corners<'_> {
         let mut counts = Tally::default();
         for (i, triangle) in triangles.iter().enumerate() {
             let [a, b, c] = triangle.map(|i| i as usize);
-            let fate = process(
+            let fate = process::<RECORD>(
                 *triangle,
                 [self.codes[a], self.codes[b], self.codes[c]],
                 [self.window[a], self.window[b], self.window[c]],
@@ -198,8 +201,8 @@ impl Corners<'_> {
                 out,
             );
             counts.add(&fate);
-            if let Some(slot) = fates.get_mut(i) {
-                *slot = fate.fate;
+            if RECORD {
+                fates[i] = fate.fate;
                 if let Some(raster) = out.raster() {
                     let index = self.first + i as u32;
                     raster

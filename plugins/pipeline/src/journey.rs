@@ -68,7 +68,7 @@ pub fn journey(
     // The fate is the pipeline's own decision, from the stage every frame runs.
     let seen = clip.map(|c| corner(c, &stage));
     let (codes, window) = (seen.map(|(code, _)| code), seen.map(|(_, window)| window));
-    let fate = process(corners, codes, window, || clip, &stage, &mut Vec::new()).fate;
+    let fate = process::<true>(corners, codes, window, || clip, &stage, &mut Vec::new()).fate;
     let clip_steps = clip_steps(clip, outcodes, &stage);
     let divided = match (&clip_steps.last(), fate.kind) {
         (_, FateKind::Clipped) => Vec::new(),
@@ -82,7 +82,7 @@ pub fn journey(
         .collect();
     let (signed_area, culling) = match window.is_empty() {
         true => (f32::NAN, None),
-        false => face(
+        false => face::<true>(
             &window.iter().map(|w| [w.x, w.y]).collect::<Vec<_>>(),
             stage.culling,
         ),

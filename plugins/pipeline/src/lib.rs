@@ -72,38 +72,45 @@ pub fn close2gl_system(
     frame.stage_ms = start.elapsed().as_secs_f64() * 1e3;
 }
 
-/// The stage counts and the fate counts of some triangles.
+/// How many of some triangles met each fate, and how many primitives they were drawn as. The
+/// fates are counted in an array indexed by the kind: one add per triangle, no branch.
 #[derive(Clone, Copy, Debug, Default)]
 struct Tally {
-    stage: StageCounts,
-    fates: FateCounts,
+    fates: [usize; FateKind::ALL.len()],
+    primitives: usize,
 }
 
 impl Tally {
     /// Adds one triangle's fate.
     #[inline(always)]
     fn add(&mut self, fate: &Fate) {
-        let counts = &mut self.stage;
-        counts.triangles_in += 1;
-        self.fates.add(fate.fate.kind);
-        match fate.fate.kind {
-            FateKind::Clipped => counts.clipped += 1,
-            FateKind::Culled | FateKind::ZeroArea => counts.culled += 1,
-            _ => {
-                counts.drawn += 1;
-                counts.output_primitives += fate.primitives;
-            }
-        }
+        self.fates[fate.fate.kind as usize] += 1;
+        self.primitives += fate.primitives;
     }
 
     /// Adds another tally (a parallel chunk's).
     fn merge(&mut self, other: &Tally) {
-        let (counts, more) = (&mut self.stage, &other.stage);
-        counts.triangles_in += more.triangles_in;
-        counts.clipped += more.clipped;
-        counts.culled += more.culled;
-        counts.drawn += more.drawn;
-        counts.output_primitives += more.output_primitives;
-        self.fates.merge(&other.fates);
+        for (count, more) in self.fates.iter_mut().zip(other.fates) {
+            *count += more;
+        }
+        self.primitives += other.primitives;
+    }
+
+    /// The fate counts. Exact only for a recorded frame: without recording, a back face with no
+    /// area counts as culled, and no_pixels and hidden are the rasterizer's to add.
+    fn fate_counts(&self) -> FateCounts {
+        FateCounts::from_fn(|kind| self.fates[kind as usize])
+    }
+
+    /// The stage counts, which recording or not does not change.
+    fn stage_counts(&self) -> StageCounts {
+        let fates = self.fate_counts();
+        StageCounts {
+            triangles_in: self.fates.iter().sum(),
+            clipped: fates.clipped,
+            culled: fates.culled + fates.zero_area,
+            drawn: fates.drawn + fates.cut,
+            output_primitives: self.primitives,
+        }
     }
 }

@@ -187,8 +187,14 @@ impl Emit for RasterEmit<'_> {
 /// corners' outcodes and window positions (from [`corner`]). The clip coordinates are asked for
 /// only when the triangle straddles the view volume's border: most triangles of a big mesh never
 /// need them. Inlined into the callers' loops; the cutting is not (see [`cut`]).
+///
+/// `RECORD` says whether someone will read the fate's details (the inspector). Without it, a
+/// back face is culled without asking whether it also has no area, and a clipped triangle
+/// without asking whether it lies behind the eye: the same output and the same stage counts, at
+/// the cost of the pipeline before the inspector existed. A constant, so that each frame is
+/// compiled without the questions it does not ask.
 #[inline(always)]
-pub fn process(
+pub fn process<const RECORD: bool>(
     corners: [u32; 3],
     codes: [Outcode; 3],
     window: [[f32; 2]; 3],
@@ -199,27 +205,28 @@ pub fn process(
     let outside_any = codes[0] | codes[1] | codes[2];
     if outside_any == 0 {
         // Trivially inside: the corners' window positions are already known.
-        let (area, culled) = face(&window, stage.culling);
+        let (area, culled) = face::<RECORD>(&window, stage.culling);
         if let Some(kind) = culled {
             return Fate::culled(kind, 0, area);
         }
         return Fate::drawn(0, area, emit_inside(&window, corners, stage.mode, out));
     }
     let outside_all = codes[0] & codes[1] & codes[2];
-    if stage.clipping == Clipping::Simple {
-        return Fate::clipped(outside_any, behind_eye(outside_all, clip));
+    if stage.clipping == Clipping::Simple || outside_all != 0 {
+        let planes = match stage.clipping {
+            Clipping::Simple => outside_any,
+            _ => outside_all,
+        };
+        return Fate::clipped(planes, RECORD && behind_eye(outside_all, clip));
     }
-    if outside_all != 0 {
-        return Fate::clipped(outside_all, behind_eye(outside_all, clip));
-    }
-    cut(corners, clip(), outside_any, stage, out)
+    cut::<RECORD>(corners, clip(), outside_any, stage, out)
 }
 
 /// Clip, divide, map, cull and emit a triangle that straddles the planes in `outside_any`. Kept
 /// out of line: its polygons need a large stack frame that the common, trivially inside
 /// triangle should not pay for.
 #[inline(never)]
-fn cut(
+fn cut<const RECORD: bool>(
     corners: [u32; 3],
     clip: [Vec4; 3],
     outside_any: Outcode,
@@ -236,7 +243,7 @@ fn cut(
     if piece_window.is_empty() || piece_window.iter().flatten().any(|x| !x.is_finite()) {
         return Fate::clipped(outside_any, false);
     }
-    let (area, culled) = face(piece_window, stage.culling);
+    let (area, culled) = face::<RECORD>(piece_window, stage.culling);
     if let Some(kind) = culled {
         return Fate::culled(kind, outside_any, area);
     }
@@ -312,9 +319,13 @@ fn longest_edge_squared(window: &[[f32; 2]]) -> f32 {
 /// Backface culling: twice the polygon's signed window area, and, when culling is on and
 /// removes it, why: a back face, or no area to speak of (a back face too, as in OpenGL; see
 /// `ZERO_AREA`, which the reference view uses). A sliver's sign is rounding, so it is told
-/// apart by its size whichever way it faces.
+/// apart by its size whichever way it faces; only `RECORD` asks that of a back face, which is
+/// culled either way.
 #[inline(always)]
-pub fn face(window: &[[f32; 2]], culling: Option<FrontFace>) -> (f32, Option<FateKind>) {
+pub fn face<const RECORD: bool>(
+    window: &[[f32; 2]],
+    culling: Option<FrontFace>,
+) -> (f32, Option<FateKind>) {
     let area = match window {
         [a, b, c] => (b[0] - a[0]) * (c[1] - a[1]) - (c[0] - a[0]) * (b[1] - a[1]),
         polygon => signed_area(polygon),
@@ -326,7 +337,9 @@ pub fn face(window: &[[f32; 2]], culling: Option<FrontFace>) -> (f32, Option<Fat
         FrontFace::Ccw => area < 0.0,
         FrontFace::Cw => area > 0.0,
     };
-    let culled = if has_no_area(area, longest_edge_squared(window)) {
+    let culled = if !RECORD && !front_facing {
+        Some(FateKind::Culled)
+    } else if has_no_area(area, longest_edge_squared(window)) {
         Some(FateKind::ZeroArea)
     } else if !front_facing {
         Some(FateKind::Culled)
@@ -401,11 +414,25 @@ mod tests {
         let sliver = [[10.0, 10.0], [60.0, 40.0], [60.0, 40.0 + 1e-5]];
         let reversed = [sliver[0], sliver[2], sliver[1]];
         for front in [FrontFace::Ccw, FrontFace::Cw] {
-            assert_eq!(face(&sliver, Some(front)).1, Some(FateKind::ZeroArea));
-            assert_eq!(face(&reversed, Some(front)).1, Some(FateKind::ZeroArea));
+            assert_eq!(
+                face::<true>(&sliver, Some(front)).1,
+                Some(FateKind::ZeroArea)
+            );
+            assert_eq!(
+                face::<true>(&reversed, Some(front)).1,
+                Some(FateKind::ZeroArea)
+            );
+            let unrecorded = [
+                face::<false>(&sliver, Some(front)),
+                face::<false>(&reversed, Some(front)),
+            ];
+            assert!(
+                unrecorded.iter().all(|(_, culled)| culled.is_some()),
+                "culled, recorded or not"
+            );
         }
         assert_eq!(
-            face(&sliver, None).1,
+            face::<true>(&sliver, None).1,
             None,
             "without culling every triangle is drawn"
         );
@@ -416,7 +443,13 @@ mod tests {
         // 1 pixel tall over 100 pixels long: thin, but a triangle any rasteriser can fill.
         let thin = [[0.0, 0.0], [100.0, 0.0], [50.0, 1.0]];
         let reversed = [thin[0], thin[2], thin[1]];
-        assert_eq!(face(&thin, Some(FrontFace::Ccw)).1, Some(FateKind::Culled));
-        assert_eq!(face(&reversed, Some(FrontFace::Ccw)).1, None);
+        for culled in [
+            face::<true>(&thin, Some(FrontFace::Ccw)),
+            face::<false>(&thin, Some(FrontFace::Ccw)),
+        ] {
+            assert_eq!(culled.1, Some(FateKind::Culled));
+        }
+        assert_eq!(face::<true>(&reversed, Some(FrontFace::Ccw)).1, None);
+        assert_eq!(face::<false>(&reversed, Some(FrontFace::Ccw)).1, None);
     }
 }

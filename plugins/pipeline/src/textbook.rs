@@ -43,7 +43,7 @@ pub fn run_recording(
         let corners = clip.map(|c| corner(c, &stage));
         let codes = corners.map(|(code, _)| code);
         let window = corners.map(|(_, window)| window);
-        let fate = process(
+        let fate = process::<true>(
             *triangle,
             codes,
             window,
@@ -54,7 +54,7 @@ pub fn run_recording(
         counts.add(&fate);
         fates.triangles.push(fate.fate);
     }
-    frame.counts = counts.stage;
-    fates.counts = counts.fates;
+    frame.counts = counts.stage_counts();
+    fates.counts = counts.fate_counts();
     (frame, fates)
 }

@@ -4,7 +4,8 @@
 
 use close2gl_core::glam::Vec3;
 use close2gl_core::{
-    Camera, Clipping, Close2glFrame, Fates, FrontFace, Mesh, RenderMode, RenderSettings, Viewport,
+    Camera, Clipping, Close2glFrame, FateCounts, Fates, FrontFace, Mesh, RenderMode,
+    RenderSettings, Viewport,
 };
 use close2gl_pipeline::{FastPipeline, textbook};
 use proptest::prelude::*;
@@ -122,9 +123,15 @@ proptest! {
         let mut fast = Close2glFrame::default();
         let mut fates = Fates { record: true, ..Fates::default() };
         FastPipeline::default().run(&mesh, &camera, &settings, viewport, &mut fast, &mut fates);
-        prop_assert_eq!(slow, fast);
+        prop_assert_eq!(&slow, &fast);
         prop_assert_eq!(slow_fates.counts, fates.counts);
         // Debug text, so that the NaN areas of clipped triangles compare equal.
         prop_assert_eq!(format!("{:?}", slow_fates.triangles), format!("{:?}", fates.triangles));
+        // Without recording: the same buffer and stage counts, and no fates at all.
+        let mut unrecorded = Fates::default();
+        FastPipeline::default().run(&mesh, &camera, &settings, viewport, &mut fast, &mut unrecorded);
+        prop_assert_eq!(&slow, &fast);
+        prop_assert!(unrecorded.triangles.is_empty());
+        prop_assert_eq!(unrecorded.counts, FateCounts::default());
     }
 }
