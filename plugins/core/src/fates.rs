@@ -183,3 +183,8 @@ mod tests {
         }
     }
 }
+
+/// The mesh triangle the inspector follows (its journey in the panel, highlighted in both
+/// views), or none. A Ctrl+click probe selects its winner; the panel selects by index.
+#[derive(Resource, Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct SelectedTriangle(pub Option<u32>);

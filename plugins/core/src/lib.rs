@@ -34,7 +34,7 @@ pub use camera::{
     Camera, CameraAction, CameraActions, CameraHome, CameraMode, CameraSpeeds, Framing, KeepPose,
     Pose,
 };
-pub use fates::{ClipPlane, FateCounts, FateKind, Fates, TriangleFate};
+pub use fates::{ClipPlane, FateCounts, FateKind, Fates, SelectedTriangle, TriangleFate};
 pub use frame::{
     Close2glFrame, CutVertex, RasterGeometry, RasterVertex, SoftwareFrame, StageCounts, Topology,
     Viewport,

@@ -1,6 +1,9 @@
 //! The owner of the settings both views follow.
 
-use crate::{App, Lighting, OutsideOrbit, OutsideView, Plugin, RenderSettings, Viewport, Wake};
+use crate::{
+    App, Lighting, OutsideOrbit, OutsideView, Plugin, RenderSettings, SelectedTriangle, Viewport,
+    Wake,
+};
 
 /// Owns [`RenderSettings`] (one set of switches for both views), [`Lighting`] (both views light
 /// the model with it) and [`Viewport`] (the size both views share): neither view owns what the
@@ -9,7 +12,8 @@ use crate::{App, Lighting, OutsideOrbit, OutsideView, Plugin, RenderSettings, Vi
 /// before the plugin is added (the configuration's) are kept. [`OutsideView`] (shown or not, and
 /// its stage) and [`OutsideOrbit`] (its own camera) are settings of the same kind: the config,
 /// the panel and the keys write them, the GPU's outside renderer reads them. It owns [`Wake`] too, which the
-/// viewer fills and any plugin's background work clones.
+/// viewer fills and any plugin's background work clones, and [`SelectedTriangle`], which the
+/// panel and the probe write and both views highlight.
 pub struct SettingsPlugin;
 
 impl Plugin for SettingsPlugin {
@@ -19,6 +23,7 @@ impl Plugin for SettingsPlugin {
             .init_resource::<Viewport>()
             .init_resource::<OutsideView>()
             .init_resource::<OutsideOrbit>()
-            .init_resource::<Wake>();
+            .init_resource::<Wake>()
+            .init_resource::<SelectedTriangle>();
     }
 }

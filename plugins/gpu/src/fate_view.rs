@@ -11,21 +11,12 @@
 //! eye shows nothing and one reaching behind it shows the part in front.
 
 use bevy_ecs::prelude::*;
-use bytemuck::{Pod, Zeroable};
 use close2gl_core::{Camera, FateKind, Fates, Mesh, Overlay, RenderSettings, TriangleFate};
 use close2gl_pipeline::matrices::ClipTransform;
 use glam::Vec4;
 
+use crate::corners::{Corner, CornerPipelines, gl_to_wgpu_depth, outline};
 use crate::grow_buffer::GrowBuffer;
-
-/// One corner: Close2GL's clip coordinates (z remapped from OpenGL's -w..w to wgpu's 0..w) and
-/// its fate's colour.
-#[repr(C)]
-#[derive(Clone, Copy, Pod, Zeroable)]
-struct FateVertex {
-    clip: [f32; 4],
-    color: [u8; 4],
-}
 
 pub(crate) struct FateView {
     fill: wgpu::RenderPipeline,
@@ -39,7 +30,7 @@ pub(crate) struct FateView {
 
 /// One draw of the fate view: its vertices on the CPU (kept between frames) and the GPU.
 struct Layer {
-    vertices: Vec<FateVertex>,
+    vertices: Vec<Corner>,
     buffer: GrowBuffer,
     count: u32,
 }
@@ -66,16 +57,10 @@ const OVER: usize = 2;
 
 impl FateView {
     pub(crate) fn new(device: &wgpu::Device, color_format: wgpu::TextureFormat) -> Self {
-        let shader = device.create_shader_module(wgpu::include_wgsl!("fate_view.wgsl"));
-        let layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
-            label: Some("fate view"),
-            bind_group_layouts: &[],
-            immediate_size: 0,
-        });
-        let pipeline = |topology| create_pipeline(device, &shader, &layout, color_format, topology);
+        let pipelines = CornerPipelines::new(device, "fate view", color_format, false);
         Self {
-            fill: pipeline(wgpu::PrimitiveTopology::TriangleList),
-            outline: pipeline(wgpu::PrimitiveTopology::LineList),
+            fill: pipelines.fill,
+            outline: pipelines.outline,
             layers: ["fate outlines under", "fate fills", "fate outlines over"]
                 .map(|label| Layer::new(device, label)),
             order: Vec::new(),
@@ -115,7 +100,7 @@ impl FateView {
         for &(_, index) in &self.order {
             let color = rgba(fates.triangles[index as usize].kind);
             let corners = clip(&mesh.triangles[index as usize]);
-            let vertex = |c: Vec4| FateVertex {
+            let vertex = |c: Vec4| Corner {
                 clip: c.to_array(),
                 color,
             };
@@ -138,12 +123,6 @@ impl FateView {
     }
 }
 
-/// OpenGL's clip depth (-w..w) as wgpu's (0..w): the same planes, so the GPU clips where
-/// Close2GL's full clipping does.
-fn gl_to_wgpu_depth(clip: Vec4) -> Vec4 {
-    Vec4::new(clip.x, clip.y, 0.5 * (clip.z + clip.w), clip.w)
-}
-
 /// The mean NDC depth of the corners in front of the eye (triangles reaching behind it sort by
 /// the corners that are in front).
 fn mean_depth(corners: [Vec4; 3]) -> f32 {
@@ -154,61 +133,13 @@ fn mean_depth(corners: [Vec4; 3]) -> f32 {
     if n > 0.0 { sum / n } else { f32::MAX }
 }
 
-/// The three edges as lines, at a depth inside the volume (w/2) so that only the side planes and
-/// w > 0 clip them.
-fn push_outline(out: &mut Vec<FateVertex>, corners: [Vec4; 3], fate: &TriangleFate) {
-    let color = rgba(fate.kind);
-    let vertex = |c: Vec4| FateVertex {
-        clip: [c.x, c.y, 0.5 * c.w, c.w],
-        color,
-    };
-    for (a, b) in [(0, 1), (1, 2), (2, 0)] {
-        out.extend([vertex(corners[a]), vertex(corners[b])]);
-    }
+fn push_outline(out: &mut Vec<Corner>, corners: [Vec4; 3], fate: &TriangleFate) {
+    out.extend(outline(corners, rgba(fate.kind)));
 }
 
 fn rgba(kind: FateKind) -> [u8; 4] {
     let [r, g, b] = kind.color();
     [r, g, b, 255]
-}
-
-fn create_pipeline(
-    device: &wgpu::Device,
-    shader: &wgpu::ShaderModule,
-    layout: &wgpu::PipelineLayout,
-    color_format: wgpu::TextureFormat,
-    topology: wgpu::PrimitiveTopology,
-) -> wgpu::RenderPipeline {
-    let attributes = wgpu::vertex_attr_array![0 => Float32x4, 1 => Unorm8x4];
-    device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
-        label: Some("fate view"),
-        layout: Some(layout),
-        vertex: wgpu::VertexState {
-            module: shader,
-            entry_point: Some("vs_main"),
-            compilation_options: Default::default(),
-            buffers: &[Some(wgpu::VertexBufferLayout {
-                array_stride: size_of::<FateVertex>() as u64,
-                step_mode: wgpu::VertexStepMode::Vertex,
-                attributes: &attributes,
-            })],
-        },
-        primitive: wgpu::PrimitiveState {
-            topology,
-            cull_mode: None,
-            ..Default::default()
-        },
-        depth_stencil: None,
-        multisample: Default::default(),
-        fragment: Some(wgpu::FragmentState {
-            module: shader,
-            entry_point: Some("fs_main"),
-            compilation_options: Default::default(),
-            targets: &[Some(color_format.into())],
-        }),
-        multiview_mask: None,
-        cache: None,
-    })
 }
 
 /// Asks Close2GL to record fates while the fate view is shown: on when the overlay becomes

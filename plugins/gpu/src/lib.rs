@@ -16,11 +16,13 @@
 //! [`outside::OutsideRenderer`]. No window or UI crate is a dependency.
 
 mod close2gl_view;
+mod corners;
 mod difference_view;
 mod fate_view;
 mod fullscreen;
 mod gpu;
 mod grow_buffer;
+mod highlight;
 mod id_pass;
 pub mod image;
 mod offscreen;

@@ -3,7 +3,7 @@
 use bevy_ecs::prelude::*;
 use close2gl_core::{
     App, Camera, Close2glFrame, Fates, FrameSet, Lighting, Mesh, ModelStatus, Overlay, Plugin,
-    PostUpdate, Render, RenderSettings, SoftwareFrame, Texture, Viewport,
+    PostUpdate, Render, RenderSettings, SelectedTriangle, SoftwareFrame, Texture, Viewport,
 };
 
 use crate::fate_view::record_fates_while_shown;
@@ -17,7 +17,7 @@ use crate::{Gpu, Views};
 /// from `Close2glFrame`, or the software rasterizer's image from `SoftwareFrame`; in the fate
 /// view (`RenderSettings::overlay`), each triangle in its colour from `Fates`, which it asks
 /// Close2GL to record (`Fates::record`) while that view is shown (it inserts `Fates` if no one
-/// has); in the live difference, both views drawn again into textures of the `Viewport`'s size
+/// has); the selected triangle's highlight (`SelectedTriangle`); in the live difference, both views drawn again into textures of the `Viewport`'s size
 /// and compared. They run once
 /// the `Gpu` and `Views` resources exist (inserted by whoever owns the target), so a window may
 /// arrive late. It owns no resource: the model, settings and Close2GL plugins provide what it
@@ -32,6 +32,7 @@ impl Plugin for GpuPlugin {
             .requires::<Lighting>("GpuPlugin", "SettingsPlugin")
             .requires::<Close2glFrame>("GpuPlugin", "Close2glPlugin")
             .requires::<Viewport>("GpuPlugin", "SettingsPlugin")
+            .requires::<SelectedTriangle>("GpuPlugin", "SettingsPlugin")
             .init_resource::<Fates>()
             .add_systems(
                 PostUpdate,
@@ -46,6 +47,7 @@ impl Plugin for GpuPlugin {
                     upload_close2gl,
                     upload_software,
                     upload_fates,
+                    upload_highlight,
                     render_difference,
                 )
                     .chain()
@@ -131,6 +133,19 @@ fn upload_fates(
             .fates
             .update(&gpu.device, &gpu.queue, &mesh, &camera, &fates);
     }
+}
+
+/// The selected triangle's corners in both views, every frame: nine vertices.
+fn upload_highlight(
+    gpu: Res<Gpu>,
+    mesh: Single<&Mesh>,
+    camera: Single<&Camera>,
+    selected: Res<SelectedTriangle>,
+    mut views: ResMut<Views>,
+) {
+    views
+        .highlight
+        .update(&gpu.queue, &mesh, &camera, selected.0);
 }
 
 /// The live difference, every frame while it is shown: both views drawn again, after every

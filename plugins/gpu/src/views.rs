@@ -8,6 +8,7 @@ use close2gl_core::{Overlay, Rasterizer};
 use crate::close2gl_view::Close2glView;
 use crate::difference_view::DifferenceView;
 use crate::fate_view::FateView;
+use crate::highlight::Highlight;
 use crate::reference::{Reference, clear_color};
 use crate::software_view::SoftwareView;
 
@@ -21,6 +22,7 @@ pub struct Views {
     pub(crate) software: SoftwareView,
     pub(crate) fates: FateView,
     pub(crate) difference: DifferenceView,
+    pub(crate) highlight: Highlight,
     /// The inspector's display over both views.
     pub(crate) overlay: Overlay,
     /// Which of the two Close2GL views is shown.
@@ -38,6 +40,7 @@ impl Views {
             software: SoftwareView::new(&gpu.device, color_format),
             fates: FateView::new(&gpu.device, color_format),
             difference: DifferenceView::new(&gpu.device, color_format),
+            highlight: Highlight::new(&gpu.device, color_format),
             overlay: Overlay::Off,
             rasterizer: Rasterizer::Gpu,
             background: clear_color(close2gl_core::RenderSettings::default().background),
@@ -47,21 +50,25 @@ impl Views {
     /// Records the reference view into a pass that has a [`crate::DEPTH_FORMAT`] depth
     /// attachment (cleared to 1.0); the caller sets the pass viewport (the whole target, or the
     /// left half in the split layout). Draws nothing before the first `Render` update. In the
-    /// fate view, the GPU's own facing and depth-test answers are drawn over the model.
+    /// fate view, the GPU's own facing and depth-test answers are drawn over the model; the
+    /// selected triangle, if any, over everything.
     pub fn draw_reference(&self, pass: &mut wgpu::RenderPass<'_>) {
         self.reference.draw(pass, self.overlay == Overlay::Fates);
+        self.highlight.draw_reference(pass);
     }
 
     /// Records the Close2GL view (2D, no depth attachment needed): its 2D buffer drawn by the
     /// GPU, or the software rasterizer's image. The caller sets the viewport rectangle, which
     /// should have the size of `Viewport`. In the fate view, every triangle in its fate's colour
-    /// instead; in the live difference, where the two views differ.
+    /// instead; in the live difference, where the two views differ. The selected triangle, if
+    /// any, over everything.
     pub fn draw_close2gl(&self, pass: &mut wgpu::RenderPass<'_>) {
         match self.overlay {
             Overlay::Fates => self.fates.draw(pass),
             Overlay::Difference => self.difference.draw(pass),
             Overlay::Off => self.draw_compared_close2gl(pass),
         }
+        self.highlight.draw_close2gl(pass);
     }
 
     /// The Close2GL view the reference is compared with: drawn by the GPU or rasterized.

@@ -5,7 +5,7 @@
 use close2gl_core::glam::Vec3;
 use close2gl_core::{
     App, Camera, Close2glFrame, FateKind, Fates, Mesh, ModelStatus, Overlay, RenderSettings,
-    Shading, TriangleFate, Viewport,
+    SelectedTriangle, Shading, TriangleFate, Viewport,
 };
 use close2gl_gpu::{OffscreenPlugin, Snapshot, render_offscreen};
 use close2gl_testkit::gpu;
@@ -134,4 +134,33 @@ fn the_reference_shows_the_gpus_facing_and_its_depth_test_failures() {
         "{:?}",
         reference.pixel(32, 36)
     );
+}
+
+#[test]
+fn the_selected_triangle_is_highlighted_in_both_views_even_where_it_is_hidden() {
+    let (mut app, plain) = render([FateKind::Drawn, FateKind::Clipped, FateKind::Hidden]);
+    // Triangle 2 lies behind triangle 0: its highlight shows over 0 all the same.
+    app.insert_resource(SelectedTriangle(Some(2)));
+    let selected = render_offscreen(&mut app).expect("both views render");
+    for (view, before, after) in [
+        ("reference", &plain.reference, &selected.reference),
+        ("close2gl", &plain.close2gl, &selected.close2gl),
+    ] {
+        assert_ne!(
+            before.pixel(32, 36),
+            after.pixel(32, 36),
+            "{view}: over triangle 0"
+        );
+        assert_ne!(
+            before.pixel(21, 40),
+            after.pixel(21, 40),
+            "{view}: inside triangle 2"
+        );
+        assert_eq!(before.pixel(2, 2), after.pixel(2, 2), "{view}: outside it");
+    }
+    // A triangle the mesh does not have highlights nothing.
+    app.insert_resource(SelectedTriangle(Some(3)));
+    let missing = render_offscreen(&mut app).expect("both views render");
+    assert!(missing.reference.pixels == plain.reference.pixels);
+    assert!(missing.close2gl.pixels == plain.close2gl.pixels);
 }

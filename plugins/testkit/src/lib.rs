@@ -11,7 +11,7 @@ mod meshes;
 pub mod panel;
 mod temp_dir;
 
-use close2gl_core::{App, Camera, Lighting, Mesh, RenderSettings, Viewport};
+use close2gl_core::{App, Camera, Lighting, Mesh, RenderSettings, SelectedTriangle, Viewport};
 
 pub use big_model::{GridFile, write_grid_in, write_grid_obj};
 pub use meshes::{cube, sphere};
@@ -24,7 +24,8 @@ pub fn world_with(mesh: Mesh, camera: Camera, settings: RenderSettings, viewport
     let mut app = App::new();
     app.insert_resource(settings)
         .insert_resource(viewport)
-        .init_resource::<Lighting>();
+        .init_resource::<Lighting>()
+        .init_resource::<SelectedTriangle>();
     app.world_mut().spawn(camera);
     app.world_mut().spawn(mesh);
     app

@@ -7,15 +7,13 @@
 use bevy_ecs::prelude::*;
 use close2gl_core::glam::Mat4;
 use close2gl_core::{
-    Camera, ClipPlane, FateKind, Fates, Mesh, Overlay, RenderSettings, TriangleFate, Viewport,
-    camera_matrices,
+    Camera, ClipPlane, FateKind, Fates, Mesh, Overlay, RenderSettings, SelectedTriangle,
+    TriangleFate, Viewport, camera_matrices,
 };
 use close2gl_pipeline::journey::{Journey, journey};
 use close2gl_pipeline::matrices;
 
 use close2gl_raster::probe::PixelProbe;
-
-use crate::PanelState;
 
 /// The last pixel probe (a Ctrl+click on a view), answered by both sides: the viewer fills it.
 #[derive(Resource, Clone, Debug)]
@@ -142,16 +140,9 @@ fn triangle(ui: &mut egui::Ui, world: &mut World) {
     if count == 0 {
         return;
     }
-    let mut panel = world.resource_mut::<PanelState>();
-    let picked = &mut panel.inspected_triangle;
-    *picked = (*picked).min(count - 1);
-    ui.horizontal(|ui| {
-        let label = ui.label("Triangle");
-        ui.add(egui::DragValue::new(picked).range(0..=count - 1))
-            .labelled_by(label.id);
-        ui.weak(format!("of {count}"));
-    });
-    let index = *picked;
+    let Some(index) = pick_triangle(ui, world, count) else {
+        return;
+    };
     let settings = world
         .get_resource::<RenderSettings>()
         .copied()
@@ -170,6 +161,33 @@ fn triangle(ui: &mut egui::Ui, world: &mut World) {
     egui::CollapsingHeader::new("Journey")
         .default_open(true)
         .show(ui, |ui| journey_grid(ui, &journey));
+}
+
+/// The selected triangle's index (dragged or typed; the probe selects too), with a button to
+/// select one when none is and to clear the selection (and its highlight in the views).
+fn pick_triangle(ui: &mut egui::Ui, world: &mut World, count: usize) -> Option<usize> {
+    let before = world
+        .get_resource::<SelectedTriangle>()?
+        .0
+        .map(|t| (t as usize).min(count - 1));
+    let after = ui
+        .horizontal(|ui| {
+            let label = ui.label("Triangle");
+            let Some(mut index) = before else {
+                let select = ui.button("Select").clicked();
+                ui.weak("or Ctrl+click a view");
+                return select.then_some(0);
+            };
+            ui.add(egui::DragValue::new(&mut index).range(0..=count - 1))
+                .labelled_by(label.id);
+            ui.weak(format!("of {count}"));
+            (!ui.button("Clear").clicked()).then_some(index)
+        })
+        .inner;
+    if after != before {
+        world.resource_mut::<SelectedTriangle>().0 = after.map(|i| i as u32);
+    }
+    after
 }
 
 /// The world's one mesh and camera, copied out (the panel writes other resources meanwhile).

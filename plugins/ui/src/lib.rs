@@ -63,8 +63,6 @@ pub struct PanelState {
     pub texture_path: String,
     /// The key cheat sheet is shown.
     pub help: bool,
-    /// The mesh triangle the inspector shows.
-    pub inspected_triangle: usize,
 }
 
 /// Shows the panel at the right of `ui` and returns the rectangle left for the views, in points.

@@ -120,7 +120,7 @@ pub fn show_notice(ui: &egui::Ui, area: egui::Rect, world: &mut World) {
 }
 
 /// What each action does, in the cheat sheet's words.
-const DESCRIPTIONS: [(&str, &str); 22] = [
+const DESCRIPTIONS: [(&str, &str); 23] = [
     ("forward", "move forward (along -n)"),
     ("back", "move back (along n)"),
     ("left", "move left (along -u)"),
@@ -142,6 +142,7 @@ const DESCRIPTIONS: [(&str, &str); 22] = [
     ("screenshot", "save both views as PNGs"),
     ("copy_command", "copy the command for this view"),
     ("fate_view", "inspector: the fate view on / off"),
+    ("difference_view", "inspector: where the two views differ, on / off"),
     ("outside_view", "the outside view on / off (a third column)"),
 ];
 

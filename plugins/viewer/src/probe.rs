@@ -1,13 +1,13 @@
 //! The pixel probe a Ctrl+click asks for (`InputState::probe`): which view was clicked (from the
 //! layout), the pixel in that view's coordinates, and both answers for it: the reference's from
 //! the GPU's ID pass, Close2GL's (winner and every candidate) from the raster crate's probe.
-//! The answer goes to the panel ([`ProbeAnswer`]), and its winner becomes the inspected triangle.
+//! The answer goes to the panel ([`ProbeAnswer`]), and its winner becomes the selected triangle.
 
 use bevy_ecs::prelude::*;
-use close2gl_core::{Camera, Fates, InputState, Mesh, RenderSettings};
+use close2gl_core::{Camera, Fates, InputState, Mesh, RenderSettings, SelectedTriangle};
 use close2gl_gpu::{Gpu, probe_reference};
 use close2gl_raster::probe::{Drawn, ProbeScene, probe};
-use close2gl_ui::{PanelState, ProbeAnswer};
+use close2gl_ui::ProbeAnswer;
 
 use crate::layout::{Placed, Placement, View};
 
@@ -59,7 +59,7 @@ pub fn answer(world: &mut World, gpu: &Gpu, placement: &Placement) {
         close2gl,
     };
     if let Some(triangle) = answer.close2gl.triangle.or(answer.reference_triangle()) {
-        world.resource_mut::<PanelState>().inspected_triangle = triangle as usize;
+        world.resource_mut::<SelectedTriangle>().0 = Some(triangle);
     }
     world.insert_resource(answer);
 }

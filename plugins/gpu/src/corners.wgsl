@@ -1,6 +1,6 @@
-// The fate view: Close2GL's own clip coordinates (P·M·p, computed on the CPU by Close2GL's
-// matrices), each triangle in its fate's colour. The GPU only clips and fills; depth comes from
-// the host's back-to-front order, not a depth buffer.
+// Corners already in clip coordinates (computed on the CPU: Close2GL's own P·M·p, or glam's for
+// the reference), each with its colour: the fate view and the selected triangle's highlight. The
+// GPU only clips and fills.
 
 struct Corner {
     @builtin(position) clip: vec4<f32>,
