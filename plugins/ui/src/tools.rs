@@ -142,7 +142,10 @@ const DESCRIPTIONS: [(&str, &str); 23] = [
     ("screenshot", "save both views as PNGs"),
     ("copy_command", "copy the command for this view"),
     ("fate_view", "inspector: the fate view on / off"),
-    ("difference_view", "inspector: where the two views differ, on / off"),
+    (
+        "difference_view",
+        "inspector: where the two views differ, on / off",
+    ),
     ("outside_view", "the outside view on / off (a third column)"),
 ];
 

@@ -5,8 +5,8 @@
 
 use close2gl_core::{
     CameraAction, CameraActions, Close2glFrame, FateKind, Fates, InputBindings, ModelRequest,
-    ModelSource, ModelStatus, Overlay, PrimitiveKind, RenderMode, RenderSettings, TextureFilter,
-    TextureRequest, ToolRequests, Topology,
+    ModelSource, ModelStatus, Overlay, PrimitiveKind, RenderMode, RenderSettings, SelectedTriangle,
+    TextureFilter, TextureRequest, ToolRequests, Topology,
 };
 use close2gl_testkit::panel::Harness;
 use close2gl_ui::{Notice, PanelState};
@@ -212,6 +212,10 @@ fn the_inspector_switches_the_fate_view_and_shows_the_picked_triangles_fate_and_
     // The real pipeline recorded the harness's back face.
     let fate = *h.world().resource::<Fates>().of(0).expect("recorded");
     assert_eq!(fate.kind, FateKind::Culled);
+    h.frame(Vec::new()); // the legend, now with counts, moves the widgets below it
+    assert!(!h.shows("Fate: culled"), "no triangle selected yet");
+    h.click(Role::Button, "Select");
+    assert_eq!(h.world().resource::<SelectedTriangle>().0, Some(0));
     h.set_value(Role::SpinButton, "Triangle", 0.0);
     assert!(h.shows("Fate: culled"));
     let area = format!("Signed area (x2, y down): {:.3}", fate.signed_area);
@@ -231,4 +235,8 @@ fn the_inspector_switches_the_fate_view_and_shows_the_picked_triangles_fate_and_
     assert!(!h.shows("M (Close2GL)"), "the matrices start folded");
     h.click(Role::DisclosureTriangle, "Matrices");
     assert!(h.shows("M (Close2GL)") && h.shows("projection (reference)"));
+    // Clearing the selection takes the highlight off the views and the journey off the panel.
+    h.click(Role::Button, "Clear");
+    assert_eq!(h.world().resource::<SelectedTriangle>().0, None);
+    assert!(!h.shows("Fate: culled"));
 }
