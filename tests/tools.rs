@@ -17,6 +17,11 @@ use common::{APP_TIMEOUT, Xvfb, finish, run_app, spawn_app, temp_dir};
 /// Shift+P on frame 14 (Phong), the copy-command key two frames before the end (the panel
 /// carries it out on the next frame) and the screenshot key on the last frame.
 fn flight(frames: u32, size: [u32; 2]) -> String {
+    flight_probing(frames, size, None)
+}
+
+/// [`flight`], with a probe (Ctrl+click) at a window pixel on the frame before the screenshot.
+fn flight_probing(frames: u32, size: [u32; 2], probe: Option<[u32; 2]>) -> String {
     let mut lines = vec![format!(
         "{{\"close2gl_recording\":1,\"size\":[{},{}]}}",
         size[0], size[1]
@@ -34,6 +39,9 @@ fn flight(frames: u32, size: [u32; 2]) -> String {
         }
         if frame == frames - 3 {
             line += ",\"pressed\":[\"c\"]";
+        }
+        if let (Some([x, y]), true) = (probe, frame == frames - 2) {
+            line += &format!(",\"probe\":[{x},{y}]");
         }
         if frame == frames - 1 {
             line += ",\"pressed\":[\"f12\"]";
@@ -293,4 +301,56 @@ fn a_recorded_flight_replays_to_the_same_image_every_time() {
         views(&start).pixels != views(&first).pixels,
         "the flight moved the camera"
     );
+}
+
+#[test]
+fn a_recorded_probe_click_selects_the_triangle_under_it_and_highlights_it_in_both_views() {
+    let dir = temp_dir("tools-probe");
+    let xvfb = Xvfb::start();
+    // The views the screenshot key saves after a flight, probed at `probe` or not.
+    let views_after = |name: &str, probe: Option<[u32; 2]>| {
+        let recording = dir.join(format!("{name}.rec"));
+        std::fs::write(&recording, flight_probing(20, [900, 420], probe)).expect("recording");
+        let shots = dir.join(name);
+        let replay = recording.display().to_string();
+        let shots_arg = shots.display().to_string();
+        run_app(
+            &xvfb,
+            &["--replay", &replay, "--screenshot-dir", &shots_arg],
+        );
+        ["reference", "close2gl"].map(|view| png(&shots.join(format!("close2gl-001-{view}.png"))))
+    };
+    let plain = views_after("plain", None);
+    // A pixel of the reference view that the model covers, near its middle (the reference
+    // view is the window's left column, so its pixels are the window's).
+    let reference = &plain[0];
+    let background = reference.pixel(0, 0);
+    let (cx, cy) = (reference.width / 2, reference.height / 2);
+    let covered = (0..reference.width / 2)
+        .flat_map(|r| [[cx + r, cy], [cx - r, cy]])
+        .find(|&[x, y]| reference.pixel(x, y) != background)
+        .expect("the model covers the reference view's middle row");
+    let probed = views_after("probed", Some(covered));
+    for (view, (before, after)) in ["reference", "close2gl"]
+        .iter()
+        .zip(plain.iter().zip(&probed))
+    {
+        let changed = before
+            .pixels
+            .iter()
+            .zip(&after.pixels)
+            .filter(|(a, b)| a != b)
+            .count();
+        assert!(changed > 0, "{view}: the selected triangle is highlighted");
+        assert!(
+            changed < before.pixels.len() / 20,
+            "{view}: only one triangle is highlighted ({changed} pixels changed)"
+        );
+        let [x, y] = covered;
+        assert_ne!(
+            before.pixel(x, y),
+            after.pixel(x, y),
+            "{view}: under the click"
+        );
+    }
 }
