@@ -20,8 +20,9 @@ fn flight(frames: u32, size: [u32; 2]) -> String {
     flight_probing(frames, size, None)
 }
 
-/// [`flight`], with a probe (Ctrl+click) at a window pixel on the frame before the screenshot.
-fn flight_probing(frames: u32, size: [u32; 2], probe: Option<[u32; 2]>) -> String {
+/// [`flight`], with a probe (Ctrl+click) on the frame before the screenshot: at a pixel of the
+/// panel's window, or of the Close2GL window (`true`) in the windows layout.
+fn flight_probing(frames: u32, size: [u32; 2], probe: Option<([u32; 2], bool)>) -> String {
     let mut lines = vec![format!(
         "{{\"close2gl_recording\":1,\"size\":[{},{}]}}",
         size[0], size[1]
@@ -40,8 +41,8 @@ fn flight_probing(frames: u32, size: [u32; 2], probe: Option<[u32; 2]>) -> Strin
         if frame == frames - 3 {
             line += ",\"pressed\":[\"c\"]";
         }
-        if let (Some([x, y]), true) = (probe, frame == frames - 2) {
-            line += &format!(",\"probe\":[{x},{y}]");
+        if let (Some(([x, y], close2gl)), true) = (probe, frame == frames - 2) {
+            line += &format!(",\"probe\":[{x},{y}],\"probe_close2gl_window\":{close2gl}");
         }
         if frame == frames - 1 {
             line += ",\"pressed\":[\"f12\"]";
@@ -307,50 +308,62 @@ fn a_recorded_flight_replays_to_the_same_image_every_time() {
 fn a_recorded_probe_click_selects_the_triangle_under_it_and_highlights_it_in_both_views() {
     let dir = temp_dir("tools-probe");
     let xvfb = Xvfb::start();
-    // The views the screenshot key saves after a flight, probed at `probe` or not.
-    let views_after = |name: &str, probe: Option<[u32; 2]>| {
+    // The views the screenshot key saves after a flight in `layout`, probed or not.
+    let views_after = |name: &str, layout: &str, probe: Option<([u32; 2], bool)>| {
         let recording = dir.join(format!("{name}.rec"));
         std::fs::write(&recording, flight_probing(20, [900, 420], probe)).expect("recording");
         let shots = dir.join(name);
-        let replay = recording.display().to_string();
-        let shots_arg = shots.display().to_string();
-        run_app(
-            &xvfb,
-            &["--replay", &replay, "--screenshot-dir", &shots_arg],
-        );
+        let (replay, shots_arg) = (recording.display().to_string(), shots.display().to_string());
+        let layout = format!("window.layout={layout}");
+        let args = [
+            "--replay",
+            &replay,
+            "--screenshot-dir",
+            &shots_arg,
+            "--set",
+            &layout,
+        ];
+        run_app(&xvfb, &args);
         ["reference", "close2gl"].map(|view| png(&shots.join(format!("close2gl-001-{view}.png"))))
     };
-    let plain = views_after("plain", None);
-    // A pixel of the reference view that the model covers, near its middle (the reference
-    // view is the window's left column, so its pixels are the window's).
-    let reference = &plain[0];
-    let background = reference.pixel(0, 0);
-    let (cx, cy) = (reference.width / 2, reference.height / 2);
-    let covered = (0..reference.width / 2)
-        .flat_map(|r| [[cx + r, cy], [cx - r, cy]])
-        .find(|&[x, y]| reference.pixel(x, y) != background)
-        .expect("the model covers the reference view's middle row");
-    let probed = views_after("probed", Some(covered));
-    for (view, (before, after)) in ["reference", "close2gl"]
-        .iter()
-        .zip(plain.iter().zip(&probed))
-    {
-        let changed = before
-            .pixels
+    // A pixel the model covers near the middle of the views (the same in both).
+    let covered = |reference: &Image| {
+        let background = reference.pixel(0, 0);
+        let (cx, cy) = (reference.width / 2, reference.height / 2);
+        (0..reference.width / 2)
+            .flat_map(|r| [[cx + r, cy], [cx - r, cy]])
+            .find(|&[x, y]| reference.pixel(x, y) != background)
+            .expect("the model covers the reference view's middle row")
+    };
+    // The split layout's reference view is the window's left column, so its pixels are the
+    // window's; in the windows layout the Close2GL window is its view.
+    for (layout, in_close2gl_window) in [("split", false), ("windows", true)] {
+        let plain = views_after(&format!("{layout}-plain"), layout, None);
+        let [x, y] = covered(&plain[0]);
+        let probed = views_after(layout, layout, Some(([x, y], in_close2gl_window)));
+        for (view, (before, after)) in ["reference", "close2gl"]
             .iter()
-            .zip(&after.pixels)
-            .filter(|(a, b)| a != b)
-            .count();
-        assert!(changed > 0, "{view}: the selected triangle is highlighted");
-        assert!(
-            changed < before.pixels.len() / 20,
-            "{view}: only one triangle is highlighted ({changed} pixels changed)"
-        );
-        let [x, y] = covered;
-        assert_ne!(
-            before.pixel(x, y),
-            after.pixel(x, y),
-            "{view}: under the click"
-        );
+            .zip(plain.iter().zip(&probed))
+        {
+            let changed = before
+                .pixels
+                .iter()
+                .zip(&after.pixels)
+                .filter(|(a, b)| a != b)
+                .count();
+            assert!(
+                changed > 0,
+                "{layout} {view}: the selected triangle is highlighted"
+            );
+            assert!(
+                changed < before.pixels.len() / 20,
+                "{layout} {view}: only one triangle is highlighted ({changed} pixels changed)"
+            );
+            assert_ne!(
+                before.pixel(x, y),
+                after.pixel(x, y),
+                "{layout} {view}: under the click"
+            );
+        }
     }
 }

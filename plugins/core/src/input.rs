@@ -17,9 +17,16 @@ pub struct InputState {
     pub scroll: f32,
     /// Seconds since the last frame.
     pub dt: f32,
-    /// Where a Ctrl+click on the main window asked for the pixel probe this frame, in the
-    /// window's physical pixels.
-    pub probe: Option<Vec2>,
+    /// Where a Ctrl+click asked for the pixel probe this frame.
+    pub probe: Option<ProbeClick>,
+}
+
+/// A Ctrl+click on a view: where, in the physical pixels of the window it was in.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ProbeClick {
+    pub at: Vec2,
+    /// In the Close2GL window of the windows layout; else in the panel's window.
+    pub close2gl_window: bool,
 }
 
 impl InputState {

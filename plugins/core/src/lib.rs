@@ -39,7 +39,7 @@ pub use frame::{
     Close2glFrame, CutVertex, RasterGeometry, RasterVertex, SoftwareFrame, StageCounts, Topology,
     Viewport,
 };
-pub use input::{InputBindings, InputState};
+pub use input::{InputBindings, InputState, ProbeClick};
 pub use layout::Layout;
 pub use mesh::Mesh;
 pub use model::{

@@ -2,8 +2,8 @@
 
 use std::collections::HashMap;
 
-use close2gl_core::InputState;
 use close2gl_core::glam::Vec2;
+use close2gl_core::{InputState, ProbeClick};
 use winit::dpi::PhysicalPosition;
 use winit::event::MouseScrollDelta;
 use winit::keyboard::{Key, NamedKey, PhysicalKey};
@@ -103,12 +103,16 @@ impl InputTracker {
         self.dragging = pressed;
     }
 
-    /// A probe click: the pixel under the cursor in `window`, when the cursor was last seen there.
-    pub fn probe(&self, input: &mut InputState, window: WindowId) {
+    /// A probe click: the pixel under the cursor in `window` (the panel's, or the Close2GL
+    /// window of the windows layout), when the cursor was last seen there.
+    pub fn probe(&self, input: &mut InputState, window: WindowId, close2gl_window: bool) {
         if let Some((w, position)) = self.cursor
             && w == window
         {
-            input.probe = Some(Vec2::new(position.x as f32, position.y as f32));
+            input.probe = Some(ProbeClick {
+                at: Vec2::new(position.x as f32, position.y as f32),
+                close2gl_window,
+            });
         }
     }
 

@@ -16,12 +16,16 @@ pub fn answer(world: &mut World, gpu: &Gpu, placement: &Placement) {
     let Some(at) = world.resource::<InputState>().probe else {
         return;
     };
-    let (Some(viewport), x, y) = (placement.viewport, at.x as u32, at.y as u32) else {
+    let (Some(viewport), x, y) = (placement.viewport, at.at.x as u32, at.at.y as u32) else {
         return;
+    };
+    let window = match at.close2gl_window {
+        true => &placement.close2gl,
+        false => &placement.main,
     };
     // The outside view is an illustration: a click there turns its camera, it probes nothing.
     let probed = |p: &&Placed| p.view != View::Outside && p.rect.contains(x, y);
-    let Some(placed) = placement.main.iter().find(probed) else {
+    let Some(placed) = window.iter().find(probed) else {
         return;
     };
     let pixel = (x - placed.rect.x, y - placed.rect.y);

@@ -12,8 +12,8 @@ use std::fs::File;
 use std::io::{BufRead, BufReader, BufWriter, Write};
 use std::path::{Path, PathBuf};
 
-use close2gl_core::InputState;
 use close2gl_core::glam::Vec2;
+use close2gl_core::{InputState, ProbeClick};
 use serde::{Deserialize, Serialize};
 
 /// The first line of a recording.
@@ -49,6 +49,9 @@ pub struct FrameInput {
     /// A probe click's window pixel (Ctrl+click).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub probe: Option<[f32; 2]>,
+    /// The probe click was in the Close2GL window of the windows layout.
+    #[serde(skip_serializing_if = "std::ops::Not::not")]
+    pub probe_close2gl_window: bool,
     /// What the panel received (pointer, clicks, typed text, its keys).
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub panel: Vec<egui::Event>,
@@ -82,7 +85,8 @@ impl FrameInput {
             pressed: input.pressed.clone(),
             drag: input.drag.to_array(),
             scroll: input.scroll,
-            probe: input.probe.map(|p| p.to_array()),
+            probe: input.probe.map(|p| p.at.to_array()),
+            probe_close2gl_window: input.probe.is_some_and(|p| p.close2gl_window),
             ..FrameInput::default()
         }
     }
@@ -94,7 +98,10 @@ impl FrameInput {
         input.pressed = self.pressed.clone();
         input.drag = Vec2::from_array(self.drag);
         input.scroll = self.scroll;
-        input.probe = self.probe.map(Vec2::from_array);
+        input.probe = self.probe.map(|at| ProbeClick {
+            at: Vec2::from_array(at),
+            close2gl_window: self.probe_close2gl_window,
+        });
     }
 }
 

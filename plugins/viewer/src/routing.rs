@@ -72,9 +72,9 @@ pub fn apply_input(
             ..
         } => {
             let pressed = state == ElementState::Pressed && !panel.pointer;
-            if pressed && panel.main && input.held.contains("ctrl") {
+            if pressed && input.held.contains("ctrl") {
                 // Ctrl+click probes the pixel instead of starting a drag.
-                tracker.probe(&mut input, window);
+                tracker.probe(&mut input, window, !panel.main);
             } else {
                 tracker.button(pressed);
             }
