@@ -54,3 +54,38 @@ fn the_two_windows_show_the_default_model_in_both_views() {
         (reference_window, image.width),
     );
 }
+
+#[test]
+fn in_the_two_windows_layout_the_outside_view_opens_a_window_of_its_own() {
+    let xvfb = Xvfb::start();
+    let args = [
+        "--size",
+        "1000x600",
+        "--set",
+        "window.layout=windows",
+        "--set",
+        "outside.show=true",
+    ];
+    let image = screenshot(&xvfb, "windows-outside", &args);
+    // Side by side: the reference window (panel included), the 500x600 Close2GL window, then
+    // the outside view's 500x600 window.
+    let outside = image.width - 500;
+    let close2gl = outside - 500;
+    let panel = close2gl_ui::PANEL_WIDTH as u32;
+    assert_eq!(image.height, 600);
+    assert_both_views_show_the_model(
+        "windows",
+        &image,
+        (0, close2gl - panel),
+        (close2gl, outside),
+    );
+    let background = image.pixel(outside, 599);
+    let drawn = (outside..image.width)
+        .flat_map(|x| (0..600).map(move |y| (x, y)))
+        .filter(|&(x, y)| image.pixel(x, y) != background)
+        .count();
+    assert!(
+        drawn > 2000,
+        "the outside window shows the volume and the model: {drawn} pixels"
+    );
+}

@@ -109,8 +109,14 @@ impl StageMorph {
     }
 }
 
-/// What the outside camera frames: one sphere around the model, the view volume and the eye in
-/// world coordinates. At the eye stage it is the same sphere moved by M; at the NDC stage the
+/// How far past the model and the near plane the outside view's framing follows the view
+/// volume, as a multiple of their farthest distance from the eye.
+pub const FRAMED_REACH: f32 = 2.0;
+
+/// What the outside camera frames: one sphere around the model, the eye, the near plane and the
+/// view volume up to [`FRAMED_REACH`] in world coordinates (a far plane hundreds of times farther
+/// than the model would shrink the model to a dot; the volume's edges run on out of the frame,
+/// and zooming out shows the far plane). At the eye stage it is the same sphere moved by M; at the NDC stage the
 /// cube is drawn to the same radius, so the framing never jumps.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct StageFrame {
@@ -126,9 +132,21 @@ impl StageFrame {
     pub fn new(camera: &Camera, (lo, hi): (Vec3, Vec3)) -> Self {
         let origin = (lo + hi) * 0.5;
         let corners = world_corners(camera);
-        let points = corners.iter().chain([&lo, &hi, &camera.position]);
+        let eye = camera.position;
+        let (near, far) = corners.split_at(4);
+        let distance = |p: &Vec3| (*p - eye).length();
+        let reach = FRAMED_REACH
+            * near
+                .iter()
+                .chain([&lo, &hi])
+                .map(distance)
+                .fold(0.0, f32::max);
+        let far = far
+            .iter()
+            .map(|&c| eye + (c - eye) * (reach / distance(&c)).min(1.0));
+        let points = near.iter().copied().chain(far).chain([lo, hi, eye]);
         let (min, max) = points.fold((Vec3::INFINITY, Vec3::NEG_INFINITY), |(a, b), p| {
-            (a.min(*p - origin), b.max(*p - origin))
+            (a.min(p - origin), b.max(p - origin))
         });
         let centre = (min + max) * 0.5;
         let radius = ((max - min).length() * 0.5).max(f32::MIN_POSITIVE);
@@ -243,11 +261,44 @@ mod tests {
     #[test]
     fn the_frame_holds_the_model_the_volume_and_the_eye() {
         let (camera, bounds) = scene();
+        // A far plane within the framed reach of the model (about 2,100 from the eye).
+        let camera = Camera {
+            far: 3000.0,
+            ..camera
+        };
         let frame = StageFrame::new(&camera, bounds);
         let inside =
             |p: Vec3| (p - frame.origin - frame.centres[0]).length() <= frame.radius * 1.0001;
         assert!(world_corners(&camera).iter().all(|c| inside(*c)));
         assert!(inside(camera.position) && inside(bounds.0) && inside(bounds.1));
+    }
+
+    #[test]
+    fn a_far_plane_far_beyond_the_model_does_not_shrink_it_to_a_dot() {
+        let (camera, bounds) = scene();
+        let model = (bounds.1 - bounds.0).length() * 0.5;
+        let far_away = Camera {
+            far: camera.far * 100.0,
+            ..camera
+        };
+        let frame = StageFrame::new(&far_away, bounds);
+        let inside =
+            |p: Vec3| (p - frame.origin - frame.centres[0]).length() <= frame.radius * 1.0001;
+        assert!(
+            world_corners(&far_away)[..4].iter().all(|c| inside(*c)),
+            "the near face"
+        );
+        assert!(inside(bounds.0) && inside(bounds.1) && inside(camera.position));
+        assert!(
+            frame.radius < 20.0 * model,
+            "the model is a twentieth of the frame or more: {} vs {model}",
+            frame.radius
+        );
+        let nearer = StageFrame::new(&camera, bounds);
+        assert!(
+            (frame.radius - nearer.radius).abs() < 1e-4 * frame.radius,
+            "framed as with the scene's own far plane, already beyond the reach"
+        );
     }
 
     #[test]

@@ -13,6 +13,7 @@ use winit::window::WindowId;
 
 use crate::ViewerOptions;
 use crate::input::InputTracker;
+use crate::layout::PixelRect;
 use crate::orbit_input::OrbitInput;
 use crate::pacing::Pacing;
 use crate::present::{Capture, Shot};
@@ -105,6 +106,11 @@ impl Viewer {
             .run(&windows.main.window, world, both_views, raw, surface);
         windows.gui.upload_textures(&windows.gpu, &mut gui_frame);
         let outside = world.get_resource::<OutsideView>().is_some_and(|o| o.show);
+        if let Err(e) =
+            windows.show_outside_window(event_loop, &self.instance, &self.options, outside)
+        {
+            world.insert_resource(Notice::new(format!("the outside view's window: {e}")));
+        }
         let placement = windows.placement(&gui_frame, outside);
         update_viewport(world, placement.viewport);
         self.app.update();
@@ -263,6 +269,13 @@ impl ApplicationHandler for Viewer {
             WindowEvent::RedrawRequested if is_main => return self.redraw(event_loop),
             // Not for egui: it would ask for another redraw, forever.
             WindowEvent::RedrawRequested => return windows.main.window.request_redraw(),
+            // Closing the outside view's own window turns the view off; the app goes on.
+            _ if is_close(&event) && windows.is_outside_window(id) => {
+                windows.outside = None;
+                let world = self.app.world_mut();
+                world.get_resource_or_insert_with(OutsideView::default).show = false;
+                return windows.main.window.request_redraw();
+            }
             // Destroyed: another client (or a window manager) took the window away. The windows
             // go at once: a redraw already queued must not ask X about a window that is gone
             // (winit unwraps the error).
@@ -284,10 +297,14 @@ impl ApplicationHandler for Viewer {
         }
         let panel = offer_to_panel(&mut windows.gui, &windows.main.window, is_main, &event);
         let world = self.app.world_mut();
-        let (taken, orbited) = if is_main {
-            self.orbit.offer(world, windows.outside_area, &event, panel)
-        } else {
-            (false, false)
+        // The outside view's orbit: over its column of the main window, or its own window.
+        let (taken, orbited) = match windows.outside.as_ref().filter(|w| w.window.id() == id) {
+            Some(own) => {
+                let area = PixelRect::whole(own.size().0, own.size().1);
+                self.orbit.offer(world, Some(area), &event, panel)
+            }
+            None if is_main => self.orbit.offer(world, windows.outside_area, &event, panel),
+            None => (false, false),
         };
         let redraw = orbited || (!taken && apply_input(&mut self.tracker, world, id, event, panel));
         if redraw {

@@ -26,6 +26,8 @@ pub struct Placement {
     pub main: Vec<Placed>,
     /// In the Close2GL window of the windows layout.
     pub close2gl: Vec<Placed>,
+    /// In the outside view's own window of the windows layout.
+    pub outside: Vec<Placed>,
     pub viewport: Option<Viewport>,
 }
 
@@ -49,14 +51,21 @@ pub fn split(area: PixelRect, outside: bool) -> Placement {
             .map(|(view, rect)| Placed { view, rect: *rect })
             .collect(),
         close2gl: Vec::new(),
+        outside: Vec::new(),
         viewport: Some(rects[0].size()),
     }
 }
 
 /// The windows layout: the reference view in `area` of the panel's window, never larger than the
 /// Close2GL window (`width` x `height`), so the two views match even before (or without) the
-/// window manager honouring a resize; Close2GL fills its own window, which sets the viewport.
-pub fn two_windows(area: PixelRect, width: u32, height: u32) -> Placement {
+/// window manager honouring a resize; Close2GL fills its own window, which sets the viewport. The
+/// outside view, when its window is open (`outside`: its size), fills that window.
+pub fn two_windows(
+    area: PixelRect,
+    width: u32,
+    height: u32,
+    outside: Option<(u32, u32)>,
+) -> Placement {
     let own = PixelRect::whole(width, height);
     let reference = PixelRect {
         width: area.width.min(width),
@@ -74,6 +83,15 @@ pub fn two_windows(area: PixelRect, width: u32, height: u32) -> Placement {
     Placement {
         main: main.into_iter().collect(),
         close2gl: other.into_iter().collect(),
+        outside: outside
+            .map(|(w, h)| PixelRect::whole(w, h))
+            .filter(|rect| !rect.is_empty())
+            .map(|rect| Placed {
+                view: View::Outside,
+                rect,
+            })
+            .into_iter()
+            .collect(),
         viewport: other.or(main).map(|p| p.rect.size()),
     }
 }
@@ -251,15 +269,27 @@ mod tests {
     #[test]
     fn in_two_windows_the_reference_never_outgrows_the_close2gl_window() {
         let area = PixelRect::whole(700, 800);
-        let placement = two_windows(area, 600, 500);
+        let placement = two_windows(area, 600, 500, None);
         assert_eq!(placement.main[0].rect, PixelRect::whole(600, 500));
         assert_eq!(placement.close2gl[0].rect, PixelRect::whole(600, 500));
+        assert!(
+            placement.outside.is_empty(),
+            "no outside window, no outside view"
+        );
+        let outside = two_windows(area, 600, 500, Some((400, 300))).outside;
+        assert_eq!(outside[0].view, View::Outside);
+        assert_eq!(
+            outside[0].rect,
+            PixelRect::whole(400, 300),
+            "it fills its own window"
+        );
         assert_eq!(
             placement.viewport.map(|v| (v.width, v.height)),
             Some((600, 500))
         );
 
-        let minimised = two_windows(area, 0, 0);
+        let minimised = two_windows(area, 0, 0, Some((0, 0)));
+        assert!(minimised.outside.is_empty());
         assert!(minimised.close2gl.is_empty());
         assert_eq!(
             minimised.viewport, None,
@@ -275,11 +305,11 @@ mod tests {
             assert!(area.width <= width && area.height <= height);
             assert_eq!(split(area, false), Placement::default(), "{width}x{height}");
             assert_eq!(split(area, true), Placement::default(), "{width}x{height}");
-            let two = two_windows(area, width, height);
+            let two = two_windows(area, width, height, None);
             assert_eq!(two.viewport.is_some(), width == 1, "{width}x{height}");
         }
         assert_eq!(
-            two_windows(PixelRect::whole(0, 0), 0, 0),
+            two_windows(PixelRect::whole(0, 0), 0, 0, None),
             Placement::default()
         );
     }

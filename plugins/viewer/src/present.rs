@@ -77,6 +77,7 @@ impl Windows {
             gpu,
             main,
             close2gl,
+            outside,
             gui,
             ..
         } = self;
@@ -89,12 +90,18 @@ impl Windows {
             }
         })?;
         shots.extend(main_shot.map(|shot| (shot, &placement.main)));
-        if let Some(window) = close2gl {
+        for (window, placed) in [
+            (close2gl, &placement.close2gl),
+            (outside, &placement.outside),
+        ] {
+            let Some(window) = window else {
+                continue;
+            };
             let shot = draw_window(gpu, window, capture, |target, depth, pass| {
                 let stats = pass.timed.then_some(&mut *stats);
-                draw_views(gpu, views, target, depth, &placement.close2gl, stats);
+                draw_views(gpu, views, target, depth, placed, stats);
             })?;
-            shots.extend(shot.map(|shot| (shot, &placement.close2gl)));
+            shots.extend(shot.map(|shot| (shot, placed)));
         }
         Ok(match capture {
             Capture::Nothing => None,

@@ -25,6 +25,8 @@ pub struct Windows {
     pub main: WindowSurface,
     /// The Close2GL window of the windows layout.
     pub close2gl: Option<WindowSurface>,
+    /// The outside view's own window in the windows layout, open while the view is shown.
+    pub outside: Option<WindowSurface>,
     pub gui: Gui,
     /// The size last asked of each window, so that the answer to our own request is not taken
     /// for the user resizing it.
@@ -43,11 +45,7 @@ impl Windows {
         (instance, connections): &(wgpu::Instance, Connections),
         world: &mut World,
     ) -> Result<Windows, String> {
-        let surface_for = |window: &NewWindow| {
-            let source = SurfaceSource::new(window.window.clone(), *connections)?;
-            let surface = source.create_surface(instance)?;
-            Ok::<_, String>((source, surface))
-        };
+        let surface_for = |window: &NewWindow| surface_for(window, instance, *connections);
         let main_surface = surface_for(&main_window)?;
         let gpu = Gpu::for_surface(instance.clone(), &main_surface.1)?;
         let main = WindowSurface::new(&gpu, main_window, main_surface, None)?;
@@ -69,6 +67,7 @@ impl Windows {
             gpu,
             main,
             close2gl,
+            outside: None,
             gui,
             asked: HashMap::new(),
             panel_width: 0,
@@ -77,7 +76,42 @@ impl Windows {
     }
 
     pub fn missed_frame(&self) -> bool {
-        self.main.missed() || self.close2gl.as_ref().is_some_and(WindowSurface::missed)
+        let others = [&self.close2gl, &self.outside];
+        self.main.missed()
+            || others
+                .iter()
+                .any(|w| w.as_ref().is_some_and(WindowSurface::missed))
+    }
+
+    /// In the windows layout, opens the outside view's own window when the view is `shown` and
+    /// closes it when it is not. An error (no window, no surface) is the caller's to report; the
+    /// view then stays without a window.
+    pub fn show_outside_window(
+        &mut self,
+        event_loop: &ActiveEventLoop,
+        (instance, connections): &(wgpu::Instance, Connections),
+        options: &ViewerOptions,
+        shown: bool,
+    ) -> Result<(), String> {
+        if self.close2gl.is_none() || shown == self.outside.is_some() {
+            return Ok(());
+        }
+        if !shown {
+            self.outside = None;
+            return Ok(());
+        }
+        let (width, height) = (options.width / 2, options.height);
+        let position = columns(event_loop, options.width).2;
+        let window = open_window(event_loop, "Outside view", width, height, Some(position))?;
+        let surface = surface_for(&window, instance, *connections)?;
+        let format = Some(self.main.format());
+        self.outside = Some(WindowSurface::new(&self.gpu, window, surface, format)?);
+        Ok(())
+    }
+
+    /// Whether `id` is the outside view's own window.
+    pub fn is_outside_window(&self, id: WindowId) -> bool {
+        self.outside.as_ref().is_some_and(|w| w.window.id() == id)
     }
 
     /// Where each view goes this frame, given what the panel left of the main window and
@@ -90,7 +124,8 @@ impl Windows {
             None => layout::split(area, outside),
             Some(close2gl) => {
                 let (w, h) = close2gl.size();
-                layout::two_windows(area, w, h)
+                let outside = self.outside.as_ref().map(WindowSurface::size);
+                layout::two_windows(area, w, h, outside)
             }
         };
         self.outside_area = placement
@@ -104,6 +139,8 @@ impl Windows {
     pub fn window_mut(&mut self, id: WindowId) -> Option<&mut WindowSurface> {
         if self.main.window.id() == id {
             Some(&mut self.main)
+        } else if self.is_outside_window(id) {
+            self.outside.as_mut()
         } else {
             self.close2gl.as_mut().filter(|w| w.window.id() == id)
         }
@@ -115,7 +152,8 @@ impl Windows {
         if let Some(window) = self.window_mut(id) {
             window.resize(size);
         }
-        if self.asked.get(&id) == Some(&size) {
+        // The outside view's window is sized on its own.
+        if self.asked.get(&id) == Some(&size) || self.is_outside_window(id) {
             self.asked.remove(&id);
             return;
         }
@@ -166,11 +204,8 @@ pub fn create_windows(
         // (a window manager may still place them elsewhere): from what we asked, not from where
         // X says the first one is, which winit would panic on if it had gone.
         Layout::Windows => {
-            let monitor = event_loop.primary_monitor();
-            let scale = monitor.as_ref().map_or(1.0, |m| m.scale_factor());
-            let corner = monitor.map_or(PhysicalPosition::new(0, 0), |m| m.position());
-            let panel = (close2gl_ui::PANEL_WIDTH as f64 * scale) as u32;
-            let reference_width = width / 2 + panel;
+            let (corner, beside, _) = columns(event_loop, width);
+            let reference_width = (beside.x - corner.x) as u32;
             let reference = open_window(
                 event_loop,
                 "Reference (wgpu)",
@@ -178,11 +213,41 @@ pub fn create_windows(
                 height,
                 Some(corner),
             )?;
-            let beside = PhysicalPosition::new(corner.x + reference_width as i32, corner.y);
             let close2gl = open_window(event_loop, "Close2GL", width / 2, height, Some(beside))?;
             Ok((reference, Some(close2gl)))
         }
     }
+}
+
+/// Where the windows layout's windows go, left to right from the monitor's corner, for a
+/// `width` of both views: the panel's window (half of it plus the panel), the Close2GL window,
+/// then the outside view's.
+fn columns(
+    event_loop: &ActiveEventLoop,
+    width: u32,
+) -> (
+    PhysicalPosition<i32>,
+    PhysicalPosition<i32>,
+    PhysicalPosition<i32>,
+) {
+    let monitor = event_loop.primary_monitor();
+    let scale = monitor.as_ref().map_or(1.0, |m| m.scale_factor());
+    let corner = monitor.map_or(PhysicalPosition::new(0, 0), |m| m.position());
+    let panel = (close2gl_ui::PANEL_WIDTH as f64 * scale) as i32;
+    let beside = |x: i32| PhysicalPosition::new(corner.x + x, corner.y);
+    let half = (width / 2) as i32;
+    (corner, beside(half + panel), beside(2 * half + panel))
+}
+
+/// What a window's surface is made from, and the surface.
+fn surface_for(
+    window: &NewWindow,
+    instance: &wgpu::Instance,
+    connections: Connections,
+) -> Result<(SurfaceSource, wgpu::Surface<'static>), String> {
+    let source = SurfaceSource::new(window.window.clone(), connections)?;
+    let surface = source.create_surface(instance)?;
+    Ok((source, surface))
 }
 
 fn open_window(
