@@ -2,17 +2,25 @@
 //! command line uses. A user's own program does the same:
 //!
 //! ```no_run
-//! use close2gl::{DefaultPlugins, core::{App, Plugin, Update}};
+//! use close2gl::DefaultPlugins;
+//! use close2gl::core::bevy_ecs::prelude::*;
+//! use close2gl::core::{App, Close2glFrame, FrameSet, Plugin, Render};
 //!
-//! struct Hello;
-//! impl Plugin for Hello {
+//! /// Prints how many triangles Close2GL drew, where each frame's results go out.
+//! struct DrawnCount;
+//!
+//! impl Plugin for DrawnCount {
 //!     fn build(&self, app: &mut App) {
-//!         app.add_systems(Update, || println!("a frame"));
+//!         app.add_systems(Render, print_drawn.in_set(FrameSet::Output));
 //!     }
 //! }
 //!
+//! fn print_drawn(frame: Res<Close2glFrame>) {
+//!     println!("{} triangles drawn", frame.counts.drawn);
+//! }
+//!
 //! let mut app = App::new();
-//! app.add_plugins(DefaultPlugins).add_plugins(Hello);
+//! app.add_plugins(DefaultPlugins).add_plugins(DrawnCount);
 //! app.update();
 //! ```
 

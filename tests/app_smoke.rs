@@ -89,3 +89,29 @@ fn in_the_two_windows_layout_the_outside_view_opens_a_window_of_its_own() {
         "the outside window shows the volume and the model: {drawn} pixels"
     );
 }
+
+#[test]
+fn the_first_run_fits_a_small_laptop_screen_and_shades_both_views() {
+    // The repository's config asks for a window wider than 1366 pixels.
+    let config = config::load(None, &[]).expect("config");
+    assert!(config.window.width > 1366);
+    let xvfb = Xvfb::with_screen("1366x768x24");
+    let image = screenshot(&xvfb, "laptop", &[]);
+    assert!(
+        image.width <= 1366 && image.height <= 768,
+        "the window fits the monitor: {}x{}",
+        image.width,
+        image.height
+    );
+    let views = image.width - close2gl_ui::PANEL_WIDTH as u32;
+    let half = views / 2;
+    assert_both_views_show_the_model("laptop", &image, (0, half), (half, views));
+    // Shaded, not flat: the model takes many colours in each view.
+    for (view, (from, to)) in [("reference", (0, half)), ("Close2GL", (half, views))] {
+        let colours: std::collections::HashSet<[u8; 4]> = (from..to)
+            .flat_map(|x| (0..image.height).map(move |y| (x, y)))
+            .map(|(x, y)| image.pixel(x, y))
+            .collect();
+        assert!(colours.len() > 100, "{view}: {} colours", colours.len());
+    }
+}

@@ -163,7 +163,7 @@ fn stats_with_the_software_rasterizer_reports_its_pixels() {
         (1..=7).contains(&points),
         "six visible faces share 7 corners: {s}"
     );
-    let gpu = stats(&software[..5]);
+    let gpu = stats(&[&software[..5], &["--set", "render.close2gl_raster=gpu"]].concat());
     assert!(gpu.get("covered_pixels").is_none(), "{gpu}");
 }
 

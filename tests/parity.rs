@@ -73,96 +73,94 @@ fn depth_range(app: &mut App) -> (f32, f32) {
 }
 
 /// A camera pose, applied to the framed camera.
-struct Pose {
-    name: &'static str,
-    /// Whether the far plane cuts the model's triangles.
-    far_cut: bool,
-    apply: fn(&mut App),
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Pose {
+    Framed,
+    /// The near plane 40 % of the way into the model's depth.
+    NearCut,
+    /// The far plane 60 % of the way into the model's depth. (Not at its centre: there a
+    /// sphere's silhouette edges lie in the far plane, and whether a pixel on them survives is
+    /// rounding in both views.)
+    FarCut,
+    /// At the look-at point, the model's centre: faces are seen from behind, so culling is off.
+    Inside,
+    WideShort,
+    NarrowTall,
+    UnequalFov,
+    WideWindow,
+    TallWindow,
+    /// Along the model's top from just above it, where one pixel spans many texels.
+    Grazing,
 }
 
-const POSES: &[Pose] = &[
-    Pose {
-        name: "framed",
-        far_cut: false,
-        apply: |_| {},
-    },
-    Pose {
-        // The near plane 40 % of the way into the model's depth.
-        name: "near_cut",
-        far_cut: false,
-        apply: |app| {
-            let (nearest, farthest) = depth_range(app);
-            camera(app).near = nearest + 0.4 * (farthest - nearest);
-        },
-    },
-    Pose {
-        // The far plane 60 % of the way into the model's depth. (Not at its centre: there a
-        // sphere's silhouette edges lie in the far plane, and whether a pixel on them survives
-        // is rounding in both views.)
-        name: "far_cut",
-        far_cut: true,
-        apply: |app| {
-            let (nearest, farthest) = depth_range(app);
-            camera(app).far = nearest + 0.6 * (farthest - nearest);
-        },
-    },
-    Pose {
-        // At the look-at point, the model's centre: faces are seen from behind, so culling is off.
-        name: "inside",
-        far_cut: false,
-        apply: |app| {
-            let radius = model_radius(app);
+impl Pose {
+    /// The poses every scene is checked in.
+    const SCENE: [Pose; 9] = [
+        Pose::Framed,
+        Pose::NearCut,
+        Pose::FarCut,
+        Pose::Inside,
+        Pose::WideShort,
+        Pose::NarrowTall,
+        Pose::UnequalFov,
+        Pose::WideWindow,
+        Pose::TallWindow,
+    ];
+
+    fn name(self) -> &'static str {
+        match self {
+            Pose::Framed => "framed",
+            Pose::NearCut => "near_cut",
+            Pose::FarCut => "far_cut",
+            Pose::Inside => "inside",
+            Pose::WideShort => "wide_short",
+            Pose::NarrowTall => "narrow_tall",
+            Pose::UnequalFov => "unequal_fov",
+            Pose::WideWindow => "wide_window",
+            Pose::TallWindow => "tall_window",
+            Pose::Grazing => "grazing",
+        }
+    }
+
+    /// Whether the far plane cuts the model's triangles.
+    fn far_cut(self) -> bool {
+        self == Pose::FarCut
+    }
+
+    fn apply(self, app: &mut App) {
+        let fovs = |app: &mut App, hfov, vfov| {
             let c = camera(app);
-            c.position = c.target;
-            c.near = 0.01 * radius;
-            settings(app).backface_culling = false;
-        },
-    },
-    Pose {
-        name: "wide_short",
-        far_cut: false,
-        apply: |app| {
-            let c = camera(app);
-            (c.hfov, c.vfov) = (150.0, 20.0);
-        },
-    },
-    Pose {
-        name: "narrow_tall",
-        far_cut: false,
-        apply: |app| {
-            let c = camera(app);
-            (c.hfov, c.vfov) = (20.0, 150.0);
-        },
-    },
-    Pose {
-        name: "unequal_fov",
-        far_cut: false,
-        apply: |app| {
-            let c = camera(app);
-            (c.hfov, c.vfov) = (90.0, 45.0);
-        },
-    },
-    Pose {
-        name: "wide_window",
-        far_cut: false,
-        apply: |app| {
-            *app.world_mut().resource_mut::<Viewport>() = Viewport {
-                width: 320,
-                height: 120,
-            };
-        },
-    },
-    Pose {
-        name: "tall_window",
-        far_cut: false,
-        apply: |app| {
-            *app.world_mut().resource_mut::<Viewport>() = Viewport {
-                width: 100,
-                height: 240,
-            };
-        },
-    },
-];
+            (c.hfov, c.vfov) = (hfov, vfov);
+        };
+        let window = |app: &mut App, width, height| {
+            *app.world_mut().resource_mut::<Viewport>() = Viewport { width, height };
+        };
+        match self {
+            Pose::Framed => {}
+            Pose::NearCut => {
+                let (nearest, farthest) = depth_range(app);
+                camera(app).near = nearest + 0.4 * (farthest - nearest);
+            }
+            Pose::FarCut => {
+                let (nearest, farthest) = depth_range(app);
+                camera(app).far = nearest + 0.6 * (farthest - nearest);
+            }
+            Pose::Inside => {
+                let radius = model_radius(app);
+                let c = camera(app);
+                c.position = c.target;
+                c.near = 0.01 * radius;
+                settings(app).backface_culling = false;
+            }
+            Pose::WideShort => fovs(app, 150.0, 20.0),
+            Pose::NarrowTall => fovs(app, 20.0, 150.0),
+            Pose::UnequalFov => fovs(app, 90.0, 45.0),
+            Pose::WideWindow => window(app, 320, 120),
+            Pose::TallWindow => window(app, 100, 240),
+            Pose::Grazing => graze(app),
+        }
+    }
+}
 
 const SIZE: Viewport = Viewport {
     width: 160,
@@ -177,9 +175,47 @@ const MODES: [RenderMode; 3] = [RenderMode::Solid, RenderMode::Wireframe, Render
 fn threshold(mode: RenderMode, rasterizer: Rasterizer) -> f64 {
     match (mode, rasterizer) {
         (RenderMode::Solid, Rasterizer::Gpu) => 0.999,
-        (RenderMode::Solid, Rasterizer::Software) => 0.9995,
+        (RenderMode::Solid, Rasterizer::Software) => SOFTWARE_SOLID,
         (RenderMode::Wireframe | RenderMode::Points, _) => 0.99,
     }
+}
+
+/// Coverage agreement needed of the software rasterizer's solid triangles.
+const SOFTWARE_SOLID: f64 = 0.9995;
+
+/// What one case needs to pass.
+#[derive(Clone, Copy, Debug)]
+struct Needed {
+    /// Coverage agreement, or `None`: no pixel that only Close2GL covers.
+    coverage: Option<f64>,
+    /// The share of pixels both views cover whose colours agree within 2/255.
+    colours: f64,
+    /// Whether a case where neither view covers a pixel passes (a variant of a pose whose
+    /// other variants show the model); otherwise a blank render fails: it proves nothing.
+    blank_allowed: bool,
+}
+
+impl Needed {
+    /// Solid triangles from the software rasterizer, in colour.
+    const SOFTWARE: Needed = Needed {
+        coverage: Some(SOFTWARE_SOLID),
+        colours: COLOR_WITHIN_2,
+        blank_allowed: false,
+    };
+
+    fn colours(self, colours: f64) -> Needed {
+        Needed { colours, ..self }
+    }
+}
+
+/// Renders `app`'s next frame, compares its two views and judges them against `needed`: the
+/// comparison and the snapshot, and one line naming the case when it fails (empty when it
+/// passes).
+fn render_and_judge(app: &mut App, case: &str, needed: Needed) -> (Comparison, Snapshot, String) {
+    let snapshot = render_offscreen(app).expect("render");
+    let c = Comparison::of_images(&snapshot.reference, &snapshot.close2gl, snapshot.background);
+    let failure = judge(case, &snapshot, &c, needed);
+    (c, snapshot, failure)
 }
 
 /// With the software rasterizer, the share of pixels covered in both views whose colours agree
@@ -208,8 +244,8 @@ fn write_case(case: &str, snapshot: &Snapshot) -> PathBuf {
 /// them just in front. So where the far plane cuts edges in point mode, the GPU shows some of the
 /// points where edges enter the volume and not others; Close2GL (which makes new points on the
 /// near plane only) must then draw nothing the GPU does not, but the GPU may show a few more.
-fn far_plane_points(pose: &Pose, mode: RenderMode) -> bool {
-    pose.far_cut && mode == RenderMode::Points
+fn far_plane_points(pose: Pose, mode: RenderMode) -> bool {
+    pose.far_cut() && mode == RenderMode::Points
 }
 
 /// Renders the selected poses × modes × both front faces of `model`, flat colour and full
@@ -217,35 +253,31 @@ fn far_plane_points(pose: &Pose, mode: RenderMode) -> bool {
 /// failure too: it would prove nothing.
 fn check_scene(label: &str, model: &str, overrides: &[&str]) -> String {
     let mut failures = String::new();
-    for pose in POSES {
+    for pose in Pose::SCENE {
         let mut app = scene(model, overrides, SIZE);
-        (pose.apply)(&mut app);
+        pose.apply(&mut app);
         let mut covered_any = false;
         for front_face in [FrontFace::Ccw, FrontFace::Cw] {
             for mode in MODES {
                 for rasterizer in Rasterizer::ALL.iter().copied() {
                     let s = settings(&mut app);
                     (s.front_face, s.mode, s.close2gl_raster) = (front_face, mode, rasterizer);
-                    let snapshot = render_offscreen(&mut app).expect("render");
-                    let c = Comparison::of_images(
-                        &snapshot.reference,
-                        &snapshot.close2gl,
-                        snapshot.background,
-                    );
-                    covered_any |= c.covered_pixels > 0;
                     let case = format!(
                         "{label}_{}_{}_{}_{}",
-                        pose.name,
+                        pose.name(),
                         front_face.name(),
                         mode.name(),
                         rasterizer.name()
                     );
-                    let needed = if far_plane_points(pose, mode) {
-                        None
-                    } else {
-                        Some(threshold(mode, rasterizer))
+                    let needed = Needed {
+                        coverage: (!far_plane_points(pose, mode))
+                            .then(|| threshold(mode, rasterizer)),
+                        colours: 0.0,
+                        blank_allowed: true,
                     };
-                    failures.push_str(&judge(&case, &snapshot, &c, needed, 0.0));
+                    let (c, _, failure) = render_and_judge(&mut app, &case, needed);
+                    covered_any |= c.covered_pixels > 0;
+                    failures.push_str(&failure);
                 }
             }
         }
@@ -253,7 +285,7 @@ fn check_scene(label: &str, model: &str, overrides: &[&str]) -> String {
             let _ = writeln!(
                 failures,
                 "{label}_{}: no variant covers a single pixel",
-                pose.name
+                pose.name()
             );
         }
     }
@@ -262,31 +294,35 @@ fn check_scene(label: &str, model: &str, overrides: &[&str]) -> String {
 
 /// One line naming the case, its figures and its diff image when the views disagree: coverage
 /// below `needed` (or, with `None`, any pixel only Close2GL covers), or colours within 2/255 on
-/// less than `color_within_2` of the pixels both cover. Nothing when they agree, or when neither
-/// view covers a pixel (e.g. only back faces in view).
-fn judge(
-    case: &str,
-    snapshot: &Snapshot,
-    c: &Comparison,
-    needed: Option<f64>,
-    color_within_2: f64,
-) -> String {
+/// less than its share of the pixels both cover; or when neither view covers a single pixel,
+/// unless `needed` allows it. Nothing when they agree.
+fn judge(case: &str, snapshot: &Snapshot, c: &Comparison, needed: Needed) -> String {
+    if c.covered_pixels == 0 {
+        return match needed.blank_allowed {
+            true => String::new(),
+            false => format!(
+                "{case}: neither view covers a single pixel: a blank render proves nothing\n"
+            ),
+        };
+    }
     let colors =
         ColorComparison::of_images(&snapshot.reference, &snapshot.close2gl, snapshot.background);
-    let coverage_ok = match needed {
-        Some(needed) => c.coverage_agreement >= needed,
+    let coverage_ok = match needed.coverage {
+        Some(coverage) => c.coverage_agreement >= coverage,
         None => c.only_second == 0,
     };
-    if c.covered_pixels == 0 || (coverage_ok && colors.within_2_fraction >= color_within_2) {
+    if coverage_ok && colors.within_2_fraction >= needed.colours {
         return String::new();
     }
     let diff = write_case(case, snapshot);
     format!(
         "{case}: coverage agreement {:.5}, needed {} ({} of {} pixels differ: {} reference only, \
          {} Close2GL only); colours within 2/255 on {:.4} of {} pixels (mean difference {:.3}), \
-         needed {color_within_2}; see {}\n",
+         needed {}; see {}\n",
         c.coverage_agreement,
-        needed.map_or("no Close2GL-only pixel".to_string(), |n| format!(">= {n}")),
+        needed
+            .coverage
+            .map_or("no Close2GL-only pixel".to_string(), |n| format!(">= {n}")),
         c.mismatched_pixels,
         c.covered_pixels,
         c.only_first,
@@ -294,6 +330,7 @@ fn judge(
         colors.within_2_fraction,
         colors.compared_pixels,
         colors.mean_abs_diff,
+        needed.colours,
         diff.display()
     )
 }
@@ -392,20 +429,21 @@ fn a_resize_keeps_the_views_in_agreement() {
             width: size.0,
             height: size.1,
         };
-        let snapshot = render_offscreen(&mut app).expect("render");
-        assert_eq!((snapshot.close2gl.width, snapshot.close2gl.height), size);
-        let c = Comparison::of_images(&snapshot.reference, &snapshot.close2gl, snapshot.background);
-        if c.coverage_agreement < 0.999 {
-            let diff = write_case(&format!("resized_{}x{}", size.0, size.1), &snapshot);
-            panic!("after a resize to {size:?}: {c:?}; see {}", diff.display());
+        for rasterizer in Rasterizer::ALL.iter().copied() {
+            settings(&mut app).close2gl_raster = rasterizer;
+            let case = format!("resized_{}x{}_{}", size.0, size.1, rasterizer.name());
+            let needed = match rasterizer {
+                Rasterizer::Gpu => Needed {
+                    coverage: Some(threshold(RenderMode::Solid, rasterizer)),
+                    colours: 0.0,
+                    blank_allowed: false,
+                },
+                Rasterizer::Software => Needed::SOFTWARE,
+            };
+            let (_, snapshot, failure) = render_and_judge(&mut app, &case, needed);
+            assert_eq!((snapshot.close2gl.width, snapshot.close2gl.height), size);
+            assert!(failure.is_empty(), "{failure}");
         }
-        settings(&mut app).close2gl_raster = Rasterizer::Software;
-        let snapshot = render_offscreen(&mut app).expect("render");
-        assert_eq!((snapshot.close2gl.width, snapshot.close2gl.height), size);
-        let c = Comparison::of_images(&snapshot.reference, &snapshot.close2gl, snapshot.background);
-        let case = format!("resized_{}x{}_software", size.0, size.1);
-        let failure = judge(&case, &snapshot, &c, Some(0.9995), COLOR_WITHIN_2);
-        assert!(failure.is_empty(), "{failure}");
         settings(&mut app).close2gl_raster = Rasterizer::Gpu;
     }
 }
@@ -418,7 +456,13 @@ fn a_resize_keeps_the_views_in_agreement() {
 fn the_four_shadings_agree_with_the_software_rasterizer() {
     let asset = |name: &str| format!("{}/assets/{name}", env!("CARGO_MANIFEST_DIR"));
     let knot = asset("knot.obj");
-    let poses = ["framed", "near_cut", "far_cut", "unequal_fov", "inside"];
+    let poses = [
+        Pose::Framed,
+        Pose::NearCut,
+        Pose::FarCut,
+        Pose::UnequalFov,
+        Pose::Inside,
+    ];
     let mut failures = String::new();
     let mut compared = 0;
     for model in ["box", "sphere", "torus", "cone", "cylinder", knot.as_str()] {
@@ -426,10 +470,10 @@ fn the_four_shadings_agree_with_the_software_rasterizer() {
         let overrides = ["render.close2gl_raster=software", "render.texture=false"];
         let mut app = scene(model, &overrides, SIZE);
         let framed = *camera(&mut app);
-        for pose in POSES.iter().filter(|p| poses.contains(&p.name)) {
+        for pose in poses {
             *camera(&mut app) = framed;
             settings(&mut app).backface_culling = true;
-            (pose.apply)(&mut app);
+            pose.apply(&mut app);
             let culls: &[bool] = if settings(&mut app).backface_culling {
                 &[true, false]
             } else {
@@ -439,16 +483,17 @@ fn the_four_shadings_agree_with_the_software_rasterizer() {
                 for shading in Shading::ALL.iter().copied() {
                     let s = settings(&mut app);
                     (s.shading, s.backface_culling) = (shading, cull);
-                    let snapshot = render_offscreen(&mut app).expect("render");
-                    let c = Comparison::of_images(
-                        &snapshot.reference,
-                        &snapshot.close2gl,
-                        snapshot.background,
-                    );
-                    compared += c.covered_pixels;
                     let name = model.rsplit('/').next().unwrap_or(model);
-                    let case = format!("lit_{name}_{}_{}_cull_{cull}", pose.name, shading.name());
-                    failures.push_str(&judge(&case, &snapshot, &c, Some(0.9995), COLOR_WITHIN_2));
+                    let case = format!("lit_{name}_{}_{}_cull_{cull}", pose.name(), shading.name());
+                    // The near plane cutting into a closed convex model leaves only its
+                    // inside, all back faces: with culling, nothing to compare.
+                    let needed = Needed {
+                        blank_allowed: pose == Pose::NearCut && cull,
+                        ..Needed::SOFTWARE
+                    };
+                    let (c, _, failure) = render_and_judge(&mut app, &case, needed);
+                    compared += c.covered_pixels;
+                    failures.push_str(&failure);
                 }
             }
         }
@@ -486,9 +531,7 @@ fn a_near_part_hides_a_far_one_in_both_views() {
         "lighting.light_position=[0,0,10]",
     ];
     let mut app = scene(model, &overrides, SIZE);
-    let snapshot = render_offscreen(&mut app).expect("render");
-    let c = Comparison::of_images(&snapshot.reference, &snapshot.close2gl, snapshot.background);
-    let failure = judge("two_squares", &snapshot, &c, Some(0.9995), COLOR_WITHIN_2);
+    let (_, snapshot, failure) = render_and_judge(&mut app, "two_squares", Needed::SOFTWARE);
     assert!(failure.is_empty(), "{failure}");
     // The centre of the view is inside both squares: it shows the near one, lit head-on,
     // brighter than the far one's pixels at the right (where only it shows).
@@ -594,11 +637,11 @@ fn write_close2gl_images(case: &str, images: [(&str, Option<&Snapshot>); 3]) -> 
 }
 
 /// Simple against full clipping for one model, pose and mode; returns the pixels that differ.
-fn compare_clipping(model: &str, pose: &Pose, mode: RenderMode) -> usize {
+fn compare_clipping(model: &str, pose: Pose, mode: RenderMode) -> usize {
     let mut app = scene(model, &[], SIZE);
-    (pose.apply)(&mut app);
+    pose.apply(&mut app);
     settings(&mut app).mode = mode;
-    let case = format!("simple_{model}_{}_{}", pose.name, mode.name());
+    let case = format!("simple_{model}_{}_{}", pose.name(), mode.name());
     let full = render_offscreen(&mut app).expect("render");
     settings(&mut app).clipping = Clipping::Simple;
     let simple = render_offscreen(&mut app).expect("render");
@@ -622,7 +665,7 @@ fn compare_clipping(model: &str, pose: &Pose, mode: RenderMode) -> usize {
             write_close2gl_images(&case, images).display()
         );
     }
-    if pose.name == "framed" {
+    if pose == Pose::Framed {
         assert_eq!(
             border_count, 0,
             "{case}: the framed model touches the border"
@@ -639,7 +682,7 @@ fn compare_clipping(model: &str, pose: &Pose, mode: RenderMode) -> usize {
 fn simple_clipping_differs_from_full_only_at_the_frustum_borders() {
     let mut differing_total = 0;
     for model in ["torus", "box", "cylinder"] {
-        for pose in POSES {
+        for pose in Pose::SCENE {
             for mode in [RenderMode::Solid, RenderMode::Wireframe] {
                 differing_total += compare_clipping(model, pose, mode);
             }
@@ -684,21 +727,32 @@ fn check_report(out: &Path) {
         c.covered_pixels > 500 && c.coverage_agreement >= 0.99,
         "{c:?}"
     );
-    for key in ["adapter", "backend", "reference_ms", "close2gl_ms"] {
-        assert!(!report[key].is_null(), "report.json lacks {key}: {text}");
-    }
-    for key in [
-        "triangles_in",
-        "clipped",
-        "culled",
-        "drawn",
-        "output_primitives",
-    ] {
+    assert_eq!(report["covered_pixels"], c.covered_pixels);
+    assert_eq!(report["reference_only_pixels"], c.only_first);
+    assert_eq!(report["close2gl_only_pixels"], c.only_second);
+    for key in ["adapter", "backend"] {
         assert!(
-            report["stats"][key].is_u64(),
-            "report.json lacks stats.{key}: {text}"
+            report[key].as_str().is_some_and(|s| !s.is_empty()),
+            "{key}: {text}"
         );
     }
+    for key in ["reference_ms", "close2gl_ms"] {
+        let ms = report[key].as_f64().unwrap_or(-1.0);
+        assert!(ms > 0.0 && ms < 60_000.0, "{key}: {text}");
+    }
+    // The torus at 160x120, framed: every triangle is counted once, and some are drawn.
+    let stat = |key: &str| {
+        report["stats"][key]
+            .as_u64()
+            .unwrap_or_else(|| panic!("stats.{key}: {text}"))
+    };
+    assert!(stat("triangles_in") > 0 && stat("drawn") > 0, "{text}");
+    assert_eq!(
+        stat("clipped") + stat("culled") + stat("drawn"),
+        stat("triangles_in"),
+        "{text}"
+    );
+    assert!(stat("output_primitives") >= stat("drawn"), "{text}");
 }
 
 fn assert_success(output: &std::process::Output) {
@@ -719,6 +773,12 @@ fn the_render_command_reports_what_its_images_show() {
         &["--set", "render.mode=wireframe", "--frames", "3"],
     ));
     check_report(&out);
+    let text = std::fs::read_to_string(out.join("report.json")).expect("report.json");
+    let report: serde_json::Value = serde_json::from_str(&text).expect("valid JSON");
+    assert_eq!(
+        report["frames"], 3,
+        "the frames asked for were rendered: {text}"
+    );
 
     assert_success(&render_command(
         &out,
@@ -799,29 +859,23 @@ fn textured_models_agree_with_every_filter() {
     for (label, model) in [("textured_cube", cube.as_str()), ("box", "box")] {
         let mut app = scene(model, &["render.close2gl_raster=software"], SIZE);
         let framed = *camera(&mut app);
-        for pose in ["framed", "near_cut", "grazing"] {
+        for pose in [Pose::Framed, Pose::NearCut, Pose::Grazing] {
             *camera(&mut app) = framed;
-            match pose {
-                "near_cut" => {
-                    let (nearest, farthest) = depth_range(&mut app);
-                    camera(&mut app).near = nearest + 0.4 * (farthest - nearest);
-                }
-                "grazing" => graze(&mut app),
-                _ => {}
-            }
+            pose.apply(&mut app);
+            // With the near plane cutting into the closed model, its inside is what shows.
+            settings(&mut app).backface_culling = pose != Pose::NearCut;
             for filter in TextureFilter::ALL.iter().copied() {
                 for shading in [Shading::None, Shading::Phong] {
                     let s = settings(&mut app);
                     (s.texture_filter, s.shading) = (filter, shading);
-                    let snapshot = render_offscreen(&mut app).expect("render");
-                    let c = Comparison::of_images(
-                        &snapshot.reference,
-                        &snapshot.close2gl,
-                        snapshot.background,
+                    let case = format!(
+                        "tex_{label}_{}_{}_{}",
+                        pose.name(),
+                        filter.name(),
+                        shading.name()
                     );
-                    let case = format!("tex_{label}_{pose}_{}_{}", filter.name(), shading.name());
-                    let colours = texture_colour_threshold(filter);
-                    failures.push_str(&judge(&case, &snapshot, &c, Some(0.9995), colours));
+                    let needed = Needed::SOFTWARE.colours(texture_colour_threshold(filter));
+                    failures.push_str(&render_and_judge(&mut app, &case, needed).2);
                 }
             }
         }
@@ -896,7 +950,8 @@ fn trilinear_filtering_leaves_no_moire_on_a_grazing_checkerboard() {
         if filter == TextureFilter::Trilinear {
             let c =
                 Comparison::of_images(&snapshot.reference, &snapshot.close2gl, snapshot.background);
-            let failure = judge("moire_trilinear", &snapshot, &c, Some(0.9995), 0.95);
+            let needed = Needed::SOFTWARE.colours(0.95);
+            let failure = judge("moire_trilinear", &snapshot, &c, needed);
             assert!(failure.is_empty(), "{failure}");
         }
     }
@@ -936,4 +991,40 @@ fn far_half_energy(image: &close2gl_gpu::Image, background: [u8; 3]) -> f64 {
         }
     }
     sum as f64 / count.max(1) as f64
+}
+
+/// The helper cannot pass on a blank image: a Close2GL view that drew nothing fails against a
+/// reference that shows the model, and two blank views fail too (unless a case allows it).
+#[test]
+fn a_blank_close2gl_image_fails_the_parity_helper() {
+    let mut app = scene("torus", &["render.close2gl_raster=software"], SIZE);
+    let (_, snapshot, failure) = render_and_judge(&mut app, "blank_check", Needed::SOFTWARE);
+    assert!(failure.is_empty(), "the real views agree: {failure}");
+    let [r, g, b] = snapshot.background;
+    let blank = close2gl_gpu::Image::filled(SIZE.width, SIZE.height, [r, g, b, 255]);
+    let judged = |reference: &close2gl_gpu::Image, needed: Needed| {
+        let blanked = Snapshot {
+            reference: reference.clone(),
+            close2gl: blank.clone(),
+            ..snapshot.clone()
+        };
+        let c = Comparison::of_images(&blanked.reference, &blanked.close2gl, blanked.background);
+        judge("blank_check", &blanked, &c, needed)
+    };
+    assert!(
+        !judged(&snapshot.reference, Needed::SOFTWARE).is_empty(),
+        "Close2GL drew nothing"
+    );
+    assert!(
+        !judged(&blank, Needed::SOFTWARE).is_empty(),
+        "neither view drew anything"
+    );
+    let allowed = Needed {
+        blank_allowed: true,
+        ..Needed::SOFTWARE
+    };
+    assert!(
+        judged(&blank, allowed).is_empty(),
+        "a variant may be blank when allowed"
+    );
 }

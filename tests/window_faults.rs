@@ -225,10 +225,14 @@ struct Running {
 }
 
 impl Running {
+    /// The app with `args`, in flat colour (the GPU drawing Close2GL's 2D buffer), so that a
+    /// drawn frame is told from an undrawn window by its colours alone ([`is_drawn`]).
     fn start(xvfb: &Xvfb, dir: &Path, args: &[&str]) -> Running {
         let stderr = dir.join("stderr.txt");
+        let flat = ["render.shading=none", "render.close2gl_raster=gpu"];
         let child = Command::new(env!("CARGO_BIN_EXE_close2gl"))
             .args(args)
+            .args(flat.iter().flat_map(|set| ["--set", set]))
             .current_dir(env!("CARGO_MANIFEST_DIR"))
             .env("DISPLAY", &xvfb.display)
             .env_remove("WAYLAND_DISPLAY")

@@ -98,6 +98,7 @@ pub fn run(args: RunArgs) -> Result<(), CliError> {
         layout: config.window.layout,
         width: size.width,
         height: size.height,
+        fit_to_monitor: replay.is_none() && args.size.is_none(),
         screenshot: args.screenshot,
         screenshot_frame,
         exit_after_frames,

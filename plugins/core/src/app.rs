@@ -281,7 +281,7 @@ mod tests {
                 FrameSet::Load => "load",
                 FrameSet::Camera => "camera",
                 FrameSet::Close2gl => "close2gl",
-                FrameSet::Render => "render",
+                FrameSet::Output => "output",
             };
             app.add_systems(
                 Update,
@@ -291,7 +291,7 @@ mod tests {
         app.update();
         assert_eq!(
             app.world().resource::<Log>().0,
-            ["input", "load", "camera", "close2gl", "render"]
+            ["input", "load", "camera", "close2gl", "output"]
         );
     }
 }

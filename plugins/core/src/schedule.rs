@@ -42,8 +42,10 @@ pub enum FrameSet {
     Camera,
     /// The Close2GL pipeline turns camera, mesh and settings into the 2D buffer.
     Close2gl,
-    /// What changed is uploaded to the GPU views.
-    Render,
+    /// The frame's results go out of the world: what changed is uploaded to the GPU views,
+    /// and anything that reports on the frame reads it here. (Not `Render`, which is the
+    /// schedule the GPU's uploads run in.)
+    Output,
 }
 
 impl FrameSet {
@@ -53,7 +55,7 @@ impl FrameSet {
         FrameSet::Load,
         FrameSet::Camera,
         FrameSet::Close2gl,
-        FrameSet::Render,
+        FrameSet::Output,
     ];
 }
 

@@ -51,7 +51,7 @@ impl Plugin for GpuPlugin {
                     render_difference,
                 )
                     .chain()
-                    .in_set(FrameSet::Render)
+                    .in_set(FrameSet::Output)
                     .run_if(resource_exists::<Gpu>.and_then(resource_exists::<Views>)),
             );
     }

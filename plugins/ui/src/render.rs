@@ -8,11 +8,11 @@ pub fn section(ui: &mut egui::Ui, world: &mut World) {
     let Some(mut settings) = world.get_resource::<RenderSettings>().copied() else {
         return;
     };
-    ui.horizontal(|ui| {
+    ui.horizontal_wrapped(|ui| {
         ui.label("Mode");
         choice(ui, &mut settings.mode, RenderMode::ALL, RenderMode::name);
     });
-    ui.horizontal(|ui| {
+    ui.horizontal_wrapped(|ui| {
         ui.label("Front face");
         choice(
             ui,
@@ -22,11 +22,11 @@ pub fn section(ui: &mut egui::Ui, world: &mut World) {
         );
     });
     ui.checkbox(&mut settings.backface_culling, "Backface culling");
-    ui.horizontal(|ui| {
+    ui.horizontal_wrapped(|ui| {
         ui.label("Clipping");
         choice(ui, &mut settings.clipping, Clipping::ALL, Clipping::name);
     });
-    ui.horizontal(|ui| {
+    ui.horizontal_wrapped(|ui| {
         ui.label("Shading");
         egui::ComboBox::from_id_salt("shading")
             .selected_text(settings.shading.name())
@@ -41,21 +41,21 @@ pub fn section(ui: &mut egui::Ui, world: &mut World) {
                  rasterizer, Close2GL draws flat colour.",
             );
     });
-    ui.horizontal(|ui| {
+    ui.horizontal_wrapped(|ui| {
         ui.label("Close2GL raster");
-        choice(
-            ui,
-            &mut settings.close2gl_raster,
-            Rasterizer::ALL,
-            Rasterizer::name,
-        );
+        let name = |r: Rasterizer| match r {
+            Rasterizer::Gpu => "GPU (assignment)",
+            Rasterizer::Software => "software",
+        };
+        choice(ui, &mut settings.close2gl_raster, Rasterizer::ALL, name);
     })
     .response
     .on_hover_text(
-        "gpu: the GPU draws Close2GL's 2D primitives (the assignment's rule). software: \
-         Close2GL's own rasterizer, z-buffer and shading.",
+        "GPU (assignment): the GPU only draws Close2GL's 2D primitives, in flat colour (the \
+         assignment's rule; render.close2gl_raster = \"gpu\"). software: Close2GL's own \
+         rasterizer, z-buffer and shading.",
     );
-    ui.horizontal(|ui| {
+    ui.horizontal_wrapped(|ui| {
         ui.label("Colour");
         color(ui, &mut settings.color);
         ui.label("Background");

@@ -10,7 +10,7 @@ pub fn section(ui: &mut egui::Ui, world: &mut World) {
     let Some(mut settings) = world.get_resource::<RenderSettings>().copied() else {
         return;
     };
-    ui.horizontal(|ui| {
+    ui.horizontal_wrapped(|ui| {
         ui.checkbox(&mut settings.texture, "Texture");
         for &filter in TextureFilter::ALL {
             ui.selectable_value(&mut settings.texture_filter, filter, filter.name());
@@ -20,7 +20,7 @@ pub fn section(ui: &mut egui::Ui, world: &mut World) {
 
     let mut request = None;
     let mut state = world.resource_mut::<PanelState>();
-    ui.horizontal(|ui| {
+    ui.horizontal_wrapped(|ui| {
         let field = egui::TextEdit::singleline(&mut state.texture_path)
             .hint_text("PNG or JPEG image, or drop one here")
             .desired_width(ui.available_width() - 90.0);

@@ -47,6 +47,9 @@ pub struct ViewerOptions {
     /// Inner size of the window (split), or of both windows together (windows), in pixels.
     pub width: u32,
     pub height: u32,
+    /// Shrink that size to fit the monitor the windows open on (the configured size; a size
+    /// given with `--size` or by a recording is kept as asked).
+    pub fit_to_monitor: bool,
     /// Save the window's frame as PNG after `screenshot_frame` frames. In the windows layout
     /// the two windows are saved side by side in one image.
     pub screenshot: Option<PathBuf>,

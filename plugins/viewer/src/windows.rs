@@ -193,7 +193,7 @@ pub fn create_windows(
     event_loop: &ActiveEventLoop,
     options: &ViewerOptions,
 ) -> Result<Created, String> {
-    let (width, height) = (options.width, options.height);
+    let (width, height) = window_size(event_loop, options);
     match options.layout {
         Layout::Split => {
             let title = "Close2GL viewer: Reference (wgpu) | Close2GL";
@@ -217,6 +217,26 @@ pub fn create_windows(
             Ok((reference, Some(close2gl)))
         }
     }
+}
+
+/// The size asked for all windows together, shrunk when `options` says to fit the monitor: the
+/// panel and the views (both windows of the windows layout, side by side) within the monitor,
+/// less room for the window manager's title bars and a task bar.
+fn window_size(event_loop: &ActiveEventLoop, options: &ViewerOptions) -> (u32, u32) {
+    let (width, height) = (options.width, options.height);
+    let monitor = event_loop.primary_monitor();
+    let Some(room) = monitor.map(|m| m.size()).filter(|_| options.fit_to_monitor) else {
+        return (width, height);
+    };
+    let panel_in_addition = match options.layout {
+        Layout::Split => 0,
+        Layout::Windows => close2gl_ui::PANEL_WIDTH as u32,
+    };
+    let fit = |asked: u32, room: u32, margin: u32| asked.min(room.saturating_sub(margin).max(1));
+    (
+        fit(width, room.width, 16 + panel_in_addition),
+        fit(height, room.height, 96),
+    )
 }
 
 /// Where the windows layout's windows go, left to right from the monitor's corner, for a

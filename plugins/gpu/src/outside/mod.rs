@@ -35,7 +35,7 @@ impl Plugin for OutsidePlugin {
     fn build(&self, app: &mut App) {
         app.init_resource::<Fates>().add_systems(
             Render,
-            upload_outside.in_set(FrameSet::Render).run_if(
+            upload_outside.in_set(FrameSet::Output).run_if(
                 outside_shown
                     .and_then(resource_exists::<OutsideOrbit>)
                     .and_then(resource_exists::<Gpu>)
