@@ -6,6 +6,7 @@ use bytemuck::{Pod, Zeroable};
 use glam::Vec4;
 
 use crate::DEPTH_FORMAT;
+use crate::vertex_pipeline::VertexPipeline;
 
 /// One corner: clip coordinates in wgpu's depth convention (z in 0..w) and a colour.
 #[repr(C)]
@@ -84,37 +85,20 @@ fn create_pipeline(
     depth_stencil: Option<wgpu::DepthStencilState>,
 ) -> wgpu::RenderPipeline {
     let attributes = wgpu::vertex_attr_array![0 => Float32x4, 1 => Unorm8x4];
-    device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
-        label: Some(label),
-        layout: Some(layout),
-        vertex: wgpu::VertexState {
-            module: shader,
-            entry_point: Some("vs_main"),
-            compilation_options: Default::default(),
-            buffers: &[Some(wgpu::VertexBufferLayout {
-                array_stride: size_of::<Corner>() as u64,
-                step_mode: wgpu::VertexStepMode::Vertex,
-                attributes: &attributes,
-            })],
+    VertexPipeline {
+        label,
+        shader,
+        layout,
+        fragment: "fs_main",
+        vertex: wgpu::VertexBufferLayout {
+            array_stride: size_of::<Corner>() as u64,
+            step_mode: wgpu::VertexStepMode::Vertex,
+            attributes: &attributes,
         },
-        primitive: wgpu::PrimitiveState {
-            topology,
-            cull_mode: None,
-            ..Default::default()
-        },
+        topology,
         depth_stencil,
-        multisample: Default::default(),
-        fragment: Some(wgpu::FragmentState {
-            module: shader,
-            entry_point: Some("fs_main"),
-            compilation_options: Default::default(),
-            targets: &[Some(wgpu::ColorTargetState {
-                format: color_format,
-                blend: Some(wgpu::BlendState::ALPHA_BLENDING),
-                write_mask: wgpu::ColorWrites::ALL,
-            })],
-        }),
-        multiview_mask: None,
-        cache: None,
-    })
+        color_format,
+        blend: Some(wgpu::BlendState::ALPHA_BLENDING),
+    }
+    .create(device)
 }

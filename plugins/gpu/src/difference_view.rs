@@ -29,16 +29,7 @@ pub(crate) struct DifferenceView {
 
 impl DifferenceView {
     pub(crate) fn new(device: &wgpu::Device, color_format: wgpu::TextureFormat) -> Self {
-        let uniform = wgpu::BindGroupLayoutEntry {
-            binding: 2,
-            visibility: wgpu::ShaderStages::FRAGMENT,
-            ty: wgpu::BindingType::Buffer {
-                ty: wgpu::BufferBindingType::Uniform,
-                has_dynamic_offset: false,
-                min_binding_size: None,
-            },
-            count: None,
-        };
+        let uniform = crate::uniform_entry(2, wgpu::ShaderStages::FRAGMENT);
         let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
             label: Some("difference"),
             entries: &[

@@ -34,6 +34,7 @@ mod reference_texture;
 mod software_view;
 mod systems;
 pub mod texture;
+mod vertex_pipeline;
 mod views;
 
 pub use close2gl_core::camera_matrices;
@@ -77,6 +78,20 @@ pub fn submit_pass(
 
 /// A view's uniform buffer (binding 0 of group 0, seen by both shader stages), its bind group
 /// and the pipeline layout every one of the view's pipelines shares.
+/// A uniform buffer at `binding`, seen by the `visibility` stages.
+fn uniform_entry(binding: u32, visibility: wgpu::ShaderStages) -> wgpu::BindGroupLayoutEntry {
+    wgpu::BindGroupLayoutEntry {
+        binding,
+        visibility,
+        ty: wgpu::BindingType::Buffer {
+            ty: wgpu::BufferBindingType::Uniform,
+            has_dynamic_offset: false,
+            min_binding_size: None,
+        },
+        count: None,
+    }
+}
+
 struct UniformSetup {
     buffer: wgpu::Buffer,
     bind_group: wgpu::BindGroup,
@@ -93,16 +108,7 @@ impl UniformSetup {
         });
         let bind_group_layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
             label: Some(label),
-            entries: &[wgpu::BindGroupLayoutEntry {
-                binding: 0,
-                visibility: wgpu::ShaderStages::VERTEX_FRAGMENT,
-                ty: wgpu::BindingType::Buffer {
-                    ty: wgpu::BufferBindingType::Uniform,
-                    has_dynamic_offset: false,
-                    min_binding_size: None,
-                },
-                count: None,
-            }],
+            entries: &[uniform_entry(0, wgpu::ShaderStages::VERTEX_FRAGMENT)],
         });
         let bind_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
             label: Some(label),

@@ -6,6 +6,7 @@ use bytemuck::{Pod, Zeroable};
 
 use super::camera::OutsideCamera;
 use super::scene::{OutsideScene, OutsideVertex};
+use crate::vertex_pipeline::VertexPipeline;
 use crate::{DEPTH_FORMAT, Gpu, UniformSetup};
 
 /// The uniform block of outside.wgsl.
@@ -147,25 +148,18 @@ fn create_pipeline(
             Some(wgpu::BlendState::ALPHA_BLENDING),
         ),
     };
-    device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
-        label: Some("outside"),
-        layout: Some(layout),
-        vertex: wgpu::VertexState {
-            module: shader,
-            entry_point: Some("vs_main"),
-            compilation_options: Default::default(),
-            buffers: &[Some(wgpu::VertexBufferLayout {
-                array_stride: size_of::<OutsideVertex>() as u64,
-                step_mode: wgpu::VertexStepMode::Vertex,
-                attributes: &attributes,
-            })],
+    VertexPipeline {
+        label: "outside",
+        shader,
+        layout,
+        fragment,
+        vertex: wgpu::VertexBufferLayout {
+            array_stride: size_of::<OutsideVertex>() as u64,
+            step_mode: wgpu::VertexStepMode::Vertex,
+            attributes: &attributes,
         },
         // Both faces of every triangle: the outside view shows what the camera culls too.
-        primitive: wgpu::PrimitiveState {
-            topology,
-            cull_mode: None,
-            ..Default::default()
-        },
+        topology,
         depth_stencil: Some(wgpu::DepthStencilState {
             format: DEPTH_FORMAT,
             depth_write_enabled: Some(kind != PipelineKind::Faces),
@@ -173,20 +167,10 @@ fn create_pipeline(
             stencil: Default::default(),
             bias: Default::default(),
         }),
-        multisample: Default::default(),
-        fragment: Some(wgpu::FragmentState {
-            module: shader,
-            entry_point: Some(fragment),
-            compilation_options: Default::default(),
-            targets: &[Some(wgpu::ColorTargetState {
-                format: color_format,
-                blend,
-                write_mask: wgpu::ColorWrites::ALL,
-            })],
-        }),
-        multiview_mask: None,
-        cache: None,
-    })
+        color_format,
+        blend,
+    }
+    .create(device)
 }
 
 fn vertex_buffer(device: &wgpu::Device, size: u64) -> wgpu::Buffer {
