@@ -76,6 +76,26 @@ pub fn submit_pass(
     gpu.queue.submit([encoder.finish()]);
 }
 
+/// [`submit_pass`], then waits for the GPU to finish it: a view's time is its own recording and
+/// the GPU's work on it. Returns the milliseconds it took. The windows and the offscreen target
+/// time every view this way.
+pub fn submit_pass_timed(
+    gpu: &Gpu,
+    target: &wgpu::TextureView,
+    depth: Option<&wgpu::TextureView>,
+    load: wgpu::LoadOp<wgpu::Color>,
+    record: impl FnOnce(&mut wgpu::RenderPass<'_>),
+) -> f64 {
+    let start = std::time::Instant::now();
+    submit_pass(gpu, target, depth, load, record);
+    // A failed wait means a lost device; the next acquire or readback reports it.
+    let _ = gpu.device.poll(wgpu::PollType::Wait {
+        submission_index: None,
+        timeout: Some(std::time::Duration::from_secs(30)),
+    });
+    start.elapsed().as_secs_f64() * 1e3
+}
+
 /// A view's uniform buffer (binding 0 of group 0, seen by both shader stages), its bind group
 /// and the pipeline layout every one of the view's pipelines shares.
 /// A uniform buffer at `binding`, seen by the `visibility` stages.

@@ -1,8 +1,6 @@
 //! Offscreen rendering with exactly the systems and draw calls a window uses: the same `Views`,
 //! the same `Render` schedule, a texture instead of a surface, and a readback to RGBA8.
 
-use std::time::Instant;
-
 use bevy_ecs::prelude::*;
 use close2gl_core::{
     App, Close2glFrame, Plugin, Rasterizer, RenderSettings, SoftwareFrame, StageCounts, Viewport,
@@ -146,19 +144,12 @@ fn draw(
     depth: Option<&wgpu::Texture>,
     record: impl FnOnce(&Views, &mut wgpu::RenderPass<'_>),
 ) -> f64 {
-    let start = Instant::now();
     let color_view = color.create_view(&Default::default());
     let depth_view = depth.map(|d| d.create_view(&Default::default()));
-    crate::submit_pass(
-        gpu,
-        &color_view,
-        depth_view.as_ref(),
-        wgpu::LoadOp::Clear(views.clear_color()),
-        |pass| record(views, pass),
-    );
-    // A failed wait means a lost device; the readback that follows reports it.
-    let _ = gpu.device.poll(wgpu::PollType::wait_indefinitely());
-    start.elapsed().as_secs_f64() * 1e3
+    let clear = wgpu::LoadOp::Clear(views.clear_color());
+    crate::submit_pass_timed(gpu, &color_view, depth_view.as_ref(), clear, |pass| {
+        record(views, pass)
+    })
 }
 
 /// Both colour textures read back as images.

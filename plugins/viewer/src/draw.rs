@@ -3,7 +3,7 @@
 use std::time::{Duration, Instant};
 
 use close2gl_gpu::outside::OutsideRenderer;
-use close2gl_gpu::{Gpu, Views};
+use close2gl_gpu::{Gpu, Views, submit_pass_timed};
 use close2gl_ui::ViewStats;
 
 use crate::layout::{Placed, View};
@@ -28,11 +28,11 @@ pub fn draw_views(
 ) {
     let mut load = wgpu::LoadOp::Clear(all.views.clear_color());
     if placed.is_empty() {
-        submit(gpu, target, None, load, |_| ());
+        submit_pass_timed(gpu, target, None, load, |_| ());
     }
     for p in placed {
         let start = Instant::now();
-        draw_view(gpu, all, target, depth, *p, load);
+        let ms = draw_view(gpu, all, target, depth, *p, load);
         load = wgpu::LoadOp::Load;
         if let Some(stats) = stats.as_deref_mut() {
             let timer = match p.view {
@@ -40,12 +40,13 @@ pub fn draw_views(
                 View::Close2gl => &mut stats.close2gl,
                 View::Outside => continue,
             };
-            timer.record(start, start.elapsed());
+            timer.record(start, Duration::from_secs_f64(ms / 1e3));
         }
     }
 }
 
-/// One view into its rectangle of `target` (the reference with the depth buffer).
+/// One view into its rectangle of `target` (the reference with the depth buffer), submitted
+/// and waited on, so that each view's frame time is its own; returns its milliseconds.
 fn draw_view(
     gpu: &Gpu,
     AllViews { views, outside }: AllViews<'_>,
@@ -53,43 +54,26 @@ fn draw_view(
     depth: &wgpu::TextureView,
     placed: Placed,
     load: wgpu::LoadOp<wgpu::Color>,
-) {
+) -> f64 {
     let rect = placed.rect;
     let set_viewport = |pass: &mut wgpu::RenderPass<'_>| {
         let (x, y) = (rect.x as f32, rect.y as f32);
         pass.set_viewport(x, y, rect.width as f32, rect.height as f32, 0.0, 1.0);
     };
     match placed.view {
-        View::Reference => submit(gpu, target, Some(depth), load, |pass| {
+        View::Reference => submit_pass_timed(gpu, target, Some(depth), load, |pass| {
             set_viewport(pass);
             views.draw_reference(pass);
         }),
-        View::Close2gl => submit(gpu, target, None, load, |pass| {
+        View::Close2gl => submit_pass_timed(gpu, target, None, load, |pass| {
             set_viewport(pass);
             views.draw_close2gl(pass);
         }),
-        View::Outside => submit(gpu, target, Some(depth), load, |pass| {
+        View::Outside => submit_pass_timed(gpu, target, Some(depth), load, |pass| {
             set_viewport(pass);
             if let Some(outside) = outside {
                 outside.draw(pass);
             }
         }),
     }
-}
-
-/// One pass into `target` (with a cleared depth buffer when given), submitted and waited on, so
-/// that each view's frame time is its own.
-fn submit(
-    gpu: &Gpu,
-    target: &wgpu::TextureView,
-    depth: Option<&wgpu::TextureView>,
-    load: wgpu::LoadOp<wgpu::Color>,
-    record: impl FnOnce(&mut wgpu::RenderPass<'_>),
-) {
-    close2gl_gpu::submit_pass(gpu, target, depth, load, record);
-    // A failed wait means a lost device; the next surface acquire reports it.
-    let _ = gpu.device.poll(wgpu::PollType::Wait {
-        submission_index: None,
-        timeout: Some(Duration::from_secs(5)),
-    });
 }
