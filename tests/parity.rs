@@ -14,7 +14,7 @@ use close2gl::core::{
     App, CameraSpeeds, Clipping, FrontFace, Mesh, ModelStatus, Rasterizer, RenderMode,
     RenderSettings, Shading, TextureFilter, Viewport,
 };
-use close2gl_gpu::parity::{ColorComparison, Comparison, coverage, diff_image};
+use close2gl_core::parity::{ColorComparison, Comparison, coverage, diff_image};
 use close2gl_gpu::{OffscreenPlugin, Snapshot, camera_matrices, render_offscreen};
 use close2gl_testkit::{camera_mut as camera, gpu};
 

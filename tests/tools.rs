@@ -9,8 +9,8 @@ use std::path::{Path, PathBuf};
 use std::process::Command;
 use std::time::{Duration, Instant};
 
+use close2gl_core::parity::Comparison;
 use close2gl_gpu::Image;
-use close2gl_gpu::parity::Comparison;
 use common::{APP_TIMEOUT, Xvfb, finish, run_app, spawn_app, temp_dir};
 
 /// A recording of `frames` frames at 60 Hz: `d` held over frames 2..12 (the camera moves right),

@@ -11,7 +11,7 @@ use arbitrary::Arbitrary;
 use close2gl_core::glam::{Vec2, Vec3};
 use close2gl_core::limits::FOV_RANGE;
 use close2gl_core::{
-    Camera, Clipping, Close2glFrame, Fates, FrontFace, Image8, Lighting, Mesh, Overlay, Rasterizer,
+    Camera, Clipping, Close2glFrame, Fates, FrontFace, Image, Lighting, Mesh, Overlay, Rasterizer,
     RenderMode, RenderSettings, Shading, SoftwareFrame, Texture, TextureFilter, Topology, Viewport,
 };
 use close2gl_fuzz::{Num, vec3};
@@ -241,7 +241,7 @@ fn texture(t: &TextureIn) -> Texture {
         .collect();
     Texture {
         source: None,
-        image: Image8 {
+        image: Image {
             width,
             height,
             pixels,

@@ -5,9 +5,9 @@ use std::f32::consts::TAU;
 use std::path::{Path, PathBuf};
 
 use bevy_ecs::prelude::DetectChangesMut;
+use close2gl_core::parity::{ColorComparison, Comparison, diff_image};
 use close2gl_core::{App, Camera, CameraAction, CameraActions, Fates, OutsideView};
 use close2gl_gpu::outside::render_outside;
-use close2gl_gpu::parity::{ColorComparison, Comparison, diff_image};
 use close2gl_gpu::{Gpu, OffscreenPlugin, Snapshot, parse_backends, render_offscreen};
 use close2gl_pipeline::frustum::world_corners;
 use serde_json::{Value, json};

@@ -48,7 +48,7 @@ pub fn run(args: StatsArgs) -> Result<(), CliError> {
 
 /// The pixels of the software image that are not the background.
 pub fn covered(image: &SoftwareFrame, background: glam::Vec3) -> usize {
-    let background = close2gl_gpu::parity::to_rgb8(background);
+    let background = close2gl_core::parity::to_rgb8(background);
     image.pixels.iter().filter(|p| p[..3] != background).count()
 }
 

@@ -14,12 +14,14 @@ mod app;
 mod camera;
 mod fates;
 mod frame;
+pub mod image;
 mod input;
 mod layout;
 pub mod limits;
 mod mesh;
 mod model;
 mod outside;
+pub mod parity;
 mod reference_camera;
 pub mod repro;
 mod schedule;
@@ -39,6 +41,7 @@ pub use frame::{
     Close2glFrame, CutVertex, RasterGeometry, RasterVertex, SoftwareFrame, StageCounts, Topology,
     Viewport,
 };
+pub use image::Image;
 pub use input::{InputBindings, InputState, ProbeClick};
 pub use layout::Layout;
 pub use mesh::Mesh;
@@ -55,7 +58,7 @@ pub use settings::{
     TextureFilter,
 };
 pub use settings_plugin::SettingsPlugin;
-pub use texture::{Image8, Texture, checkerboard};
+pub use texture::{Texture, checkerboard};
 pub use tools::ToolRequests;
 pub use wake::Wake;
 

@@ -2,19 +2,12 @@
 
 use bevy_ecs::prelude::*;
 
-/// An RGBA8 image, rows from the top. The bytes are used as they are (no sRGB decoding), in both
-/// views, so that the colour a texel modulates is the colour the file stores.
-#[derive(Clone, Debug, PartialEq)]
-pub struct Image8 {
-    pub width: u32,
-    pub height: u32,
-    pub pixels: Vec<[u8; 4]>,
-}
+use crate::Image;
 
-impl Image8 {
+impl Image {
     /// The next mipmap level: half the size (rounded down, at least 1), each texel the mean of
     /// the 2×2 texels it covers (rounded to nearest; an odd last row or column is reused).
-    pub fn half(&self) -> Image8 {
+    pub fn half(&self) -> Image {
         let (width, height) = ((self.width / 2).max(1), (self.height / 2).max(1));
         let texel = |x: u32, y: u32| {
             self.pixels[(y.min(self.height - 1) * self.width + x.min(self.width - 1)) as usize]
@@ -34,7 +27,7 @@ impl Image8 {
                 }));
             }
         }
-        Image8 {
+        Image {
             width,
             height,
             pixels,
@@ -42,7 +35,7 @@ impl Image8 {
     }
 
     /// This image and every smaller level down to 1×1.
-    pub fn mip_chain(&self) -> Vec<Image8> {
+    pub fn mip_chain(&self) -> Vec<Image> {
         let mut levels = vec![self.clone()];
         while let Some(last) = levels.last().filter(|l| l.width > 1 || l.height > 1) {
             let next = last.half();
@@ -59,7 +52,7 @@ impl Image8 {
 pub struct Texture {
     /// The file it came from; `None` for the built-in checkerboard.
     pub source: Option<std::path::PathBuf>,
-    pub image: Image8,
+    pub image: Image,
     pub generation: u64,
 }
 
@@ -75,7 +68,7 @@ impl Default for Texture {
 
 /// The course's 8×8 checkerboard: 256×256 texels, squares of 32, white and dark grey, the
 /// bottom-left square white.
-pub fn checkerboard() -> Image8 {
+pub fn checkerboard() -> Image {
     let size = 256;
     let pixels = (0..size * size)
         .map(|i| {
@@ -87,7 +80,7 @@ pub fn checkerboard() -> Image8 {
             }
         })
         .collect();
-    Image8 {
+    Image {
         width: size,
         height: size,
         pixels,
@@ -117,7 +110,7 @@ mod tests {
 
     #[test]
     fn odd_sizes_reuse_their_last_row_and_column() {
-        let image = Image8 {
+        let image = Image {
             width: 3,
             height: 1,
             pixels: vec![[0; 4], [100; 4], [200; 4]],

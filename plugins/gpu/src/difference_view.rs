@@ -1,6 +1,6 @@
 //! The live difference (`Overlay::Difference`): this frame's two views drawn again into
 //! textures of the viewport's size, then compared pixel by pixel in the Close2GL view's place,
-//! exactly as `close2gl render` writes diff.png ([`crate::parity::diff_image`]). A student who
+//! exactly as `close2gl render` writes diff.png ([`close2gl_core::parity::diff_image`]). A student who
 //! switches to simple clipping sees at once, in magenta, what Close2GL no longer draws.
 
 use wgpu::util::DeviceExt;

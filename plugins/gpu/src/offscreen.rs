@@ -7,10 +7,10 @@ use close2gl_core::{
 };
 
 use crate::outside::{OutsidePlugin, OutsideRenderer};
-use crate::parity::to_rgb8;
 use crate::readback::Readback;
 use crate::texture::{READABLE_TARGET, texture_2d};
 use crate::{DEPTH_FORMAT, Gpu, GpuPlugin, Image, Views};
+use close2gl_core::parity::to_rgb8;
 
 /// The offscreen colour format: linear 8-bit, so an image's bytes are the colour values the
 /// shaders wrote (times 255) and the background can be recognised exactly.

@@ -2,7 +2,7 @@
 //! one sampler per filter, as one bind group per filter so that switching filters is only a
 //! different `set_bind_group`.
 
-use close2gl_core::{Image8, Texture, TextureFilter};
+use close2gl_core::{Image, Texture, TextureFilter};
 
 /// The bind groups of the reference pipelines and the texture behind them.
 pub(crate) struct ReferenceBindings {
@@ -80,7 +80,7 @@ impl ReferenceBindings {
         &self.bind_groups[index.expect("every filter is in ALL")]
     }
 
-    fn bind(&mut self, device: &wgpu::Device, queue: &wgpu::Queue, image: &Image8) {
+    fn bind(&mut self, device: &wgpu::Device, queue: &wgpu::Queue, image: &Image) {
         let view = upload(device, queue, image).create_view(&Default::default());
         self.bind_groups = self
             .samplers
@@ -182,9 +182,9 @@ fn sampler_descriptor(filter: TextureFilter) -> wgpu::SamplerDescriptor<'static>
 
 /// The image and its box-filtered mip chain (core's, so that Close2GL's rasterizer samples the
 /// same levels), as an RGBA8 texture read as stored, without sRGB decoding.
-fn upload(device: &wgpu::Device, queue: &wgpu::Queue, image: &Image8) -> wgpu::Texture {
+fn upload(device: &wgpu::Device, queue: &wgpu::Queue, image: &Image) -> wgpu::Texture {
     let chain = image.mip_chain();
-    let size = |level: &Image8| wgpu::Extent3d {
+    let size = |level: &Image| wgpu::Extent3d {
         width: level.width,
         height: level.height,
         depth_or_array_layers: 1,
@@ -221,8 +221,8 @@ fn upload(device: &wgpu::Device, queue: &wgpu::Queue, image: &Image8) -> wgpu::T
 
 /// Bound when there is no texture, since the layout needs one; the shader's flag keeps it out
 /// of the colour.
-fn placeholder() -> Image8 {
-    Image8 {
+fn placeholder() -> Image {
+    Image {
         width: 1,
         height: 1,
         pixels: vec![[255; 4]],

@@ -7,9 +7,9 @@ use close2gl_core::{
 };
 
 use crate::fate_view::record_fates_while_shown;
-use crate::parity::to_rgb8;
 use crate::reference::clear_color;
 use crate::{Gpu, Views};
+use close2gl_core::parity::to_rgb8;
 
 /// Adds the `Render` systems that upload what changed: the mesh again only when
 /// `ModelStatus.generation` changes, the texture only when `Texture.generation` does; the

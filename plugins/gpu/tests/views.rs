@@ -4,11 +4,11 @@
 use std::path::PathBuf;
 
 use close2gl_core::glam::{Vec2, Vec3};
+use close2gl_core::parity::{Comparison, ONLY_REFERENCE, coverage, diff_image, to_rgb8};
 use close2gl_core::{
-    App, Camera, Clipping, FrontFace, Image8, Mesh, ModelStatus, Overlay, RenderMode,
+    App, Camera, Clipping, FrontFace, Image, Mesh, ModelStatus, Overlay, RenderMode,
     RenderSettings, Shading, Texture, TextureFilter, Viewport,
 };
-use close2gl_gpu::parity::{Comparison, ONLY_REFERENCE, coverage, diff_image, to_rgb8};
 use close2gl_gpu::{Gpu, OffscreenPlugin, Snapshot, render_offscreen};
 use close2gl_pipeline::Close2glPlugin;
 use close2gl_testkit::{gpu, sphere};
@@ -394,7 +394,7 @@ fn a_checkerboard_quad_shows_both_squares_and_none_with_texturing_off() {
 fn the_texture_is_uploaded_again_only_when_its_generation_changes() {
     let mut app = head_on_quad();
     let first = render_offscreen(&mut app).expect("render");
-    let black = Image8 {
+    let black = Image {
         width: 2,
         height: 2,
         pixels: vec![[0, 0, 0, 255]; 4],

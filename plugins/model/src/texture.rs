@@ -3,7 +3,7 @@
 
 use std::path::Path;
 
-use close2gl_core::Image8;
+use close2gl_core::Image;
 use close2gl_core::limits::MAX_PIXELS;
 
 /// The most bytes a decoder may allocate: a 16384 × 16384 RGBA8 image, the largest texture a
@@ -11,7 +11,7 @@ use close2gl_core::limits::MAX_PIXELS;
 const MAX_DECODE_BYTES: u64 = 4 * (MAX_PIXELS as u64) * (MAX_PIXELS as u64) + (64 << 20);
 
 /// Reads a PNG or JPEG file as RGBA8. Every error is one line naming the file.
-pub fn load_texture(path: &Path) -> Result<Image8, String> {
+pub fn load_texture(path: &Path) -> Result<Image, String> {
     let label = path.display();
     let mut reader = image::ImageReader::open(path)
         .map_err(|e| format!("{label}: cannot read: {e}"))?
@@ -33,7 +33,7 @@ pub fn load_texture(path: &Path) -> Result<Image8, String> {
     })?;
     let rgba = image.to_rgba8();
     let (width, height) = rgba.dimensions();
-    Ok(Image8 {
+    Ok(Image {
         width,
         height,
         pixels: rgba.pixels().map(|p| p.0).collect(),

@@ -260,9 +260,9 @@ impl Filter for Trilinear {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use close2gl_core::Image8;
+    use close2gl_core::Image;
 
-    fn mips(image: Image8) -> Mips {
+    fn mips(image: Image) -> Mips {
         let mut mips = Mips::default();
         mips.update(&Texture {
             source: None,
@@ -311,7 +311,7 @@ mod tests {
     #[test]
     fn sizes_that_are_not_powers_of_two_wrap_and_hostile_coordinates_stay_inside() {
         // 3×1: red, green, blue; the levels below are 1×1.
-        let image = Image8 {
+        let image = Image {
             width: 3,
             height: 1,
             pixels: vec![[255, 0, 0, 255], [0, 255, 0, 255], [0, 0, 255, 255]],

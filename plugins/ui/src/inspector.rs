@@ -6,6 +6,7 @@
 
 use bevy_ecs::prelude::*;
 use close2gl_core::glam::Mat4;
+use close2gl_core::parity::{ONLY_CLOSE2GL, ONLY_REFERENCE};
 use close2gl_core::{
     Camera, ClipPlane, FateKind, Fates, Mesh, Overlay, RenderSettings, SelectedTriangle,
     TriangleFate, Viewport, camera_matrices,
@@ -109,12 +110,13 @@ fn legend(ui: &mut egui::Ui, world: &mut World) {
     });
 }
 
-/// The live difference's colours (`close2gl_gpu::parity`'s, without depending on the GPU crate).
+/// The live difference's colours, as `close2gl render` paints diff.png.
 fn difference_legend(ui: &mut egui::Ui) {
+    let rgb = |[r, g, b, _]: [u8; 4]| [r, g, b];
     egui::Grid::new("difference_legend").show(ui, |ui| {
         for (color, meaning) in [
-            ([255, 0, 255], "covered in the reference only"),
-            ([0, 255, 0], "covered in Close2GL only"),
+            (rgb(ONLY_REFERENCE), "covered in the reference only"),
+            (rgb(ONLY_CLOSE2GL), "covered in Close2GL only"),
             ([230, 230, 230], "the same in both (the reference, faded)"),
         ] {
             swatch(ui, color);

@@ -11,7 +11,7 @@ use close2gl_pipeline::frustum::{EDGES, world_corners};
 use close2gl_pipeline::morph::{Placed, StageFrame, StageMorph, has_image};
 use glam::Vec3;
 
-use crate::parity::to_rgb8;
+use close2gl_core::parity::to_rgb8;
 
 /// One vertex of outside.wgsl.
 #[repr(C)]

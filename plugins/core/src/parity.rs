@@ -1,5 +1,6 @@
 //! How far the two views agree: coverage (the pixels that differ from the background colour),
-//! the pixels whose coverage differs, and a diff image that shows them.
+//! the pixels whose coverage differs, and a diff image that shows them. Pure image arithmetic:
+//! the `render` command, the live difference's legend and the tests use it without a GPU.
 
 use glam::Vec3;
 

@@ -1,11 +1,13 @@
-//! An RGBA8 image, as read back from the GPU, and its PNG encoding.
+//! The one RGBA8 image type: a texture's file, a view read back from the GPU, the pictures the
+//! tools write; and its PNG encoding.
 
 use std::fs::File;
 use std::io::{BufReader, BufWriter};
 use std::path::Path;
 
-/// Rows from the top, pixels left to right, RGBA 8 bits per channel (not sRGB-encoded: the
-/// bytes are the colour values the shaders wrote, times 255).
+/// Rows from the top, pixels left to right, RGBA 8 bits per channel, used as they are (no sRGB
+/// decoding): a texture's texel modulates the colour its file stores, and a view's bytes are
+/// the colour values the shaders wrote, times 255.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Image {
     pub width: u32,
