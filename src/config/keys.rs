@@ -8,7 +8,7 @@ use close2gl_core::glam::Vec3;
 use close2gl_core::limits::{
     FOV_RANGE, MAX_PIXELS, MAX_SEGMENTS, MOVE_SPEED_RANGE, ROTATE_SPEED_RANGE,
 };
-use close2gl_core::{ModelSource, NamedEnum, OutsideView, PrimitiveKind, STAGE_NAMES};
+use close2gl_core::{Action, ModelSource, NamedEnum, OutsideView, PrimitiveKind, STAGE_NAMES};
 use toml::Value;
 
 use super::Config;
@@ -89,12 +89,13 @@ pub fn set(
         ("outside", "show") => c.outside.show = boolean(value)?,
         ("outside", "stage") => c.outside.stage = stage(value)?,
 
-        ("input", action) if c.input.0.contains_key(action) => {
+        ("input", action) => {
+            let action = Action::from_name(action).ok_or("unknown key")?;
             let key = string(value)?;
             if key.is_empty() {
                 return Err("expected a key name such as \"w\" or \"shift+p\"".into());
             }
-            c.input.0.insert(action.to_string(), key.to_lowercase());
+            c.input.0.insert(action, key.to_lowercase());
         }
         _ => return Err("unknown key".into()),
     }

@@ -1,4 +1,4 @@
-use std::collections::{BTreeMap, BTreeSet};
+use std::collections::{BTreeSet, HashMap};
 
 use bevy_ecs::prelude::*;
 use glam::Vec2;
@@ -39,51 +39,81 @@ impl InputState {
     }
 }
 
-/// Which key does what: action name → key name (e.g. `"forward" → "w"`, `"phong" → "shift+p"`).
+named_enum!(
+    /// Everything a key can be bound to, by the name the config's `[input]` table uses: a typo
+    /// is an unknown name there and a compile error in code.
+    Action {
+        Forward = "forward",
+        Back = "back",
+        Left = "left",
+        Right = "right",
+        Up = "up",
+        Down = "down",
+        RollLeft = "roll_left",
+        RollRight = "roll_right",
+        PitchUp = "pitch_up",
+        PitchDown = "pitch_down",
+        YawLeft = "yaw_left",
+        YawRight = "yaw_right",
+        Reset = "reset",
+        ToggleMode = "toggle_mode",
+        OriginalColor = "original_color",
+        Phong = "phong",
+        Gouraud = "gouraud",
+        Help = "help",
+        Screenshot = "screenshot",
+        CopyCommand = "copy_command",
+        FateView = "fate_view",
+        DifferenceView = "difference_view",
+        OutsideView = "outside_view"
+    }
+);
+
+/// Which key does what: action → key name (e.g. `Forward → "w"`, `Phong → "shift+p"`).
 #[derive(Resource, Clone, Debug, PartialEq, Eq)]
-pub struct InputBindings(pub BTreeMap<String, String>);
+pub struct InputBindings(pub HashMap<Action, String>);
 
 impl InputBindings {
-    /// Every bindable action with its default key.
-    pub const DEFAULTS: [(&'static str, &'static str); 23] = [
-        ("forward", "w"),
-        ("back", "s"),
-        ("left", "a"),
-        ("right", "d"),
-        ("up", "r"),
-        ("down", "f"),
-        ("roll_left", "z"),
-        ("roll_right", "x"),
-        ("pitch_up", "up"),
-        ("pitch_down", "down"),
-        ("yaw_left", "left"),
-        ("yaw_right", "right"),
-        ("reset", "space"),
-        ("toggle_mode", "tab"),
-        ("original_color", "shift+d"),
-        ("phong", "shift+p"),
-        ("gouraud", "shift+g"),
-        ("help", "f1 ?"),
-        ("screenshot", "f12"),
-        ("copy_command", "c"),
-        ("fate_view", "i"),
-        ("difference_view", "v"),
-        ("outside_view", "o"),
+    /// Every bindable action with its default key, in the cheat sheet's order.
+    pub const DEFAULTS: [(Action, &'static str); 23] = [
+        (Action::Forward, "w"),
+        (Action::Back, "s"),
+        (Action::Left, "a"),
+        (Action::Right, "d"),
+        (Action::Up, "r"),
+        (Action::Down, "f"),
+        (Action::RollLeft, "z"),
+        (Action::RollRight, "x"),
+        (Action::PitchUp, "up"),
+        (Action::PitchDown, "down"),
+        (Action::YawLeft, "left"),
+        (Action::YawRight, "right"),
+        (Action::Reset, "space"),
+        (Action::ToggleMode, "tab"),
+        (Action::OriginalColor, "shift+d"),
+        (Action::Phong, "shift+p"),
+        (Action::Gouraud, "shift+g"),
+        (Action::Help, "f1 ?"),
+        (Action::Screenshot, "f12"),
+        (Action::CopyCommand, "c"),
+        (Action::FateView, "i"),
+        (Action::DifferenceView, "v"),
+        (Action::OutsideView, "o"),
     ];
 
     /// The binding as written: one key, or several separated by spaces (`"f1 ?"`).
-    pub fn key(&self, action: &str) -> Option<&str> {
-        self.0.get(action).map(String::as_str)
+    pub fn key(&self, action: Action) -> Option<&str> {
+        self.0.get(&action).map(String::as_str)
     }
 
     /// Each key bound to `action`.
-    pub fn keys<'a>(&'a self, action: &str) -> impl Iterator<Item = &'a str> {
+    pub fn keys(&self, action: Action) -> impl Iterator<Item = &str> {
         self.key(action).into_iter().flat_map(str::split_whitespace)
     }
 
     /// Whether `pressed` (a name from `InputState::pressed`) is one of `action`'s keys. A symbol
     /// typed with Shift ("?" on most layouts) also matches its binding without "shift+".
-    pub fn matches(&self, action: &str, pressed: &str) -> bool {
+    pub fn matches(&self, action: Action, pressed: &str) -> bool {
         let symbol = |k: &str| k.chars().count() == 1 && !k.chars().all(char::is_alphanumeric);
         self.keys(action).any(|key| {
             key == pressed || (symbol(key) && pressed.strip_prefix("shift+") == Some(key))
@@ -96,7 +126,7 @@ impl Default for InputBindings {
         Self(
             Self::DEFAULTS
                 .iter()
-                .map(|(a, k)| (a.to_string(), k.to_string()))
+                .map(|(a, k)| (*a, k.to_string()))
                 .collect(),
         )
     }

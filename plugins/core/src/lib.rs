@@ -42,7 +42,7 @@ pub use frame::{
     Viewport,
 };
 pub use image::Image;
-pub use input::{InputBindings, InputState, ProbeClick};
+pub use input::{Action, InputBindings, InputState, ProbeClick};
 pub use layout::Layout;
 pub use mesh::Mesh;
 pub use model::{

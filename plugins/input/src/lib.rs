@@ -12,8 +12,8 @@ mod outside;
 
 use bevy_ecs::prelude::*;
 use close2gl_core::{
-    App, CameraAction, CameraActions, CameraSpeeds, FrameSet, InputBindings, InputState, Overlay,
-    Plugin, PreUpdate, RenderSettings, Shading, ToolRequests,
+    Action, App, CameraAction, CameraActions, CameraSpeeds, FrameSet, InputBindings, InputState,
+    Overlay, Plugin, PreUpdate, RenderSettings, Shading, ToolRequests,
 };
 
 pub struct InputPlugin;
@@ -50,16 +50,16 @@ pub fn map_input(
 ) {
     let dt = input.dt.clamp(0.0, MAX_DT);
     // Held keys move the camera only without Shift, which belongs to the shading keys.
-    let held = |action: &str| {
+    let held = |action: Action| {
         !input.held.contains("shift") && bindings.keys(action).any(|key| input.held.contains(key))
     };
-    let axis = |plus: &str, minus: &str| f32::from(held(plus)) - f32::from(held(minus));
+    let axis = |plus: Action, minus: Action| f32::from(held(plus)) - f32::from(held(minus));
 
     let step = speeds.move_speed * speeds.model_radius * dt;
     let (u, v, n) = (
-        axis("right", "left") * step,
-        axis("up", "down") * step,
-        axis("back", "forward") * step,
+        axis(Action::Right, Action::Left) * step,
+        axis(Action::Up, Action::Down) * step,
+        axis(Action::Back, Action::Forward) * step,
     );
     if (u, v, n) != (0.0, 0.0, 0.0) {
         actions.0.push(CameraAction::Translate { u, v, n });
@@ -67,9 +67,9 @@ pub fn map_input(
 
     let turn = (speeds.rotate_speed * KEY_ROTATE_RATE * dt).to_radians();
     let per_pixel = speeds.rotate_speed.to_radians();
-    let pitch = axis("pitch_up", "pitch_down") * turn - input.drag.y * per_pixel;
-    let yaw = axis("yaw_left", "yaw_right") * turn - input.drag.x * per_pixel;
-    let roll = axis("roll_left", "roll_right") * turn;
+    let pitch = axis(Action::PitchUp, Action::PitchDown) * turn - input.drag.y * per_pixel;
+    let yaw = axis(Action::YawLeft, Action::YawRight) * turn - input.drag.x * per_pixel;
+    let roll = axis(Action::RollLeft, Action::RollRight) * turn;
     if (pitch, yaw, roll) != (0.0, 0.0, 0.0) {
         actions.0.push(CameraAction::Rotate { pitch, yaw, roll });
     }
@@ -101,26 +101,26 @@ fn apply_press(
     settings: &mut ResMut<RenderSettings>,
     tools: &mut ResMut<ToolRequests>,
 ) {
-    let is = |action: &str| bindings.matches(action, pressed);
-    if is("reset") {
+    let is = |action: Action| bindings.matches(action, pressed);
+    if is(Action::Reset) {
         actions.push(CameraAction::Reset);
-    } else if is("toggle_mode") {
+    } else if is(Action::ToggleMode) {
         actions.push(CameraAction::ToggleMode);
-    } else if is("original_color") {
+    } else if is(Action::OriginalColor) {
         settings.shading = Shading::None;
-    } else if is("phong") {
+    } else if is(Action::Phong) {
         settings.shading = Shading::Phong;
-    } else if is("gouraud") {
+    } else if is(Action::Gouraud) {
         settings.shading = Shading::GouraudAds;
-    } else if is("help") {
+    } else if is(Action::Help) {
         tools.toggle_help = true;
-    } else if is("screenshot") {
+    } else if is(Action::Screenshot) {
         tools.screenshot = true;
-    } else if is("copy_command") {
+    } else if is(Action::CopyCommand) {
         tools.copy_command = true;
-    } else if is("fate_view") {
+    } else if is(Action::FateView) {
         settings.overlay = toggled(settings.overlay, Overlay::Fates);
-    } else if is("difference_view") {
+    } else if is(Action::DifferenceView) {
         settings.overlay = toggled(settings.overlay, Overlay::Difference);
     }
 }

@@ -1,5 +1,5 @@
 use bevy_ecs::prelude::*;
-use close2gl_core::{InputBindings, InputState, OutsideView};
+use close2gl_core::{Action, InputBindings, InputState, OutsideView};
 
 /// The `outside_view` key shows or hides the outside view (the settings plugin's `OutsideView`;
 /// an app without it has no outside view to show). `OutsideView` is written only when the key
@@ -12,7 +12,7 @@ pub fn toggle_outside(
     let presses = input
         .pressed
         .iter()
-        .filter(|pressed| bindings.matches("outside_view", pressed))
+        .filter(|pressed| bindings.matches(Action::OutsideView, pressed))
         .count();
     if let Some(mut outside) = outside.filter(|_| presses % 2 == 1) {
         outside.show = !outside.show;
@@ -44,7 +44,7 @@ mod tests {
         world
             .resource_mut::<InputBindings>()
             .0
-            .insert("outside_view".into(), "f5".into());
+            .insert(Action::OutsideView, "f5".into());
         assert!(!press(&mut world, "o"), "no longer bound");
         assert!(press(&mut world, "f5"));
     }

@@ -4,7 +4,7 @@
 
 use bevy_ecs::prelude::*;
 use close2gl_core::repro::Repro;
-use close2gl_core::{InputBindings, ToolRequests};
+use close2gl_core::{Action, InputBindings, ToolRequests};
 
 use crate::PanelState;
 
@@ -35,7 +35,7 @@ impl Notice {
 /// The buttons, each naming its key as bound.
 pub fn section(ui: &mut egui::Ui, world: &mut World) {
     let bindings = world.get_resource::<InputBindings>().cloned();
-    let key = |action: &str| {
+    let key = |action: Action| {
         let keys = bindings
             .as_ref()
             .map(|b| shown(b, action))
@@ -48,12 +48,12 @@ pub fn section(ui: &mut egui::Ui, world: &mut World) {
     let mut asked = ToolRequests::default();
     ui.horizontal_wrapped(|ui| {
         asked.copy_command = ui
-            .button(format!("Copy as command{}", key("copy_command")))
+            .button(format!("Copy as command{}", key(Action::CopyCommand)))
             .clicked();
         asked.screenshot = ui
-            .button(format!("Screenshot{}", key("screenshot")))
+            .button(format!("Screenshot{}", key(Action::Screenshot)))
             .clicked();
-        asked.toggle_help = ui.button(format!("Keys{}", key("help"))).clicked();
+        asked.toggle_help = ui.button(format!("Keys{}", key(Action::Help))).clicked();
     });
     if asked.any() {
         let mut tools = world.get_resource_or_insert_with(ToolRequests::default);
@@ -120,37 +120,40 @@ pub fn show_notice(ui: &egui::Ui, area: egui::Rect, world: &mut World) {
 }
 
 /// What each action does, in the cheat sheet's words.
-const DESCRIPTIONS: [(&str, &str); 23] = [
-    ("forward", "move forward (along -n)"),
-    ("back", "move back (along n)"),
-    ("left", "move left (along -u)"),
-    ("right", "move right (along u)"),
-    ("up", "move up (along v)"),
-    ("down", "move down (along -v)"),
-    ("roll_left", "roll left (about n)"),
-    ("roll_right", "roll right (about n)"),
-    ("pitch_up", "pitch up (about u)"),
-    ("pitch_down", "pitch down (about u)"),
-    ("yaw_left", "yaw left (about v)"),
-    ("yaw_right", "yaw right (about v)"),
-    ("reset", "reset the camera"),
-    ("toggle_mode", "free / look-at camera"),
-    ("original_color", "original colour (no shading)"),
-    ("phong", "Phong shading"),
-    ("gouraud", "Gouraud shading"),
-    ("help", "show or hide these keys"),
-    ("screenshot", "save both views as PNGs"),
-    ("copy_command", "copy the command for this view"),
-    ("fate_view", "inspector: the fate view on / off"),
+const DESCRIPTIONS: [(Action, &str); 23] = [
+    (Action::Forward, "move forward (along -n)"),
+    (Action::Back, "move back (along n)"),
+    (Action::Left, "move left (along -u)"),
+    (Action::Right, "move right (along u)"),
+    (Action::Up, "move up (along v)"),
+    (Action::Down, "move down (along -v)"),
+    (Action::RollLeft, "roll left (about n)"),
+    (Action::RollRight, "roll right (about n)"),
+    (Action::PitchUp, "pitch up (about u)"),
+    (Action::PitchDown, "pitch down (about u)"),
+    (Action::YawLeft, "yaw left (about v)"),
+    (Action::YawRight, "yaw right (about v)"),
+    (Action::Reset, "reset the camera"),
+    (Action::ToggleMode, "free / look-at camera"),
+    (Action::OriginalColor, "original colour (no shading)"),
+    (Action::Phong, "Phong shading"),
+    (Action::Gouraud, "Gouraud shading"),
+    (Action::Help, "show or hide these keys"),
+    (Action::Screenshot, "save both views as PNGs"),
+    (Action::CopyCommand, "copy the command for this view"),
+    (Action::FateView, "inspector: the fate view on / off"),
     (
-        "difference_view",
+        Action::DifferenceView,
         "inspector: where the two views differ, on / off",
     ),
-    ("outside_view", "the outside view on / off (a third column)"),
+    (
+        Action::OutsideView,
+        "the outside view on / off (a third column)",
+    ),
 ];
 
 /// `action`'s keys as the user reads them: "f1 or ?".
-fn shown(bindings: &InputBindings, action: &str) -> String {
+fn shown(bindings: &InputBindings, action: Action) -> String {
     bindings.keys(action).collect::<Vec<_>>().join(" or ")
 }
 
@@ -164,7 +167,7 @@ pub fn cheat_sheet(ctx: &egui::Context, world: &mut World) {
     };
     let rows: Vec<(String, &str)> = DESCRIPTIONS
         .iter()
-        .map(|(action, what)| (shown(bindings, action), *what))
+        .map(|(action, what)| (shown(bindings, *action), *what))
         .filter(|(keys, _)| !keys.is_empty())
         .collect();
     let mut open = true;
@@ -202,8 +205,9 @@ mod tests {
 
     #[test]
     fn every_bindable_action_is_described() {
-        let described: Vec<&str> = DESCRIPTIONS.iter().map(|(a, _)| *a).collect();
-        let bindable: Vec<&str> = InputBindings::DEFAULTS.iter().map(|(a, _)| *a).collect();
+        let described: Vec<Action> = DESCRIPTIONS.iter().map(|(a, _)| *a).collect();
+        let bindable: Vec<Action> = InputBindings::DEFAULTS.iter().map(|(a, _)| *a).collect();
         assert_eq!(described, bindable);
+        assert_eq!(bindable, Action::ALL, "every action has a default key");
     }
 }

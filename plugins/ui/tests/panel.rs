@@ -4,9 +4,9 @@
 //! it on into both GPU views.
 
 use close2gl_core::{
-    CameraAction, CameraActions, Close2glFrame, FateKind, Fates, InputBindings, ModelRequest,
-    ModelSource, ModelStatus, Overlay, PrimitiveKind, RenderMode, RenderSettings, SelectedTriangle,
-    TextureFilter, TextureRequest, ToolRequests, Topology,
+    Action, CameraAction, CameraActions, Close2glFrame, FateKind, Fates, InputBindings,
+    ModelRequest, ModelSource, ModelStatus, Overlay, PrimitiveKind, RenderMode, RenderSettings,
+    SelectedTriangle, TextureFilter, TextureRequest, ToolRequests, Topology,
 };
 use close2gl_testkit::panel::Harness;
 use close2gl_ui::{Notice, PanelState};
@@ -149,7 +149,7 @@ fn the_texture_section_switches_texturing_and_the_filter_and_asks_for_an_image()
 fn the_key_cheat_sheet_lists_every_key_as_configured() {
     let mut h = Harness::new();
     let mut bindings = InputBindings::default();
-    bindings.0.insert("forward".into(), "i".into());
+    bindings.0.insert(Action::Forward, "i".into());
     h.world().insert_resource(bindings);
     h.frame(Vec::new());
     assert!(!h.shows("move forward (along -n)"), "hidden until asked");

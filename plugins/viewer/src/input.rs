@@ -199,7 +199,7 @@ mod tests {
                 "f12" => Key::Named(NamedKey::F12),
                 letter => Key::Character(letter.into()),
             };
-            assert_eq!(key_name(&winit_key).as_deref(), Some(bare), "{action}");
+            assert_eq!(key_name(&winit_key).as_deref(), Some(bare), "{action:?}");
         }
     }
 
