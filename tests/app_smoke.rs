@@ -11,7 +11,8 @@ use common::{Xvfb, assert_both_views_show_the_model, run_app, temp_dir};
 
 /// Runs the app on `xvfb` with `args` until it exits; returns its screenshot.
 fn screenshot(xvfb: &Xvfb, name: &str, args: &[&str]) -> Image {
-    let file = temp_dir("smoke").join(format!("{name}.png"));
+    let dir = temp_dir("smoke");
+    let file = dir.join(format!("{name}.png"));
     let file_arg = file.display().to_string();
     let mut all = args.to_vec();
     // Ten frames: the two-window layout settles its windows' sizes over the first few.

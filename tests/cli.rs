@@ -1,9 +1,9 @@
 //! The command line as a user meets it: `close2gl stats` prints the pipeline's counts as JSON,
 //! and bad input stops with a one-line error and exit code 2.
 
-use std::path::PathBuf;
 use std::process::{Command, Output};
 
+use close2gl_testkit::TempDir;
 use serde_json::Value;
 
 fn close2gl(args: &[&str]) -> Output {
@@ -22,12 +22,6 @@ fn stats(args: &[&str]) -> Value {
         String::from_utf8_lossy(&out.stderr)
     );
     serde_json::from_slice(&out.stdout).expect("one JSON object")
-}
-
-fn temp(name: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("close2gl-cli-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).expect("temp dir");
-    dir.join(name)
 }
 
 #[test]
@@ -109,7 +103,8 @@ fn points_and_wireframe_count_their_primitives() {
 
 #[test]
 fn dump_writes_the_2d_buffer() {
-    let json = temp("buffer.json");
+    let dir = TempDir::new("cli");
+    let json = dir.join("buffer.json");
     stats(&[
         "box",
         "--set",
@@ -121,7 +116,7 @@ fn dump_writes_the_2d_buffer() {
         serde_json::from_str(&std::fs::read_to_string(&json).expect("written")).expect("JSON");
     assert_eq!(dumped["topology"], "triangles");
     assert_eq!(dumped["vertices"].as_array().map(Vec::len), Some(18));
-    let csv = temp("buffer.csv");
+    let csv = dir.join("buffer.csv");
     stats(&[
         "box",
         "--set",
@@ -169,7 +164,8 @@ fn stats_with_the_software_rasterizer_reports_its_pixels() {
 
 #[test]
 fn bad_input_is_one_line_and_exit_code_2() {
-    let bad_model = temp("bad.in");
+    let dir = TempDir::new("cli");
+    let bad_model = dir.join("bad.in");
     std::fs::write(&bad_model, "Object name = X\n# triangles = 1\nMaterial count = 1\nambient color 0 0 0\ndiffuse color 1 1 1\nspecular color 0 0 0\nmaterial shine 0\n-- cols\nv0 1.0 abc 0 0 0 1 0\n").expect("write");
     for (args, expected) in [
         (vec!["stats", "--set", "camera.hfov=200"], "camera.hfov"),
@@ -214,7 +210,8 @@ fn bad_input_is_one_line_and_exit_code_2() {
 
 #[test]
 fn render_view_outside_writes_the_picture_and_the_volumes_corners() {
-    let out_dir = temp("outside");
+    let dir = TempDir::new("cli");
+    let out_dir = dir.join("outside");
     let dir = out_dir.to_str().expect("utf-8");
     let near = 2.0f64;
     let out = close2gl(&[

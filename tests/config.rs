@@ -102,8 +102,7 @@ fn bad_values_name_the_key_and_the_allowed_range() {
 
 #[test]
 fn a_bad_file_names_the_file_and_line() {
-    let dir = std::env::temp_dir().join(format!("close2gl-config-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).expect("temp dir");
+    let dir = close2gl_testkit::TempDir::new("config");
     let file = dir.join("bad.toml");
     for (text, expected) in [
         ("[camera]\nhfov = 60\nvfov = = 3\n", "bad.toml:3:"),

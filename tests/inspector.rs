@@ -74,7 +74,8 @@ const FOV: [&str; 4] = ["--set", "camera.hfov=90", "--set", "camera.vfov=90"];
 fn scene_file() -> PathBuf {
     static FILE: OnceLock<PathBuf> = OnceLock::new();
     FILE.get_or_init(|| {
-        let dir = std::env::temp_dir().join(format!("close2gl-inspector-{}", std::process::id()));
+        // In the build's own scratch folder: the file is shared by the tests for the process.
+        let dir = std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join("inspector");
         std::fs::create_dir_all(&dir).expect("temp dir");
         let path = dir.join("fates.obj");
         let faces: String = (0..14)

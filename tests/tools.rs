@@ -67,7 +67,7 @@ fn run_command_line(command: &str) {
     let output = Command::new("sh")
         .args(["-c", command])
         .env("PATH", path)
-        .current_dir(temp_dir("elsewhere"))
+        .current_dir(&*temp_dir("elsewhere"))
         .output()
         .expect("sh runs");
     assert!(

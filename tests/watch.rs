@@ -7,8 +7,9 @@ use std::time::{Duration, Instant};
 
 use close2gl::config;
 use close2gl::core::glam::Vec3;
-use close2gl::core::{App, Camera, Mesh, ModelStatus, RenderMode, RenderSettings, Viewport};
+use close2gl::core::{App, Camera, ModelStatus, RenderMode, RenderSettings, Viewport};
 use close2gl::watch::WatchPlugin;
+use close2gl_testkit::{TempDir, camera};
 
 /// How long a change may take to be seen (the watch polls four times a second and waits for
 /// one quiet poll).
@@ -17,21 +18,19 @@ const NOTICED_WITHIN: Duration = Duration::from_secs(10);
 const TETRA: &str = include_str!("../plugins/model/tests/data/tetra.in");
 
 struct Files {
-    dir: PathBuf,
+    /// Kept for its lifetime: the directory goes when the files do.
+    _dir: TempDir,
     config: PathBuf,
     model: PathBuf,
 }
 
 impl Files {
     fn new(name: &str) -> Files {
-        let dir =
-            std::env::temp_dir().join(format!("close2gl-watch-{name}-{}", std::process::id()));
-        let _ = std::fs::remove_dir_all(&dir);
-        std::fs::create_dir_all(&dir).expect("a temporary directory");
+        let dir = TempDir::new(&format!("watch_{name}"));
         let files = Files {
             config: dir.join("config.toml"),
             model: dir.join("tetra.in"),
-            dir,
+            _dir: dir,
         };
         std::fs::write(&files.model, TETRA).expect("the model");
         files.write_config("solid");
@@ -62,12 +61,6 @@ impl Files {
     }
 }
 
-impl Drop for Files {
-    fn drop(&mut self) {
-        let _ = std::fs::remove_dir_all(&self.dir);
-    }
-}
-
 /// Runs frames until `done` holds; panics naming `what` when it does not in time.
 fn frames_until(app: &mut App, what: &str, done: impl Fn(&App) -> bool) {
     let deadline = Instant::now() + NOTICED_WITHIN;
@@ -78,20 +71,8 @@ fn frames_until(app: &mut App, what: &str, done: impl Fn(&App) -> bool) {
     }
 }
 
-fn camera(app: &mut App) -> Camera {
-    *app.world_mut()
-        .query::<&Camera>()
-        .single(app.world())
-        .expect("one camera")
-}
-
 fn mesh_positions(app: &mut App) -> Vec<Vec3> {
-    app.world_mut()
-        .query::<&Mesh>()
-        .single(app.world())
-        .expect("one mesh")
-        .positions
-        .clone()
+    close2gl_testkit::mesh(app).positions.clone()
 }
 
 fn error(app: &App) -> Option<String> {

@@ -7,13 +7,12 @@
 #![allow(dead_code)]
 
 use std::io::{BufRead, BufReader};
-use std::path::PathBuf;
 use std::process::{Child, Command, Output, Stdio};
-use std::sync::atomic::{AtomicU32, Ordering};
 use std::time::{Duration, Instant};
 
 use close2gl::config;
 use close2gl_gpu::Image;
+pub use close2gl_testkit::TempDir;
 
 /// How long the app may take to open, draw and save (a debug build on a software GPU).
 pub const APP_TIMEOUT: Duration = Duration::from_secs(120);
@@ -123,14 +122,9 @@ pub fn finish(mut child: Child, what: &str) -> Output {
     output
 }
 
-/// A new temporary directory for one test's files (tests run in parallel in one process).
-pub fn temp_dir(name: &str) -> PathBuf {
-    static COUNT: AtomicU32 = AtomicU32::new(0);
-    let n = COUNT.fetch_add(1, Ordering::Relaxed);
-    let dir = std::env::temp_dir().join(format!("close2gl-{name}-{}-{n}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).expect("a temporary directory");
-    dir
+/// A new temporary directory for one test's files, removed when dropped (kept if it fails).
+pub fn temp_dir(name: &str) -> TempDir {
+    TempDir::new(name)
 }
 
 /// The model's colour as the window stores it (a linear 8-bit surface, flat shading).
