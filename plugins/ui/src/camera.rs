@@ -24,7 +24,7 @@ pub fn section(ui: &mut egui::Ui, world: &mut World) {
     }
 
     if let Some(mut speeds) = world.get_resource::<CameraSpeeds>().copied() {
-        ui.horizontal_wrapped(|ui| {
+        ui.horizontal(|ui| {
             ui.label("Move");
             ui.add(
                 egui::DragValue::new(&mut speeds.move_speed)
@@ -43,7 +43,7 @@ pub fn section(ui: &mut egui::Ui, world: &mut World) {
         crate::write_if_changed(world, &speeds);
     }
 
-    ui.horizontal_wrapped(|ui| {
+    ui.horizontal(|ui| {
         if ui.button("Reset").clicked()
             && let Some(mut actions) = world.get_resource_mut::<CameraActions>()
         {
@@ -57,7 +57,7 @@ pub fn section(ui: &mut egui::Ui, world: &mut World) {
 }
 
 fn lens(ui: &mut egui::Ui, camera: &mut Camera, lock: &mut bool) {
-    ui.horizontal_wrapped(|ui| {
+    ui.horizontal(|ui| {
         ui.label("Mode");
         for &mode in CameraMode::ALL {
             ui.selectable_value(&mut camera.mode, mode, mode.name());
@@ -76,7 +76,7 @@ fn lens(ui: &mut egui::Ui, camera: &mut Camera, lock: &mut bool) {
     }
     // Speeds proportional to the value: the planes range from 1e-4 to 1e6 between models.
     let (near, far) = (camera.near, camera.far);
-    ui.horizontal_wrapped(|ui| {
+    ui.horizontal(|ui| {
         ui.label("Near");
         ui.add(
             egui::DragValue::new(&mut camera.near)

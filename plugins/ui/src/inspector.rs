@@ -57,7 +57,7 @@ fn overlay_switch(ui: &mut egui::Ui, world: &mut World) {
     let Some(mut settings) = world.get_resource::<RenderSettings>().copied() else {
         return;
     };
-    ui.horizontal_wrapped(|ui| {
+    ui.horizontal(|ui| {
         ui.label("Overlay");
         for &overlay in Overlay::ALL {
             ui.selectable_value(&mut settings.overlay, overlay, overlay.name());
@@ -356,7 +356,7 @@ fn probe_answer(ui: &mut egui::Ui, world: &mut World) {
     let close2gl = probe.triangle.map(|t| (t, probe.depth));
     ui.label(format!("Close2GL: {}", winner(close2gl)));
     if let Some([r, g, b, _]) = probe.color {
-        ui.horizontal_wrapped(|ui| {
+        ui.horizontal(|ui| {
             ui.label("Close2GL colour");
             swatch(ui, [r, g, b]);
         });

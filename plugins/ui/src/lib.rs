@@ -69,18 +69,19 @@ pub struct PanelState {
 pub fn show(ui: &mut egui::Ui, world: &mut World) -> egui::Rect {
     world.init_resource::<PanelState>();
     world.init_resource::<ViewStats>();
-    let panel = egui::Panel::right("close2gl_panel")
+    egui::Panel::right("close2gl_panel")
         .resizable(false)
         .exact_size(PANEL_WIDTH)
         .show(ui, |ui| {
             egui::ScrollArea::vertical()
                 .auto_shrink([false, false])
                 .show(ui, |ui| sections(ui, world));
-        })
-        .response
-        .rect;
+        });
+    // The views' area from the panel's fixed width, not from the rectangle egui reports for it,
+    // which grows by a few points when its scroll bar appears: the views, their viewport and a
+    // replay's pixels must not depend on whether the panel scrolls.
     let mut views = ui.max_rect();
-    views.max.x = views.max.x.min(panel.min.x);
+    views.max.x = (views.max.x - PANEL_WIDTH).max(views.min.x);
     // After the panel, so that its buttons take effect in the frame they are clicked in.
     tools::carry_out(ui.ctx(), world);
     tools::show_notice(ui, views, world);

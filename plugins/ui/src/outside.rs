@@ -16,7 +16,7 @@ pub fn section(ui: &mut egui::Ui, world: &mut World) {
                 .custom_formatter(|stage, _| stage_label(stage as f32)),
         )
         .on_hover_text("0 world, 1 eye (M applied), 2 NDC (P applied and divided)");
-        ui.horizontal_wrapped(|ui| {
+        ui.horizontal(|ui| {
             for (name, stage) in STAGE_NAMES {
                 if ui.button(name).clicked() {
                     outside.stage = stage;

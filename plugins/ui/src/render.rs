@@ -8,11 +8,11 @@ pub fn section(ui: &mut egui::Ui, world: &mut World) {
     let Some(mut settings) = world.get_resource::<RenderSettings>().copied() else {
         return;
     };
-    ui.horizontal_wrapped(|ui| {
+    ui.horizontal(|ui| {
         ui.label("Mode");
         choice(ui, &mut settings.mode, RenderMode::ALL, RenderMode::name);
     });
-    ui.horizontal_wrapped(|ui| {
+    ui.horizontal(|ui| {
         ui.label("Front face");
         choice(
             ui,
@@ -22,11 +22,11 @@ pub fn section(ui: &mut egui::Ui, world: &mut World) {
         );
     });
     ui.checkbox(&mut settings.backface_culling, "Backface culling");
-    ui.horizontal_wrapped(|ui| {
+    ui.horizontal(|ui| {
         ui.label("Clipping");
         choice(ui, &mut settings.clipping, Clipping::ALL, Clipping::name);
     });
-    ui.horizontal_wrapped(|ui| {
+    ui.horizontal(|ui| {
         ui.label("Shading");
         egui::ComboBox::from_id_salt("shading")
             .selected_text(settings.shading.name())
@@ -41,8 +41,8 @@ pub fn section(ui: &mut egui::Ui, world: &mut World) {
                  rasterizer, Close2GL draws flat colour.",
             );
     });
-    ui.horizontal_wrapped(|ui| {
-        ui.label("Close2GL raster");
+    ui.horizontal(|ui| {
+        ui.label("Close2GL");
         let name = |r: Rasterizer| match r {
             Rasterizer::Gpu => "GPU (assignment)",
             Rasterizer::Software => "software",
@@ -55,7 +55,7 @@ pub fn section(ui: &mut egui::Ui, world: &mut World) {
          assignment's rule; render.close2gl_raster = \"gpu\"). software: Close2GL's own \
          rasterizer, z-buffer and shading.",
     );
-    ui.horizontal_wrapped(|ui| {
+    ui.horizontal(|ui| {
         ui.label("Colour");
         color(ui, &mut settings.color);
         ui.label("Background");

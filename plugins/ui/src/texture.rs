@@ -10,8 +10,9 @@ pub fn section(ui: &mut egui::Ui, world: &mut World) {
     let Some(mut settings) = world.get_resource::<RenderSettings>().copied() else {
         return;
     };
-    ui.horizontal_wrapped(|ui| {
-        ui.checkbox(&mut settings.texture, "Texture");
+    ui.checkbox(&mut settings.texture, "Texture");
+    ui.horizontal(|ui| {
+        ui.label("Filter");
         for &filter in TextureFilter::ALL {
             ui.selectable_value(&mut settings.texture_filter, filter, filter.name());
         }
@@ -20,10 +21,10 @@ pub fn section(ui: &mut egui::Ui, world: &mut World) {
 
     let mut request = None;
     let mut state = world.resource_mut::<PanelState>();
-    ui.horizontal_wrapped(|ui| {
+    ui.horizontal(|ui| {
         let field = egui::TextEdit::singleline(&mut state.texture_path)
             .hint_text("PNG or JPEG image, or drop one here")
-            .desired_width(ui.available_width() - 90.0);
+            .desired_width(ui.available_width() - 100.0);
         let entered = ui.add(field).lost_focus() && ui.input(|i| i.key_pressed(egui::Key::Enter));
         let path = state.texture_path.trim();
         if (ui.button("Load image").clicked() || entered) && !path.is_empty() {
