@@ -14,16 +14,21 @@
 //! GPU, window or UI.
 
 mod bin;
+mod edge;
 mod fates;
 mod lanes;
+mod lighting;
 mod primitives;
 pub mod probe;
 mod rasterizer;
+mod row;
 mod setup;
-pub mod shading;
+mod shading;
 mod target;
 mod texture;
 mod tile;
+mod varyings;
+mod vertex;
 
 use std::time::Instant;
 

@@ -17,9 +17,11 @@ use close2gl_pipeline::matrices::{ClipTransform, viewport as viewport_matrix};
 use close2gl_pipeline::stage::to_window_depth;
 use glam::Mat4;
 
-use crate::primitives::{SetupParams, Vertex, triangle};
+use crate::primitives::{SetupParams, triangle};
 use crate::rasterizer::SoftwareRasterizer;
-use crate::setup::{Coverage, Triangle, Used, VARYINGS};
+use crate::setup::{Coverage, Triangle};
+use crate::varyings::{Used, VARYINGS};
+use crate::vertex::Vertex;
 
 /// Why a triangle whose coverage reached the pixel centre did or did not draw it.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -211,7 +213,7 @@ fn cover(
     let mut lost = None;
     for i in 1..polygon.len.saturating_sub(1) {
         let t: Triangle = triangle([vertex(0), vertex(i), vertex(i + 1)], params);
-        let depth = t.at(&t.depth, x as f32 + 0.5, y as f32 + 0.5);
+        let depth = t.planes.depth_at(x as f32 + 0.5, y as f32 + 0.5);
         match t.coverage(x as i32, y as i32) {
             Coverage::Inside => return Some((Coverage::Inside, depth)),
             Coverage::LostToFillRule => lost = Some((Coverage::LostToFillRule, depth)),
