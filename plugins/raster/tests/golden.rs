@@ -1,18 +1,19 @@
 //! The rasterizer's output pinned to hashes: scenes covering every path (each shading, each
 //! texture filter, wireframe, points, both clippings, culling, many tiles, fates recorded), drawn
 //! on one thread and on two, each image and depth buffer (and, while fates are recorded, the
-//! owner of each pixel and the fate counts) hashed with FNV-1a and compared with the hash the rasterizer gave
-//! when the constants were taken. A restructuring that changes no pixel keeps them all; any
+//! owner of each pixel and the fate counts) hashed with FNV-1a and compared with the hash the
+//! rasterizer gave when the constants were taken. A restructuring that changes no pixel keeps them all; any
 //! change of output, however small, fails here and names the scene.
 
 use TextureFilter::Nearest;
 use close2gl_core::glam::{Vec2, Vec3};
 use close2gl_core::{
-    Camera, Clipping, Close2glFrame, Fates, Lighting, Mesh, Rasterizer, RenderMode, RenderSettings,
-    Shading, SoftwareFrame, Texture, TextureFilter, Viewport,
+    Clipping, Mesh, Rasterizer, RenderMode, RenderSettings, Shading, SoftwareFrame, Texture,
+    TextureFilter, Viewport,
 };
-use close2gl_pipeline::FastPipeline;
-use close2gl_raster::SoftwareRasterizer;
+
+mod common;
+use common::{Drawing, Scene};
 
 /// 64-bit FNV-1a.
 struct Fnv(u64);
@@ -98,15 +99,15 @@ fn grid_triangles(mesh: &mut Mesh, first: u32, rows: u32, columns: u32) {
     }
 }
 
-/// One scene: its name, settings and whether fates are recorded.
-struct Scene {
+/// One pinned scene: its name, settings, whether fates are recorded, and its hash.
+struct Pinned {
     name: &'static str,
     settings: RenderSettings,
     record: bool,
     hash: u64,
 }
 
-fn scene(name: &'static str, hash: u64, change: impl FnOnce(&mut RenderSettings)) -> Scene {
+fn scene(name: &'static str, hash: u64, change: impl FnOnce(&mut RenderSettings)) -> Pinned {
     let mut settings = RenderSettings {
         backface_culling: false,
         close2gl_raster: Rasterizer::Software,
@@ -114,7 +115,7 @@ fn scene(name: &'static str, hash: u64, change: impl FnOnce(&mut RenderSettings)
         ..RenderSettings::default()
     };
     change(&mut settings);
-    Scene {
+    Pinned {
         name,
         settings,
         record: false,
@@ -122,7 +123,7 @@ fn scene(name: &'static str, hash: u64, change: impl FnOnce(&mut RenderSettings)
     }
 }
 
-fn scenes() -> Vec<Scene> {
+fn pinned() -> Vec<Pinned> {
     use Shading::*;
     use TextureFilter::{Bilinear, Trilinear};
     let textured = |filter, shading| {
@@ -162,7 +163,7 @@ fn scenes() -> Vec<Scene> {
         scene("simple_clipping_culled", 0x54aa7bbc3bf70f79, |s| {
             (s.clipping, s.backface_culling, s.shading) = (Clipping::Simple, true, Phong)
         }),
-        Scene {
+        Pinned {
             record: true,
             ..scene(
                 "recorded_trilinear_phong",
@@ -170,7 +171,7 @@ fn scenes() -> Vec<Scene> {
                 textured(Trilinear, Phong),
             )
         },
-        Scene {
+        Pinned {
             record: true,
             ..scene("recorded_wireframe", 0x59e4590afb0ba759, |s| {
                 s.mode = RenderMode::Wireframe
@@ -179,60 +180,51 @@ fn scenes() -> Vec<Scene> {
     ]
 }
 
-/// Draws every scene with one rasterizer (its buffers reused from scene to scene, as the app
-/// reuses them from frame to frame) and hashes what each drew.
-fn draw_scenes(scenes: &[Scene]) -> Vec<u64> {
+/// The scenes' fixed part: the mesh, the camera, the lighting and the checkerboard, in a
+/// viewport that is not a whole number of 64-pixel tiles either way (the edge tiles are
+/// partial).
+fn with_scene(draw: impl FnOnce(&Scene<'_>)) {
     let mesh = scene_mesh();
-    let camera = Camera {
-        near: 0.3,
-        far: 20.0,
-        ..Camera::default()
-    };
-    // Not a whole number of 64-pixel tiles either way: the edge tiles are partial.
+    let texture = Texture::default();
     let viewport = Viewport {
         width: 301,
         height: 203,
     };
-    let lighting = Lighting::default();
-    let texture = Texture::default();
-    let mut pipeline = FastPipeline::default();
-    let mut rasterizer = SoftwareRasterizer::default();
-    let mut frame = Close2glFrame::default();
-    let mut image = SoftwareFrame::default();
-    let mut fates = Fates::default();
+    draw(&Scene::new(&mesh, viewport, Some(&texture)));
+}
+
+/// Draws every pinned scene with one rasterizer (its buffers reused from scene to scene, as
+/// the app reuses them from frame to frame) and hashes what each drew.
+fn draw_pinned(scene: &Scene<'_>, pinned: &[Pinned]) -> Vec<u64> {
+    let mut drawing = Drawing::default();
     let mut hashes = Vec::new();
-    for scene in scenes {
-        fates.record = scene.record;
-        let settings = &scene.settings;
-        pipeline.run(&mesh, &camera, settings, viewport, &mut frame, &mut fates);
-        assert!(frame.counts.drawn > 0, "{}: nothing drawn", scene.name);
-        rasterizer.draw(
-            &frame,
-            &camera,
-            settings,
-            &lighting,
-            Some(&texture),
-            &mut image,
-            &mut fates,
-        );
-        let mut hash = Fnv::new();
-        hash.bytes(&image.width.to_le_bytes());
-        hash.bytes(&image.height.to_le_bytes());
-        hash.bytes(image.pixels.as_flattened());
-        for (x, y) in (0..viewport.height).flat_map(|y| (0..viewport.width).map(move |x| (x, y))) {
-            let depth = rasterizer.depth(x, y).unwrap_or(f32::NAN);
-            hash.bytes(&depth.to_bits().to_le_bytes());
-            if scene.record {
-                let owner = rasterizer.owner(x, y).unwrap_or(u32::MAX);
-                hash.bytes(&owner.to_le_bytes());
-            }
-        }
-        if scene.record {
-            hash.bytes(format!("{:?}", fates.counts).as_bytes());
-        }
-        hashes.push(hash.0);
+    for p in pinned {
+        drawing.draw(scene, &p.settings, p.record);
+        assert!(drawing.frame.counts.drawn > 0, "{}: nothing drawn", p.name);
+        hashes.push(hash(&drawing, scene.viewport, p.record));
     }
     hashes
+}
+
+/// The image and the depth buffer; while fates are recorded, each pixel's owner and the counts.
+fn hash(drawing: &Drawing, viewport: Viewport, record: bool) -> u64 {
+    let (image, rasterizer) = (&drawing.image, &drawing.rasterizer);
+    let mut hash = Fnv::new();
+    hash.bytes(&image.width.to_le_bytes());
+    hash.bytes(&image.height.to_le_bytes());
+    hash.bytes(image.pixels.as_flattened());
+    for (x, y) in (0..viewport.height).flat_map(|y| (0..viewport.width).map(move |x| (x, y))) {
+        let depth = rasterizer.depth(x, y).unwrap_or(f32::NAN);
+        hash.bytes(&depth.to_bits().to_le_bytes());
+        if record {
+            let owner = rasterizer.owner(x, y).unwrap_or(u32::MAX);
+            hash.bytes(&owner.to_le_bytes());
+        }
+    }
+    if record {
+        hash.bytes(format!("{:?}", drawing.fates.counts).as_bytes());
+    }
+    hash.0
 }
 
 /// Whether the images show something: the background alone would hash the same every time.
@@ -245,20 +237,19 @@ fn distinct_colours(image: &SoftwareFrame) -> usize {
 
 #[test]
 fn every_path_draws_the_pixels_it_drew_when_the_hashes_were_taken() {
-    let scenes = scenes();
+    let pinned = pinned();
     for threads in [1, 2] {
-        let hashes = rayon::ThreadPoolBuilder::new()
+        let pool = rayon::ThreadPoolBuilder::new()
             .num_threads(threads)
             .build()
-            .expect("a thread pool")
-            .install(|| draw_scenes(&scenes));
-        let wrong: Vec<String> = scenes
+            .expect("a thread pool");
+        let mut hashes = Vec::new();
+        with_scene(|scene| hashes = pool.install(|| draw_pinned(scene, &pinned)));
+        let wrong: Vec<String> = pinned
             .iter()
             .zip(&hashes)
-            .filter(|(scene, hash)| scene.hash != **hash)
-            .map(|(scene, hash)| {
-                format!("{}: {hash:#018x} (pinned {:#018x})", scene.name, scene.hash)
-            })
+            .filter(|(p, hash)| p.hash != **hash)
+            .map(|(p, hash)| format!("{}: {hash:#018x} (pinned {:#018x})", p.name, p.hash))
             .collect();
         assert!(
             wrong.is_empty(),
@@ -272,42 +263,17 @@ fn every_path_draws_the_pixels_it_drew_when_the_hashes_were_taken() {
 /// the flat ones, many in the shaded and textured ones.
 #[test]
 fn the_pinned_scenes_are_not_blank() {
-    let mesh = scene_mesh();
-    let camera = Camera {
-        near: 0.3,
-        far: 20.0,
-        ..Camera::default()
-    };
-    let viewport = Viewport {
-        width: 301,
-        height: 203,
-    };
-    for scene in scenes() {
-        let mut frame = Close2glFrame::default();
-        let mut fates = Fates::default();
-        FastPipeline::default().run(
-            &mesh,
-            &camera,
-            &scene.settings,
-            viewport,
-            &mut frame,
-            &mut fates,
-        );
-        let mut image = SoftwareFrame::default();
-        SoftwareRasterizer::default().draw(
-            &frame,
-            &camera,
-            &scene.settings,
-            &Lighting::default(),
-            Some(&Texture::default()),
-            &mut image,
-            &mut fates,
-        );
-        let colours = distinct_colours(&image);
-        let s = &scene.settings;
-        // Flat colour: the model's and the background (and a checker's two squares, unfiltered).
-        let flat = s.shading == Shading::None && (!s.texture || s.texture_filter == Nearest);
-        let least = if flat { 2 } else { 50 };
-        assert!(colours >= least, "{}: {colours} colours", scene.name);
-    }
+    with_scene(|scene| {
+        for p in pinned() {
+            let mut drawing = Drawing::default();
+            drawing.draw(scene, &p.settings, p.record);
+            let colours = distinct_colours(&drawing.image);
+            let s = &p.settings;
+            // Flat colour: the model's and the background (and a checker's two squares,
+            // unfiltered).
+            let flat = s.shading == Shading::None && (!s.texture || s.texture_filter == Nearest);
+            let least = if flat { 2 } else { 50 };
+            assert!(colours >= least, "{}: {colours} colours", p.name);
+        }
+    });
 }
