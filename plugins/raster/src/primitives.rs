@@ -2,7 +2,7 @@
 //! pixel wide around it, and a point as the one-pixel square around it, both as two triangles
 //! that share a diagonal (the fill rule then draws each pixel of the rectangle once). These are
 //! the shapes the reference's rasterizer gives lines and points of width and size 1: Vulkan's
-//! default rectangular lines, and points as squares.
+//! default rectangular lines, and points as squares. Set up in parallel, in submission order.
 
 use close2gl_core::Topology;
 use rayon::prelude::*;

@@ -1,12 +1,12 @@
-//! Close2GL's pixel probe: for one pixel, which mesh triangle won it, at what depth and colour,
-//! and every triangle whose coverage reached its centre with why each lost. Coverage is the
-//! rasterizer's own: the same snapping to fixed point, edge functions and top-left rule
-//! (`setup`), on the polygon the pipeline drew (its clipped piece), or, for a triangle that
-//! clipping removed, on where it would have projected: the whole triangle when every corner
-//! has w > 0, and otherwise the part in front of the near plane, since behind the eye (w <= 0)
-//! nothing projects at all, which is why every GPU cuts at the near plane. Candidates are found
-//! by the triangles' areas, as in solid mode; in wireframe and point modes the winner is still
-//! the rasterizer's own when it drew the view.
+//! Close2GL's pixel probe: for one pixel, which mesh triangle won it, at what depth and colour, and
+//! every triangle whose coverage reached its centre with why each lost. Coverage is the
+//! rasterizer's own: the same snapping to fixed point, edge functions and top-left rule (`edge`,
+//! `setup`), on the polygon the pipeline drew (its clipped piece), or, for a triangle that clipping
+//! removed, on where it would have projected: the whole triangle when every corner has w > 0, and
+//! otherwise the part in front of the near plane, since behind the eye (w <= 0) nothing projects at
+//! all, which is why every GPU cuts at the near plane. Candidates are found by the triangles'
+//! areas, as in solid mode; in wireframe and point modes the winner is still the rasterizer's own
+//! when it drew the view.
 
 use bevy_ecs::world::World;
 use close2gl_core::{

@@ -1,9 +1,11 @@
-//! The rasterizer's output pinned to hashes: scenes covering every path (each shading, each
-//! texture filter, wireframe, points, both clippings, culling, many tiles, fates recorded), drawn
-//! on one thread and on two, each image and depth buffer (and, while fates are recorded, the
-//! owner of each pixel and the fate counts) hashed with FNV-1a and compared with the hash the
-//! rasterizer gave when the constants were taken. A restructuring that changes no pixel keeps them all; any
-//! change of output, however small, fails here and names the scene.
+//! The rasterizer's output pinned to hashes: scenes covering every path (each shading, each texture
+//! filter, wireframe, points, both clippings, culling, many tiles, fates recorded), drawn on one
+//! thread and on two, each image and depth buffer (and, while fates are recorded, the owner of each
+//! pixel and the fate counts) hashed with FNV-1a and compared with the hash the rasterizer gave
+//! when the constants were taken. A restructuring that changes no pixel keeps them all; any change
+//! of output, however small, fails here and names the scene. A change meant to alter the output (a
+//! fix for parity with the reference, say) takes the new hashes this test prints, in the same
+//! commit, saying why.
 
 use TextureFilter::Nearest;
 use close2gl_core::glam::{Vec2, Vec3};
