@@ -30,7 +30,7 @@ pub(crate) fn snap(window: f32) -> i64 {
 
 /// One edge as llvmpipe writes it: the sample (X, Y) (in fixed point) is inside when
 /// `c + dcdy·Y − dcdx·X > 0`; `c` already holds the fill rule's +1 for left and top edges.
-#[derive(Clone, Copy, Debug, Default)]
+#[derive(Clone, Copy, Debug)]
 pub(crate) struct Edge {
     pub dcdx: i64,
     pub dcdy: i64,

@@ -94,7 +94,7 @@ fn draw_rows<S: PixelShader>(
 /// out; an edge that keeps all of it in needs no test in its rows.
 #[inline(always)]
 fn crossing_edges(edges: &[Edge; 3], area: TileRect) -> Option<([Edge; 3], usize)> {
-    let mut crossing = [Edge::default(); 3];
+    let mut crossing = [Edge::ZERO; 3];
     let mut count = 0;
     for edge in edges {
         match edge.over(area) {

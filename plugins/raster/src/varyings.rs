@@ -48,7 +48,7 @@ impl Used {
 }
 
 /// a + dadx·(x − ox) + dady·(y − oy), where (ox, oy) is the triangle's origin.
-#[derive(Clone, Copy, Debug, Default)]
+#[derive(Clone, Copy, Debug)]
 pub(crate) struct Plane {
     pub a: f32,
     pub dadx: f32,
