@@ -12,18 +12,31 @@
 //! won none become `no_pixels` and `hidden`, and it keeps who drew each pixel
 //! ([`SoftwareRasterizer::owner`]) for the inspector's probe. Like the pipeline, it knows no
 //! GPU, window or UI.
+//!
+//! Its files follow one frame, in the order `rasterizer` runs them: `vertex` (each vertex's
+//! varyings, lit by `lighting` for Gouraud) → `primitives` and `setup` (each primitive to
+//! triangles: `edge`'s fixed-point edge functions, `varyings`' planes) → `bin` (the triangles
+//! listed in the 64×64 tiles they touch) → `tile` → `row` → `lanes`, the hierarchy tile → rows
+//! → blocks of eight lanes (llvmpipe's is tile → block → quad): each block depth-tested, then
+//! coloured by `shading` (with `texture`'s level of detail and sampling) into `target`'s
+//! buffers, which are then copied out as the image. `fates` and `probe` read what a frame left.
 
 mod bin;
+mod edge;
 mod fates;
 mod lanes;
+mod lighting;
 mod primitives;
 pub mod probe;
 mod rasterizer;
+mod row;
 mod setup;
-pub mod shading;
+mod shading;
 mod target;
 mod texture;
 mod tile;
+mod varyings;
+mod vertex;
 
 use std::time::Instant;
 

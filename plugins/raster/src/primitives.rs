@@ -2,49 +2,81 @@
 //! pixel wide around it, and a point as the one-pixel square around it, both as two triangles
 //! that share a diagonal (the fill rule then draws each pixel of the rectangle once). These are
 //! the shapes the reference's rasterizer gives lines and points of width and size 1: Vulkan's
-//! default rectangular lines, and points as squares.
+//! default rectangular lines, and points as squares. Set up in parallel, in submission order.
 
-use crate::setup::{Corner, FIXED_ONE, GUARD_PX, Triangle, Used, VARYINGS, setup, snap};
+use close2gl_core::Topology;
+use rayon::prelude::*;
 
-/// A vertex as the pipeline and the vertex stage left it.
-#[derive(Clone, Copy, Debug)]
-pub(crate) struct Vertex {
-    /// x, y in window pixels, depth, 1/w.
-    pub window: [f32; 4],
-    pub varyings: [f32; VARYINGS],
+use crate::edge::FIXED_ONE;
+use crate::setup::{Corner, Triangle, setup};
+use crate::varyings::Used;
+use crate::vertex::Vertex;
+
+/// Primitives set up per parallel task.
+const CHUNK: usize = 4096;
+
+/// Every primitive of `topology` (its vertices' `indices`) to its triangles, in order, in
+/// parallel.
+pub(crate) fn set_up_all(
+    topology: Topology,
+    indices: &[u32],
+    vertices: &[Vertex],
+    params: SetupParams,
+    triangles: &mut Vec<Triangle>,
+) {
+    let per_primitive = indices_per_primitive(topology);
+    let triangles_per = triangles_per_primitive(topology);
+    let count = indices.len() / per_primitive;
+    triangles.resize(count * triangles_per, Triangle::EMPTY);
+    triangles
+        .par_chunks_mut(CHUNK * triangles_per)
+        .zip(indices.par_chunks(CHUNK * per_primitive))
+        .for_each(|(out, indices)| set_up(topology, indices, vertices, params, out));
 }
 
-impl Vertex {
-    fn corner(&self, fixed: [i64; 2]) -> Corner {
-        Corner {
-            fixed,
-            window: self.window,
-            varyings: self.varyings,
+/// One task's primitives (their vertices' `indices`) to their triangles.
+#[inline(always)]
+fn set_up(
+    topology: Topology,
+    indices: &[u32],
+    vertices: &[Vertex],
+    params: SetupParams,
+    out: &mut [Triangle],
+) {
+    let vertex = |i: u32| vertices[i as usize];
+    let primitives = indices.chunks_exact(indices_per_primitive(topology));
+    match topology {
+        Topology::Triangles => {
+            for (o, p) in out.iter_mut().zip(primitives) {
+                *o = triangle([p[0], p[1], p[2]].map(vertex), params);
+            }
+        }
+        Topology::Lines => {
+            for (o, p) in out.chunks_exact_mut(2).zip(primitives) {
+                o.copy_from_slice(&line(vertex(p[0]), vertex(p[1]), params));
+            }
+        }
+        Topology::Points => {
+            for (o, p) in out.chunks_exact_mut(2).zip(primitives) {
+                o.copy_from_slice(&point(vertex(p[0]), params));
+            }
         }
     }
+}
 
-    /// The same vertex moved to a fixed-point position (where a line's or a point's rectangle
-    /// has its corners), keeping depth, 1/w and the varyings.
-    fn moved(&self, fixed: [i64; 2]) -> Corner {
-        let to_window = |f: i64| f as f32 / FIXED_ONE as f32 + 0.5;
-        let mut window = self.window;
-        window[0] = to_window(fixed[0]);
-        window[1] = to_window(fixed[1]);
-        Corner {
-            fixed,
-            window,
-            varyings: self.varyings,
-        }
+fn indices_per_primitive(topology: Topology) -> usize {
+    match topology {
+        Topology::Triangles => 3,
+        Topology::Lines => 2,
+        Topology::Points => 1,
     }
+}
 
-    fn fixed(&self) -> [i64; 2] {
-        [snap(self.window[0]), snap(self.window[1])]
-    }
-
-    /// Whether the fixed-point arithmetic can hold this vertex (see [`GUARD_PX`]); false for
-    /// NaN and infinities too. A primitive with a corner outside is not drawn.
-    fn in_guard_band(&self) -> bool {
-        self.window[..2].iter().all(|x| x.abs() <= GUARD_PX)
+/// How many triangles setup makes of each primitive: a line's and a point's rectangles are two.
+pub(crate) fn triangles_per_primitive(topology: Topology) -> usize {
+    match topology {
+        Topology::Triangles => 1,
+        Topology::Lines | Topology::Points => 2,
     }
 }
 
@@ -59,7 +91,7 @@ pub(crate) fn triangle(v: [Vertex; 3], params: SetupParams) -> Triangle {
     if !v.iter().all(Vertex::in_guard_band) {
         return Triangle::EMPTY;
     }
-    let corners = v.map(|v| v.corner(v.fixed()));
+    let corners = v.map(|v| v.corner());
     setup(corners, params.size, params.used)
 }
 

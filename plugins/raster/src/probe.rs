@@ -1,12 +1,12 @@
-//! Close2GL's pixel probe: for one pixel, which mesh triangle won it, at what depth and colour,
-//! and every triangle whose coverage reached its centre with why each lost. Coverage is the
-//! rasterizer's own: the same snapping to fixed point, edge functions and top-left rule
-//! (`setup`), on the polygon the pipeline drew (its clipped piece), or, for a triangle that
-//! clipping removed, on where it would have projected: the whole triangle when every corner
-//! has w > 0, and otherwise the part in front of the near plane, since behind the eye (w <= 0)
-//! nothing projects at all, which is why every GPU cuts at the near plane. Candidates are found
-//! by the triangles' areas, as in solid mode; in wireframe and point modes the winner is still
-//! the rasterizer's own when it drew the view.
+//! Close2GL's pixel probe: for one pixel, which mesh triangle won it, at what depth and colour, and
+//! every triangle whose coverage reached its centre with why each lost. Coverage is the
+//! rasterizer's own: the same snapping to fixed point, edge functions and top-left rule (`edge`,
+//! `setup`), on the polygon the pipeline drew (its clipped piece), or, for a triangle that clipping
+//! removed, on where it would have projected: the whole triangle when every corner has w > 0, and
+//! otherwise the part in front of the near plane, since behind the eye (w <= 0) nothing projects at
+//! all, which is why every GPU cuts at the near plane. Candidates are found by the triangles'
+//! areas, as in solid mode; in wireframe and point modes the winner is still the rasterizer's own
+//! when it drew the view.
 
 use bevy_ecs::world::World;
 use close2gl_core::{
@@ -17,9 +17,11 @@ use close2gl_pipeline::matrices::{ClipTransform, viewport as viewport_matrix};
 use close2gl_pipeline::stage::to_window_depth;
 use glam::Mat4;
 
-use crate::primitives::{SetupParams, Vertex, triangle};
+use crate::primitives::{SetupParams, triangle};
 use crate::rasterizer::SoftwareRasterizer;
-use crate::setup::{Coverage, Triangle, Used, VARYINGS};
+use crate::setup::{Coverage, Triangle};
+use crate::varyings::{Used, VARYINGS};
+use crate::vertex::Vertex;
 
 /// Why a triangle whose coverage reached the pixel centre did or did not draw it.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -211,7 +213,7 @@ fn cover(
     let mut lost = None;
     for i in 1..polygon.len.saturating_sub(1) {
         let t: Triangle = triangle([vertex(0), vertex(i), vertex(i + 1)], params);
-        let depth = t.at(&t.depth, x as f32 + 0.5, y as f32 + 0.5);
+        let depth = t.planes.depth_at(x as f32 + 0.5, y as f32 + 0.5);
         match t.coverage(x as i32, y as i32) {
             Coverage::Inside => return Some((Coverage::Inside, depth)),
             Coverage::LostToFillRule => lost = Some((Coverage::LostToFillRule, depth)),

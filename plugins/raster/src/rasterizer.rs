@@ -1,32 +1,29 @@
-//! One software frame, top to bottom: the vertex stage (varyings for each vertex), setup (each
-//! primitive to triangles with edges and planes), binning into tiles, the tiles drawn in
-//! parallel (clear, rasterize, depth test, shade), and the tiles copied out as an image; while
-//! fates are recorded, which triangles covered no pixel centre and which won none.
+//! One software frame, top to bottom: the vertex stage (`vertex`), setup of every primitive to
+//! triangles (`primitives`, `setup`), binning into tiles (`bin`), the tiles drawn in parallel
+//! (`tile`: clear, then each triangle's rows, depth-tested and shaded in blocks of eight lanes),
+//! and the tiles copied out as an image (`target`); while fates are recorded, which triangles
+//! covered no pixel centre and which won none (`fates`).
 
 use bevy_ecs::prelude::Resource;
 use close2gl_core::{
     Camera, Close2glFrame, Fates, Lighting, RenderSettings, Shading, SoftwareFrame, Texture,
-    TextureFilter, Topology,
+    TextureFilter,
 };
 use close2gl_pipeline::matrices::ClipTransform;
-use glam::Vec3;
 use rayon::iter::Either;
 use rayon::prelude::*;
 
 use crate::bin::Bins;
 use crate::fates::Rasterized;
-use crate::primitives::{self, SetupParams, Vertex};
-use crate::setup::{Triangle, Used, VARYINGS};
-use crate::shading::{
-    Colour, Flat, Gouraud, Light, Phong, PixelShader, Shaded, Textured, Untextured, pack,
-    varyings_used, vertex_varyings,
-};
-use crate::target::{NO_TRIANGLE, TILE_PIXELS, Target};
+use crate::lighting::Light;
+use crate::primitives::{SetupParams, set_up_all, triangles_per_primitive};
+use crate::setup::Triangle;
+use crate::shading::{Colour, Flat, Gouraud, Phong, PixelShader, Shaded, Textured, Untextured};
+use crate::target::{NO_TRIANGLE, TILE_PIXELS, Target, pack};
 use crate::texture::{Bilinear, Filter, Mips, Nearest, Trilinear};
 use crate::tile::{TileBuffers, draw_tile};
-
-/// Primitives set up per parallel task.
-const SETUP_CHUNK: usize = 4096;
+use crate::varyings::{Used, varyings_used};
+use crate::vertex::{Vertex, vertex_stage};
 
 /// The rasterizer's buffers, reused from frame to frame: a steady frame allocates nothing.
 #[derive(Resource, Default)]
@@ -79,30 +76,19 @@ impl SoftwareRasterizer {
         };
         let size = geometry.viewport;
         self.target.resize(size.width, size.height, fates.record);
-        self.vertex_stage(&frame);
+        vertex_stage(
+            &geometry.raster,
+            frame.shading,
+            &frame.light,
+            &mut self.vertices,
+        );
         self.setup(&frame);
         self.bins.fill(self.target.grid, &self.triangles);
-        let background = pack(settings.background);
-        let color = settings.color;
-        match settings.shading {
-            Shading::None => self.shade_tiles(background, Flat(color), &frame, settings),
-            Shading::GouraudAd | Shading::GouraudAds => {
-                self.shade_tiles(background, Gouraud { color }, &frame, settings)
-            }
-            Shading::Phong => {
-                let light = frame.light;
-                self.shade_tiles(background, Phong { color, light }, &frame, settings)
-            }
-        }
+        self.shade(&frame, settings);
         self.target.resolve(&mut out.pixels);
         (out.width, out.height) = (size.width, size.height);
         if fates.record {
-            let rasterized = Rasterized {
-                triangles: &self.triangles,
-                per_primitive: triangles_per_primitive(geometry.topology),
-                mesh_triangles: &geometry.raster.triangles,
-            };
-            rasterized.record(&mut self.target.ids, &mut self.flags, fates);
+            self.record(geometry, fates);
         }
     }
 
@@ -118,51 +104,6 @@ impl SoftwareRasterizer {
         self.target.depth.get(self.target.index(x, y)?).copied()
     }
 
-    /// Each vertex's window position and varyings: the mesh's vertices lit in parallel, then
-    /// the vertices clipping made, interpolated from their triangle's corners.
-    fn vertex_stage(&mut self, frame: &Frame<'_>) {
-        let raster = &frame.geometry.raster;
-        let mesh_vertices = raster.vertices.len();
-        self.vertices.resize(
-            mesh_vertices + raster.cuts.len(),
-            Vertex {
-                window: [0.0; 4],
-                varyings: [0.0; VARYINGS],
-            },
-        );
-        let (mesh, cuts) = self.vertices.split_at_mut(mesh_vertices);
-        let (shading, light) = (frame.shading, &frame.light);
-        mesh.par_chunks_mut(SETUP_CHUNK * 4)
-            .zip(raster.vertices.par_chunks(SETUP_CHUNK * 4))
-            .for_each(|(out, vertices)| {
-                for (o, v) in out.iter_mut().zip(vertices) {
-                    *o = Vertex {
-                        window: v.window,
-                        varyings: vertex_varyings(
-                            shading,
-                            light,
-                            Vec3::from(v.eye),
-                            Vec3::from(v.normal),
-                            v.uv,
-                        ),
-                    };
-                }
-            });
-        for (o, cut) in cuts.iter_mut().zip(&raster.cuts) {
-            let mut varyings = [0.0; VARYINGS];
-            for (corner, weight) in cut.corners.iter().zip(cut.weights) {
-                let from = &mesh[*corner as usize].varyings;
-                for (v, f) in varyings.iter_mut().zip(from) {
-                    *v += weight * f;
-                }
-            }
-            *o = Vertex {
-                window: cut.window,
-                varyings,
-            };
-        }
-    }
-
     /// Every primitive to its triangles (two for a line or a point), in order.
     fn setup(&mut self, frame: &Frame<'_>) {
         let geometry = frame.geometry;
@@ -176,45 +117,41 @@ impl SoftwareRasterizer {
                 textured: frame.textured,
             },
         };
-        let per_primitive = match geometry.topology {
-            Topology::Triangles => 3,
-            Topology::Lines => 2,
-            Topology::Points => 1,
-        };
-        let triangles_per = triangles_per_primitive(geometry.topology);
         let indices = &geometry.raster.primitives;
-        let count = indices.len() / per_primitive;
-        self.triangles
-            .resize(count * triangles_per, Triangle::EMPTY);
-        let vertices = &self.vertices;
-        let vertex = |i: u32| vertices[i as usize];
-        self.triangles
-            .par_chunks_mut(SETUP_CHUNK * triangles_per)
-            .zip(indices.par_chunks(SETUP_CHUNK * per_primitive))
-            .for_each(|(out, indices)| {
-                let primitives = indices.chunks_exact(per_primitive);
-                match geometry.topology {
-                    Topology::Triangles => {
-                        for (o, p) in out.iter_mut().zip(primitives) {
-                            *o = primitives::triangle([p[0], p[1], p[2]].map(vertex), params);
-                        }
-                    }
-                    Topology::Lines => {
-                        for (o, p) in out.chunks_exact_mut(2).zip(primitives) {
-                            o.copy_from_slice(&primitives::line(
-                                vertex(p[0]),
-                                vertex(p[1]),
-                                params,
-                            ));
-                        }
-                    }
-                    Topology::Points => {
-                        for (o, p) in out.chunks_exact_mut(2).zip(primitives) {
-                            o.copy_from_slice(&primitives::point(vertex(p[0]), params));
-                        }
-                    }
-                }
-            });
+        set_up_all(
+            geometry.topology,
+            indices,
+            &self.vertices,
+            params,
+            &mut self.triangles,
+        );
+    }
+
+    /// The tiles drawn with the frame's shading.
+    fn shade(&mut self, frame: &Frame<'_>, settings: &RenderSettings) {
+        let background = pack(settings.background);
+        let color = settings.color;
+        match settings.shading {
+            Shading::None => self.shade_tiles(background, Flat(color), frame, settings),
+            Shading::GouraudAd | Shading::GouraudAds => {
+                self.shade_tiles(background, Gouraud { color }, frame, settings)
+            }
+            Shading::Phong => {
+                let light = frame.light;
+                self.shade_tiles(background, Phong { color, light }, frame, settings)
+            }
+        }
+    }
+
+    /// Moves the drawn triangles that covered no pixel centre or won none to `no_pixels` and
+    /// `hidden`, and turns the id buffer's set-up triangles into mesh triangles.
+    fn record(&mut self, geometry: &Close2glFrame, fates: &mut Fates) {
+        let rasterized = Rasterized {
+            triangles: &self.triangles,
+            per_primitive: triangles_per_primitive(geometry.topology),
+            mesh_triangles: &geometry.raster.triangles,
+        };
+        rasterized.record(&mut self.target.ids, &mut self.flags, fates);
     }
 
     /// The tiles drawn with a shading's colour, textured or not.
@@ -244,14 +181,6 @@ impl SoftwareRasterizer {
                 texturing: Untextured,
             });
         }
-    }
-}
-
-/// How many triangles setup makes of each primitive: a line's and a point's rectangles are two.
-fn triangles_per_primitive(topology: Topology) -> usize {
-    match topology {
-        Topology::Triangles => 1,
-        Topology::Lines | Topology::Points => 2,
     }
 }
 

@@ -1,7 +1,11 @@
 //! The colour and depth buffers, stored tile after tile: each 64×64 tile is one contiguous
-//! block, so a thread drawing a tile owns its memory and keeps it in cache.
+//! block, so a thread drawing a tile owns its memory and keeps it in cache; and the colour as
+//! they store it (RGBA8, as a UNORM target).
 
+use glam::Vec3;
 use rayon::prelude::*;
+
+use crate::lanes::{F8, LANES, V8};
 
 /// Tile edge in pixels.
 pub(crate) const TILE: i32 = 64;
@@ -107,5 +111,50 @@ impl Grid {
             x1: ((tx + 1) * TILE).min(self.width) - 1,
             y1: ((ty + 1) * TILE).min(self.height) - 1,
         }
+    }
+}
+
+/// A colour in 0..1 as the RGBA8 bytes a UNORM target stores (clamped, rounded to nearest),
+/// packed little-endian.
+pub(crate) fn pack(rgb: Vec3) -> u32 {
+    pack8(V8::splat(rgb))[0]
+}
+
+#[inline(always)]
+pub(crate) fn pack8(rgb: V8) -> [u32; LANES] {
+    let byte = |c: F8| {
+        let c = c.max(F8::splat(0.0)).min(F8::splat(1.0));
+        let c = c * F8::splat(255.0) + F8::splat(0.5);
+        let mut bytes = [0u32; LANES];
+        for (byte, c) in bytes.iter_mut().zip(c.0) {
+            // SAFETY: c is in 0.5..=255.5 (clamped above; NaN clamps to 0), which an i32
+            // holds; truncating it rounds the colour to nearest. The checked `as` conversion
+            // would not vectorise.
+            *byte = unsafe { c.to_int_unchecked::<i32>() } as u32;
+        }
+        bytes
+    };
+    let (r, g, b) = (byte(rgb.x), byte(rgb.y), byte(rgb.z));
+    let mut packed = [0u32; LANES];
+    for (p, ((r, g), b)) in packed.iter_mut().zip(r.into_iter().zip(g).zip(b)) {
+        *p = r | g << 8 | b << 16 | 0xff << 24;
+    }
+    packed
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn packing_rounds_like_a_unorm_target() {
+        assert_eq!(
+            pack(Vec3::new(0.0, 1.0, 0.5)).to_le_bytes(),
+            [0, 255, 128, 255]
+        );
+        assert_eq!(
+            pack(Vec3::new(-1.0, 2.0, 0.1)).to_le_bytes(),
+            [0, 255, 26, 255]
+        );
     }
 }

@@ -1,7 +1,7 @@
-//! Close2GL's texturing: its own copy of the texture's mipmap chain (made once per image) and its
-//! own sampling, eight pixels at a time: nearest, bilinear, and trilinear with the level of
-//! detail from the screen-space derivatives of the texture coordinates over each 2×2 quad of
-//! pixels, as GPUs take them. Wrap mode: repeat. Texture coordinates are OpenGL's: t grows
+//! Close2GL's texturing: its own copy of the texture's mipmap chain (made once per image), the
+//! level of detail from the screen-space derivatives of the texture coordinates over each 2×2
+//! quad of pixels, as GPUs take them, and its own sampling, eight pixels at a time: nearest,
+//! bilinear, and trilinear. Wrap mode: repeat. Texture coordinates are OpenGL's: t grows
 //! upwards, and the image's rows run from the top.
 //!
 //! Everything but the texel loads is lane-wide arithmetic (the compiler makes it SIMD); the
@@ -11,6 +11,7 @@
 use close2gl_core::Texture;
 
 use crate::lanes::{F8, LANES, V8};
+use crate::varyings::Planes;
 
 /// The mipmap chain of the current texture, rebuilt only when the texture's generation changes.
 #[derive(Debug, Default)]
@@ -55,9 +56,33 @@ impl Mips {
     }
 
     /// Level 0's width and height, for turning derivatives of (s, t) into texels.
-    pub(crate) fn size(&self) -> (f32, f32) {
+    fn size(&self) -> (f32, f32) {
         let level = self.levels.first().copied().unwrap_or_default();
         (level.width as f32, level.height as f32)
+    }
+
+    /// log2 of the pixel's footprint in level-0 texels, from the differences of (s, t) across
+    /// the pixel's 2×2 quad (its top-left pixel to the one right of it and the one below), as a
+    /// GPU takes them: ρ = max(|∂(s,t)/∂x|, |∂(s,t)/∂y|) in texels. Lanes pair up into quads
+    /// (eight-pixel blocks start at even columns), so the row's own `st` give half the quad
+    /// and only the quad's other row is interpolated (from the triangle's `planes`).
+    #[inline(always)]
+    pub(crate) fn level_of_detail(&self, planes: &Planes, x: F8, y: f32, st: (F8, F8)) -> F8 {
+        let upper_row = ((y - 0.5) as u32).is_multiple_of(2);
+        let other_y = if upper_row { y + 1.0 } else { y - 1.0 };
+        let other = planes.texture_coordinates(x, other_y, planes.w(x, other_y));
+        let ((s0, t0), (s1, t1)) = if upper_row { (st, other) } else { (other, st) };
+        let (width, height) = self.size();
+        let length = |ds: F8, dt: F8| {
+            let (ds, dt) = (ds * F8::splat(width), dt * F8::splat(height));
+            (ds * ds + dt * dt).sqrt()
+        };
+        let across = length(
+            quad_right(s0) - quad_left(s0),
+            quad_right(t0) - quad_left(t0),
+        );
+        let down = length(quad_left(s1) - quad_left(s0), quad_left(t1) - quad_left(t0));
+        across.max(down).log2()
     }
 
     /// The texel each of eight points (s, t) falls in, at level 0.
@@ -179,6 +204,26 @@ impl Mips {
         }
         out
     }
+}
+
+/// Each lane takes its quad's left pixel's value.
+#[inline(always)]
+fn quad_left(v: F8) -> F8 {
+    let mut out = [0.0; LANES];
+    for (i, o) in out.iter_mut().enumerate() {
+        *o = v.0[i & !1];
+    }
+    F8(out)
+}
+
+/// Each lane takes its quad's right pixel's value.
+#[inline(always)]
+fn quad_right(v: F8) -> F8 {
+    let mut out = [0.0; LANES];
+    for (i, o) in out.iter_mut().enumerate() {
+        *o = v.0[i | 1];
+    }
+    F8(out)
 }
 
 /// Where eight points (s, t) fall in their levels, in texels from the top-left corner.

@@ -2,15 +2,17 @@
 //! panicked in the software rasterizer.
 
 use close2gl_core::glam::Vec3;
-use close2gl_core::{
-    Camera, Close2glFrame, Lighting, Mesh, Rasterizer, RenderMode, RenderSettings, Shading,
-    SoftwareFrame, Viewport,
-};
-use close2gl_pipeline::FastPipeline;
-use close2gl_raster::SoftwareRasterizer;
+use close2gl_core::{Camera, Mesh, Rasterizer, RenderMode, RenderSettings, Shading, Viewport};
+
+mod common;
+use common::{Drawing, Scene};
 
 /// Every mode through the Close2GL stage and the software rasterizer, as the app runs them.
 fn draw_every_mode(mesh: &Mesh, camera: &Camera, viewport: Viewport) {
+    let scene = Scene {
+        camera: *camera,
+        ..Scene::new(mesh, viewport, None)
+    };
     for mode in RenderMode::ALL {
         let settings = RenderSettings {
             mode: *mode,
@@ -19,27 +21,10 @@ fn draw_every_mode(mesh: &Mesh, camera: &Camera, viewport: Viewport) {
             shading: Shading::Phong,
             ..RenderSettings::default()
         };
-        let mut frame = Close2glFrame::default();
-        FastPipeline::default().run(
-            mesh,
-            camera,
-            &settings,
-            viewport,
-            &mut frame,
-            &mut Default::default(),
-        );
-        let mut image = SoftwareFrame::default();
-        SoftwareRasterizer::default().draw(
-            &frame,
-            camera,
-            &settings,
-            &Lighting::default(),
-            None,
-            &mut image,
-            &mut Default::default(),
-        );
+        let mut drawing = Drawing::default();
+        drawing.draw(&scene, &settings, false);
         let pixels = (viewport.width * viewport.height) as usize;
-        assert_eq!(image.pixels.len(), pixels, "{mode:?}");
+        assert_eq!(drawing.image.pixels.len(), pixels, "{mode:?}");
     }
 }
 

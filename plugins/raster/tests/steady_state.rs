@@ -6,12 +6,10 @@ use std::alloc::{GlobalAlloc, Layout, System};
 use std::sync::atomic::{AtomicUsize, Ordering};
 
 use close2gl_core::glam::Vec3;
-use close2gl_core::{
-    Camera, Clipping, Close2glFrame, Fates, Lighting, Mesh, Rasterizer, RenderMode, RenderSettings,
-    Shading, SoftwareFrame, Viewport,
-};
-use close2gl_pipeline::FastPipeline;
-use close2gl_raster::SoftwareRasterizer;
+use close2gl_core::{Clipping, Mesh, Rasterizer, RenderMode, RenderSettings, Shading, Viewport};
+
+mod common;
+use common::{Drawing, Scene};
 
 struct Counting;
 
@@ -98,40 +96,15 @@ fn a_steady_frame_allocates_nothing() {
 
 fn steady_frames() {
     let mesh = grid(300);
-    let camera = Camera {
-        near: 0.3,
-        far: 20.0,
-        ..Camera::default()
-    };
+    let texture = close2gl_core::Texture::default();
     let viewport = Viewport {
         width: 800,
         height: 600,
     };
-    let lighting = Lighting::default();
-    let texture = close2gl_core::Texture::default();
-    let mut pipeline = FastPipeline::default();
-    let mut rasterizer = SoftwareRasterizer::default();
-    let mut frame = Close2glFrame::default();
-    let mut image = SoftwareFrame::default();
-    let mut fates = Fates::default();
-    let mut run = |settings: &RenderSettings, record: bool| {
-        fates.record = record;
-        pipeline.run(&mesh, &camera, settings, viewport, &mut frame, &mut fates);
-        if settings.close2gl_raster == Rasterizer::Software {
-            rasterizer.draw(
-                &frame,
-                &camera,
-                settings,
-                &lighting,
-                Some(&texture),
-                &mut image,
-                &mut fates,
-            );
-        }
-        frame.counts
-    };
+    let scene = Scene::new(&mesh, viewport, Some(&texture));
+    let mut drawing = Drawing::default();
     let before = ALLOCATIONS.load(Ordering::SeqCst);
-    run(&RenderSettings::default(), false);
+    drawing.draw(&scene, &RenderSettings::default(), false);
     assert!(
         ALLOCATIONS.load(Ordering::SeqCst) > before,
         "the counter sees a first frame's buffers"
@@ -155,17 +128,28 @@ fn steady_frames() {
                 shading,
                 ..RenderSettings::default()
             };
-            // Two warm-up frames size every buffer (and start rayon's pool).
-            run(&settings, record);
-            let counts = run(&settings, record);
-            assert!(counts.clipped > 0 && counts.drawn > 0, "{counts:?}");
-            let before = ALLOCATIONS.load(Ordering::SeqCst);
-            run(&settings, record);
-            let allocated = ALLOCATIONS.load(Ordering::SeqCst) - before;
+            let allocated = steady_frame_allocations(&mut drawing, &scene, &settings, record);
             assert_eq!(
                 allocated, 0,
                 "{close2gl_raster:?} {shading:?} {mode:?} recording {record}: a steady frame allocated {allocated} times"
             );
         }
     }
+}
+
+/// How many times the third frame of `settings` allocates: two warm-up frames size every
+/// buffer (and start rayon's pool).
+fn steady_frame_allocations(
+    drawing: &mut Drawing,
+    scene: &Scene<'_>,
+    settings: &RenderSettings,
+    record: bool,
+) -> usize {
+    drawing.draw(scene, settings, record);
+    drawing.draw(scene, settings, record);
+    let counts = drawing.frame.counts;
+    assert!(counts.clipped > 0 && counts.drawn > 0, "{counts:?}");
+    let before = ALLOCATIONS.load(Ordering::SeqCst);
+    drawing.draw(scene, settings, record);
+    ALLOCATIONS.load(Ordering::SeqCst) - before
 }

@@ -1,0 +1,162 @@
+//! The varyings: what a vertex carries to the pixels, where each sits in its array (the one
+//! layout the vertex stage writes and the pixel shaders read), and how a triangle interpolates
+//! them: as planes on screen of each varying times 1/w, set up once per triangle and divided by
+//! the plane of 1/w at each pixel (perspective-correct), eight pixels of a row at a time.
+
+use close2gl_core::Shading;
+
+use crate::lanes::{F8, V8};
+
+/// How many floats a vertex carries for shading: eye position and normal (Phong), or the
+/// Gouraud intensity in the first three; then the texture coordinates.
+pub(crate) const VARYINGS: usize = 8;
+
+/// Gouraud: the intensity lit at the vertex (red, green, blue).
+pub(crate) const INTENSITY: usize = 0;
+/// Phong: the eye-space position, then the normal.
+pub(crate) const EYE: usize = 0;
+pub(crate) const NORMAL: usize = 3;
+/// The texture coordinates (s, t), after the most any shading uses (Phong's six).
+pub(crate) const UV: usize = 6;
+
+/// How many varyings, from the first, a shading uses: none (flat colour), the Gouraud
+/// intensity, or the eye position and normal (Phong). The texture coordinates come on top.
+pub(crate) fn varyings_used(shading: Shading) -> usize {
+    match shading {
+        Shading::None => 0,
+        Shading::GouraudAd | Shading::GouraudAds => 3,
+        Shading::Phong => UV,
+    }
+}
+
+/// Which varyings get planes: the first `shading` ones, and the texture coordinates when
+/// `textured`.
+#[derive(Clone, Copy, Debug, Default)]
+pub(crate) struct Used {
+    pub shading: usize,
+    pub textured: bool,
+}
+
+impl Used {
+    fn indices(self) -> impl Iterator<Item = usize> {
+        (0..self.shading).chain((UV..UV + 2).filter(move |_| self.textured))
+    }
+
+    fn any(self) -> bool {
+        self.shading > 0 || self.textured
+    }
+}
+
+/// a + dadx·(x − ox) + dady·(y − oy), where (ox, oy) is the triangle's origin.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Plane {
+    pub a: f32,
+    pub dadx: f32,
+    pub dady: f32,
+}
+
+impl Plane {
+    const ZERO: Plane = Plane {
+        a: 0.0,
+        dadx: 0.0,
+        dady: 0.0,
+    };
+}
+
+/// A triangle's planes, anchored at its first corner: depth, 1/w, and each varying times 1/w
+/// (these, not the varyings, are affine on screen).
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Planes {
+    /// Where the planes are anchored (a corner, in window pixels).
+    pub origin: [f32; 2],
+    pub depth: Plane,
+    pub inv_w: Plane,
+    pub varyings: [Plane; VARYINGS],
+}
+
+impl Planes {
+    pub(crate) const ZERO: Planes = Planes {
+        origin: [0.0; 2],
+        depth: Plane::ZERO,
+        inv_w: Plane::ZERO,
+        varyings: [Plane::ZERO; VARYINGS],
+    };
+
+    /// The planes through three corners' window positions (x, y, depth, 1/w) and varyings:
+    /// depth always, 1/w and the varyings `used` when there are any.
+    pub(crate) fn new(
+        window: [[f32; 4]; 3],
+        varyings: [&[f32; VARYINGS]; 3],
+        used: Used,
+    ) -> Planes {
+        let [p0, p1, p2] = window;
+        let (ex, ey) = (p1[0] - p0[0], p1[1] - p0[1]);
+        let (fx, fy) = (p2[0] - p0[0], p2[1] - p0[1]);
+        let area = ex * fy - fx * ey;
+        let plane = |v: [f32; 3]| {
+            let (dv1, dv2) = (v[1] - v[0], v[2] - v[0]);
+            Plane {
+                a: v[0],
+                dadx: (dv1 * fy - dv2 * ey) / area,
+                dady: (dv2 * ex - dv1 * fx) / area,
+            }
+        };
+        let mut planes = Planes {
+            origin: [p0[0], p0[1]],
+            depth: plane([p0[2], p1[2], p2[2]]),
+            ..Planes::ZERO
+        };
+        if used.any() {
+            let inv_w = window.map(|p| p[3]);
+            planes.inv_w = plane(inv_w);
+            for k in used.indices() {
+                let v = [0, 1, 2].map(|i| varyings[i][k] * inv_w[i]);
+                planes.varyings[k] = plane(v);
+            }
+        }
+        planes
+    }
+
+    /// The depth at the centre of pixel (x, y). Summed in its own order (a, then x, then y):
+    /// the depth buffer and the probe take it so, and the reference's pixels agree with it.
+    #[inline(always)]
+    pub(crate) fn depth_at(&self, x: f32, y: f32) -> f32 {
+        let plane = &self.depth;
+        plane.a + plane.dadx * (x - self.origin[0]) + plane.dady * (y - self.origin[1])
+    }
+
+    /// A plane's value at eight pixel centres of one row: the row's value, then x's share.
+    #[inline(always)]
+    fn lanes_at(&self, plane: &Plane, x: F8, y: f32) -> F8 {
+        let row = plane.a + plane.dady * (y - self.origin[1]);
+        (x - F8::splat(self.origin[0])).mul_add(F8::splat(plane.dadx), F8::splat(row))
+    }
+
+    /// w at eight pixels, from the plane of 1/w.
+    #[inline(always)]
+    pub(crate) fn w(&self, x: F8, y: f32) -> F8 {
+        F8::splat(1.0) / self.lanes_at(&self.inv_w, x, y)
+    }
+
+    /// Varying `k`, perspective-correct, at eight pixels, given w there.
+    #[inline(always)]
+    pub(crate) fn varying(&self, k: usize, x: F8, y: f32, w: F8) -> F8 {
+        self.lanes_at(&self.varyings[k], x, y) * w
+    }
+
+    /// Varyings `first..first + 3` at eight pixels, given w there.
+    #[inline(always)]
+    pub(crate) fn varying3(&self, first: usize, x: F8, y: f32, w: F8) -> V8 {
+        V8 {
+            x: self.varying(first, x, y, w),
+            y: self.varying(first + 1, x, y, w),
+            z: self.varying(first + 2, x, y, w),
+        }
+    }
+
+    /// The texture coordinates (s, t) at eight pixels, given w there.
+    #[inline(always)]
+    pub(crate) fn texture_coordinates(&self, x: F8, y: f32, w: F8) -> (F8, F8) {
+        (self.varying(UV, x, y, w), self.varying(UV + 1, x, y, w))
+    }
+}

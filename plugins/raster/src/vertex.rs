@@ -1,0 +1,126 @@
+//! The vertex stage: each vertex as setup takes it, its window position and its varyings (in
+//! the layout `varyings` gives): the mesh's vertices lit (Gouraud) or passed on (Phong) in
+//! parallel, then the vertices clipping made, blended from their triangle's corners as a GPU's
+//! clipper blends them.
+
+use close2gl_core::{RasterGeometry, Shading};
+use glam::Vec3;
+use rayon::prelude::*;
+
+use crate::edge::{FIXED_ONE, GUARD_PX, snap};
+use crate::lanes::V8;
+use crate::lighting::Light;
+use crate::setup::Corner;
+use crate::varyings::{EYE, INTENSITY, NORMAL, UV, VARYINGS};
+
+/// Mesh vertices per parallel task.
+const CHUNK: usize = 16384;
+
+/// A vertex as the pipeline and the vertex stage left it.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Vertex {
+    /// x, y in window pixels, depth, 1/w.
+    pub window: [f32; 4],
+    pub varyings: [f32; VARYINGS],
+}
+
+impl Vertex {
+    const ZERO: Vertex = Vertex {
+        window: [0.0; 4],
+        varyings: [0.0; VARYINGS],
+    };
+
+    /// The vertex as a corner at its own position.
+    pub(crate) fn corner(&self) -> Corner {
+        Corner {
+            fixed: self.fixed(),
+            window: self.window,
+            varyings: self.varyings,
+        }
+    }
+
+    /// The same vertex moved to a fixed-point position (where a line's or a point's rectangle
+    /// has its corners), keeping depth, 1/w and the varyings.
+    pub(crate) fn moved(&self, fixed: [i64; 2]) -> Corner {
+        let to_window = |f: i64| f as f32 / FIXED_ONE as f32 + 0.5;
+        let mut window = self.window;
+        window[0] = to_window(fixed[0]);
+        window[1] = to_window(fixed[1]);
+        Corner {
+            fixed,
+            window,
+            varyings: self.varyings,
+        }
+    }
+
+    pub(crate) fn fixed(&self) -> [i64; 2] {
+        [snap(self.window[0]), snap(self.window[1])]
+    }
+
+    /// Whether the fixed-point arithmetic can hold this vertex (see [`GUARD_PX`]); false for
+    /// NaN and infinities too. A primitive with a corner outside is not drawn.
+    pub(crate) fn in_guard_band(&self) -> bool {
+        self.window[..2].iter().all(|x| x.abs() <= GUARD_PX)
+    }
+}
+
+/// Fills `vertices` with every vertex of `raster`: the mesh's, then the cuts'.
+pub(crate) fn vertex_stage(
+    raster: &RasterGeometry,
+    shading: Shading,
+    light: &Light,
+    vertices: &mut Vec<Vertex>,
+) {
+    let mesh_vertices = raster.vertices.len();
+    vertices.resize(mesh_vertices + raster.cuts.len(), Vertex::ZERO);
+    let (mesh, cuts) = vertices.split_at_mut(mesh_vertices);
+    mesh.par_chunks_mut(CHUNK)
+        .zip(raster.vertices.par_chunks(CHUNK))
+        .for_each(|(out, vertices)| {
+            for (o, v) in out.iter_mut().zip(vertices) {
+                let (eye, normal) = (Vec3::from(v.eye), Vec3::from(v.normal));
+                *o = Vertex {
+                    window: v.window,
+                    varyings: vertex_varyings(shading, light, eye, normal, v.uv),
+                };
+            }
+        });
+    for (o, cut) in cuts.iter_mut().zip(&raster.cuts) {
+        let mut varyings = [0.0; VARYINGS];
+        for (corner, weight) in cut.corners.iter().zip(cut.weights) {
+            let from = &mesh[*corner as usize].varyings;
+            for (v, f) in varyings.iter_mut().zip(from) {
+                *v += weight * f;
+            }
+        }
+        *o = Vertex {
+            window: cut.window,
+            varyings,
+        };
+    }
+}
+
+/// A vertex's varyings from its eye position, normal and texture coordinates.
+#[inline(always)]
+fn vertex_varyings(
+    shading: Shading,
+    light: &Light,
+    eye: Vec3,
+    normal: Vec3,
+    uv: [f32; 2],
+) -> [f32; VARYINGS] {
+    let mut v = [0.0; VARYINGS];
+    match shading {
+        Shading::None => {}
+        Shading::GouraudAd | Shading::GouraudAds => {
+            let i = light.illumination(V8::splat(eye), V8::splat(normal));
+            v[INTENSITY..INTENSITY + 3].copy_from_slice(&[i.x.0[0], i.y.0[0], i.z.0[0]]);
+        }
+        Shading::Phong => {
+            v[EYE..EYE + 3].copy_from_slice(&eye.to_array());
+            v[NORMAL..NORMAL + 3].copy_from_slice(&normal.to_array());
+        }
+    }
+    v[UV..UV + 2].copy_from_slice(&uv);
+    v
+}

@@ -1,0 +1,281 @@
+//! The rasterizer's output pinned to hashes: scenes covering every path (each shading, each texture
+//! filter, wireframe, points, both clippings, culling, many tiles, fates recorded), drawn on one
+//! thread and on two, each image and depth buffer (and, while fates are recorded, the owner of each
+//! pixel and the fate counts) hashed with FNV-1a and compared with the hash the rasterizer gave
+//! when the constants were taken. A restructuring that changes no pixel keeps them all; any change
+//! of output, however small, fails here and names the scene. A change meant to alter the output (a
+//! fix for parity with the reference, say) takes the new hashes this test prints, in the same
+//! commit, saying why.
+
+use TextureFilter::Nearest;
+use close2gl_core::glam::{Vec2, Vec3};
+use close2gl_core::{
+    Clipping, Mesh, Rasterizer, RenderMode, RenderSettings, Shading, SoftwareFrame, Texture,
+    TextureFilter, Viewport,
+};
+
+mod common;
+use common::{Drawing, Scene};
+
+/// 64-bit FNV-1a.
+struct Fnv(u64);
+
+impl Fnv {
+    fn new() -> Fnv {
+        Fnv(0xcbf2_9ce4_8422_2325)
+    }
+
+    fn bytes(&mut self, bytes: &[u8]) {
+        for &b in bytes {
+            self.0 ^= b as u64;
+            self.0 = self.0.wrapping_mul(0x0100_0000_01b3);
+        }
+    }
+}
+
+/// A wavy ground from beside the eye to far ahead (so the near and side planes cut it), with
+/// normals that vary (so the shadings differ) and texture coordinates that repeat (so the far
+/// part is minified), and a sphere standing on it (so the depth test has work).
+fn scene_mesh() -> Mesh {
+    let mut mesh = Mesh {
+        name: "golden".into(),
+        positions: Vec::new(),
+        normals: Vec::new(),
+        uvs: Vec::new(),
+        triangles: Vec::new(),
+    };
+    ground(&mut mesh, 90);
+    sphere(&mut mesh, Vec3::new(0.3, -0.2, -3.0), 0.8, 24);
+    mesh
+}
+
+fn ground(mesh: &mut Mesh, n: u32) {
+    let first = mesh.positions.len() as u32;
+    for i in 0..=n {
+        for j in 0..=n {
+            let (a, b) = (i as f32 / n as f32, j as f32 / n as f32);
+            let (x, z) = (a * 4.0 - 2.0, b * -9.0 + 1.0);
+            let y = -0.6 + 0.15 * (3.0 * x).sin() * (2.0 * z).cos();
+            let slope = Vec2::new(
+                0.45 * (3.0 * x).cos() * (2.0 * z).cos(),
+                -0.3 * (3.0 * x).sin() * (2.0 * z).sin(),
+            );
+            mesh.positions.push(Vec3::new(x, y, z));
+            mesh.normals
+                .push(Vec3::new(-slope.x, 1.0, -slope.y).normalize());
+            mesh.uvs.push(Vec2::new(a * 3.0, b * 7.0));
+        }
+    }
+    grid_triangles(mesh, first, n, n);
+}
+
+fn sphere(mesh: &mut Mesh, centre: Vec3, radius: f32, n: u32) {
+    let first = mesh.positions.len() as u32;
+    for i in 0..=n {
+        for j in 0..=n {
+            let (a, b) = (i as f32 / n as f32, j as f32 / n as f32);
+            let (theta, phi) = (b * std::f32::consts::PI, a * std::f32::consts::TAU);
+            let normal = Vec3::new(
+                theta.sin() * phi.cos(),
+                theta.cos(),
+                theta.sin() * phi.sin(),
+            );
+            mesh.positions.push(centre + normal * radius);
+            mesh.normals.push(normal);
+            mesh.uvs.push(Vec2::new(a * 2.0, 1.0 - b));
+        }
+    }
+    grid_triangles(mesh, first, n, n);
+}
+
+/// Two triangles for each cell of a (rows + 1) × (columns + 1) grid of vertices from `first`.
+fn grid_triangles(mesh: &mut Mesh, first: u32, rows: u32, columns: u32) {
+    let at = |i: u32, j: u32| first + i * (columns + 1) + j;
+    for i in 0..rows {
+        for j in 0..columns {
+            mesh.triangles
+                .push([at(i, j), at(i + 1, j), at(i + 1, j + 1)]);
+            mesh.triangles
+                .push([at(i, j), at(i + 1, j + 1), at(i, j + 1)]);
+        }
+    }
+}
+
+/// One pinned scene: its name, settings, whether fates are recorded, and its hash.
+struct Pinned {
+    name: &'static str,
+    settings: RenderSettings,
+    record: bool,
+    hash: u64,
+}
+
+fn scene(name: &'static str, hash: u64, change: impl FnOnce(&mut RenderSettings)) -> Pinned {
+    let mut settings = RenderSettings {
+        backface_culling: false,
+        close2gl_raster: Rasterizer::Software,
+        texture: false,
+        ..RenderSettings::default()
+    };
+    change(&mut settings);
+    Pinned {
+        name,
+        settings,
+        record: false,
+        hash,
+    }
+}
+
+fn pinned() -> Vec<Pinned> {
+    use Shading::*;
+    use TextureFilter::{Bilinear, Trilinear};
+    let textured = |filter, shading| {
+        move |s: &mut RenderSettings| {
+            (s.texture, s.texture_filter, s.shading) = (true, filter, shading);
+        }
+    };
+    vec![
+        scene("flat", 0x69ab173e139877c8, |s| s.shading = None),
+        scene("gouraud_ad", 0x7a6e8f0d5f25b596, |s| s.shading = GouraudAd),
+        scene("gouraud_ads", 0x64a31769e23184d7, |s| {
+            s.shading = GouraudAds
+        }),
+        scene("phong", 0x38bb8b873515339a, |s| s.shading = Phong),
+        scene("nearest_flat", 0xbf13d3482eb3b0ac, textured(Nearest, None)),
+        scene(
+            "bilinear_gouraud",
+            0x6909fcb9b65cc1dc,
+            textured(Bilinear, GouraudAds),
+        ),
+        scene(
+            "trilinear_phong",
+            0x0d5a05696fecb078,
+            textured(Trilinear, Phong),
+        ),
+        scene(
+            "trilinear_flat",
+            0x7e82b39f8be46675,
+            textured(Trilinear, None),
+        ),
+        scene("wireframe_phong", 0xb6011ac65b729a43, |s| {
+            (s.mode, s.shading) = (RenderMode::Wireframe, Phong)
+        }),
+        scene("points_gouraud", 0x25b03173e147c062, |s| {
+            (s.mode, s.shading) = (RenderMode::Points, GouraudAd)
+        }),
+        scene("simple_clipping_culled", 0x54aa7bbc3bf70f79, |s| {
+            (s.clipping, s.backface_culling, s.shading) = (Clipping::Simple, true, Phong)
+        }),
+        Pinned {
+            record: true,
+            ..scene(
+                "recorded_trilinear_phong",
+                0xd93af1c4c89e234d,
+                textured(Trilinear, Phong),
+            )
+        },
+        Pinned {
+            record: true,
+            ..scene("recorded_wireframe", 0x59e4590afb0ba759, |s| {
+                s.mode = RenderMode::Wireframe
+            })
+        },
+    ]
+}
+
+/// The scenes' fixed part: the mesh, the camera, the lighting and the checkerboard, in a
+/// viewport that is not a whole number of 64-pixel tiles either way (the edge tiles are
+/// partial).
+fn with_scene(draw: impl FnOnce(&Scene<'_>)) {
+    let mesh = scene_mesh();
+    let texture = Texture::default();
+    let viewport = Viewport {
+        width: 301,
+        height: 203,
+    };
+    draw(&Scene::new(&mesh, viewport, Some(&texture)));
+}
+
+/// Draws every pinned scene with one rasterizer (its buffers reused from scene to scene, as
+/// the app reuses them from frame to frame) and hashes what each drew.
+fn draw_pinned(scene: &Scene<'_>, pinned: &[Pinned]) -> Vec<u64> {
+    let mut drawing = Drawing::default();
+    let mut hashes = Vec::new();
+    for p in pinned {
+        drawing.draw(scene, &p.settings, p.record);
+        assert!(drawing.frame.counts.drawn > 0, "{}: nothing drawn", p.name);
+        hashes.push(hash(&drawing, scene.viewport, p.record));
+    }
+    hashes
+}
+
+/// The image and the depth buffer; while fates are recorded, each pixel's owner and the counts.
+fn hash(drawing: &Drawing, viewport: Viewport, record: bool) -> u64 {
+    let (image, rasterizer) = (&drawing.image, &drawing.rasterizer);
+    let mut hash = Fnv::new();
+    hash.bytes(&image.width.to_le_bytes());
+    hash.bytes(&image.height.to_le_bytes());
+    hash.bytes(image.pixels.as_flattened());
+    for (x, y) in (0..viewport.height).flat_map(|y| (0..viewport.width).map(move |x| (x, y))) {
+        let depth = rasterizer.depth(x, y).unwrap_or(f32::NAN);
+        hash.bytes(&depth.to_bits().to_le_bytes());
+        if record {
+            let owner = rasterizer.owner(x, y).unwrap_or(u32::MAX);
+            hash.bytes(&owner.to_le_bytes());
+        }
+    }
+    if record {
+        hash.bytes(format!("{:?}", drawing.fates.counts).as_bytes());
+    }
+    hash.0
+}
+
+/// Whether the images show something: the background alone would hash the same every time.
+fn distinct_colours(image: &SoftwareFrame) -> usize {
+    let mut colours: Vec<[u8; 4]> = image.pixels.clone();
+    colours.sort_unstable();
+    colours.dedup();
+    colours.len()
+}
+
+#[test]
+fn every_path_draws_the_pixels_it_drew_when_the_hashes_were_taken() {
+    let pinned = pinned();
+    for threads in [1, 2] {
+        let pool = rayon::ThreadPoolBuilder::new()
+            .num_threads(threads)
+            .build()
+            .expect("a thread pool");
+        let mut hashes = Vec::new();
+        with_scene(|scene| hashes = pool.install(|| draw_pinned(scene, &pinned)));
+        let wrong: Vec<String> = pinned
+            .iter()
+            .zip(&hashes)
+            .filter(|(p, hash)| p.hash != **hash)
+            .map(|(p, hash)| format!("{}: {hash:#018x} (pinned {:#018x})", p.name, p.hash))
+            .collect();
+        assert!(
+            wrong.is_empty(),
+            "on {threads} thread(s), scenes drew other pixels:\n{}",
+            wrong.join("\n")
+        );
+    }
+}
+
+/// The scenes hashed above are real pictures: two colours at least (model and background) in
+/// the flat ones, many in the shaded and textured ones.
+#[test]
+fn the_pinned_scenes_are_not_blank() {
+    with_scene(|scene| {
+        for p in pinned() {
+            let mut drawing = Drawing::default();
+            drawing.draw(scene, &p.settings, p.record);
+            let colours = distinct_colours(&drawing.image);
+            let s = &p.settings;
+            // Flat colour: the model's and the background (and a checker's two squares,
+            // unfiltered).
+            let flat = s.shading == Shading::None && (!s.texture || s.texture_filter == Nearest);
+            let least = if flat { 2 } else { 50 };
+            assert!(colours >= least, "{}: {colours} colours", p.name);
+        }
+    });
+}
