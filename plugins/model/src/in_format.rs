@@ -28,6 +28,15 @@ pub(crate) fn read_in<R: Read>(
     open: impl Fn() -> Result<R, String>,
     label: &str,
 ) -> Result<LoadedModel, String> {
+    read_in_blocks(open, label, in_parallel::block_bytes())
+}
+
+/// [`read_in`] reading the triangles `block` bytes at a time (the tests use tiny blocks).
+pub(crate) fn read_in_blocks<R: Read>(
+    open: impl Fn() -> Result<R, String>,
+    label: &str,
+    block: usize,
+) -> Result<LoadedModel, String> {
     let mut records = Records::new(Lines::new(BufReader::new(open()?), label));
     let header = Header::read(&mut records)?;
     let body_start = records.next_offset();
@@ -35,8 +44,8 @@ pub(crate) fn read_in<R: Read>(
     let mut body = open()?;
     io::copy(&mut (&mut body).take(body_start), &mut io::sink())
         .map_err(|e| format!("{label}: cannot read: {e}"))?;
-    let builder = MeshBuilder::new(header.name.clone());
-    match in_parallel::read_body(body, &header.layout, builder, label)? {
+    let builder = Body::new(MeshBuilder::new(header.name.clone()));
+    match in_parallel::read_body(body, &header.layout, builder, block, label)? {
         Some(body) => Ok(header.finish(body, label)),
         None => read_in_lines(Lines::new(BufReader::new(open()?), label)),
     }

@@ -12,26 +12,20 @@ use close2gl_core::limits::MAX_LINE_BYTES;
 
 use crate::decimal::parse_f32;
 use crate::in_format::{Body, FileTriangle, Orientation, VERTEX_TAGS, VertexLayout};
-use crate::mesh_builder::MeshBuilder;
 
 /// Bytes read at a time for each core: large enough that the cores' start and join are nothing
 /// beside the parse, small enough that the text held stays small beside the mesh.
 const BLOCK_BYTES_PER_CORE: usize = 1 << 20;
 
-/// Reads the triangles that follow the header from `reader` into `builder`: the body, or `None`
-/// when the file must be read line by line instead. `Err` only when reading fails.
-pub(crate) fn read_body<R: Read>(
-    reader: R,
-    layout: &VertexLayout,
-    builder: MeshBuilder,
-    label: &str,
-) -> Result<Option<Body>, String> {
-    let block = BLOCK_BYTES_PER_CORE * rayon::current_num_threads();
-    read_blocks(reader, layout, Body::new(builder), block, label)
+/// Bytes read at a time: [`BLOCK_BYTES_PER_CORE`] for each core.
+pub(crate) fn block_bytes() -> usize {
+    BLOCK_BYTES_PER_CORE * rayon::current_num_threads()
 }
 
-/// [`read_body`] in blocks of about `block` bytes (the tests use tiny ones).
-pub(crate) fn read_blocks<R: Read>(
+/// Reads the triangles that follow the header from `reader` into `body`, about `block` bytes
+/// at a time: the body, or `None` when the file must be read line by line instead. `Err` only
+/// when reading fails.
+pub(crate) fn read_body<R: Read>(
     mut reader: R,
     layout: &VertexLayout,
     mut body: Body,
@@ -49,7 +43,8 @@ pub(crate) fn read_blocks<R: Read>(
             if text.len() > block + 4 * (MAX_LINE_BYTES + 1) {
                 return Ok(None); // No v0 record in sight: let the line reader say why.
             }
-            want = text.len() + block;
+            // Geometric growth, so that a long run without records costs linear time.
+            want = text.len() + block.max(text.len());
             continue;
         };
         want = block;
@@ -265,3 +260,6 @@ fn trim(line: &[u8]) -> &[u8] {
         .map_or(start, |i| i + 1);
     &line[start..end]
 }
+
+#[cfg(test)]
+mod tests;
