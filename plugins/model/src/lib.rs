@@ -14,6 +14,7 @@
 //! camera plugin's job (it watches `Changed<Mesh>`, in `FrameSet::Camera`).
 
 mod background;
+mod corner_index;
 mod decimal;
 mod diagnostics;
 mod in_format;
