@@ -13,9 +13,13 @@ pub(crate) struct CornerIndex {
 }
 
 impl CornerIndex {
-    /// The vertex that holds `fingerprint`, if any. `fingerprint_of` gives a vertex's
-    /// fingerprint, for the rare slot whose tag matches and is not the corner sought.
-    pub(crate) fn get(&self, fingerprint: u64, fingerprint_of: impl Fn(u32) -> u64) -> Option<u32> {
+    /// The vertex that holds `fingerprint`, if any. `has_fingerprint` says whether a vertex
+    /// whose slot has the fingerprint's tag has the whole fingerprint.
+    pub(crate) fn get(
+        &self,
+        fingerprint: u64,
+        has_fingerprint: impl Fn(u32) -> bool,
+    ) -> Option<u32> {
         if self.slots.is_empty() {
             return None;
         }
@@ -27,7 +31,7 @@ impl CornerIndex {
                 return None;
             }
             let vertex = slot as u32;
-            if slot >> 32 == tag(fingerprint) && fingerprint_of(vertex) == fingerprint {
+            if slot >> 32 == tag(fingerprint) && has_fingerprint(vertex) {
                 return Some(vertex);
             }
             at = (at + 1) & mask;
@@ -90,7 +94,7 @@ mod tests {
         let mut index = CornerIndex::default();
         let mut answers = Vec::new();
         for (i, &f) in fingerprints.iter().enumerate() {
-            let found = index.get(f, |v| fingerprints[v as usize]);
+            let found = index.get(f, |v| fingerprints[v as usize] == f);
             if found.is_none() {
                 index.insert(f, i as u32);
             }

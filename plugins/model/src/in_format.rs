@@ -10,7 +10,7 @@ use glam::{Vec2, Vec3};
 use crate::diagnostics::expected;
 use crate::in_parallel;
 use crate::lines::Lines;
-use crate::mesh_builder::MeshBuilder;
+use crate::mesh_builder::{Corner, MeshBuilder};
 use crate::{LoadedModel, file_stem};
 
 pub(crate) const VERTEX_TAGS: [&str; 3] = ["v0", "v1", "v2"];
@@ -139,19 +139,18 @@ impl Body {
 
     /// Adds a triangle as the file gives it.
     fn add(&mut self, triangle: FileTriangle) -> Result<(), String> {
-        let triangle = self.orientation.orient(triangle);
-        self.add_oriented(&triangle)
+        let corners = self.orientation.orient(triangle).corners();
+        self.add_corners(&corners)
     }
 
-    /// Adds a triangle [`Orientation::orient`] has seen (whose counts the caller keeps).
-    pub(crate) fn add_oriented(&mut self, t: &FileTriangle) -> Result<(), String> {
-        let mut corners = [0; 3];
-        for (k, corner) in corners.iter_mut().enumerate() {
-            *corner = self
-                .builder
-                .vertex(t.positions[k], t.normals[k], t.uvs[k])?;
+    /// Adds the corners of a triangle [`Orientation::orient`] has seen (whose counts the caller
+    /// keeps).
+    pub(crate) fn add_corners(&mut self, corners: &[Corner; 3]) -> Result<(), String> {
+        let mut indices = [0; 3];
+        for (index, corner) in indices.iter_mut().zip(corners) {
+            *index = self.builder.corner(corner)?;
         }
-        self.builder.triangle(corners);
+        self.builder.triangle(indices);
         self.triangles += 1;
         Ok(())
     }
@@ -422,6 +421,11 @@ impl FileTriangle {
 
     pub(crate) fn set_face_normal(&mut self, n: &[f32]) {
         self.face_normal = Vec3::new(n[0], n[1], n[2]);
+    }
+
+    /// The corners as the mesh builder takes them.
+    pub(crate) fn corners(&self) -> [Corner; 3] {
+        [0, 1, 2].map(|k| Corner::new(self.positions[k], self.normals[k], self.uvs[k]))
     }
 }
 

@@ -12,6 +12,7 @@ use close2gl_core::limits::MAX_LINE_BYTES;
 
 use crate::decimal::parse_f32;
 use crate::in_format::{Body, FileTriangle, Orientation, VERTEX_TAGS, VertexLayout};
+use crate::mesh_builder::Corner;
 
 /// Bytes read at a time for each core: large enough that the cores' start and join are nothing
 /// beside the parse, small enough that the text held stays small beside the mesh.
@@ -142,9 +143,9 @@ fn starts_v0(text: &[u8]) -> bool {
         .is_some_and(|w| w[..2].eq_ignore_ascii_case(b"v0") && is_space(w[2]))
 }
 
-/// The triangles of one piece, oriented, and what orienting them corrected.
+/// The triangles of one piece, oriented and made corners, and what orienting them corrected.
 struct Piece {
-    triangles: Vec<FileTriangle>,
+    triangles: Vec<[Corner; 3]>,
     orientation: Orientation,
 }
 
@@ -155,8 +156,8 @@ fn join(body: &mut Body, pieces: Vec<Option<Piece>>) -> Result<bool, String> {
             return Ok(false);
         };
         body.orientation.absorb(&piece.orientation);
-        for triangle in &piece.triangles {
-            body.add_oriented(triangle)?;
+        for corners in &piece.triangles {
+            body.add_corners(corners)?;
         }
     }
     Ok(true)
@@ -186,7 +187,9 @@ fn parse_piece(text: &[u8], layout: &VertexLayout) -> Option<Piece> {
         }
         let face = read_numbers(records.next()??, &["face", "normal"], &[3], &mut numbers)?;
         triangle.set_face_normal(face);
-        piece.triangles.push(piece.orientation.orient(triangle));
+        piece
+            .triangles
+            .push(piece.orientation.orient(triangle).corners());
     }
     Some(piece)
 }

@@ -38,29 +38,38 @@ impl MeshBuilder {
         normal: Vec3,
         uv: Option<Vec2>,
     ) -> Result<u32, String> {
-        if uv.is_some() && !self.textured {
+        self.corner(&Corner::new(position, normal, uv))
+    }
+
+    /// The index of the vertex `c`, added if it is new.
+    pub(crate) fn corner(&mut self, c: &Corner) -> Result<u32, String> {
+        if c.textured && !self.textured {
             self.textured = true;
             self.mesh.uvs.resize(self.mesh.positions.len(), Vec2::ZERO);
         }
-        let (position, normal, uv) = (position + 0.0, normal + 0.0, uv.unwrap_or_default() + 0.0);
-        let key = bits(position, normal, uv);
-        let found = self
-            .index
-            .get(fingerprint(&key), |i| fingerprint(&self.key_of(i as usize)));
+        let found = self.index.get(c.fingerprint, |i| {
+            let key = self.key_of(i as usize);
+            key == c.key || fingerprint(&key) == c.fingerprint
+        });
         if let Some(i) = found
-            && self.key_of(i as usize) == key
+            && self.key_of(i as usize) == c.key
         {
             return Ok(i);
         }
         let i = u32::try_from(self.mesh.positions.len())
             .map_err(|_| "more vertices than 32-bit indices can address".to_string())?;
-        self.mesh.positions.push(position);
-        self.mesh.normals.push(normal);
+        let number = |k: usize| f32::from_bits(c.key[k]);
+        self.mesh
+            .positions
+            .push(Vec3::new(number(0), number(1), number(2)));
+        self.mesh
+            .normals
+            .push(Vec3::new(number(3), number(4), number(5)));
         if self.textured {
-            self.mesh.uvs.push(uv);
+            self.mesh.uvs.push(Vec2::new(number(6), number(7)));
         }
         if found.is_none() {
-            self.index.insert(fingerprint(&key), i);
+            self.index.insert(c.fingerprint, i);
         }
         Ok(i)
     }
@@ -77,6 +86,27 @@ impl MeshBuilder {
     /// The mesh; without texture coordinates when no corner had one.
     pub(crate) fn finish(self) -> Mesh {
         self.mesh
+    }
+}
+
+/// A corner as the builder compares corners, made apart from the builder (on any thread): the
+/// bits of its eight numbers (-0.0 made 0.0, a missing texture coordinate (0, 0)) and their
+/// fingerprint.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Corner {
+    key: [u32; 8],
+    fingerprint: u64,
+    textured: bool,
+}
+
+impl Corner {
+    pub(crate) fn new(position: Vec3, normal: Vec3, uv: Option<Vec2>) -> Self {
+        let key = bits(position + 0.0, normal + 0.0, uv.unwrap_or_default() + 0.0);
+        Self {
+            key,
+            fingerprint: fingerprint(&key),
+            textured: uv.is_some(),
+        }
     }
 }
 
