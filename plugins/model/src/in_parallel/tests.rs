@@ -3,13 +3,14 @@
 //! read in blocks small enough that every record boundary gets cut.
 
 use std::cell::Cell;
-use std::io::BufReader;
+use std::io::{BufReader, Read};
 
 use proptest::prelude::*;
 
 use crate::LoadedModel;
 use crate::in_format::{read_in_blocks, read_in_lines};
 use crate::lines::Lines;
+use crate::progress::{Counted, LoadProgress};
 
 /// What a load gives, with every number's bits (`Debug` tells -0.0 from 0.0).
 fn outcome(result: Result<LoadedModel, String>) -> String {
@@ -208,4 +209,57 @@ fn a_body_without_triangles_and_a_huge_line_go_to_the_line_reader() {
             assert_eq!(parallel, lines);
         }
     }
+}
+
+/// A header and `triangles` copies of one triangle: a body of many blocks.
+fn many_triangles(triangles: usize) -> String {
+    let header = "Object name = a\n# triangles = 1\nMaterial count = 1\nambient color 0 0 0\n\
+                  diffuse color 0 0 0\nspecular color 0 0 0\nmaterial shine 1\n-- c\n";
+    let triangle = "v0 0 0 0 0 0 1 0\nv1 1 0 0 0 0 1 0\nv2 0 1 0 0 0 1 0\nface normal 0 0 1\n";
+    header.to_string() + &triangle.repeat(triangles)
+}
+
+/// Gives `text`, and cancels `progress` once `after` bytes have been read.
+struct CancelAfter<'a> {
+    text: &'a [u8],
+    at: usize,
+    after: usize,
+    progress: &'a LoadProgress,
+}
+
+impl Read for CancelAfter<'_> {
+    fn read(&mut self, buf: &mut [u8]) -> std::io::Result<usize> {
+        if self.at >= self.after {
+            self.progress.cancel();
+        }
+        let n = (&self.text[self.at..]).read(buf)?;
+        self.at += n;
+        Ok(n)
+    }
+}
+
+#[test]
+fn progress_reaches_the_end_and_a_cancelled_load_stops_between_blocks() {
+    let text = many_triangles(20_000);
+    let load = |after: usize| {
+        let progress = LoadProgress::default();
+        progress.set_total(text.len() as u64);
+        let open = || {
+            Ok(Counted {
+                inner: CancelAfter {
+                    text: text.as_bytes(),
+                    at: 0,
+                    after,
+                    progress: &progress,
+                },
+                progress: &progress,
+            })
+        };
+        let loaded = read_in_blocks(open, "c.in", 64 << 10).map(|m| m.mesh.triangles.len());
+        (loaded, progress.fraction())
+    };
+    assert_eq!(load(usize::MAX), (Ok(20_000), 1.0));
+    let (cancelled, fraction) = load(text.len() / 3);
+    assert_eq!(cancelled, Err("c.in: cannot read: cancelled".to_string()));
+    assert!((0.3..0.5).contains(&fraction), "{fraction}");
 }
