@@ -20,35 +20,51 @@ fn plain_decimal(word: &[u8]) -> Option<f32> {
         b'+' => (false, &word[1..]),
         _ => (false, word),
     };
-    let (whole, fraction) = match digits.iter().position(|&b| b == b'.') {
-        Some(dot) => (&digits[..dot], Some(&digits[dot + 1..])),
-        None => (digits, None),
-    };
-    if whole.is_empty() || fraction.is_some_and(<[u8]>::is_empty) {
+    let mut mantissa = 0;
+    let mut digits = digits.iter();
+    let mut whole_digits = 0;
+    let mut dot = false;
+    for &b in digits.by_ref() {
+        if b == b'.' {
+            dot = true;
+            break;
+        }
+        push_digit(&mut mantissa, b)?;
+        whole_digits += 1;
+    }
+    // Fraction digits, but for its trailing zeros, which change nothing: zeros are held back
+    // until a digit after them shows they are not trailing.
+    let (mut fraction, mut zeros, mut fraction_digits) = (0, 0, 0);
+    for &b in digits {
+        fraction_digits += 1;
+        if b == b'0' {
+            zeros += 1;
+            continue;
+        }
+        for _ in 0..zeros {
+            push_digit(&mut mantissa, b'0')?;
+        }
+        push_digit(&mut mantissa, b)?;
+        fraction += zeros + 1;
+        zeros = 0;
+    }
+    if whole_digits == 0 || (dot && fraction_digits == 0) || fraction >= EXACT_POWERS.len() {
         return None;
     }
-    let fraction = fraction.unwrap_or_default();
-    let fraction = &fraction[..fraction.len() - trailing_zeros(fraction)];
-    if fraction.len() >= EXACT_POWERS.len() {
-        return None;
-    }
-    let mut mantissa: u32 = 0;
-    for &b in whole.iter().chain(fraction) {
-        let digit = b.wrapping_sub(b'0');
-        if digit > 9 {
-            return None;
-        }
-        mantissa = mantissa.checked_mul(10)?.checked_add(u32::from(digit))?;
-        if mantissa > 1 << 24 {
-            return None;
-        }
-    }
-    let value = mantissa as f32 / EXACT_POWERS[fraction.len()];
+    let value = mantissa as f32 / EXACT_POWERS[fraction];
     Some(if negative { -value } else { value })
 }
 
-fn trailing_zeros(digits: &[u8]) -> usize {
-    digits.iter().rev().take_while(|&&b| b == b'0').count()
+/// `mantissa` with the decimal digit `b` appended, if `b` is a digit and the result is exact as
+/// an `f32` (at most 2^24).
+fn push_digit(mantissa: &mut u32, b: u8) -> Option<()> {
+    let digit = b.wrapping_sub(b'0');
+    if digit > 9 {
+        return None;
+    }
+    // No overflow: the mantissa never passes 2^24 between calls.
+    *mantissa = *mantissa * 10 + u32::from(digit);
+    (*mantissa <= 1 << 24).then_some(())
 }
 
 #[cfg(test)]

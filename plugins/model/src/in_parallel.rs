@@ -231,7 +231,7 @@ fn read_numbers<'n>(
     counts: &[usize],
     numbers: &'n mut [f32; 9],
 ) -> Option<&'n [f32]> {
-    let mut words = record.split(|&b| is_space(b)).filter(|w| !w.is_empty());
+    let mut words = Words(record);
     for keyword in keywords {
         if !words.next()?.eq_ignore_ascii_case(keyword.as_bytes()) {
             return None;
@@ -244,6 +244,21 @@ fn read_numbers<'n>(
         count += 1;
     }
     counts.contains(&count).then_some(&numbers[..count])
+}
+
+/// The words of a record: its runs of bytes other than spaces.
+struct Words<'t>(&'t [u8]);
+
+impl<'t> Iterator for Words<'t> {
+    type Item = &'t [u8];
+
+    fn next(&mut self) -> Option<&'t [u8]> {
+        let start = self.0.iter().position(|&b| !is_space(b))?;
+        let rest = &self.0[start..];
+        let end = rest.iter().position(|&b| is_space(b)).unwrap_or(rest.len());
+        self.0 = &rest[end..];
+        Some(&rest[..end])
+    }
 }
 
 /// The ASCII bytes `char::is_whitespace` takes for space, as `str::trim` and
