@@ -1,5 +1,5 @@
 //! The triangles of a `.in` file read on all cores. The body is read in blocks; each block ends
-//! where a `v0` record starts and is cut, at `v0` records too, into one piece per core; the
+//! where a `v0` record starts and is cut, at `v0` records too, into pieces (four per core); the
 //! pieces are parsed at once and their triangles joined in file order, the mesh of one block
 //! being built while the next block is parsed. Only files whose every record is right are taken
 //! this way: a piece with anything the line-by-line reader might refuse or read differently
