@@ -41,11 +41,11 @@ pub(crate) fn read_in_blocks<R: Read>(
     let header = Header::read(&mut records)?;
     let body_start = records.next_offset();
     drop(records);
-    let mut body = open()?;
-    io::copy(&mut (&mut body).take(body_start), &mut io::sink())
+    let mut reader = open()?;
+    io::copy(&mut (&mut reader).take(body_start), &mut io::sink())
         .map_err(|e| format!("{label}: cannot read: {e}"))?;
-    let builder = Body::new(MeshBuilder::new(header.name.clone()));
-    match in_parallel::read_body(body, &header.layout, builder, block, label)? {
+    let empty = Body::new(MeshBuilder::new(header.name.clone()));
+    match in_parallel::read_body(reader, &header.layout, empty, block, label)? {
         Some(body) => Ok(header.finish(body, label)),
         None => read_in_lines(Lines::new(BufReader::new(open()?), label)),
     }
