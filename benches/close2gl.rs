@@ -4,7 +4,9 @@
 //! clipping cuts thousands of triangles. Then the software rasterizer's whole frame (geometry,
 //! raster, Phong shading) for the bundled knot at 640×480 and 1920×1080 beside the GPU's
 //! reference view of the same scene, its fill rate on full-screen layers, and the 1 M sphere at
-//! 1920×1080. `cargo bench` runs it; `close2gl bench` gives the same figures as JSON.
+//! 1920×1080. Last, loading: a generated grid of 125 k triangles as a `.in` file and as an OBJ
+//! file, file to mesh. `cargo bench` runs it; `close2gl bench` gives the same figures as JSON
+//! (`close2gl bench --load FILE` for loading).
 
 use std::time::Duration;
 
@@ -12,7 +14,8 @@ use close2gl::commands::bench::raster::{SoftwareTimer, layers};
 use close2gl::commands::bench::{baseline, sphere_grid};
 use close2gl::config::Config;
 use close2gl::core::{
-    Camera, Close2glFrame, Mesh, ModelSource, PrimitiveKind, Rasterizer, Shading, Viewport,
+    Camera, Close2glFrame, Mesh, ModelSource, PrimitiveKind, PrimitiveParams, Rasterizer, Shading,
+    Viewport,
 };
 use close2gl::pipeline::FastPipeline;
 use close2gl_gpu::{Gpu, OffscreenPlugin, render_offscreen};
@@ -158,5 +161,29 @@ fn software_raster(c: &mut Criterion) {
     group.finish();
 }
 
-criterion_group!(benches, geometry_stage, software_raster);
+/// A flat grid of 2 · 250² triangles written as a `.in` file (about 20 MB) and as an OBJ file,
+/// loaded as the viewer loads a file; throughput in bytes of the file.
+fn loading(c: &mut Criterion) {
+    let dir = close2gl_testkit::TempDir::new("bench_loading");
+    let mut group = c.benchmark_group("load");
+    group.sample_size(10);
+    let params = PrimitiveParams::default();
+    for name in ["grid.in", "grid.obj"] {
+        let path = dir.0.join(name);
+        let grid = if name.ends_with(".in") {
+            close2gl_testkit::write_grid_in(&path, "grid", 250)
+        } else {
+            close2gl_testkit::write_grid_obj(&path, "grid", 250)
+        }
+        .expect("write the grid");
+        let source = ModelSource::File(path);
+        group.throughput(Throughput::Bytes(grid.bytes));
+        group.bench_function(name, |b| {
+            b.iter(|| close2gl::model::load(&source, &params).expect("the grid loads"))
+        });
+    }
+    group.finish();
+}
+
+criterion_group!(benches, geometry_stage, software_raster, loading);
 criterion_main!(benches);

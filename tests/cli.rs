@@ -163,6 +163,36 @@ fn stats_with_the_software_rasterizer_reports_its_pixels() {
 }
 
 #[test]
+fn bench_load_times_a_model_file_into_its_mesh() {
+    let grid_in = temp("grid.in");
+    let grid_obj = temp("grid.obj");
+    let written = [
+        close2gl_testkit::write_grid_in(&grid_in, "grid", 40).expect("write the .in grid"),
+        close2gl_testkit::write_grid_obj(&grid_obj, "grid", 40).expect("write the .obj grid"),
+    ];
+    for (path, grid) in [grid_in, grid_obj].iter().zip(written) {
+        let path = path.to_str().expect("utf-8");
+        let out = close2gl(&["bench", "--load", path, "--frames", "3"]);
+        assert!(
+            out.status.success(),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        let report: Value = serde_json::from_slice(&out.stdout).expect("one JSON object");
+        let load = &report["load"];
+        assert_eq!(load["file"], path, "{report}");
+        assert_eq!(load["bytes"], grid.bytes, "{report}");
+        assert_eq!(load["triangles"], grid.triangles, "{report}");
+        assert_eq!(load["vertices"], grid.vertices, "{report}");
+        let ms = load["median_ms"].as_f64().expect("median_ms");
+        let mb_per_s = load["mb_per_s"].as_f64().expect("mb_per_s");
+        assert!(ms > 0.0, "{report}");
+        let implied = grid.bytes as f64 / 1e6 / (ms / 1e3);
+        assert!((mb_per_s / implied - 1.0).abs() < 1e-9, "{report}");
+    }
+}
+
+#[test]
 fn bad_input_is_one_line_and_exit_code_2() {
     let dir = TempDir::new("cli");
     let bad_model = dir.join("bad.in");
@@ -185,6 +215,18 @@ fn bad_input_is_one_line_and_exit_code_2() {
             "render.close2gl_raster",
         ),
         (vec!["bench", "--raster", "--fill"], "--fill"),
+        (
+            vec!["bench", "--load", "assets/cube.in", "--fill"],
+            "--load",
+        ),
+        (
+            vec!["bench", "--load", bad_model.to_str().expect("utf-8")],
+            "bad.in:9:",
+        ),
+        (
+            vec!["bench", "--load", "no/such/grid.in"],
+            "no/such/grid.in",
+        ),
         (vec!["stats", "--set", "outside.stage=3"], "outside.stage"),
         (
             vec!["stats", "--set", "outside.stage=\"clip\""],

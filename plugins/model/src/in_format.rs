@@ -3,69 +3,157 @@
 //! is tolerated (runs of spaces, `\r\n`, blank lines, any keyword case, a missing final newline);
 //! content is not (every number finite, every record complete, material indices in range).
 
-use std::io::BufRead;
+use std::io::{self, BufRead, BufReader, Read};
 
 use glam::{Vec2, Vec3};
 
 use crate::diagnostics::expected;
+use crate::in_parallel;
 use crate::lines::Lines;
-use crate::mesh_builder::MeshBuilder;
+use crate::mesh_builder::{Corner, MeshBuilder};
 use crate::{LoadedModel, file_stem};
 
-const VERTEX_TAGS: [&str; 3] = ["v0", "v1", "v2"];
+pub(crate) const VERTEX_TAGS: [&str; 3] = ["v0", "v1", "v2"];
 
 /// Parses the text of a `.in` file; `label` names the file in messages and warnings.
 pub fn parse_in(text: &str, label: &str) -> Result<LoadedModel, String> {
-    read_in(Lines::new(text.as_bytes(), label))
+    read_in(|| Ok(text.as_bytes()), label)
 }
 
-/// Parses a `.in` file line by line as `lines` reads it, so that memory follows the mesh, not
-/// the file.
-pub(crate) fn read_in<R: BufRead>(lines: Lines<R>) -> Result<LoadedModel, String> {
+/// Parses a `.in` file read from the start by each `open()`: the header line by line, then the
+/// triangles in blocks on all cores (see `in_parallel`), so that memory follows the mesh, not
+/// the file. A body the parallel reader does not take whole (any bad record) is read again line
+/// by line, whose error is the one reported: the same file and line as ever.
+pub(crate) fn read_in<R: Read>(
+    open: impl Fn() -> Result<R, String>,
+    label: &str,
+) -> Result<LoadedModel, String> {
+    read_in_blocks(open, label, in_parallel::block_bytes())
+}
+
+/// [`read_in`] reading the triangles `block` bytes at a time (the tests use tiny blocks).
+pub(crate) fn read_in_blocks<R: Read>(
+    open: impl Fn() -> Result<R, String>,
+    label: &str,
+    block: usize,
+) -> Result<LoadedModel, String> {
+    let mut records = Records::new(Lines::new(BufReader::new(open()?), label));
+    let header = Header::read(&mut records)?;
+    let body_start = records.next_offset();
+    drop(records);
+    let mut reader = open()?;
+    io::copy(&mut (&mut reader).take(body_start), &mut io::sink())
+        .map_err(|e| format!("{label}: cannot read: {e}"))?;
+    let empty = Body::new(MeshBuilder::new(header.name.clone()));
+    match in_parallel::read_body(reader, &header.layout, empty, block, label)? {
+        Some(body) => Ok(header.finish(body, label)),
+        None => read_in_lines(Lines::new(BufReader::new(open()?), label)),
+    }
+}
+
+/// Parses a `.in` file line by line as `lines` reads it: the reference for what a file means and
+/// where it is wrong.
+pub(crate) fn read_in_lines<R: BufRead>(lines: Lines<R>) -> Result<LoadedModel, String> {
     let label = lines.label();
     let mut records = Records::new(lines);
-    let mut warnings = Vec::new();
-
-    let (_, name) = records.key_value("Object name", "Object name = <name>")?;
-    let header_triangles = records.count("# triangles", "# triangles = <N>")?;
-    let material_count = records.count("Material count", "Material count = <M>")?;
-    // Counted, never allocated from: a lying header only makes the loop meet the vertices early.
-    let mut materials = MaterialCheck::default();
-    for _ in 0..material_count {
-        materials.block(&mut records)?;
-    }
-    warnings.extend(materials.warnings(label));
-    let layout = VertexLayout::new(records.texture()?, material_count);
-    records.skip_comment()?;
-
-    let name = if name.is_empty() {
-        file_stem(label)
-    } else {
-        name
-    };
-    let mut builder = MeshBuilder::new(name);
-    let mut orientation = Orientation::default();
-    let mut triangles: u64 = 0;
+    let header = Header::read(&mut records)?;
+    let mut body = Body::new(MeshBuilder::new(header.name.clone()));
     // A file without triangles fails in the first pass, at the v0 it expected.
     loop {
-        let corners = layout.triangle(&mut records)?;
-        orientation.add(corners, &mut builder)?;
-        triangles += 1;
+        let triangle = header.layout.triangle(&mut records)?;
+        body.add(triangle)?;
         if records.peek()?.is_none() {
             break;
         }
     }
+    Ok(header.finish(body, label))
+}
 
-    if triangles != header_triangles {
-        warnings.push(format!(
-            "{label}: header says {header_triangles} triangles, found {triangles}"
-        ));
+/// Everything before the first triangle.
+struct Header {
+    name: String,
+    /// The triangle count the header claims; only compared with what the file holds.
+    triangles: u64,
+    layout: VertexLayout,
+    warnings: Vec<String>,
+}
+
+impl Header {
+    /// Reads the header, the material blocks, the `Texture =` line and the comment line.
+    fn read<R: BufRead>(records: &mut Records<R>) -> Result<Self, String> {
+        let label = records.label;
+        let (_, name) = records.key_value("Object name", "Object name = <name>")?;
+        let triangles = records.count("# triangles", "# triangles = <N>")?;
+        let material_count = records.count("Material count", "Material count = <M>")?;
+        // Counted, never allocated from: a lying header only makes the loop meet the vertices
+        // early.
+        let mut materials = MaterialCheck::default();
+        for _ in 0..material_count {
+            materials.block(records)?;
+        }
+        let layout = VertexLayout::new(records.texture()?, material_count);
+        records.skip_comment()?;
+        Ok(Self {
+            name: if name.is_empty() {
+                file_stem(label)
+            } else {
+                name
+            },
+            triangles,
+            layout,
+            warnings: materials.warnings(label).into_iter().collect(),
+        })
     }
-    warnings.extend(orientation.warnings(label));
-    Ok(LoadedModel {
-        mesh: builder.finish(),
-        warnings,
-    })
+
+    /// The model, with what was forgiven on the way.
+    fn finish(mut self, body: Body, label: &str) -> LoadedModel {
+        if body.triangles != self.triangles {
+            self.warnings.push(format!(
+                "{label}: header says {} triangles, found {}",
+                self.triangles, body.triangles
+            ));
+        }
+        self.warnings.extend(body.orientation.warnings(label));
+        LoadedModel {
+            mesh: body.builder.finish(),
+            warnings: self.warnings,
+        }
+    }
+}
+
+/// The triangles read so far: the mesh being built and what orienting them corrected.
+pub(crate) struct Body {
+    pub(crate) builder: MeshBuilder,
+    pub(crate) orientation: Orientation,
+    pub(crate) triangles: u64,
+}
+
+impl Body {
+    pub(crate) fn new(builder: MeshBuilder) -> Self {
+        Self {
+            builder,
+            orientation: Orientation::default(),
+            triangles: 0,
+        }
+    }
+
+    /// Adds a triangle as the file gives it.
+    fn add(&mut self, triangle: FileTriangle) -> Result<(), String> {
+        let corners = self.orientation.orient(triangle).corners();
+        self.add_corners(&corners)
+    }
+
+    /// Adds the corners of a triangle [`Orientation::orient`] has seen (whose counts the caller
+    /// keeps).
+    pub(crate) fn add_corners(&mut self, corners: &[Corner; 3]) -> Result<(), String> {
+        let mut indices = [0; 3];
+        for (index, corner) in indices.iter_mut().zip(corners) {
+            *index = self.builder.corner(corner)?;
+        }
+        self.builder.triangle(indices);
+        self.triangles += 1;
+        Ok(())
+    }
 }
 
 /// The file's non-blank lines ("records"), trimmed, in order. The record last handed out stays
@@ -76,6 +164,8 @@ struct Records<'l, R> {
     text: String,
     /// Its 1-based line number.
     line: usize,
+    /// The byte offset at which its line starts.
+    start: u64,
     /// Whether it was only peeked at, not yet handed out.
     peeked: bool,
     /// Whether the file has no more records.
@@ -90,6 +180,7 @@ impl<'l, R: BufRead> Records<'l, R> {
             lines,
             text: String::new(),
             line: 0,
+            start: 0,
             peeked: false,
             ended: false,
         }
@@ -99,6 +190,7 @@ impl<'l, R: BufRead> Records<'l, R> {
     fn peek(&mut self) -> Result<Option<usize>, String> {
         if !self.peeked && !self.ended {
             loop {
+                let start = self.lines.offset();
                 let Some((line, text)) = self.lines.next_line()? else {
                     self.ended = true;
                     break;
@@ -113,12 +205,22 @@ impl<'l, R: BufRead> Records<'l, R> {
                     self.text.clear();
                     self.text.push_str(text);
                     self.line = line;
+                    self.start = start;
                     self.peeked = true;
                     break;
                 }
             }
         }
         Ok(self.peeked.then_some(self.line))
+    }
+
+    /// The byte offset of the next record (or of the blank lines before it).
+    fn next_offset(&self) -> u64 {
+        if self.peeked {
+            self.start
+        } else {
+            self.lines.offset()
+        }
     }
 
     /// The text of the record last peeked at or handed out.
@@ -268,10 +370,10 @@ impl MaterialCheck {
 }
 
 /// What each vertex record holds after its position and normal.
-struct VertexLayout {
+pub(crate) struct VertexLayout {
     /// How many numbers a vertex record has: 9 when `<s> <t>` follow (`Texture = YES`), 7 when
     /// not; either when the file has no `Texture =` line.
-    counts: &'static [usize],
+    pub(crate) counts: &'static [usize],
     /// The expected form of the v0, v1 and v2 records, for errors.
     forms: [String; 3],
     material_count: u64,
@@ -290,59 +392,74 @@ impl VertexLayout {
             material_count,
         }
     }
+
+    /// Whether `material` (a finite number) indexes one of the file's material blocks.
+    pub(crate) fn is_material(&self, material: f32) -> bool {
+        material.fract() == 0.0
+            && material >= 0.0
+            && f64::from(material) < self.material_count as f64
+    }
 }
 
 /// One triangle as the file gives it: corners in file winding, their texture coordinates when
 /// the records carry `s t`, and the face normal.
-struct FileTriangle {
+#[derive(Default)]
+pub(crate) struct FileTriangle {
     positions: [Vec3; 3],
     normals: [Vec3; 3],
     uvs: [Option<Vec2>; 3],
     face_normal: Vec3,
 }
 
+impl FileTriangle {
+    /// Corner `k` from the numbers of its record (`x y z nx ny nz material [s t]`).
+    pub(crate) fn set_corner(&mut self, k: usize, v: &[f32]) {
+        self.positions[k] = Vec3::new(v[0], v[1], v[2]);
+        self.normals[k] = Vec3::new(v[3], v[4], v[5]);
+        self.uvs[k] = (v.len() == 9).then(|| Vec2::new(v[7], v[8]));
+    }
+
+    pub(crate) fn set_face_normal(&mut self, n: &[f32]) {
+        self.face_normal = Vec3::new(n[0], n[1], n[2]);
+    }
+
+    /// The corners as the mesh builder takes them.
+    pub(crate) fn corners(&self) -> [Corner; 3] {
+        [0, 1, 2].map(|k| Corner::new(self.positions[k], self.normals[k], self.uvs[k]))
+    }
+}
+
 impl VertexLayout {
     fn triangle<R: BufRead>(&self, records: &mut Records<R>) -> Result<FileTriangle, String> {
-        let mut positions = [Vec3::ZERO; 3];
-        let mut normals = [Vec3::ZERO; 3];
-        let mut uvs = [None; 3];
+        let mut triangle = FileTriangle::default();
         for (k, (tag, what)) in VERTEX_TAGS.iter().zip(&self.forms).enumerate() {
             let (line, v) = records.numbers(&[tag], self.counts, what)?;
-            let material = v[6];
-            if material.fract() != 0.0
-                || material < 0.0
-                || f64::from(material) >= self.material_count as f64
-            {
+            if !self.is_material(v[6]) {
                 return Err(format!(
                     "{} (the material index must be a whole number below the material count, {})",
                     records.error(line, what),
                     self.material_count
                 ));
             }
-            positions[k] = Vec3::new(v[0], v[1], v[2]);
-            normals[k] = Vec3::new(v[3], v[4], v[5]);
-            uvs[k] = (v.len() == 9).then(|| Vec2::new(v[7], v[8]));
+            triangle.set_corner(k, &v);
         }
         let (_, n) = records.numbers(&["face", "normal"], &[3], "face normal nx ny nz")?;
-        Ok(FileTriangle {
-            positions,
-            normals,
-            uvs,
-            face_normal: Vec3::new(n[0], n[1], n[2]),
-        })
+        triangle.set_face_normal(&n);
+        Ok(triangle)
     }
 }
 
 /// Orients vertex normals by the face normal and the winding, which the spec makes the ground
 /// truth, and counts what it had to correct.
 #[derive(Default)]
-struct Orientation {
+pub(crate) struct Orientation {
     flipped: usize,
     face_against_winding: usize,
 }
 
 impl Orientation {
-    fn add(&mut self, t: FileTriangle, builder: &mut MeshBuilder) -> Result<(), String> {
+    /// The triangle with each vertex normal unit length and on its face's side.
+    pub(crate) fn orient(&mut self, mut t: FileTriangle) -> FileTriangle {
         let [a, b, c] = t.positions;
         let geometric = (b - a).cross(c - a).try_normalize();
         let face = t.face_normal.try_normalize();
@@ -352,21 +469,25 @@ impl Orientation {
             self.face_against_winding += 1;
         }
         let reference = face.or(geometric);
-        let mut corners = [0; 3];
-        for (k, corner) in corners.iter_mut().enumerate() {
-            let mut normal = t.normals[k].try_normalize().or(reference);
-            if let (Some(n), Some(r)) = (normal, reference)
+        for normal in &mut t.normals {
+            let mut unit = normal.try_normalize().or(reference);
+            if let (Some(n), Some(r)) = (unit, reference)
                 && n.dot(r) < 0.0
             {
-                normal = Some(-n);
+                unit = Some(-n);
                 self.flipped += 1;
             }
             // Only a zero-area triangle with no usable normal gets here: it has no side to
             // show, so any unit vector will do.
-            *corner = builder.vertex(t.positions[k], normal.unwrap_or(Vec3::Z), t.uvs[k])?;
+            *normal = unit.unwrap_or(Vec3::Z);
         }
-        builder.triangle(corners);
-        Ok(())
+        t
+    }
+
+    /// Adds what `other` counted (on another part of the file).
+    pub(crate) fn absorb(&mut self, other: &Orientation) {
+        self.flipped += other.flipped;
+        self.face_against_winding += other.face_against_winding;
     }
 
     fn warnings(&self, label: &str) -> impl Iterator<Item = String> {

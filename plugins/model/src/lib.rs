@@ -14,8 +14,11 @@
 //! camera plugin's job (it watches `Changed<Mesh>`, in `FrameSet::Camera`).
 
 mod background;
+mod corner_index;
+mod decimal;
 mod diagnostics;
 mod in_format;
+mod in_parallel;
 mod lines;
 mod mesh_builder;
 mod obj;
@@ -90,22 +93,22 @@ pub(crate) fn load_file(path: &Path, progress: &LoadProgress) -> Result<LoadedMo
             "{label}: expected a .in or .obj file, found a directory or device"
         ));
     }
-    // An OBJ file is read twice (see `obj::read_obj`), each pass from the start.
+    // An OBJ file is read twice (see `obj::read_obj`), each pass from the start; a `.in` file
+    // once (its header twice, and all of it again if it has an error: see `in_format::read_in`).
     let passes = if obj { 2 } else { 1 };
     progress.set_total(passes * metadata.len());
     let label = label.as_str();
-    let pass = || {
+    let open = || {
         (&file).rewind().map_err(cannot_read)?;
-        let counted = Counted {
+        Ok(Counted {
             inner: &file,
             progress,
-        };
-        Ok(Lines::new(BufReader::new(counted), label))
+        })
     };
     if obj {
-        obj::read_obj(pass, label)
+        obj::read_obj(|| Ok(Lines::new(BufReader::new(open()?), label)), label)
     } else {
-        in_format::read_in(pass()?)
+        in_format::read_in(open, label)
     }
 }
 

@@ -17,6 +17,8 @@ pub(crate) struct Lines<'l, R> {
     text: String,
     /// 1-based number of the line in `text`; 0 before the first.
     number: usize,
+    /// Bytes read so far: where the next line starts.
+    offset: u64,
 }
 
 impl<'l, R: BufRead> Lines<'l, R> {
@@ -27,7 +29,13 @@ impl<'l, R: BufRead> Lines<'l, R> {
             bytes: Vec::new(),
             text: String::new(),
             number: 0,
+            offset: 0,
         }
+    }
+
+    /// The byte offset at which the next line starts.
+    pub(crate) fn offset(&self) -> u64 {
+        self.offset
     }
 
     pub(crate) fn label(&self) -> &'l str {
@@ -46,6 +54,7 @@ impl<'l, R: BufRead> Lines<'l, R> {
             return Ok(None);
         }
         self.number += 1;
+        self.offset += read as u64;
         let ended = self.bytes.last() == Some(&b'\n');
         if ended {
             self.bytes.pop();
@@ -141,7 +150,9 @@ mod tests {
     fn lines_keep_their_numbers_and_bad_bytes_become_replacement_characters() {
         let mut lines = Lines::new(&b"a\r\n\nb\xffc"[..], "m.in");
         assert_eq!(lines.next_line().unwrap(), Some((1, "a\r")));
+        assert_eq!(lines.offset(), 3);
         assert_eq!(lines.next_line().unwrap(), Some((2, "")));
+        assert_eq!(lines.offset(), 4);
         assert_eq!(lines.next_line().unwrap(), Some((3, "b\u{fffd}c")));
         assert_eq!(lines.next_line().unwrap(), None);
     }

@@ -1,7 +1,7 @@
-use std::collections::HashMap;
-
 use close2gl_core::Mesh;
 use glam::{Vec2, Vec3};
+
+use crate::corner_index::CornerIndex;
 
 /// Builds an indexed mesh from triangle corners, giving identical (position, normal, texture
 /// coordinate) corners one index so that a shared corner is transformed once per frame, not once
@@ -9,11 +9,12 @@ use glam::{Vec2, Vec3};
 pub(crate) struct MeshBuilder {
     mesh: Mesh,
     /// A 64-bit fingerprint of each corner's bits → its index. Fingerprints rather than the 32
-    /// bytes themselves halve the map, the largest thing a big load holds besides the mesh; a
-    /// hit is confirmed against the mesh, and a corner whose fingerprint is taken by another
-    /// simply is not shared.
-    index: HashMap<u64, u32>,
-    /// Whether any corner had a texture coordinate (the others get (0, 0)).
+    /// bytes themselves keep the index small, the largest thing a big load holds besides the
+    /// mesh; a hit is confirmed against the mesh, and a corner whose fingerprint is taken by
+    /// another simply is not shared.
+    index: CornerIndex,
+    /// Whether any corner had a texture coordinate (the others get (0, 0)). Until one has,
+    /// `mesh.uvs` stays empty rather than a zero for each vertex.
     textured: bool,
 }
 
@@ -24,7 +25,7 @@ impl MeshBuilder {
                 name,
                 ..Mesh::default()
             },
-            index: HashMap::new(),
+            index: CornerIndex::default(),
             textured: false,
         }
     }
@@ -37,34 +38,45 @@ impl MeshBuilder {
         normal: Vec3,
         uv: Option<Vec2>,
     ) -> Result<u32, String> {
-        self.textured |= uv.is_some();
-        let (position, normal, uv) = (position + 0.0, normal + 0.0, uv.unwrap_or_default() + 0.0);
-        let key = bits(position, normal, uv);
-        let fingerprint = key.iter().fold(0u64, |h, &w| {
-            (h ^ u64::from(w))
-                .wrapping_mul(0x9e37_79b9_7f4a_7c15)
-                .rotate_left(29)
+        self.corner(&Corner::new(position, normal, uv))
+    }
+
+    /// The index of the vertex `c`, added if it is new.
+    pub(crate) fn corner(&mut self, c: &Corner) -> Result<u32, String> {
+        if c.textured && !self.textured {
+            self.textured = true;
+            self.mesh.uvs.resize(self.mesh.positions.len(), Vec2::ZERO);
+        }
+        let found = self.index.get(c.fingerprint, |i| {
+            let key = self.key_of(i as usize);
+            key == c.key || fingerprint(&key) == c.fingerprint
         });
-        if let Some(&i) = self.index.get(&fingerprint)
-            && self.key_of(i as usize) == key
+        if let Some(i) = found
+            && self.key_of(i as usize) == c.key
         {
             return Ok(i);
         }
         let i = u32::try_from(self.mesh.positions.len())
             .map_err(|_| "more vertices than 32-bit indices can address".to_string())?;
-        self.mesh.positions.push(position);
-        self.mesh.normals.push(normal);
-        self.mesh.uvs.push(uv);
-        self.index.entry(fingerprint).or_insert(i);
+        let number = |k: usize| f32::from_bits(c.key[k]);
+        self.mesh
+            .positions
+            .push(Vec3::new(number(0), number(1), number(2)));
+        self.mesh
+            .normals
+            .push(Vec3::new(number(3), number(4), number(5)));
+        if self.textured {
+            self.mesh.uvs.push(Vec2::new(number(6), number(7)));
+        }
+        if found.is_none() {
+            self.index.insert(c.fingerprint, i);
+        }
         Ok(i)
     }
 
     fn key_of(&self, i: usize) -> [u32; 8] {
-        bits(
-            self.mesh.positions[i],
-            self.mesh.normals[i],
-            self.mesh.uvs[i],
-        )
+        let uv = self.mesh.uvs.get(i).copied().unwrap_or_default();
+        bits(self.mesh.positions[i], self.mesh.normals[i], uv)
     }
 
     pub(crate) fn triangle(&mut self, corners: [u32; 3]) {
@@ -72,12 +84,39 @@ impl MeshBuilder {
     }
 
     /// The mesh; without texture coordinates when no corner had one.
-    pub(crate) fn finish(mut self) -> Mesh {
-        if !self.textured {
-            self.mesh.uvs.clear();
-        }
+    pub(crate) fn finish(self) -> Mesh {
         self.mesh
     }
+}
+
+/// A corner as the builder compares corners, made apart from the builder (on any thread): the
+/// bits of its eight numbers (-0.0 made 0.0, a missing texture coordinate (0, 0)) and their
+/// fingerprint.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Corner {
+    key: [u32; 8],
+    fingerprint: u64,
+    textured: bool,
+}
+
+impl Corner {
+    pub(crate) fn new(position: Vec3, normal: Vec3, uv: Option<Vec2>) -> Self {
+        let key = bits(position + 0.0, normal + 0.0, uv.unwrap_or_default() + 0.0);
+        Self {
+            key,
+            fingerprint: fingerprint(&key),
+            textured: uv.is_some(),
+        }
+    }
+}
+
+/// A 64-bit fingerprint of a corner's bits.
+fn fingerprint(key: &[u32; 8]) -> u64 {
+    key.iter().fold(0u64, |h, &w| {
+        (h ^ u64::from(w))
+            .wrapping_mul(0x9e37_79b9_7f4a_7c15)
+            .rotate_left(29)
+    })
 }
 
 /// A corner as the builder compares corners: the bits of its eight numbers.

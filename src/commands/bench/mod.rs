@@ -1,11 +1,14 @@
 //! `close2gl bench`: times the Close2GL geometry stage (transform, full clipping, divide,
 //! viewport, cull, 2D buffer written) against the straightforward version, in one run, and
 //! prints medians and their ratio as JSON. `--raster` times the software rasterizer's whole
-//! frame beside lavapipe's reference view of the same scene; `--fill` its fill rate.
+//! frame beside lavapipe's reference view of the same scene; `--fill` its fill rate; `--load` how
+//! fast a model file loads.
 
 pub mod baseline;
+pub mod load;
 pub mod raster;
 
+use std::path::PathBuf;
 use std::time::Instant;
 
 use crate::config::Config;
@@ -34,6 +37,9 @@ pub struct BenchArgs {
     /// Time the software rasterizer's fill rate on a screen of large triangles.
     #[arg(long)]
     pub fill: bool,
+    /// Time loading this .in or .obj file into a mesh (reading, parsing, building the mesh).
+    #[arg(long, value_name = "FILE")]
+    pub load: Option<PathBuf>,
     /// Frames timed for each version; the medians are reported.
     #[arg(long, default_value_t = 30)]
     pub frames: usize,
@@ -51,13 +57,16 @@ pub fn run(args: BenchArgs) -> Result<(), CliError> {
             "bench: --frames and --triangles must be at least 1".into(),
         ));
     }
-    if args.raster && args.fill {
+    let modes = [args.raster, args.fill, args.load.is_some()];
+    if modes.into_iter().filter(|&m| m).count() > 1 {
         return Err(CliError::Input(
-            "bench: --raster and --fill time different scenes; give one of them".into(),
+            "bench: --raster, --fill and --load time different things; give one of them".into(),
         ));
     }
     let pool = thread_pool(args.threads)?;
-    let report = if args.fill {
+    let report = if let Some(path) = &args.load {
+        load::load(&args, path, &pool)?
+    } else if args.fill {
         raster::fill(&args, &pool)?
     } else if args.raster {
         raster::frame(&args, &pool)?
