@@ -164,8 +164,9 @@ fn stats_with_the_software_rasterizer_reports_its_pixels() {
 
 #[test]
 fn bench_load_times_a_model_file_into_its_mesh() {
-    let grid_in = temp("grid.in");
-    let grid_obj = temp("grid.obj");
+    let dir = TempDir::new("cli");
+    let grid_in = dir.join("grid.in");
+    let grid_obj = dir.join("grid.obj");
     let written = [
         close2gl_testkit::write_grid_in(&grid_in, "grid", 40).expect("write the .in grid"),
         close2gl_testkit::write_grid_obj(&grid_obj, "grid", 40).expect("write the .obj grid"),
