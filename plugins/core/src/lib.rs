@@ -2,8 +2,9 @@
 //! with named frame schedules, and the [`FrameSet`]s that order every plugin's systems in them),
 //! every component and resource that more than one plugin touches (the camera, the mesh, the
 //! render settings and lighting, the outside view's settings and orbit, the raw input and the camera actions it becomes, the viewport,
-//! and the Close2GL frame: the 2D vertex buffer and its stage counts), and the limits and names
-//! they share ([`limits`], [`NamedEnum`]). Its one plugin, [`SettingsPlugin`], owns the settings
+//! and the Close2GL frame: the 2D vertex buffer and its stage counts, the fates and the selected
+//! triangle), the one RGBA8 [`Image`] and how two are compared ([`parity`]), and the limits and
+//! names they share ([`limits`], [`NamedEnum`]). Its one plugin, [`SettingsPlugin`], owns the settings
 //! both views follow. It reads and writes nothing itself; every other crate depends on it, so
 //! that plugins can talk to each other without depending on each other.
 

@@ -2,15 +2,17 @@
 //! the reference renderer (the mesh drawn from glam's own camera matrices, standing in for OpenGL)
 //! and the Close2GL view (the 2D buffer drawn through a pass-through pipeline, or the software
 //! rasterizer's image drawn as one textured triangle, or in the fate view each triangle in its
-//! fate's colour), both held in [`Views`]. [`GpuPlugin`] adds
+//! fate's colour, or in the live difference where the two views differ), both held in [`Views`],
+//! with the selected triangle's highlight. [`GpuPlugin`] adds
 //! the `Render` systems that read `Camera`, `Mesh`, `ModelStatus`, `RenderSettings`, `Lighting`,
-//! `Texture`, `Close2glFrame`, `SoftwareFrame` and `Fates` (asking for it to be recorded while the
-//! fate view is shown) and upload what changed into `Views`; whoever
+//! `Texture`, `Close2glFrame`, `SoftwareFrame`, `SelectedTriangle`, `Viewport` and `Fates` (asking
+//! for it to be recorded while the fate view is shown) and upload what changed into `Views`; whoever
 //! owns the target (a window, or [`render_offscreen`]) records the draws.
 //! Offscreen rendering, reading textures back ([`Readback`]), the texture and attachment
 //! descriptions every target shares ([`texture`]), the reference probe (an ID pass that says which
-//! mesh triangle the GPU drew at a pixel, [`probe_reference`]), PNG images and the coverage
-//! comparison behind `close2gl render` and the parity tests live here too. [`outside`] is the
+//! mesh triangle the GPU drew at a pixel, [`probe_reference`]) and the timed submission every
+//! view is drawn with ([`submit_pass_timed`]) live here too (images and their comparison are the
+//! core's: `close2gl_core::Image`, `close2gl_core::parity`). [`outside`] is the
 //! third view, the pipeline seen from outside: its [`outside::OutsidePlugin`] reads the camera,
 //! the mesh, the settings, `OutsideView`, `OutsideOrbit` and `Fates`, and fills
 //! [`outside::OutsideRenderer`]. No window or UI crate is a dependency.
