@@ -38,8 +38,8 @@ pub use close2gl_raster as raster;
 
 use close2gl_core::bevy_ecs::world::World;
 use close2gl_core::{
-    App, Camera, Framing, ModelRequest, ModelStatus, Plugin, SettingsPlugin, TextureRequest,
-    Viewport,
+    App, Camera, CommandLine, Framing, ModelRequest, ModelStatus, Plugin, SettingsPlugin,
+    TextureRequest, Viewport,
 };
 
 use config::Config;
@@ -71,6 +71,7 @@ pub fn build_app(config: &Config, viewport: Viewport) -> Result<App, String> {
     apply_settings(app.world_mut(), config);
     app.insert_resource(config.camera.speeds)
         .insert_resource(viewport)
+        .insert_resource(CommandLine(config::command::of_world_command))
         .insert_resource(ModelRequest(Some(config.model.clone())))
         .insert_resource(TextureRequest(config.texture.clone()))
         .add_plugins(DefaultPlugins);

@@ -1,5 +1,6 @@
-//! Every config key: its type, its range, and where it lands in [`Config`]. One table, so that
-//! the file, `--set` overrides and the error messages cannot disagree.
+//! Every config key: its type, its range, where it lands in [`Config`], and how the copied
+//! command writes it. One table, so that the file, `--set` overrides, the error messages and
+//! copy-as-command cannot disagree.
 
 use std::ops::RangeInclusive;
 use std::path::Path;
@@ -8,10 +9,157 @@ use close2gl_core::glam::Vec3;
 use close2gl_core::limits::{
     FOV_RANGE, MAX_PIXELS, MAX_SEGMENTS, MOVE_SPEED_RANGE, ROTATE_SPEED_RANGE,
 };
-use close2gl_core::{Action, ModelSource, NamedEnum, OutsideView, PrimitiveKind, STAGE_NAMES};
+use close2gl_core::{Action, ModelSource, NamedEnum, OutsideView, STAGE_NAMES};
 use toml::Value;
 
 use super::Config;
+
+/// One key of the configuration: where it lands in [`Config`] and how its value is checked (the
+/// file and `--set` read it through [`set`]), and, for the keys that decide the views' pixels, how
+/// the copied `close2gl render` command writes it back ([`pixel_overrides`]). One table, so that
+/// reading and writing cannot drift apart.
+pub struct Key {
+    pub section: &'static str,
+    pub name: &'static str,
+    read: Read,
+    pub write: Write,
+}
+
+/// Stores a checked value; `base` is the directory relative paths start from.
+type Read = fn(&mut Config, &Value, &Path) -> Result<(), String>;
+
+/// Whether and how a key is written into the copied command.
+#[derive(Clone, Copy)]
+pub enum Write {
+    /// Not a property of the views' pixels (the window, the speeds, the framing rules), or
+    /// written another way (the model, as the command's argument).
+    Never,
+    /// Always: the pose and the lens, to the bit, so that the command's images are the view's.
+    Always(fn(&Config) -> Option<String>),
+    /// Only when it differs from the default, so that the line stays readable.
+    IfChanged(fn(&Config) -> Option<String>),
+}
+
+macro_rules! key {
+    ($section:literal . $name:literal, |$c:ident, $v:ident, $base:ident| $read:expr, $write:expr) => {
+        Key {
+            section: $section,
+            name: $name,
+            read: |$c, $v, $base| {
+                let _ = &$base;
+                $read;
+                Ok(())
+            },
+            write: $write,
+        }
+    };
+}
+
+use Write::{Always, IfChanged, Never};
+
+/// Every key but `[input]`'s, whose names are the actions' (`Action`).
+pub const KEYS: &[Key] = &[
+    key!("model"."path", |c, v, base| c.model = ModelSource::File(base.join(string(v)?)), Never),
+    key!("model"."primitive", |c, v, _b| c.model = ModelSource::Primitive(named(v)?), Never),
+    key!("model"."texture", |c, v, base| c.texture = Some(base.join(string(v)?)),
+        IfChanged(|c| c.texture.as_deref().map(|t| quoted(&absolute(t).display().to_string())))),
+    key!("camera"."position", |c, v, _b| c.camera.position = Some(vec3(v)?),
+        Always(|c| c.camera.position.map(list3))),
+    key!("camera"."target", |c, v, _b| c.camera.target = Some(vec3(v)?),
+        Always(|c| c.camera.target.map(list3))),
+    key!("camera"."up", |c, v, _b| c.camera.up = nonzero(vec3(v)?)?, Never),
+    key!("camera"."u", |c, v, _b| c.camera.u = Some(nonzero(vec3(v)?)?),
+        Always(|c| c.camera.u.map(list3))),
+    key!("camera"."v", |c, v, _b| c.camera.v = Some(nonzero(vec3(v)?)?),
+        Always(|c| c.camera.v.map(list3))),
+    key!("camera"."n", |c, v, _b| c.camera.n = Some(nonzero(vec3(v)?)?),
+        Always(|c| c.camera.n.map(list3))),
+    key!("camera"."hfov", |c, v, _b| c.camera.hfov = fov(v)?,
+        Always(|c| Some(exact(c.camera.hfov)))),
+    key!("camera"."vfov", |c, v, _b| c.camera.vfov = fov(v)?,
+        Always(|c| Some(exact(c.camera.vfov)))),
+    key!("camera"."near", |c, v, _b| c.camera.near = Some(positive(v)?),
+        Always(|c| c.camera.near.map(exact))),
+    key!("camera"."far", |c, v, _b| c.camera.far = Some(positive(v)?),
+        Always(|c| c.camera.far.map(exact))),
+    key!("camera"."mode", |c, v, _b| c.camera.mode = named(v)?, Never),
+    key!("camera"."move_speed", |c, v, _b| c.camera.speeds.move_speed = within(v, MOVE_SPEED_RANGE)?,
+        Never),
+    key!("camera"."rotate_speed", |c, v, _b| c.camera.speeds.rotate_speed = within(v, ROTATE_SPEED_RANGE)?,
+        Never),
+    key!("render"."mode", |c, v, _b| c.render.mode = named(v)?, IfChanged(|c| name(c.render.mode))),
+    key!("render"."front_face", |c, v, _b| c.render.front_face = named(v)?,
+        IfChanged(|c| name(c.render.front_face))),
+    key!("render"."backface_culling", |c, v, _b| c.render.backface_culling = boolean(v)?,
+        IfChanged(|c| flag(c.render.backface_culling))),
+    key!("render"."clipping", |c, v, _b| c.render.clipping = named(v)?,
+        IfChanged(|c| name(c.render.clipping))),
+    key!("render"."color", |c, v, _b| c.render.color = color(v)?,
+        IfChanged(|c| Some(list3(c.render.color)))),
+    key!("render"."shading", |c, v, _b| c.render.shading = named(v)?,
+        IfChanged(|c| name(c.render.shading))),
+    key!("render"."background", |c, v, _b| c.render.background = color(v)?,
+        IfChanged(|c| Some(list3(c.render.background)))),
+    key!("render"."close2gl_raster", |c, v, _b| c.render.close2gl_raster = named(v)?,
+        IfChanged(|c| name(c.render.close2gl_raster))),
+    key!("render"."texture", |c, v, _b| c.render.texture = boolean(v)?,
+        IfChanged(|c| flag(c.render.texture))),
+    key!("render"."texture_filter", |c, v, _b| c.render.texture_filter = named(v)?,
+        IfChanged(|c| name(c.render.texture_filter))),
+    key!("render"."overlay", |c, v, _b| c.render.overlay = named(v)?,
+        IfChanged(|c| name(c.render.overlay))),
+    key!("lighting"."light_position", |c, v, _b| c.lighting.light_position = vec3(v)?,
+        IfChanged(|c| Some(list3(c.lighting.light_position)))),
+    key!("lighting"."ia", |c, v, _b| c.lighting.ia = color(v)?,
+        IfChanged(|c| Some(list3(c.lighting.ia)))),
+    key!("lighting"."il", |c, v, _b| c.lighting.il = color(v)?,
+        IfChanged(|c| Some(list3(c.lighting.il)))),
+    key!("lighting"."ka", |c, v, _b| c.lighting.ka = unit(v)?,
+        IfChanged(|c| Some(exact(c.lighting.ka)))),
+    key!("lighting"."kd", |c, v, _b| c.lighting.kd = unit(v)?,
+        IfChanged(|c| Some(exact(c.lighting.kd)))),
+    key!("lighting"."ks", |c, v, _b| c.lighting.ks = unit(v)?,
+        IfChanged(|c| Some(exact(c.lighting.ks)))),
+    key!("lighting"."shininess", |c, v, _b| c.lighting.shininess = non_negative(v)?,
+        IfChanged(|c| Some(exact(c.lighting.shininess)))),
+    key!("lighting"."attenuation", |c, v, _b| c.lighting.attenuation = attenuation(v)?,
+        IfChanged(|c| Some(list(&c.lighting.attenuation)))),
+    key!("primitives"."box_size", |c, v, _b| c.primitives.box_size = positive_vec3(v)?,
+        IfChanged(|c| Some(list3(c.primitives.box_size)))),
+    key!("primitives"."sphere_radius", |c, v, _b| c.primitives.sphere_radius = positive(v)?,
+        IfChanged(|c| Some(exact(c.primitives.sphere_radius)))),
+    key!("primitives"."sphere_stacks", |c, v, _b| c.primitives.sphere_stacks = count(v, 2)?,
+        IfChanged(|c| Some(c.primitives.sphere_stacks.to_string()))),
+    key!("primitives"."sphere_slices", |c, v, _b| c.primitives.sphere_slices = count(v, 3)?,
+        IfChanged(|c| Some(c.primitives.sphere_slices.to_string()))),
+    key!("primitives"."torus_r0", |c, v, _b| c.primitives.torus_r0 = positive(v)?,
+        IfChanged(|c| Some(exact(c.primitives.torus_r0)))),
+    key!("primitives"."torus_r1", |c, v, _b| c.primitives.torus_r1 = positive(v)?,
+        IfChanged(|c| Some(exact(c.primitives.torus_r1)))),
+    key!("primitives"."torus_n0", |c, v, _b| c.primitives.torus_n0 = count(v, 3)?,
+        IfChanged(|c| Some(c.primitives.torus_n0.to_string()))),
+    key!("primitives"."torus_n1", |c, v, _b| c.primitives.torus_n1 = count(v, 3)?,
+        IfChanged(|c| Some(c.primitives.torus_n1.to_string()))),
+    key!("primitives"."cone_radius", |c, v, _b| c.primitives.cone_radius = positive(v)?,
+        IfChanged(|c| Some(exact(c.primitives.cone_radius)))),
+    key!("primitives"."cone_height", |c, v, _b| c.primitives.cone_height = positive(v)?,
+        IfChanged(|c| Some(exact(c.primitives.cone_height)))),
+    key!("primitives"."cone_slices", |c, v, _b| c.primitives.cone_slices = count(v, 3)?,
+        IfChanged(|c| Some(c.primitives.cone_slices.to_string()))),
+    key!("primitives"."cylinder_radius", |c, v, _b| c.primitives.cylinder_radius = positive(v)?,
+        IfChanged(|c| Some(exact(c.primitives.cylinder_radius)))),
+    key!("primitives"."cylinder_height", |c, v, _b| c.primitives.cylinder_height = positive(v)?,
+        IfChanged(|c| Some(exact(c.primitives.cylinder_height)))),
+    key!("primitives"."cylinder_slices", |c, v, _b| c.primitives.cylinder_slices = count(v, 3)?,
+        IfChanged(|c| Some(c.primitives.cylinder_slices.to_string()))),
+    key!("window"."width", |c, v, _b| c.window.width = pixels(v)?, Never),
+    key!("window"."height", |c, v, _b| c.window.height = pixels(v)?, Never),
+    key!("window"."layout", |c, v, _b| c.window.layout = named(v)?, Never),
+    key!("outside"."show", |c, v, _b| c.outside.show = boolean(v)?,
+        IfChanged(|c| flag(c.outside.show))),
+    key!("outside"."stage", |c, v, _b| c.outside.stage = stage(v)?,
+        IfChanged(|c| Some(exact(c.outside.stage)))),
+];
 
 /// Sets `section.key` from a TOML value. `base` is the directory relative model paths start from.
 /// The error says what was expected, without the key (the caller adds file and key).
@@ -22,84 +170,77 @@ pub fn set(
     value: &Value,
     base: &Path,
 ) -> Result<(), String> {
-    let c = config;
-    match (section, key) {
-        ("model", "path") => c.model = ModelSource::File(base.join(string(value)?)),
-        ("model", "primitive") => {
-            c.model = ModelSource::Primitive(named::<PrimitiveKind>(value)?);
+    if section == "input" {
+        let action = Action::from_name(key).ok_or("unknown key")?;
+        let name = string(value)?;
+        if name.is_empty() {
+            return Err("expected a key name such as \"w\" or \"shift+p\"".into());
         }
-        ("model", "texture") => c.texture = Some(base.join(string(value)?)),
-
-        ("camera", "position") => c.camera.position = Some(vec3(value)?),
-        ("camera", "target") => c.camera.target = Some(vec3(value)?),
-        ("camera", "up") => c.camera.up = nonzero(vec3(value)?)?,
-        ("camera", "u") => c.camera.u = Some(nonzero(vec3(value)?)?),
-        ("camera", "v") => c.camera.v = Some(nonzero(vec3(value)?)?),
-        ("camera", "n") => c.camera.n = Some(nonzero(vec3(value)?)?),
-        ("camera", "hfov") => c.camera.hfov = fov(value)?,
-        ("camera", "vfov") => c.camera.vfov = fov(value)?,
-        ("camera", "near") => c.camera.near = Some(positive(value)?),
-        ("camera", "far") => c.camera.far = Some(positive(value)?),
-        ("camera", "mode") => c.camera.mode = named(value)?,
-        ("camera", "move_speed") => c.camera.speeds.move_speed = within(value, MOVE_SPEED_RANGE)?,
-        ("camera", "rotate_speed") => {
-            c.camera.speeds.rotate_speed = within(value, ROTATE_SPEED_RANGE)?;
-        }
-
-        ("render", "mode") => c.render.mode = named(value)?,
-        ("render", "front_face") => c.render.front_face = named(value)?,
-        ("render", "backface_culling") => c.render.backface_culling = boolean(value)?,
-        ("render", "clipping") => c.render.clipping = named(value)?,
-        ("render", "shading") => c.render.shading = named(value)?,
-        ("render", "close2gl_raster") => c.render.close2gl_raster = named(value)?,
-        ("render", "texture") => c.render.texture = boolean(value)?,
-        ("render", "texture_filter") => c.render.texture_filter = named(value)?,
-        ("render", "overlay") => c.render.overlay = named(value)?,
-        ("render", "color") => c.render.color = color(value)?,
-        ("render", "background") => c.render.background = color(value)?,
-
-        ("lighting", "light_position") => c.lighting.light_position = vec3(value)?,
-        ("lighting", "ia") => c.lighting.ia = color(value)?,
-        ("lighting", "il") => c.lighting.il = color(value)?,
-        ("lighting", "ka") => c.lighting.ka = unit(value)?,
-        ("lighting", "kd") => c.lighting.kd = unit(value)?,
-        ("lighting", "ks") => c.lighting.ks = unit(value)?,
-        ("lighting", "shininess") => c.lighting.shininess = non_negative(value)?,
-        ("lighting", "attenuation") => c.lighting.attenuation = attenuation(value)?,
-
-        ("primitives", "box_size") => c.primitives.box_size = positive_vec3(value)?,
-        ("primitives", "sphere_radius") => c.primitives.sphere_radius = positive(value)?,
-        ("primitives", "sphere_stacks") => c.primitives.sphere_stacks = count(value, 2)?,
-        ("primitives", "sphere_slices") => c.primitives.sphere_slices = count(value, 3)?,
-        ("primitives", "torus_r0") => c.primitives.torus_r0 = positive(value)?,
-        ("primitives", "torus_r1") => c.primitives.torus_r1 = positive(value)?,
-        ("primitives", "torus_n0") => c.primitives.torus_n0 = count(value, 3)?,
-        ("primitives", "torus_n1") => c.primitives.torus_n1 = count(value, 3)?,
-        ("primitives", "cone_radius") => c.primitives.cone_radius = positive(value)?,
-        ("primitives", "cone_height") => c.primitives.cone_height = positive(value)?,
-        ("primitives", "cone_slices") => c.primitives.cone_slices = count(value, 3)?,
-        ("primitives", "cylinder_radius") => c.primitives.cylinder_radius = positive(value)?,
-        ("primitives", "cylinder_height") => c.primitives.cylinder_height = positive(value)?,
-        ("primitives", "cylinder_slices") => c.primitives.cylinder_slices = count(value, 3)?,
-
-        ("window", "width") => c.window.width = pixels(value)?,
-        ("window", "height") => c.window.height = pixels(value)?,
-        ("window", "layout") => c.window.layout = named(value)?,
-
-        ("outside", "show") => c.outside.show = boolean(value)?,
-        ("outside", "stage") => c.outside.stage = stage(value)?,
-
-        ("input", action) => {
-            let action = Action::from_name(action).ok_or("unknown key")?;
-            let key = string(value)?;
-            if key.is_empty() {
-                return Err("expected a key name such as \"w\" or \"shift+p\"".into());
-            }
-            c.input.0.insert(action, key.to_lowercase());
-        }
-        _ => return Err("unknown key".into()),
+        config.input.0.insert(action, name.to_lowercase());
+        return Ok(());
     }
-    Ok(())
+    let row = KEYS
+        .iter()
+        .find(|k| k.section == section && k.name == key)
+        .ok_or("unknown key")?;
+    (row.read)(config, value, base)
+}
+
+/// `section.key=value` for every key that decides the views' pixels: the pose and the lens
+/// always, the rest where they differ from the defaults; the primitives' sizes only for a
+/// primitive's own view.
+pub fn pixel_overrides(config: &Config) -> Vec<String> {
+    let default = Config::default();
+    let primitive = matches!(config.model, ModelSource::Primitive(_));
+    KEYS.iter()
+        .filter(|k| primitive || k.section != "primitives")
+        .filter_map(|k| {
+            let value = match k.write {
+                Never => None,
+                Always(write) => write(config),
+                IfChanged(write) => write(config).filter(|v| Some(v) != write(&default).as_ref()),
+            }?;
+            Some(format!("{}.{}={value}", k.section, k.name))
+        })
+        .collect()
+}
+
+/// A number that reads back (as TOML's f64, then f32, as the config reads it) to the same
+/// bits: the shortest form when that round-trips, else the f64 form, which always does.
+pub fn exact(x: f32) -> String {
+    let short = format!("{x:?}");
+    if short.parse::<f64>().is_ok_and(|back| back as f32 == x) {
+        short
+    } else {
+        format!("{:?}", x as f64)
+    }
+}
+
+fn list(values: &[f32]) -> String {
+    let items: Vec<String> = values.iter().map(|&x| exact(x)).collect();
+    format!("[{}]", items.join(","))
+}
+
+fn list3(v: Vec3) -> String {
+    list(&v.to_array())
+}
+
+fn name<T: NamedEnum>(value: T) -> Option<String> {
+    Some(value.name().to_string())
+}
+
+fn flag(on: bool) -> Option<String> {
+    Some(on.to_string())
+}
+
+/// A TOML basic string: backslashes and quotes escaped.
+fn quoted(text: &str) -> String {
+    format!("\"{}\"", text.replace('\\', "\\\\").replace('"', "\\\""))
+}
+
+/// The path as the command's reader's shell will find it from anywhere.
+pub fn absolute(path: &Path) -> std::path::PathBuf {
+    std::fs::canonicalize(path).unwrap_or_else(|_| path.to_path_buf())
 }
 
 fn number(value: &Value) -> Result<f32, String> {

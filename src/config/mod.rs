@@ -1,7 +1,8 @@
 //! The TOML configuration: every setting with its default, read from a file and then from
 //! `--set section.key=value` overrides, each key checked for type and range as it is set.
 
-mod keys;
+pub mod command;
+pub mod keys;
 mod load;
 
 use std::path::PathBuf;

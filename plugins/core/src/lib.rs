@@ -24,7 +24,6 @@ mod model;
 mod outside;
 pub mod parity;
 mod reference_camera;
-pub mod repro;
 mod schedule;
 mod settings;
 mod settings_plugin;
@@ -60,7 +59,7 @@ pub use settings::{
 };
 pub use settings_plugin::SettingsPlugin;
 pub use texture::{Texture, checkerboard};
-pub use tools::ToolRequests;
+pub use tools::{CommandLine, ToolRequests};
 pub use wake::Wake;
 
 /// Re-exported so that plugin authors need only this crate to write systems.

@@ -14,6 +14,12 @@ pub struct ToolRequests {
     pub toggle_help: bool,
 }
 
+/// How the views are written as a `close2gl render` command (copy as command, the screenshot
+/// key): the configuration's own writer, from the same key table the configuration is read with
+/// (`close2gl::config::command`), which the app builder gives. `None` before anything shows.
+#[derive(Resource, Clone, Copy)]
+pub struct CommandLine(pub fn(&mut World, &str) -> Option<String>);
+
 impl ToolRequests {
     pub fn any(&self) -> bool {
         self.screenshot || self.copy_command || self.toggle_help

@@ -3,8 +3,7 @@
 //! cheat sheet overlay itself, and a short notice of what a tool did.
 
 use bevy_ecs::prelude::*;
-use close2gl_core::repro::Repro;
-use close2gl_core::{Action, InputBindings, ToolRequests};
+use close2gl_core::{Action, CommandLine, InputBindings, ToolRequests};
 
 use crate::PanelState;
 
@@ -78,9 +77,9 @@ pub fn carry_out(ctx: &egui::Context, world: &mut World) {
         state.help = !state.help;
     }
     if copy {
-        let notice = match Repro::of_world(world) {
-            Some(repro) => {
-                let command = repro.command(REPRO_OUT);
+        let write = world.get_resource::<CommandLine>().map(|c| c.0);
+        let notice = match write.and_then(|write| write(world, REPRO_OUT)) {
+            Some(command) => {
                 println!("{command}");
                 ctx.copy_text(command);
                 "Copied the command that renders this view (also printed on the terminal)"

@@ -8,7 +8,7 @@ use close2gl_gpu::{Gpu, Image, Readback};
 use std::path::Path;
 
 use bevy_ecs::world::World;
-use close2gl_core::repro::Repro;
+use close2gl_core::CommandLine;
 
 use crate::layout::PixelRect;
 
@@ -27,9 +27,11 @@ pub fn save_views(
         .map(|n| format!("close2gl-{n:03}"))
         .find(|stem| !dir.join(format!("{stem}-command.txt")).exists())
         .ok_or_else(|| format!("{}: no free screenshot name left", dir.display()))?;
-    let command = Repro::of_world(world)
-        .ok_or("no model is shown")?
-        .command(&dir.join(format!("{stem}-render")).display().to_string());
+    let out = dir.join(format!("{stem}-render")).display().to_string();
+    let write = world.get_resource::<CommandLine>().map(|c| c.0);
+    let command = write
+        .and_then(|write| write(world, &out))
+        .ok_or("no model is shown")?;
     let names = [
         format!("{stem}-reference.png"),
         format!("{stem}-close2gl.png"),
