@@ -4,9 +4,9 @@
 //! it on into both GPU views.
 
 use close2gl_core::{
-    Action, CameraAction, CameraActions, Close2glFrame, FateKind, Fates, InputBindings,
-    ModelRequest, ModelSource, ModelStatus, Overlay, PrimitiveKind, RenderMode, RenderSettings,
-    SelectedTriangle, TextureFilter, TextureRequest, ToolRequests, Topology,
+    Action, CameraAction, CameraActions, Close2glFrame, CommandLine, FateKind, Fates,
+    InputBindings, ModelRequest, ModelSource, ModelStatus, Overlay, PrimitiveKind, RenderMode,
+    RenderSettings, SelectedTriangle, TextureFilter, TextureRequest, ToolRequests, Topology,
 };
 use close2gl_testkit::panel::Harness;
 use close2gl_ui::{Notice, PanelState};
@@ -170,11 +170,24 @@ fn the_key_cheat_sheet_lists_every_key_as_configured() {
     assert!(!h.shows("move forward (along -n)"));
 }
 
+/// The panel's part of copy as command: it asks the app's writer (the configuration's, tested
+/// with the command line in the root crate and end to end in tests/tools.rs) and says what it did.
 #[test]
 fn copy_as_command_says_what_it_copied() {
     let mut h = Harness::new();
     h.world().insert_resource(InputBindings::default());
     h.frame(Vec::new());
+    h.click(Role::Button, "Copy as command (c)");
+    let notice = h.world().resource::<Notice>().text.clone();
+    assert!(
+        notice.starts_with("Nothing to copy yet"),
+        "no writer: {notice}"
+    );
+
+    let writer = |_: &mut close2gl_core::bevy_ecs::world::World, out: &str| {
+        Some(format!("close2gl render box --out {out}"))
+    };
+    h.world().insert_resource(CommandLine(writer));
     h.click(Role::Button, "Copy as command (c)");
     let notice = h.world().resource::<Notice>().text.clone();
     assert!(notice.starts_with("Copied the command"), "{notice}");
