@@ -10,6 +10,7 @@ use std::path::PathBuf;
 use std::sync::{Arc, Mutex, Weak};
 use std::time::{Duration, SystemTime};
 
+use close2gl_core::Owner;
 use close2gl_core::bevy_ecs::prelude::*;
 use close2gl_core::{
     App, Camera, CameraSpeeds, FrameSet, KeepPose, ModelRequest, ModelSource, ModelStatus, Plugin,
@@ -42,8 +43,8 @@ impl Plugin for WatchPlugin {
             reload: self.reload.clone(),
             model_reload: None,
         })
-        .requires::<ModelStatus>("WatchPlugin", "ModelPlugin")
-        .requires::<KeepPose>("WatchPlugin", "CameraPlugin")
+        .requires::<ModelStatus>(Owner::Model)
+        .requires::<KeepPose>(Owner::Camera)
         .add_systems(Update, reload_changed_files.in_set(FrameSet::Input));
     }
 }

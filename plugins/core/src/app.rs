@@ -33,12 +33,24 @@ impl<F: Fn(&mut App) + 'static> Plugin for F {
 
 type Runner = Box<dyn FnOnce(App) -> Result<(), String>>;
 
+named_enum!(
+    /// The plugins that own a resource another plugin requires: a requirement names its owner by
+    /// this, and the error for a missing resource names the plugin to add.
+    Owner {
+        Settings = "SettingsPlugin",
+        Model = "ModelPlugin",
+        Camera = "CameraPlugin",
+        Close2gl = "Close2glPlugin",
+        Input = "InputPlugin"
+    }
+);
+
 /// A resource a plugin reads but another plugin owns, checked before the first frame.
 struct Requirement {
     present: fn(&World) -> bool,
     resource: &'static str,
     by: &'static str,
-    provider: &'static str,
+    owner: Owner,
 }
 
 /// A World, its named schedules and the plugins that filled them. Small on purpose: bevy_app's
@@ -47,6 +59,8 @@ pub struct App {
     world: World,
     plugins: HashSet<TypeId>,
     requirements: Vec<Requirement>,
+    /// The plugins being built, innermost last: who declares a requirement.
+    building: Vec<&'static str>,
     started: bool,
     runner: Option<Runner>,
 }
@@ -69,6 +83,7 @@ impl App {
             world,
             plugins: HashSet::new(),
             requirements: Vec::new(),
+            building: Vec::new(),
             started: false,
             runner: None,
         }
@@ -86,7 +101,9 @@ impl App {
                 plugin.name()
             );
         }
+        self.building.push(short_type_name::<P>());
         plugin.build(self);
+        self.building.pop();
         self
     }
 
@@ -104,15 +121,15 @@ impl App {
         self.plugins.contains(&TypeId::of::<P>())
     }
 
-    /// Declares that the plugin `by` reads resource `R`, which the plugin `provider` owns. Before
-    /// the first frame the app checks that `R` exists (added by the provider, or inserted by
-    /// hand) and otherwise names the missing plugin.
-    pub fn requires<R: Resource>(&mut self, by: &'static str, provider: &'static str) -> &mut Self {
+    /// Declares that the plugin being built reads resource `R`, which the plugin `owner` owns.
+    /// Before the first frame the app checks that `R` exists (added by the owner, or inserted by
+    /// hand) and otherwise names the missing plugin and the one that needs it (by its type).
+    pub fn requires<R: Resource>(&mut self, owner: Owner) -> &mut Self {
         self.requirements.push(Requirement {
             present: |world| world.contains_resource::<R>(),
             resource: short_type_name::<R>(),
-            by,
-            provider,
+            by: self.building.last().copied().unwrap_or("the app"),
+            owner,
         });
         self
     }
@@ -124,7 +141,10 @@ impl App {
             None => Ok(()),
             Some(r) => Err(format!(
                 "{} needs the {} resource: add {} (or insert {} yourself)",
-                r.by, r.resource, r.provider, r.resource
+                r.by,
+                r.resource,
+                r.owner.name(),
+                r.resource
             )),
         }
     }
@@ -259,11 +279,17 @@ mod tests {
     #[test]
     fn a_missing_requirement_names_the_resource_and_its_plugin() {
         let mut app = App::new();
-        app.requires::<Log>("ReaderPlugin", "LogPlugin");
+        struct ReaderPlugin;
+        impl Plugin for ReaderPlugin {
+            fn build(&self, app: &mut App) {
+                app.requires::<Log>(Owner::Settings);
+            }
+        }
+        app.add_plugins(ReaderPlugin);
         assert_eq!(
             app.check_requirements(),
             Err(
-                "ReaderPlugin needs the Log resource: add LogPlugin (or insert Log yourself)"
+                "ReaderPlugin needs the Log resource: add SettingsPlugin (or insert Log yourself)"
                     .into()
             )
         );

@@ -31,7 +31,7 @@ mod texture;
 mod tools;
 mod wake;
 
-pub use app::{App, Plugin};
+pub use app::{App, Owner, Plugin};
 pub use camera::{
     Camera, CameraAction, CameraActions, CameraHome, CameraMode, CameraSpeeds, Framing, KeepPose,
     Pose,

@@ -1,6 +1,7 @@
 //! The `Render` systems: upload what changed from the ECS world into [`Views`].
 
 use bevy_ecs::prelude::*;
+use close2gl_core::Owner;
 use close2gl_core::{
     App, Camera, Close2glFrame, Fates, FrameSet, Lighting, Mesh, ModelStatus, Overlay, Plugin,
     PostUpdate, Render, RenderSettings, SelectedTriangle, SoftwareFrame, Texture, Viewport,
@@ -27,12 +28,12 @@ pub struct GpuPlugin;
 
 impl Plugin for GpuPlugin {
     fn build(&self, app: &mut App) {
-        app.requires::<ModelStatus>("GpuPlugin", "ModelPlugin")
-            .requires::<RenderSettings>("GpuPlugin", "SettingsPlugin")
-            .requires::<Lighting>("GpuPlugin", "SettingsPlugin")
-            .requires::<Close2glFrame>("GpuPlugin", "Close2glPlugin")
-            .requires::<Viewport>("GpuPlugin", "SettingsPlugin")
-            .requires::<SelectedTriangle>("GpuPlugin", "SettingsPlugin")
+        app.requires::<ModelStatus>(Owner::Model)
+            .requires::<RenderSettings>(Owner::Settings)
+            .requires::<Lighting>(Owner::Settings)
+            .requires::<Close2glFrame>(Owner::Close2gl)
+            .requires::<Viewport>(Owner::Settings)
+            .requires::<SelectedTriangle>(Owner::Settings)
             .init_resource::<Fates>()
             .add_systems(
                 PostUpdate,

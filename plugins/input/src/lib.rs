@@ -11,6 +11,7 @@
 mod outside;
 
 use bevy_ecs::prelude::*;
+use close2gl_core::Owner;
 use close2gl_core::{
     Action, App, CameraAction, CameraActions, CameraSpeeds, FrameSet, InputBindings, InputState,
     Overlay, Plugin, PreUpdate, RenderSettings, Shading, ToolRequests,
@@ -23,9 +24,9 @@ impl Plugin for InputPlugin {
         app.init_resource::<InputState>()
             .init_resource::<InputBindings>()
             .init_resource::<ToolRequests>()
-            .requires::<CameraActions>("InputPlugin", "CameraPlugin")
-            .requires::<CameraSpeeds>("InputPlugin", "CameraPlugin")
-            .requires::<RenderSettings>("InputPlugin", "SettingsPlugin")
+            .requires::<CameraActions>(Owner::Camera)
+            .requires::<CameraSpeeds>(Owner::Camera)
+            .requires::<RenderSettings>(Owner::Settings)
             .add_systems(
                 PreUpdate,
                 (map_input, outside::toggle_outside).in_set(FrameSet::Input),

@@ -23,6 +23,7 @@ pub mod textbook;
 use std::time::Instant;
 
 use bevy_ecs::prelude::*;
+use close2gl_core::Owner;
 use close2gl_core::{
     App, Camera, Close2glFrame, FateCounts, FateKind, Fates, FrameSet, Mesh, Plugin, PostUpdate,
     RenderSettings, StageCounts, Viewport,
@@ -41,8 +42,8 @@ impl Plugin for Close2glPlugin {
         app.init_resource::<FastPipeline>()
             .init_resource::<Close2glFrame>()
             .init_resource::<Fates>()
-            .requires::<RenderSettings>("Close2glPlugin", "SettingsPlugin")
-            .requires::<Viewport>("Close2glPlugin", "SettingsPlugin")
+            .requires::<RenderSettings>(Owner::Settings)
+            .requires::<Viewport>(Owner::Settings)
             .add_systems(PostUpdate, close2gl_system.in_set(FrameSet::Close2gl));
     }
 }

@@ -41,6 +41,7 @@ mod vertex;
 use std::time::Instant;
 
 use bevy_ecs::prelude::*;
+use close2gl_core::Owner;
 use close2gl_core::{
     App, Camera, Close2glFrame, Fates, FrameSet, Lighting, Plugin, PostUpdate, Rasterizer,
     RenderSettings, SoftwareFrame, Texture,
@@ -55,10 +56,10 @@ impl Plugin for RasterPlugin {
     fn build(&self, app: &mut App) {
         app.init_resource::<SoftwareRasterizer>()
             .init_resource::<SoftwareFrame>()
-            .requires::<Close2glFrame>("RasterPlugin", "Close2glPlugin")
-            .requires::<RenderSettings>("RasterPlugin", "SettingsPlugin")
-            .requires::<Lighting>("RasterPlugin", "SettingsPlugin")
-            .requires::<Fates>("RasterPlugin", "Close2glPlugin")
+            .requires::<Close2glFrame>(Owner::Close2gl)
+            .requires::<RenderSettings>(Owner::Settings)
+            .requires::<Lighting>(Owner::Settings)
+            .requires::<Fates>(Owner::Close2gl)
             .add_systems(
                 PostUpdate,
                 raster_system

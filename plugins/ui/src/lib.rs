@@ -22,6 +22,7 @@ mod texture;
 mod tools;
 
 use bevy_ecs::prelude::*;
+use close2gl_core::Owner;
 use close2gl_core::{
     App, CameraActions, CameraSpeeds, Close2glFrame, ModelRequest, ModelStatus, Plugin,
     RenderSettings,
@@ -41,12 +42,12 @@ impl Plugin for UiPlugin {
         app.init_resource::<PanelState>()
             .init_resource::<ViewStats>()
             .init_resource::<Notice>()
-            .requires::<ModelStatus>("UiPlugin", "ModelPlugin")
-            .requires::<ModelRequest>("UiPlugin", "ModelPlugin")
-            .requires::<RenderSettings>("UiPlugin", "SettingsPlugin")
-            .requires::<CameraActions>("UiPlugin", "CameraPlugin")
-            .requires::<CameraSpeeds>("UiPlugin", "CameraPlugin")
-            .requires::<Close2glFrame>("UiPlugin", "Close2glPlugin");
+            .requires::<ModelStatus>(Owner::Model)
+            .requires::<ModelRequest>(Owner::Model)
+            .requires::<RenderSettings>(Owner::Settings)
+            .requires::<CameraActions>(Owner::Camera)
+            .requires::<CameraSpeeds>(Owner::Camera)
+            .requires::<Close2glFrame>(Owner::Close2gl);
     }
 }
 

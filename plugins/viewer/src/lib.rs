@@ -37,6 +37,7 @@ mod windows;
 use std::path::PathBuf;
 
 pub use close2gl_core::Layout;
+use close2gl_core::Owner;
 use close2gl_core::{App, InputState, ModelRequest, Plugin, Viewport, Wake};
 pub use recording::Recording;
 use winit::event_loop::{ControlFlow, EventLoop};
@@ -75,10 +76,10 @@ impl Plugin for ViewerPlugin {
         app.add_plugin_once(close2gl_gpu::GpuPlugin)
             .add_plugin_once(close2gl_gpu::outside::OutsidePlugin)
             .add_plugin_once(close2gl_ui::UiPlugin)
-            .requires::<InputState>("ViewerPlugin", "InputPlugin")
-            .requires::<ModelRequest>("ViewerPlugin", "ModelPlugin")
-            .requires::<Viewport>("ViewerPlugin", "SettingsPlugin")
-            .requires::<Wake>("ViewerPlugin", "SettingsPlugin");
+            .requires::<InputState>(Owner::Input)
+            .requires::<ModelRequest>(Owner::Model)
+            .requires::<Viewport>(Owner::Settings)
+            .requires::<Wake>(Owner::Settings);
         let options = self.0.clone();
         app.set_runner(move |app| run(app, options));
     }
