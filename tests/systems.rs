@@ -323,9 +323,10 @@ fn the_raster_system_draws_when_asked_and_when_something_changed() {
         .resource_mut::<RenderSettings>()
         .close2gl_raster = Rasterizer::Software;
     app.update();
-    let image = app.world().resource::<SoftwareFrame>().clone();
-    assert_eq!((image.width, image.height, image.generation), (640, 480, 1));
-    let at = |x: u32, y: u32| image.pixels[(y * image.width + x) as usize];
+    let frame = app.world().resource::<SoftwareFrame>().clone();
+    let image = &frame.image;
+    assert_eq!((image.width, image.height, frame.generation), (640, 480, 1));
+    let at = |x: u32, y: u32| image.pixel(x, y);
     assert_eq!(
         at(320, 240)[..3],
         [217, 166, 64],
@@ -345,7 +346,7 @@ fn the_raster_system_draws_when_asked_and_when_something_changed() {
     let lit = app.world().resource::<SoftwareFrame>();
     assert_eq!(lit.generation, 2);
     assert_ne!(
-        lit.pixels[240 * 640 + 320],
+        lit.image.pixel(320, 240),
         image.pixels[240 * 640 + 320],
         "now lit"
     );

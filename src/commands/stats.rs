@@ -4,7 +4,7 @@
 
 use std::path::{Path, PathBuf};
 
-use close2gl_core::{Close2glFrame, Fates, Rasterizer, SoftwareFrame};
+use close2gl_core::{Close2glFrame, Fates, Image, Rasterizer, SoftwareFrame};
 use serde_json::json;
 
 use super::CliError;
@@ -40,14 +40,14 @@ pub fn run(args: StatsArgs) -> Result<(), CliError> {
         report["stage_ms"] = json!(frame.stage_ms);
         let image = app.world().resource::<SoftwareFrame>();
         report["raster_ms"] = json!(image.raster_ms);
-        report["covered_pixels"] = json!(covered(image, config.render.background));
+        report["covered_pixels"] = json!(covered(&image.image, config.render.background));
     }
     println!("{report}");
     Ok(())
 }
 
 /// The pixels of the software image that are not the background.
-pub fn covered(image: &SoftwareFrame, background: glam::Vec3) -> usize {
+pub fn covered(image: &Image, background: glam::Vec3) -> usize {
     let background = close2gl_core::parity::to_rgb8(background);
     image.pixels.iter().filter(|p| p[..3] != background).count()
 }

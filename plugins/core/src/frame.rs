@@ -1,3 +1,4 @@
+use crate::Image;
 use bevy_ecs::prelude::*;
 use serde::Serialize;
 
@@ -113,14 +114,11 @@ impl Close2glFrame {
     }
 }
 
-/// The software rasterizer's image of the Close2GL view: RGBA8 rows from the top, `width` pixels
-/// each, and how long it took.
+/// The software rasterizer's image of the Close2GL view, and how long it took.
 #[derive(Resource, Clone, Debug, Default, PartialEq)]
 pub struct SoftwareFrame {
-    pub width: u32,
-    pub height: u32,
-    pub pixels: Vec<[u8; 4]>,
-    /// Rasterization, depth test, shading and the copy into `pixels`, in milliseconds (the
+    pub image: Image,
+    /// Rasterization, depth test, shading and the copy into the image, in milliseconds (the
     /// geometry before it is `Close2glFrame::stage_ms`).
     pub raster_ms: f64,
     /// Bumped for every new image, so that uploaders can tell a new one from the last.

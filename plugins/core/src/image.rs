@@ -8,7 +8,7 @@ use std::path::Path;
 /// Rows from the top, pixels left to right, RGBA 8 bits per channel, used as they are (no sRGB
 /// decoding): a texture's texel modulates the colour its file stores, and a view's bytes are
 /// the colour values the shaders wrote, times 255.
-#[derive(Clone, Debug, PartialEq, Eq)]
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
 pub struct Image {
     pub width: u32,
     pub height: u32,

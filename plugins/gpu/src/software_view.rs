@@ -42,12 +42,16 @@ impl SoftwareView {
         frame: &SoftwareFrame,
     ) {
         let size = wgpu::Extent3d {
-            width: frame.width,
-            height: frame.height,
+            width: frame.image.width,
+            height: frame.image.height,
             depth_or_array_layers: 1,
         };
-        let complete = frame.pixels.len() == frame.width as usize * frame.height as usize;
-        if frame.generation == self.generation || frame.width == 0 || frame.height == 0 || !complete
+        let image = &frame.image;
+        let complete = image.pixels.len() == image.width as usize * image.height as usize;
+        if frame.generation == self.generation
+            || frame.image.width == 0
+            || frame.image.height == 0
+            || !complete
         {
             return;
         }
@@ -79,11 +83,11 @@ impl SoftwareView {
         };
         queue.write_texture(
             texture.as_image_copy(),
-            bytemuck::cast_slice(&frame.pixels),
+            bytemuck::cast_slice(&image.pixels),
             wgpu::TexelCopyBufferLayout {
                 offset: 0,
-                bytes_per_row: Some(4 * frame.width),
-                rows_per_image: Some(frame.height),
+                bytes_per_row: Some(4 * frame.image.width),
+                rows_per_image: Some(frame.image.height),
             },
             size,
         );

@@ -141,7 +141,8 @@ pub fn probe(scene: ProbeScene<'_>, x: u32, y: u32, drawn: Option<Drawn<'_>>) ->
     }
 }
 
-fn pixel_color(image: &SoftwareFrame, x: u32, y: u32) -> Option<[u8; 4]> {
+fn pixel_color(frame: &SoftwareFrame, x: u32, y: u32) -> Option<[u8; 4]> {
+    let image = &frame.image;
     if x >= image.width || y >= image.height {
         return None;
     }

@@ -85,8 +85,8 @@ impl SoftwareRasterizer {
         self.setup(&frame);
         self.bins.fill(self.target.grid, &self.triangles);
         self.shade(&frame, settings);
-        self.target.resolve(&mut out.pixels);
-        (out.width, out.height) = (size.width, size.height);
+        self.target.resolve(&mut out.image.pixels);
+        (out.image.width, out.image.height) = (size.width, size.height);
         if fates.record {
             self.record(geometry, fates);
         }

@@ -7,7 +7,9 @@ use close2gl_core::{Camera, Mesh, Rasterizer, RenderMode, RenderSettings, Shadin
 mod common;
 use common::{Drawing, Scene};
 
-/// Every mode through the Close2GL stage and the software rasterizer, as the app runs them.
+/// Every mode through the Close2GL stage and the software rasterizer, as the app runs them: a
+/// whole image, every triangle accounted for once, and the same pixels when drawn again (no
+/// state left over from the broken input).
 fn draw_every_mode(mesh: &Mesh, camera: &Camera, viewport: Viewport) {
     let scene = Scene {
         camera: *camera,
@@ -23,8 +25,21 @@ fn draw_every_mode(mesh: &Mesh, camera: &Camera, viewport: Viewport) {
         };
         let mut drawing = Drawing::default();
         drawing.draw(&scene, &settings, false);
+        let image = drawing.image.image.clone();
         let pixels = (viewport.width * viewport.height) as usize;
-        assert_eq!(drawing.image.pixels.len(), pixels, "{mode:?}");
+        assert_eq!(image.pixels.len(), pixels, "{mode:?}");
+        let c = drawing.frame.counts;
+        assert_eq!(
+            c.drawn + c.culled + c.clipped,
+            c.triangles_in,
+            "{mode:?}: {c:?}"
+        );
+        assert_eq!(c.triangles_in, mesh.triangles.len(), "{mode:?}");
+        drawing.draw(&scene, &settings, true);
+        assert_eq!(
+            drawing.image.image, image,
+            "{mode:?}: drawn again, recording fates"
+        );
     }
 }
 

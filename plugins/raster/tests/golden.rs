@@ -210,7 +210,7 @@ fn draw_pinned(scene: &Scene<'_>, pinned: &[Pinned]) -> Vec<u64> {
 
 /// The image and the depth buffer; while fates are recorded, each pixel's owner and the counts.
 fn hash(drawing: &Drawing, viewport: Viewport, record: bool) -> u64 {
-    let (image, rasterizer) = (&drawing.image, &drawing.rasterizer);
+    let (image, rasterizer) = (&drawing.image.image, &drawing.rasterizer);
     let mut hash = Fnv::new();
     hash.bytes(&image.width.to_le_bytes());
     hash.bytes(&image.height.to_le_bytes());
@@ -230,8 +230,8 @@ fn hash(drawing: &Drawing, viewport: Viewport, record: bool) -> u64 {
 }
 
 /// Whether the images show something: the background alone would hash the same every time.
-fn distinct_colours(image: &SoftwareFrame) -> usize {
-    let mut colours: Vec<[u8; 4]> = image.pixels.clone();
+fn distinct_colours(frame: &SoftwareFrame) -> usize {
+    let mut colours: Vec<[u8; 4]> = frame.image.pixels.clone();
     colours.sort_unstable();
     colours.dedup();
     colours.len()

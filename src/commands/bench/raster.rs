@@ -129,8 +129,8 @@ impl SoftwareTimer {
 
     /// The share of the last image's pixels that are not the background.
     fn covered(&self, background: Vec3) -> f64 {
-        let covered = crate::commands::stats::covered(&self.image, background);
-        covered as f64 / self.image.pixels.len().max(1) as f64
+        let covered = crate::commands::stats::covered(&self.image.image, background);
+        covered as f64 / self.image.image.pixels.len().max(1) as f64
     }
 }
 
