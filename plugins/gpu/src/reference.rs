@@ -117,7 +117,6 @@ struct GpuMesh {
     culled_index_count: u32,
     /// Whether the mesh came with texture coordinates (without, it is never textured).
     has_uvs: bool,
-    generation: u64,
 }
 
 /// Interleaved vertex: position, normal, texture coordinates ((0, 0) for a mesh without).
@@ -178,15 +177,11 @@ impl Reference {
         }
     }
 
-    /// Uploads the mesh when its generation is not the one on the GPU and it is valid.
-    pub(crate) fn upload_mesh(&mut self, device: &wgpu::Device, mesh: &Mesh, generation: u64) {
+    /// Uploads the mesh (its caller knows it changed), unless it is invalid.
+    pub(crate) fn upload_mesh(&mut self, device: &wgpu::Device, mesh: &Mesh) {
         // An invalid mesh never reaches the GPU (the model plugin refuses it too): the previous
         // one stays.
-        let current = self
-            .mesh
-            .as_ref()
-            .is_some_and(|m| m.generation == generation);
-        if current || mesh.validate().is_err() {
+        if mesh.validate().is_err() {
             return;
         }
         let origin = mesh.bounding_sphere().0;
@@ -212,12 +207,16 @@ impl Reference {
             index_count: triangles.len() as u32 * 3,
             culled_index_count,
             has_uvs: !mesh.uvs.is_empty(),
-            generation,
         });
     }
 
-    /// Uploads the texture when its generation is not the one on the GPU; `None` (an app
-    /// without a model plugin) draws untextured.
+    /// Whether a texture is bound (not the untextured placeholder).
+    pub(crate) fn is_textured(&self) -> bool {
+        self.bindings.has_texture()
+    }
+
+    /// Uploads the texture (its caller knows it changed); `None` (an app without a model
+    /// plugin) draws untextured.
     pub(crate) fn upload_texture(
         &mut self,
         device: &wgpu::Device,

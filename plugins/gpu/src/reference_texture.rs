@@ -12,9 +12,9 @@ pub(crate) struct ReferenceBindings {
     /// In the order of `TextureFilter::ALL`.
     samplers: Vec<wgpu::Sampler>,
     bind_groups: Vec<wgpu::BindGroup>,
-    /// The `Texture.generation` on the GPU; `None` while the placeholder is bound (no `Texture`
-    /// resource), which is then never sampled into the colour.
-    generation: Option<u64>,
+    /// Whether a `Texture` is bound; false while the placeholder is (no `Texture` resource),
+    /// which is then never sampled into the colour.
+    textured: bool,
 }
 
 impl ReferenceBindings {
@@ -41,7 +41,7 @@ impl ReferenceBindings {
             pipeline_layout,
             samplers,
             bind_groups: Vec::new(),
-            generation: None,
+            textured: false,
         };
         bindings.bind(device, queue, &placeholder());
         bindings
@@ -51,28 +51,24 @@ impl ReferenceBindings {
         &self.uniforms
     }
 
-    /// Uploads the texture when its generation is not the one on the GPU; without a texture,
-    /// goes back to the placeholder.
+    /// Uploads the texture (its caller knows it changed); without a texture, goes back to the
+    /// placeholder.
     pub(crate) fn sync(
         &mut self,
         device: &wgpu::Device,
         queue: &wgpu::Queue,
         texture: Option<&Texture>,
     ) {
-        let generation = texture.map(|t| t.generation);
-        if generation == self.generation {
-            return;
-        }
         match texture {
             Some(texture) => self.bind(device, queue, &texture.image),
             None => self.bind(device, queue, &placeholder()),
         }
-        self.generation = generation;
+        self.textured = texture.is_some();
     }
 
     /// Whether a texture (not the placeholder) is bound.
     pub(crate) fn has_texture(&self) -> bool {
-        self.generation.is_some()
+        self.textured
     }
 
     pub(crate) fn bind_group(&self, filter: TextureFilter) -> &wgpu::BindGroup {

@@ -1,7 +1,7 @@
 //! The Close2GL view when Close2GL rasterizes: the software rasterizer's image uploaded into a
 //! texture (remade only when its size changes) and drawn as one triangle covering the viewport.
 
-use close2gl_core::SoftwareFrame;
+use close2gl_core::Image;
 
 use crate::fullscreen;
 
@@ -10,7 +10,6 @@ pub(crate) struct SoftwareView {
     layout: wgpu::BindGroupLayout,
     /// The texture, its bind group and its size; none before the first image.
     image: Option<(wgpu::Texture, wgpu::BindGroup)>,
-    generation: u64,
 }
 
 impl SoftwareView {
@@ -30,32 +29,20 @@ impl SoftwareView {
             ),
             layout,
             image: None,
-            generation: 0,
         }
     }
 
-    /// Uploads `frame` when it is a new image.
-    pub(crate) fn update(
-        &mut self,
-        device: &wgpu::Device,
-        queue: &wgpu::Queue,
-        frame: &SoftwareFrame,
-    ) {
+    /// Uploads `image` (its caller knows it is new), unless it is empty or incomplete.
+    pub(crate) fn update(&mut self, device: &wgpu::Device, queue: &wgpu::Queue, image: &Image) {
         let size = wgpu::Extent3d {
-            width: frame.image.width,
-            height: frame.image.height,
+            width: image.width,
+            height: image.height,
             depth_or_array_layers: 1,
         };
-        let image = &frame.image;
         let complete = image.pixels.len() == image.width as usize * image.height as usize;
-        if frame.generation == self.generation
-            || frame.image.width == 0
-            || frame.image.height == 0
-            || !complete
-        {
+        if image.width == 0 || image.height == 0 || !complete {
             return;
         }
-        self.generation = frame.generation;
         if self.image.as_ref().is_none_or(|(t, _)| t.size() != size) {
             let texture = device.create_texture(&wgpu::TextureDescriptor {
                 label: Some("software image"),
@@ -86,8 +73,8 @@ impl SoftwareView {
             bytemuck::cast_slice(&image.pixels),
             wgpu::TexelCopyBufferLayout {
                 offset: 0,
-                bytes_per_row: Some(4 * frame.image.width),
-                rows_per_image: Some(frame.image.height),
+                bytes_per_row: Some(4 * image.width),
+                rows_per_image: Some(image.height),
             },
             size,
         );

@@ -3,8 +3,8 @@
 use bevy_ecs::prelude::*;
 use close2gl_core::Owner;
 use close2gl_core::{
-    App, Camera, Close2glFrame, Fates, FrameSet, Lighting, Mesh, ModelStatus, Overlay, Plugin,
-    PostUpdate, Render, RenderSettings, SelectedTriangle, SoftwareFrame, Texture, Viewport,
+    App, Camera, Close2glFrame, Fates, FrameSet, Lighting, Mesh, Overlay, Plugin, PostUpdate,
+    Render, RenderSettings, SelectedTriangle, SoftwareFrame, Texture, Viewport,
 };
 
 use crate::fate_view::record_fates_while_shown;
@@ -12,14 +12,14 @@ use crate::reference::clear_color;
 use crate::{Gpu, Views};
 use close2gl_core::parity::to_rgb8;
 
-/// Adds the `Render` systems that upload what changed: the mesh again only when
-/// `ModelStatus.generation` changes, the texture only when `Texture.generation` does; the
+/// Adds the `Render` systems that upload what changed, by bevy's change ticks as the pipeline
+/// watches its inputs: the `Mesh` again only when it changed, the `Texture` likewise; the
 /// reference uniforms from `Camera`, `RenderSettings` and `Lighting`; the Close2GL 2D buffer
 /// from `Close2glFrame`, or the software rasterizer's image from `SoftwareFrame`; in the fate
 /// view (`RenderSettings::overlay`), each triangle in its colour from `Fates`, which it asks
 /// Close2GL to record (`Fates::record`) while that view is shown (it inserts `Fates` if no one
-/// has); the selected triangle's highlight (`SelectedTriangle`); in the live difference, both views drawn again into textures of the `Viewport`'s size
-/// and compared. They run once
+/// has); the selected triangle's highlight (`SelectedTriangle`); in the live difference, both
+/// views drawn again into textures of the `Viewport`'s size and compared. They run once
 /// the `Gpu` and `Views` resources exist (inserted by whoever owns the target), so a window may
 /// arrive late. It owns no resource: the model, settings and Close2GL plugins provide what it
 /// reads, the model plugin the texture (without one the reference draws untextured), and the
@@ -28,8 +28,7 @@ pub struct GpuPlugin;
 
 impl Plugin for GpuPlugin {
     fn build(&self, app: &mut App) {
-        app.requires::<ModelStatus>(Owner::Model)
-            .requires::<RenderSettings>(Owner::Settings)
+        app.requires::<RenderSettings>(Owner::Settings)
             .requires::<Lighting>(Owner::Settings)
             .requires::<Close2glFrame>(Owner::Close2gl)
             .requires::<Viewport>(Owner::Settings)
@@ -58,21 +57,23 @@ impl Plugin for GpuPlugin {
     }
 }
 
-fn upload_mesh(
-    gpu: Res<Gpu>,
-    mesh: Single<&Mesh>,
-    status: Res<ModelStatus>,
-    mut views: ResMut<Views>,
-) {
-    views
-        .reference
-        .upload_mesh(&gpu.device, &mesh, status.generation);
+/// The mesh again when it changed (bevy's change ticks, as the pipeline watches it), or when
+/// the views are new.
+fn upload_mesh(gpu: Res<Gpu>, mesh: Single<Ref<Mesh>>, mut views: ResMut<Views>) {
+    if mesh.is_changed() || views.is_added() {
+        views.reference.upload_mesh(&gpu.device, &mesh);
+    }
 }
 
+/// The texture again when it changed, appeared or went, or when the views are new.
 fn upload_texture(gpu: Res<Gpu>, texture: Option<Res<Texture>>, mut views: ResMut<Views>) {
-    views
-        .reference
-        .upload_texture(&gpu.device, &gpu.queue, texture.as_deref());
+    let changed = texture.as_ref().is_some_and(|t| t.is_changed());
+    let gone = texture.is_none() && views.reference.is_textured();
+    if changed || gone || views.is_added() {
+        views
+            .reference
+            .upload_texture(&gpu.device, &gpu.queue, texture.as_deref());
+    }
 }
 
 /// Every frame: the uniforms are a few hundred bytes, cheaper than tracking what moved.
@@ -115,7 +116,7 @@ fn upload_software(
     if let Some(image) = image
         && (image.is_changed() || views.is_added())
     {
-        views.software.update(&gpu.device, &gpu.queue, &image);
+        views.software.update(&gpu.device, &gpu.queue, &image.image);
     }
 }
 

@@ -4,8 +4,8 @@
 
 use close2gl_core::glam::Vec3;
 use close2gl_core::{
-    App, Camera, Close2glFrame, FateKind, Fates, Mesh, ModelStatus, Overlay, RenderSettings,
-    SelectedTriangle, Shading, TriangleFate, Viewport,
+    App, Camera, Close2glFrame, FateKind, Fates, Mesh, Overlay, RenderSettings, SelectedTriangle,
+    Shading, TriangleFate, Viewport,
 };
 use close2gl_gpu::{OffscreenPlugin, Snapshot, render_offscreen};
 use close2gl_testkit::gpu;
@@ -57,13 +57,9 @@ fn render(kinds: [FateKind; 3]) -> (App, Snapshot) {
             .to_vec(),
         ..Default::default()
     };
-    app.insert_resource(ModelStatus {
-        generation: 1,
-        ..Default::default()
-    })
-    .insert_resource(fates)
-    .init_resource::<Close2glFrame>()
-    .add_plugins(OffscreenPlugin(gpu()));
+    app.insert_resource(fates)
+        .init_resource::<Close2glFrame>()
+        .add_plugins(OffscreenPlugin(gpu()));
     let snapshot = render_offscreen(&mut app).expect("both views render");
     (app, snapshot)
 }

@@ -2,7 +2,7 @@
 //! camera's own matrices project the near plane and the model must show them.
 
 use close2gl_core::glam::Vec3;
-use close2gl_core::{App, Camera, ModelStatus, OutsideView, RenderSettings, Viewport};
+use close2gl_core::{App, Camera, OutsideView, RenderSettings, Viewport};
 use close2gl_gpu::outside::{OutsideRenderer, render_outside};
 use close2gl_gpu::{Image, OffscreenPlugin, render_offscreen};
 use close2gl_pipeline::Close2glPlugin;
@@ -33,11 +33,7 @@ fn scene() -> (App, Camera) {
     };
     let mesh = sphere(Vec3::ZERO, 1.0, 48, 96);
     let mut app = close2gl_testkit::world_with(mesh, camera, settings, SIZE);
-    app.insert_resource(ModelStatus {
-        generation: 1,
-        ..Default::default()
-    })
-    .insert_resource(OutsideView {
+    app.insert_resource(OutsideView {
         show: true,
         stage: 0.0,
     })

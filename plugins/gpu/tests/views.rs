@@ -3,11 +3,12 @@
 
 use std::path::PathBuf;
 
+use close2gl_core::bevy_ecs::change_detection::DetectChangesMut;
 use close2gl_core::glam::{Vec2, Vec3};
 use close2gl_core::parity::{Comparison, ONLY_REFERENCE, coverage, diff_image, to_rgb8};
 use close2gl_core::{
-    App, Camera, Clipping, FrontFace, Image, Mesh, ModelStatus, Overlay, RenderMode,
-    RenderSettings, Shading, Texture, TextureFilter, Viewport,
+    App, Camera, Clipping, FrontFace, Image, Mesh, Overlay, RenderMode, RenderSettings, Shading,
+    Texture, TextureFilter, Viewport,
 };
 use close2gl_gpu::{Gpu, OffscreenPlugin, Snapshot, render_offscreen};
 use close2gl_pipeline::Close2glPlugin;
@@ -26,12 +27,8 @@ fn app_on(
     viewport: Viewport,
 ) -> App {
     let mut app = close2gl_testkit::world_with(mesh, camera, settings, viewport);
-    app.insert_resource(ModelStatus {
-        generation: 1,
-        ..Default::default()
-    })
-    .add_plugins(Close2glPlugin)
-    .add_plugins(OffscreenPlugin(gpu));
+    app.add_plugins(Close2glPlugin)
+        .add_plugins(OffscreenPlugin(gpu));
     app
 }
 
@@ -196,21 +193,27 @@ fn shading_changes_colours_but_not_coverage() {
 }
 
 #[test]
-fn the_mesh_is_uploaded_again_only_when_the_generation_changes() {
+fn the_mesh_is_uploaded_again_only_when_it_changes() {
     let mut app = framed_sphere(RenderSettings::default(), SMALL);
     let first = render_offscreen(&mut app).expect("render");
-    // Move the model without telling the renderers: the reference keeps the mesh it has.
+    // Move the model behind change detection's back: the reference keeps the mesh it has (it
+    // uploads on the mesh's change tick, not every frame).
     let moved = sphere(Vec3::new(0.5, 0.0, 0.0), 1.0, 16, 32);
     let mut mesh = app
         .world_mut()
         .query::<&mut Mesh>()
         .single_mut(app.world_mut())
         .unwrap();
-    *mesh = moved;
+    *mesh.bypass_change_detection() = moved;
     let stale = render_offscreen(&mut app).expect("render");
     assert_eq!(stale.reference, first.reference);
-    assert_ne!(stale.close2gl, first.close2gl);
-    app.world_mut().resource_mut::<ModelStatus>().generation += 1;
+    // Marked changed, as any write through the world marks it: both views follow.
+    let mut mesh = app
+        .world_mut()
+        .query::<&mut Mesh>()
+        .single_mut(app.world_mut())
+        .unwrap();
+    mesh.set_changed();
     let fresh = render_offscreen(&mut app).expect("render");
     assert_ne!(fresh.reference, first.reference);
     check("after_reload", &fresh, 0.999);
@@ -245,7 +248,6 @@ fn the_2d_buffer_grows_when_the_model_gets_bigger() {
         .single_mut(app.world_mut())
         .unwrap();
     *mesh = sphere(Vec3::ZERO, 1.0, 64, 128);
-    app.world_mut().resource_mut::<ModelStatus>().generation += 1;
     let snapshot = render_offscreen(&mut app).expect("render");
     assert!(snapshot.counts.output_primitives > 3 * 1024);
     check("grown", &snapshot, 0.99);
@@ -391,7 +393,7 @@ fn a_checkerboard_quad_shows_both_squares_and_none_with_texturing_off() {
 }
 
 #[test]
-fn the_texture_is_uploaded_again_only_when_its_generation_changes() {
+fn the_texture_is_uploaded_again_only_when_it_changes() {
     let mut app = head_on_quad();
     let first = render_offscreen(&mut app).expect("render");
     let black = Image {
@@ -399,10 +401,13 @@ fn the_texture_is_uploaded_again_only_when_its_generation_changes() {
         height: 2,
         pixels: vec![[0, 0, 0, 255]; 4],
     };
-    app.world_mut().resource_mut::<Texture>().image = black;
+    app.world_mut()
+        .resource_mut::<Texture>()
+        .bypass_change_detection()
+        .image = black;
     let stale = render_offscreen(&mut app).expect("render");
     assert_eq!(stale.reference, first.reference);
-    app.world_mut().resource_mut::<Texture>().generation += 1;
+    app.world_mut().resource_mut::<Texture>().set_changed();
     let fresh = render_offscreen(&mut app).expect("render");
     let background = [
         fresh.background[0],
