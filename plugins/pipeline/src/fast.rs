@@ -31,6 +31,16 @@ struct Chunk {
     counts: Tally,
 }
 
+impl Chunk {
+    /// Empty, its buffers kept for the next frame.
+    fn clear(&mut self) {
+        self.vertices.clear();
+        self.raster.primitives.clear();
+        self.raster.cuts.clear();
+        self.raster.triangles.clear();
+    }
+}
+
 /// The reusable buffers of the fast path.
 /// Per-vertex data is kept as structure-of-arrays: the common trivially-inside triangle reads
 /// only three outcodes and three window positions. Clip coordinates are not kept: the few
@@ -45,7 +55,8 @@ pub struct FastPipeline {
 
 impl FastPipeline {
     /// Fills `frame` and `fates` with exactly what [`crate::textbook::run_recording`] returns
-    /// (each triangle's fate only when `fates.record` is set).
+    /// (each triangle's fate only when `fates.record` is set): the vertices transformed, the
+    /// triangles clipped, divided, mapped, culled and emitted in parallel chunks, then joined.
     pub fn run(
         &mut self,
         mesh: &Mesh,
@@ -59,14 +70,32 @@ impl FastPipeline {
         let stage = Stage::new(settings, viewport);
         let raster = settings.close2gl_raster == Rasterizer::Software;
         self.transform_vertices(&mesh.positions, &transform, &stage);
-
         if raster {
             raster_vertices(mesh, &transform, &stage, &mut frame.raster.vertices);
             frame.raster.textured = !mesh.uvs.is_empty();
         }
+        let tasks = self.process_triangles(mesh, &transform, &stage, raster, fates);
+        let total = self.join_into(tasks, raster, frame);
+        frame.topology = stage.topology();
+        frame.viewport = viewport;
+        frame.counts = total.stage_counts();
+        fates.counts = match fates.record {
+            true => total.fate_counts(),
+            false => FateCounts::default(),
+        };
+    }
 
-        // Clip, divide, map, cull and emit the triangles, chunk by chunk; each chunk writes its
-        // triangles' fates into its own slice of `fates` when they are recorded.
+    /// Clips, divides, maps, culls and emits the triangles chunk by chunk, in parallel; each
+    /// chunk writes its triangles' fates into its own slice of `fates` when they are recorded.
+    /// Returns the number of chunks.
+    fn process_triangles(
+        &mut self,
+        mesh: &Mesh,
+        transform: &ClipTransform,
+        stage: &Stage,
+        raster: bool,
+        fates: &mut Fates,
+    ) -> usize {
         let (positions, codes, window) = (&mesh.positions, &self.codes, &self.window);
         let tasks = mesh.triangles.len().div_ceil(TRIANGLE_CHUNK);
         self.chunks.resize_with(tasks, Chunk::default);
@@ -83,33 +112,32 @@ impl FastPipeline {
             .zip(fate_slices)
             .enumerate()
             .for_each(|(task, ((chunk, triangles), fates))| {
-                chunk.vertices.clear();
-                chunk.raster.primitives.clear();
-                chunk.raster.cuts.clear();
-                chunk.raster.triangles.clear();
+                chunk.clear();
                 let corners = Corners {
                     first: (task * TRIANGLE_CHUNK) as u32,
                     positions,
                     codes,
                     window,
-                    transform: &transform,
+                    transform,
                 };
                 let mut out = RasterEmit {
                     window: &mut chunk.vertices,
                     raster: &mut chunk.raster,
                 };
                 chunk.counts = match (raster, record) {
-                    (true, true) => corners.process::<true>(triangles, &stage, &mut out, fates),
-                    (true, false) => corners.process::<false>(triangles, &stage, &mut out, fates),
-                    (false, true) => corners.process::<true>(triangles, &stage, out.window, fates),
-                    (false, false) => {
-                        corners.process::<false>(triangles, &stage, out.window, fates)
-                    }
+                    (true, true) => corners.process::<true>(triangles, stage, &mut out, fates),
+                    (true, false) => corners.process::<false>(triangles, stage, &mut out, fates),
+                    (false, true) => corners.process::<true>(triangles, stage, out.window, fates),
+                    (false, false) => corners.process::<false>(triangles, stage, out.window, fates),
                 };
             });
+        tasks
+    }
 
-        // Join the chunks in mesh order. In a steady frame the buffer already has about the
-        // right length, so resizing costs nothing and the copy runs in parallel.
+    /// Joins the first `tasks` chunks into `frame` in mesh order, and their counts. In a steady
+    /// frame the buffer already has about the right length, so resizing costs nothing and the
+    /// copy runs in parallel.
+    fn join_into(&self, tasks: usize, raster: bool, frame: &mut Close2glFrame) -> Tally {
         let chunks = &self.chunks[..tasks];
         frame
             .vertices
@@ -123,15 +151,9 @@ impl FastPipeline {
             frame.raster.primitives.clear();
             frame.raster.triangles.clear();
         }
-        frame.topology = stage.topology();
-        frame.viewport = viewport;
         let mut total = Tally::default();
         chunks.iter().for_each(|chunk| total.merge(&chunk.counts));
-        frame.counts = total.stage_counts();
-        fates.counts = match record {
-            true => total.fate_counts(),
-            false => FateCounts::default(),
-        };
+        total
     }
 
     /// Transforms every unique vertex once, into its outcode and window position.
