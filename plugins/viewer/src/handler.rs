@@ -127,20 +127,69 @@ impl Viewer {
             return self.fail(event_loop, e);
         }
         self.frames += 1;
-        let continuous = self.options.exit_after_frames.is_some() || self.session.is_replaying();
-        if self
-            .options
-            .exit_after_frames
-            .is_some_and(|n| self.frames >= n)
-        {
+        self.next_frame(event_loop, now, held, gui_frame.repaint_delay);
+    }
+
+    /// After a frame: exit when the frame budget is spent, else ask for the next frame when
+    /// keys are held, a frame was missed, the run draws continuously or the panel wants one.
+    fn next_frame(
+        &mut self,
+        event_loop: &ActiveEventLoop,
+        now: Instant,
+        held: bool,
+        delay: Duration,
+    ) {
+        let Some(windows) = self.windows.as_ref() else {
+            return;
+        };
+        let budget = self.options.exit_after_frames;
+        if budget.is_some_and(|n| self.frames >= n) {
             return event_loop.exit();
         }
+        let continuous = budget.is_some() || self.session.is_replaying();
         let missed = windows.missed_frame();
-        let delay = gui_frame.repaint_delay;
         if self
             .pacing
             .after_frame(now, held, missed, continuous, delay)
         {
+            windows.main.window.request_redraw();
+        }
+    }
+}
+
+impl Viewer {
+    /// While the windows' drawing is being set up: the close of one of them ends the run as
+    /// closed (see [`Opening`]).
+    fn opening_event(&mut self, event_loop: &ActiveEventLoop, id: WindowId, event: &WindowEvent) {
+        let Some(opening) = &self.opening else {
+            return;
+        };
+        let (main, close2gl) = &opening.windows;
+        let ours = main.window.id() == id || close2gl.as_ref().is_some_and(|w| w.window.id() == id);
+        if ours && is_close(event) {
+            self.opening = None;
+            event_loop.exit();
+        }
+    }
+
+    /// An event that is input: the panel's first, then the outside view's orbit (over its
+    /// column of the main window, or its own window), then the camera's.
+    fn input_event(&mut self, id: WindowId, is_main: bool, event: WindowEvent) {
+        let Some(windows) = self.windows.as_mut() else {
+            return;
+        };
+        let panel = offer_to_panel(&mut windows.gui, &windows.main.window, is_main, &event);
+        let world = self.app.world_mut();
+        let (taken, orbited) = match windows.outside.as_ref().filter(|w| w.window.id() == id) {
+            Some(own) => {
+                let area = PixelRect::whole(own.size().0, own.size().1);
+                self.orbit.offer(world, Some(area), &event, panel)
+            }
+            None if is_main => self.orbit.offer(world, windows.outside_area, &event, panel),
+            None => (false, false),
+        };
+        let redraw = orbited || (!taken && apply_input(&mut self.tracker, world, id, event, panel));
+        if redraw {
             windows.main.window.request_redraw();
         }
     }
@@ -247,19 +296,7 @@ impl ApplicationHandler for Viewer {
 
     fn window_event(&mut self, event_loop: &ActiveEventLoop, id: WindowId, event: WindowEvent) {
         let Some(windows) = self.windows.as_mut() else {
-            if let Some(opening) = &self.opening
-                && is_close(&event)
-                && (opening.windows.0.window.id() == id
-                    || opening
-                        .windows
-                        .1
-                        .as_ref()
-                        .is_some_and(|w| w.window.id() == id))
-            {
-                self.opening = None;
-                event_loop.exit();
-            }
-            return;
+            return self.opening_event(event_loop, id, &event);
         };
         let is_main = windows.main.window.id() == id;
         if !is_main && windows.window_mut(id).is_none() {
@@ -295,21 +332,7 @@ impl ApplicationHandler for Viewer {
             WindowEvent::DroppedFile(ref path) => self.session.file_dropped(path),
             _ => {}
         }
-        let panel = offer_to_panel(&mut windows.gui, &windows.main.window, is_main, &event);
-        let world = self.app.world_mut();
-        // The outside view's orbit: over its column of the main window, or its own window.
-        let (taken, orbited) = match windows.outside.as_ref().filter(|w| w.window.id() == id) {
-            Some(own) => {
-                let area = PixelRect::whole(own.size().0, own.size().1);
-                self.orbit.offer(world, Some(area), &event, panel)
-            }
-            None if is_main => self.orbit.offer(world, windows.outside_area, &event, panel),
-            None => (false, false),
-        };
-        let redraw = orbited || (!taken && apply_input(&mut self.tracker, world, id, event, panel));
-        if redraw {
-            windows.main.window.request_redraw();
-        }
+        self.input_event(id, is_main, event);
     }
 
     fn about_to_wait(&mut self, event_loop: &ActiveEventLoop) {

@@ -103,30 +103,31 @@ impl Windows {
             })?;
             shots.extend(shot.map(|shot| (shot, placed)));
         }
-        Ok(match capture {
-            Capture::Nothing => None,
-            Capture::Window => {
-                let images: Vec<Image> = shots.into_iter().map(|(shot, _)| shot).collect();
-                Some(Shot::Window(screenshot::side_by_side(&images)))
-            }
-            Capture::Views => {
-                let view = |wanted: View| {
-                    shots
-                        .iter()
-                        .find_map(|(shot, placed): &(Image, &Vec<Placed>)| {
-                            let p = placed.iter().find(|p| p.view == wanted)?;
-                            Some(screenshot::crop(shot, p.rect))
-                        })
-                };
-                match (view(View::Reference), view(View::Close2gl)) {
-                    (Some(reference), Some(close2gl)) => Some(Shot::Views {
-                        reference,
-                        close2gl,
-                    }),
-                    _ => None,
-                }
-            }
-        })
+        Ok(shot(capture, shots))
+    }
+}
+
+/// What `capture` keeps of the windows drawn (each with the views placed in it).
+fn shot(capture: Capture, shots: Vec<(Image, &Vec<Placed>)>) -> Option<Shot> {
+    match capture {
+        Capture::Nothing => None,
+        Capture::Window => {
+            let images: Vec<Image> = shots.into_iter().map(|(shot, _)| shot).collect();
+            Some(Shot::Window(screenshot::side_by_side(&images)))
+        }
+        Capture::Views => {
+            let view = |wanted: View| {
+                shots.iter().find_map(|(shot, placed)| {
+                    let p = placed.iter().find(|p| p.view == wanted)?;
+                    Some(screenshot::crop(shot, p.rect))
+                })
+            };
+            let (reference, close2gl) = (view(View::Reference)?, view(View::Close2gl)?);
+            Some(Shot::Views {
+                reference,
+                close2gl,
+            })
+        }
     }
 }
 
