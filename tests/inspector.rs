@@ -7,10 +7,10 @@ use std::path::PathBuf;
 use std::process::{Command, Output};
 use std::sync::OnceLock;
 
-use close2gl::core::{Camera, Fates, Mesh, RenderSettings, SoftwareFrame, Viewport};
+use close2gl::core::{Camera, Fates, Mesh, RenderSettings, Scene, SoftwareFrame, Viewport};
 use close2gl::raster::SoftwareRasterizer;
 use close2gl::raster::probe::{self, Drawn, Outcome};
-use close2gl_gpu::{Gpu, OffscreenPlugin, ProbeScene, probe_reference, render_offscreen};
+use close2gl_gpu::{Gpu, OffscreenPlugin, probe_reference, render_offscreen};
 use serde_json::Value;
 
 /// One triangle per fate, seen from the origin looking down -z (90° both ways, near 1, far 10,
@@ -282,22 +282,22 @@ impl Probed {
     /// itself (as when the GPU draws Close2GL's 2D buffer).
     fn close2gl_probe(&self, x: u32, y: u32, from_rasterizer: bool) -> probe::PixelProbe {
         let world = self.app.world();
-        let scene = probe::ProbeScene {
+        let scene = Scene {
             mesh: &self.mesh,
             camera: &self.camera,
             settings: &self.settings,
             viewport: SIZE,
-            fates: world.resource::<Fates>(),
         };
         let drawn = Drawn {
             rasterizer: world.resource::<SoftwareRasterizer>(),
             image: world.resource::<SoftwareFrame>(),
         };
-        probe::probe(scene, x, y, from_rasterizer.then_some(drawn))
+        let fates = world.resource::<Fates>();
+        probe::probe(scene, fates, (x, y), from_rasterizer.then_some(drawn))
     }
 
     fn reference(&self, x: u32, y: u32) -> Option<u32> {
-        let scene = ProbeScene {
+        let scene = Scene {
             mesh: &self.mesh,
             camera: &self.camera,
             settings: &self.settings,

@@ -3,11 +3,11 @@
 //! reference's); `--pixel X,Y` prints who drew that pixel in each view, and for Close2GL every
 //! triangle that reached it and why each lost. JSON, with the keys the panel shows.
 
-use close2gl_core::{App, Camera, Fates, Mesh, RenderSettings, Viewport};
+use close2gl_core::{App, Camera, Fates, Mesh, RenderSettings, Scene, Viewport};
 use close2gl_gpu::{Gpu, ReferenceHit, probe_reference};
 use close2gl_pipeline::journey::{Journey, journey};
 use close2gl_pipeline::matrices;
-use close2gl_raster::probe::{self, Drawn, PixelProbe, ProbeScene};
+use close2gl_raster::probe::{self, Drawn, PixelProbe};
 use glam::{Mat4, Vec3, Vec4};
 use serde_json::{Value, json};
 
@@ -190,14 +190,13 @@ fn pixel_report(app: &mut App, (x, y): (u32, u32), viewport: Viewport) -> Result
     let world = app.world();
     let fates = world.resource::<Fates>();
     let drawn = Drawn::last_frame(world, &settings);
-    let scene = ProbeScene {
+    let scene = Scene {
         mesh: &mesh,
         camera: &camera,
         settings: &settings,
         viewport,
-        fates,
     };
-    let close2gl = probe::probe(scene, x, y, drawn);
+    let close2gl = probe::probe(scene, fates, (x, y), drawn);
     let reference = reference_probe(&mesh, &camera, &settings, viewport, (x, y))?;
     let agree = reference.as_ref().map(|r| r.triangle) == close2gl.triangle;
     Ok(json!({
@@ -234,7 +233,7 @@ fn reference_probe(
     pixel: (u32, u32),
 ) -> Result<Option<ReferenceHit>, CliError> {
     let gpu = Gpu::headless(close2gl_gpu::wgpu::Backends::PRIMARY).map_err(CliError::Runtime)?;
-    let scene = close2gl_gpu::ProbeScene {
+    let scene = Scene {
         mesh,
         camera,
         settings,

@@ -124,3 +124,13 @@ pub struct SoftwareFrame {
     /// Bumped for every new image, so that uploaders can tell a new one from the last.
     pub generation: u64,
 }
+
+/// What one frame of the views is drawn from, borrowed: the mesh, the camera, the settings and
+/// the viewport. Both views' pixel probes take it, so that they ask about the same frame.
+#[derive(Clone, Copy)]
+pub struct Scene<'a> {
+    pub mesh: &'a crate::Mesh,
+    pub camera: &'a crate::Camera,
+    pub settings: &'a crate::RenderSettings,
+    pub viewport: crate::Viewport,
+}

@@ -38,8 +38,8 @@ pub use camera::{
 };
 pub use fates::{ClipPlane, FateCounts, FateKind, Fates, SelectedTriangle, TriangleFate};
 pub use frame::{
-    Close2glFrame, CutVertex, RasterGeometry, RasterVertex, SoftwareFrame, StageCounts, Topology,
-    Viewport,
+    Close2glFrame, CutVertex, RasterGeometry, RasterVertex, Scene, SoftwareFrame, StageCounts,
+    Topology, Viewport,
 };
 pub use image::Image;
 pub use input::{Action, InputBindings, InputState, ProbeClick};

@@ -10,7 +10,7 @@
 //! A flat attribute works on every adapter and carries the mesh's own index.
 
 use bytemuck::{Pod, Zeroable};
-use close2gl_core::{Camera, Mesh, RenderSettings, Viewport};
+use close2gl_core::{Mesh, Scene, Viewport};
 use wgpu::util::DeviceExt;
 
 use crate::reference::{PipelineKey, has_area, primitive_state, relative_matrices};
@@ -24,15 +24,6 @@ pub struct ReferenceHit {
     pub triangle: u32,
     /// Its depth there, wgpu's 0 (near) .. 1 (far).
     pub depth: f32,
-}
-
-/// What the reference draws: the probe needs exactly this to draw the same.
-#[derive(Clone, Copy)]
-pub struct ProbeScene<'a> {
-    pub mesh: &'a Mesh,
-    pub camera: &'a Camera,
-    pub settings: &'a RenderSettings,
-    pub viewport: Viewport,
 }
 
 /// One vertex of the ID pass: a corner (relative to the mesh's origin) and its triangle's index.
@@ -51,7 +42,7 @@ const DEPTH_OUT_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::R32Float;
 /// click or a headless question, not for every frame.
 pub fn probe_reference(
     gpu: &Gpu,
-    scene: ProbeScene<'_>,
+    scene: Scene<'_>,
     (x, y): (u32, u32),
 ) -> Result<Option<ReferenceHit>, String> {
     let Viewport { width, height } = scene.viewport;
@@ -118,7 +109,7 @@ impl Targets {
     }
 }
 
-fn draw(gpu: &Gpu, scene: ProbeScene<'_>, vertices: &[IdVertex], targets: &Targets) {
+fn draw(gpu: &Gpu, scene: Scene<'_>, vertices: &[IdVertex], targets: &Targets) {
     let device = &gpu.device;
     let setup = UniformSetup::new(device, "probe", size_of::<[[f32; 4]; 4]>());
     let (view, projection) = relative_matrices(scene.camera, scene.mesh.bounding_sphere().0);

@@ -1,8 +1,8 @@
 //! The reference probe on a real adapter: the ID pass names the triangle the GPU drew at a pixel.
 
 use close2gl_core::glam::Vec3;
-use close2gl_core::{Camera, Mesh, RenderSettings, Viewport};
-use close2gl_gpu::{ProbeScene, ReferenceHit, probe_reference};
+use close2gl_core::{Camera, Mesh, RenderSettings, Scene, Viewport};
+use close2gl_gpu::{ReferenceHit, probe_reference};
 use close2gl_testkit::gpu;
 
 /// Two squares facing the camera (which looks down -z from the origin): triangles 0 and 1 are a
@@ -32,7 +32,7 @@ fn two_squares(near_is_back: bool) -> Mesh {
 }
 
 fn probe(mesh: &Mesh, settings: &RenderSettings, pixel: (u32, u32)) -> Option<ReferenceHit> {
-    let scene = ProbeScene {
+    let scene = Scene {
         mesh,
         camera: &Camera::default(),
         settings,
@@ -68,7 +68,7 @@ fn the_probe_culls_as_the_reference_does_and_refuses_a_pixel_outside_the_viewpor
         matches!(hit.triangle, 0 | 1),
         "the back face is culled: {hit:?}"
     );
-    let scene = ProbeScene {
+    let scene = Scene {
         mesh: &two_squares(false),
         camera: &Camera::default(),
         settings: &settings,

@@ -10,7 +10,7 @@
 
 use bevy_ecs::world::World;
 use close2gl_core::{
-    Camera, Clipping, FateKind, Fates, Mesh, Rasterizer, RenderSettings, SoftwareFrame, Viewport,
+    Clipping, FateKind, Fates, Rasterizer, RenderSettings, Scene, SoftwareFrame, Viewport,
 };
 use close2gl_pipeline::clip::{NEAR, Polygon, clip_polygon, outcode};
 use close2gl_pipeline::matrices::{ClipTransform, viewport as viewport_matrix};
@@ -73,16 +73,6 @@ pub struct PixelProbe {
     pub candidates: Vec<Candidate>,
 }
 
-/// The frame to probe: the scene, and the fates its pipeline recorded for it.
-#[derive(Clone, Copy)]
-pub struct ProbeScene<'a> {
-    pub mesh: &'a Mesh,
-    pub camera: &'a Camera,
-    pub settings: &'a RenderSettings,
-    pub viewport: Viewport,
-    pub fates: &'a Fates,
-}
-
 /// The software rasterizer's last frame, recorded (its id and depth buffers, and the image).
 #[derive(Clone, Copy)]
 pub struct Drawn<'a> {
@@ -101,11 +91,16 @@ impl<'a> Drawn<'a> {
     }
 }
 
-/// Probes pixel (x, y). The winner is the software rasterizer's own (its id buffer) when it
+/// Probes pixel (x, y) of `scene`, whose pipeline recorded `fates`. The winner is the software rasterizer's own (its id buffer) when it
 /// drew the frame; otherwise it is worked out as the depth test would: the first triangle in
 /// mesh order with the smallest depth among those that drew the centre.
-pub fn probe(scene: ProbeScene<'_>, x: u32, y: u32, drawn: Option<Drawn<'_>>) -> PixelProbe {
-    let mut candidates = covering(scene, x, y);
+pub fn probe(
+    scene: Scene<'_>,
+    fates: &Fates,
+    (x, y): (u32, u32),
+    drawn: Option<Drawn<'_>>,
+) -> PixelProbe {
+    let mut candidates = covering(scene, fates, x, y);
     let (triangle, depth, color) = match drawn {
         Some(drawn) => (
             drawn.rasterizer.owner(x, y),
@@ -151,12 +146,12 @@ fn pixel_color(frame: &SoftwareFrame, x: u32, y: u32) -> Option<[u8; 4]> {
 
 /// Every triangle whose coverage reaches the centre of (x, y), with its outcome before the
 /// depth test is settled: `Depth` for every one that drew it (the winner is among them).
-fn covering(scene: ProbeScene<'_>, x: u32, y: u32) -> Vec<Candidate> {
+fn covering(scene: Scene<'_>, fates: &Fates, x: u32, y: u32) -> Vec<Candidate> {
     let transform = ClipTransform::new(scene.camera);
     let viewport = viewport_matrix(scene.viewport.width as f32, scene.viewport.height as f32);
     let mut candidates = Vec::new();
     for (index, corners) in scene.mesh.triangles.iter().enumerate() {
-        let Some(fate) = scene.fates.of(index) else {
+        let Some(fate) = fates.of(index) else {
             continue;
         };
         let clip = corners.map(|i| transform.apply(scene.mesh.positions[i as usize]));

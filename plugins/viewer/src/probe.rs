@@ -4,9 +4,9 @@
 //! The answer goes to the panel ([`ProbeAnswer`]), and its winner becomes the selected triangle.
 
 use bevy_ecs::prelude::*;
-use close2gl_core::{Camera, Fates, InputState, Mesh, RenderSettings, SelectedTriangle};
+use close2gl_core::{Camera, Fates, InputState, Mesh, RenderSettings, Scene, SelectedTriangle};
 use close2gl_gpu::{Gpu, probe_reference};
-use close2gl_raster::probe::{Drawn, ProbeScene, probe};
+use close2gl_raster::probe::{Drawn, probe};
 use close2gl_ui::ProbeAnswer;
 
 use crate::layout::{Placed, Placement, View};
@@ -35,25 +35,15 @@ pub fn answer(world: &mut World, gpu: &Gpu, placement: &Placement) {
         return;
     };
     let settings = *world.resource::<RenderSettings>();
-    let reference = probe_reference(
-        gpu,
-        close2gl_gpu::ProbeScene {
-            mesh: &mesh,
-            camera: &camera,
-            settings: &settings,
-            viewport,
-        },
-        pixel,
-    );
-    let drawn = Drawn::last_frame(world, &settings);
-    let scene = ProbeScene {
+    let scene = Scene {
         mesh: &mesh,
         camera: &camera,
         settings: &settings,
         viewport,
-        fates: world.resource::<Fates>(),
     };
-    let close2gl = probe(scene, pixel.0, pixel.1, drawn);
+    let reference = probe_reference(gpu, scene, pixel);
+    let drawn = Drawn::last_frame(world, &settings);
+    let close2gl = probe(scene, world.resource::<Fates>(), pixel, drawn);
     let answer = ProbeAnswer {
         view: match placed.view {
             View::Reference => "reference",
