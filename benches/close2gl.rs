@@ -48,53 +48,60 @@ fn parts(app: &mut close2gl::core::App) -> (Mesh, Camera) {
 }
 
 fn geometry_stage(c: &mut Criterion) {
-    let viewport = Viewport {
-        width: 1280,
-        height: 720,
-    };
     let mut group = c.benchmark_group("close2gl");
     group.sample_size(20);
     for size in [8_000, 100_000, 1_000_000] {
         let (mesh, camera, config) = scene(size);
-        group.throughput(Throughput::Elements(mesh.triangles.len() as u64));
-        let mut pipeline = FastPipeline::default();
-        let mut frame = Close2glFrame::default();
-        group.bench_function(BenchmarkId::new("fast", size), |b| {
-            b.iter(|| {
-                pipeline.run(
-                    &mesh,
-                    &camera,
-                    &config.render,
-                    viewport,
-                    &mut frame,
-                    &mut Default::default(),
-                )
-            })
-        });
+        bench_fast_path(
+            &mut group,
+            BenchmarkId::new("fast", size),
+            &mesh,
+            &camera,
+            &config,
+        );
         group.bench_function(BenchmarkId::new("baseline", size), |b| {
-            b.iter(|| baseline::frame(&mesh, &camera, &config.render, viewport))
+            b.iter(|| baseline::frame(&mesh, &camera, &config.render, GEOMETRY_VIEWPORT))
         });
     }
     // The near plane a fifth of the radius into the sphere: its front cap is cut away.
     let (mesh, mut camera, config) = scene(1_000_000);
     camera.near = camera.distance() - 0.8 * config.primitives.sphere_radius;
+    let id = BenchmarkId::new("fast_near_cut", 1_000_000);
+    let frame = bench_fast_path(&mut group, id, &mesh, &camera, &config);
+    assert!(frame.counts.clipped > 0, "the near plane cuts the sphere");
+    group.finish();
+}
+
+const GEOMETRY_VIEWPORT: Viewport = Viewport {
+    width: 1280,
+    height: 720,
+};
+
+/// Times the fast path on one scene; returns its last frame.
+fn bench_fast_path(
+    group: &mut criterion::BenchmarkGroup<'_, criterion::measurement::WallTime>,
+    id: BenchmarkId,
+    mesh: &Mesh,
+    camera: &Camera,
+    config: &close2gl::config::Config,
+) -> Close2glFrame {
     group.throughput(Throughput::Elements(mesh.triangles.len() as u64));
     let mut pipeline = FastPipeline::default();
     let mut frame = Close2glFrame::default();
-    group.bench_function(BenchmarkId::new("fast_near_cut", 1_000_000), |b| {
+    group.bench_function(id, |b| {
         b.iter(|| {
+            let fates = &mut Default::default();
             pipeline.run(
-                &mesh,
-                &camera,
+                mesh,
+                camera,
                 &config.render,
-                viewport,
+                GEOMETRY_VIEWPORT,
                 &mut frame,
-                &mut Default::default(),
+                fates,
             )
         })
     });
-    assert!(frame.counts.clipped > 0, "the near plane cuts the sphere");
-    group.finish();
+    frame
 }
 
 /// The bundled knot (the course's cow's size), Phong, software.
