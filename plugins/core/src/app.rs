@@ -304,6 +304,7 @@ mod tests {
         for set in FrameSet::ALL.into_iter().rev() {
             let name = match set {
                 FrameSet::Input => "input",
+                FrameSet::Panel => "panel",
                 FrameSet::Load => "load",
                 FrameSet::Camera => "camera",
                 FrameSet::Close2gl => "close2gl",
@@ -317,7 +318,7 @@ mod tests {
         app.update();
         assert_eq!(
             app.world().resource::<Log>().0,
-            ["input", "load", "camera", "close2gl", "output"]
+            ["input", "panel", "load", "camera", "close2gl", "output"]
         );
     }
 }

@@ -36,6 +36,8 @@ pub fn frame_schedules() -> [InternedScheduleLabel; 4] {
 pub enum FrameSet {
     /// Raw input becomes camera actions and render switches.
     Input,
+    /// The control panel (an exclusive system): what it changes lands in this same frame.
+    Panel,
     /// A requested model is loaded and replaces the mesh.
     Load,
     /// Framing a new mesh, then the camera actions applied.
@@ -50,8 +52,9 @@ pub enum FrameSet {
 
 impl FrameSet {
     /// Every set, in the order it runs.
-    pub const ALL: [FrameSet; 5] = [
+    pub const ALL: [FrameSet; 6] = [
         FrameSet::Input,
+        FrameSet::Panel,
         FrameSet::Load,
         FrameSet::Camera,
         FrameSet::Close2gl,
@@ -62,7 +65,7 @@ impl FrameSet {
 /// A schedule with the sets configured in [`FrameSet::ALL`]'s order.
 pub(crate) fn ordered_schedule(label: impl ScheduleLabel) -> Schedule {
     let mut schedule = Schedule::new(label);
-    let [input, load, camera, close2gl, render] = FrameSet::ALL;
-    schedule.configure_sets((input, load, camera, close2gl, render).chain());
+    let [input, panel, load, camera, close2gl, output] = FrameSet::ALL;
+    schedule.configure_sets((input, panel, load, camera, close2gl, output).chain());
     schedule
 }

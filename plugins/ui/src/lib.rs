@@ -1,4 +1,4 @@
-//! The control panel: an egui side panel over the ECS world, in four sections. Model reads
+//! The control panel: an egui side panel over the ECS world, in eight sections. Model reads
 //! `ModelStatus` and `Mesh` and writes `ModelRequest` (a path, a primitive, a reload). Render
 //! reads and writes `RenderSettings`. Camera reads and writes the `Camera` component and
 //! `CameraSpeeds`, and pushes `CameraAction::Reset` into `CameraActions`. Outside view reads
@@ -8,9 +8,11 @@
 //! (clipboard and terminal) and the key cheat sheet (from `InputBindings`), and shows the
 //! [`Notice`] a tool leaves. Inspector reads `Fates`, `Mesh`, `Camera` and `Viewport` (the
 //! legend's counts, the picked triangle's fate, the matrices) and writes
-//! `RenderSettings::overlay`. It owns `PanelState`, `ViewStats` and `Notice`; the other plugins provide what it reads.
-//! It has no systems: it knows no window system or GPU, and the viewer hands it an `egui::Ui`
-//! and the world once a frame (before the app's frame runs), and so can a test.
+//! `RenderSettings::overlay` and `SelectedTriangle`. It owns `PanelState`, `ViewStats` and
+//! `Notice`; the other plugins provide what it reads. Its one system ([`panel_system`], in
+//! `FrameSet::Panel`) runs the panel over the world with the frame's [`PanelInput`], which the
+//! viewer gives, and leaves egui's [`PanelOutput`] for it to paint. It knows no window system or
+//! GPU; a test can call [`show`] with an `egui::Ui` and the world.
 
 mod camera;
 mod inspector;
@@ -18,18 +20,19 @@ mod model;
 mod outside;
 mod render;
 mod stats;
+mod system;
 mod texture;
 mod tools;
 
 use bevy_ecs::prelude::*;
-use close2gl_core::Owner;
 use close2gl_core::{
-    App, CameraActions, CameraSpeeds, Close2glFrame, ModelRequest, ModelStatus, Plugin,
-    RenderSettings,
+    App, CameraActions, CameraSpeeds, Close2glFrame, FrameSet, ModelRequest, ModelStatus, Owner,
+    Plugin, PreUpdate, RenderSettings,
 };
 
 pub use inspector::ProbeAnswer;
 pub use stats::{FrameTimer, ViewStats};
+pub use system::{PanelInput, PanelOutput, panel_system};
 pub use tools::{Notice, REPRO_OUT};
 
 /// Width of the side panel, its margins included, in points.
@@ -47,7 +50,8 @@ impl Plugin for UiPlugin {
             .requires::<RenderSettings>(Owner::Settings)
             .requires::<CameraActions>(Owner::Camera)
             .requires::<CameraSpeeds>(Owner::Camera)
-            .requires::<Close2glFrame>(Owner::Close2gl);
+            .requires::<Close2glFrame>(Owner::Close2gl)
+            .add_systems(PreUpdate, panel_system.in_set(FrameSet::Panel));
     }
 }
 

@@ -1,10 +1,11 @@
-//! egui in a winit window drawn by wgpu: events in, the panel over the world, paint out.
+//! egui in a winit window drawn by wgpu: events in, the frame's input handed to the panel system
+//! (`close2gl_ui::panel_system`, which runs in the app's frame), its paint out.
 
 use std::time::{Duration, Instant};
 
 use bevy_ecs::world::World;
-use close2gl_core::OutsideView;
 use close2gl_gpu::Gpu;
+use close2gl_ui::{PanelInput, PanelOutput};
 use winit::window::Window;
 
 pub struct Gui {
@@ -17,14 +18,26 @@ pub struct Gui {
 
 /// One panel frame, ready to paint.
 pub struct GuiFrame {
-    /// What the panel left for the views, in points.
-    pub views_area: egui::Rect,
-    pub pixels_per_point: f32,
     /// When egui wants to draw again by itself (a blinking cursor, an animation).
     pub repaint_delay: Duration,
     paint: Vec<egui::ClippedPrimitive>,
     textures: egui::TexturesDelta,
     screen: egui_wgpu::ScreenDescriptor,
+}
+
+impl GuiFrame {
+    /// Nothing to paint.
+    fn empty(size: (u32, u32)) -> Self {
+        GuiFrame {
+            repaint_delay: Duration::MAX,
+            paint: Vec::new(),
+            textures: Default::default(),
+            screen: egui_wgpu::ScreenDescriptor {
+                size_in_pixels: [size.0, size.1],
+                pixels_per_point: 1.0,
+            },
+        }
+    }
 }
 
 impl Gui {
@@ -79,23 +92,33 @@ impl Gui {
         input.take()
     }
 
-    /// Runs the control panel over `world` with `input` (from [`Self::take_input`], laid out in
-    /// the surface); `both_views` when this window shows both views. `size` is the window's
-    /// surface, what the frame draws into.
-    pub fn run(
-        &mut self,
-        window: &Window,
-        world: &mut World,
-        both_views: bool,
-        input: egui::RawInput,
-        size: (u32, u32),
-    ) -> GuiFrame {
-        let mut views_area = egui::Rect::NOTHING;
-        let output = self.ctx.run_ui(input, |ui| {
-            views_area = close2gl_ui::show(ui, world);
-            let outside = world.get_resource::<OutsideView>().is_some_and(|o| o.show);
-            close2gl_ui::label_views(ui, views_area, both_views, outside);
+    /// Where the views go in a `size` window, in points, and the points' size in pixels: all
+    /// but the panel's fixed width at the right. Not from what egui lays out, so that the views,
+    /// their viewport and a replay's pixels never depend on the panel's content.
+    pub fn views_area(&self, window: &Window, size: (u32, u32)) -> (egui::Rect, f32) {
+        let pixels_per_point = self.ctx.zoom_factor() * window.scale_factor() as f32;
+        let points = egui::vec2(size.0 as f32, size.1 as f32) / pixels_per_point;
+        let width = (points.x - close2gl_ui::PANEL_WIDTH).max(0.0);
+        let area = egui::Rect::from_min_size(egui::Pos2::ZERO, egui::vec2(width, points.y));
+        (area, pixels_per_point)
+    }
+
+    /// Hands the panel system (`close2gl_ui::panel_system`) this frame's `input` (from
+    /// [`Self::take_input`]); `both_views` when this window shows both views.
+    pub fn hand_input(&self, world: &mut World, input: egui::RawInput, both_views: bool) {
+        world.insert_resource(PanelInput {
+            ctx: self.ctx.clone(),
+            raw: Some(input),
+            both_views,
         });
+    }
+
+    /// What the panel system painted this frame, ready to paint into a `size` surface; nothing
+    /// when it did not run.
+    pub fn finish(&mut self, window: &Window, world: &mut World, size: (u32, u32)) -> GuiFrame {
+        let Some(PanelOutput(output)) = world.remove_resource::<PanelOutput>() else {
+            return GuiFrame::empty(size);
+        };
         self.state
             .handle_platform_output(window, output.platform_output);
         let repaint_delay = output
@@ -103,8 +126,6 @@ impl Gui {
             .get(&egui::ViewportId::ROOT)
             .map_or(Duration::MAX, |v| v.repaint_delay);
         GuiFrame {
-            views_area,
-            pixels_per_point: output.pixels_per_point,
             repaint_delay,
             paint: self.ctx.tessellate(output.shapes, output.pixels_per_point),
             textures: output.textures_delta,

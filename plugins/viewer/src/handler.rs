@@ -101,19 +101,22 @@ impl Viewer {
         }
         world.resource_mut::<ViewStats>().replay = self.session.replay_progress(self.frames);
         let both_views = windows.close2gl.is_none();
-        let mut gui_frame = windows
-            .gui
-            .run(&windows.main.window, world, both_views, raw, surface);
-        windows.gui.upload_textures(&windows.gpu, &mut gui_frame);
+        windows.gui.hand_input(world, raw, both_views);
         let outside = world.get_resource::<OutsideView>().is_some_and(|o| o.show);
         if let Err(e) =
             windows.show_outside_window(event_loop, &self.instance, &self.options, outside)
         {
             world.insert_resource(Notice::new(format!("the outside view's window: {e}")));
         }
-        let placement = windows.placement(&gui_frame, outside);
+        let views = windows.gui.views_area(&windows.main.window, surface);
+        let placement = windows.placement(views, outside);
         update_viewport(world, placement.viewport);
         self.app.update();
+        let world = self.app.world_mut();
+        let mut gui_frame = windows.gui.finish(&windows.main.window, world, surface);
+        windows.gui.upload_textures(&windows.gpu, &mut gui_frame);
+        // The panel showed or hid the outside view this frame: lay the views out again at once.
+        let relayout = world.get_resource::<OutsideView>().is_some_and(|o| o.show) != outside;
         crate::probe::answer(self.app.world_mut(), &windows.gpu, &placement);
 
         let capture = capture(&self.options, self.frames, self.app.world_mut());
@@ -127,7 +130,11 @@ impl Viewer {
             return self.fail(event_loop, e);
         }
         self.frames += 1;
-        self.next_frame(event_loop, now, held, gui_frame.repaint_delay);
+        let delay = match relayout {
+            true => Duration::ZERO,
+            false => gui_frame.repaint_delay,
+        };
+        self.next_frame(event_loop, now, held, delay);
     }
 
     /// After a frame: exit when the frame budget is spent, else ask for the next frame when

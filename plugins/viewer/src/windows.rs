@@ -13,7 +13,7 @@ use winit::event_loop::ActiveEventLoop;
 use winit::window::{Window, WindowId};
 
 use crate::ViewerOptions;
-use crate::gui::{Gui, GuiFrame};
+use crate::gui::Gui;
 use crate::layout::{self, PixelRect, Placement};
 use crate::surface::WindowSurface;
 use crate::surface_source::{Connections, SurfaceSource};
@@ -116,9 +116,13 @@ impl Windows {
 
     /// Where each view goes this frame, given what the panel left of the main window and
     /// whether the outside view shows (a third column of the split layout).
-    pub fn placement(&mut self, gui: &GuiFrame, outside: bool) -> Placement {
+    pub fn placement(
+        &mut self,
+        (views, pixels_per_point): (egui::Rect, f32),
+        outside: bool,
+    ) -> Placement {
         let (width, height) = self.main.size();
-        let area = PixelRect::from_points(gui.views_area, gui.pixels_per_point, width, height);
+        let area = PixelRect::from_points(views, pixels_per_point, width, height);
         self.panel_width = width.saturating_sub(area.width);
         let placement = match &self.close2gl {
             None => layout::split(area, outside),

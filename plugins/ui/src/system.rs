@@ -1,0 +1,39 @@
+//! The control panel as a system: an exclusive system in `PreUpdate`'s `FrameSet::Panel`, after
+//! the keys were mapped and before a model loads, the camera moves and the pipeline runs, so that
+//! what the panel changes (and the tools the keys asked for) lands in this same frame, and its
+//! reads and writes are in the schedule. The window's owner hands it the frame's input
+//! ([`PanelInput`]) and takes what egui painted ([`PanelOutput`]); without input (a headless app)
+//! it does nothing.
+
+use bevy_ecs::prelude::*;
+use close2gl_core::OutsideView;
+
+/// This frame's input for the panel, from the window's owner.
+#[derive(Resource)]
+pub struct PanelInput {
+    pub ctx: egui::Context,
+    /// Taken by the panel when it runs.
+    pub raw: Option<egui::RawInput>,
+    /// The window shows both views (the split layout), which the labels name.
+    pub both_views: bool,
+}
+
+/// What egui made of the frame, for the window's owner to paint.
+#[derive(Resource)]
+pub struct PanelOutput(pub egui::FullOutput);
+
+pub fn panel_system(world: &mut World) {
+    let Some(mut input) = world.get_resource_mut::<PanelInput>() else {
+        return;
+    };
+    let Some(raw) = input.raw.take() else {
+        return;
+    };
+    let (ctx, both_views) = (input.ctx.clone(), input.both_views);
+    let output = ctx.run_ui(raw, |ui| {
+        let views = crate::show(ui, world);
+        let outside = world.get_resource::<OutsideView>().is_some_and(|o| o.show);
+        crate::label_views(ui, views, both_views, outside);
+    });
+    world.insert_resource(PanelOutput(output));
+}
