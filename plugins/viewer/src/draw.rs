@@ -15,16 +15,19 @@ pub struct AllViews<'a> {
     pub outside: Option<&'a OutsideRenderer>,
 }
 
+/// When each compared view was drawn this frame and how long it took, for `ViewStats`.
+pub type ViewTimes = Vec<(View, Instant, Duration)>;
+
 /// Clears `target` to the background and draws `placed` into it. Each view is its own
 /// submission, waited on, so that its time covers the GPU's work as well as the recording;
-/// the two compared views' times go to `stats` when given.
+/// the two compared views' times go to `times` when given.
 pub fn draw_views(
     gpu: &Gpu,
     all: AllViews<'_>,
     target: &wgpu::TextureView,
     depth: &wgpu::TextureView,
     placed: &[Placed],
-    mut stats: Option<&mut ViewStats>,
+    mut times: Option<&mut ViewTimes>,
 ) {
     let mut load = wgpu::LoadOp::Clear(all.views.clear_color());
     if placed.is_empty() {
@@ -34,14 +37,21 @@ pub fn draw_views(
         let start = Instant::now();
         let ms = draw_view(gpu, all, target, depth, *p, load);
         load = wgpu::LoadOp::Load;
-        if let Some(stats) = stats.as_deref_mut() {
-            let timer = match p.view {
-                View::Reference => &mut stats.reference,
-                View::Close2gl => &mut stats.close2gl,
-                View::Outside => continue,
-            };
-            timer.record(start, Duration::from_secs_f64(ms / 1e3));
+        if let Some(times) = times.as_deref_mut().filter(|_| p.view != View::Outside) {
+            times.push((p.view, start, Duration::from_secs_f64(ms / 1e3)));
         }
+    }
+}
+
+/// The compared views' times into the panel's frame timers.
+pub fn record_times(stats: &mut ViewStats, times: &ViewTimes) {
+    for &(view, start, took) in times {
+        let timer = match view {
+            View::Reference => &mut stats.reference,
+            View::Close2gl => &mut stats.close2gl,
+            View::Outside => continue,
+        };
+        timer.record(start, took);
     }
 }
 

@@ -6,7 +6,7 @@ use close2gl_gpu::outside::OutsideRenderer;
 use close2gl_gpu::{Gpu, Image, Views};
 use close2gl_ui::ViewStats;
 
-use crate::draw::{AllViews, draw_views};
+use crate::draw::{AllViews, ViewTimes, draw_views, record_times};
 use crate::gui::GuiFrame;
 use crate::layout::{Placed, Placement, View};
 use crate::screenshot;
@@ -50,25 +50,25 @@ impl Windows {
         if let Some(lost) = self.gpu.lost() {
             return Err(lost);
         }
-        // Taken out for the frame, so that the views can be borrowed from the world beside it
-        // (`Views` must stay put: its upload systems watch when it was added).
-        let mut stats = world.remove_resource::<ViewStats>().unwrap_or_default();
+        let mut times = ViewTimes::new();
         let outside = world.get_resource::<OutsideRenderer>();
         let result = match world.get_resource::<Views>() {
             Some(views) => {
                 let all = AllViews { views, outside };
-                self.draw_with(all, &mut stats, gui, placement, capture)
+                self.draw_with(all, &mut times, gui, placement, capture)
             }
             None => Err("the GPU views are gone".into()),
         };
-        world.insert_resource(stats);
+        if let Some(mut stats) = world.get_resource_mut::<ViewStats>() {
+            record_times(&mut stats, &times);
+        }
         result
     }
 
     fn draw_with(
         &mut self,
         views: AllViews<'_>,
-        stats: &mut ViewStats,
+        times: &mut ViewTimes,
         gui_frame: &GuiFrame,
         placement: &Placement,
         capture: Capture,
@@ -83,8 +83,8 @@ impl Windows {
         } = self;
         let mut shots = Vec::new();
         let main_shot = draw_window(gpu, main, capture, |target, depth, pass| {
-            let stats = pass.timed.then_some(&mut *stats);
-            draw_views(gpu, views, target, depth, &placement.main, stats);
+            let times = pass.timed.then_some(&mut *times);
+            draw_views(gpu, views, target, depth, &placement.main, times);
             if pass.panel {
                 gui.paint(gpu, gui_frame, target);
             }
@@ -98,8 +98,8 @@ impl Windows {
                 continue;
             };
             let shot = draw_window(gpu, window, capture, |target, depth, pass| {
-                let stats = pass.timed.then_some(&mut *stats);
-                draw_views(gpu, views, target, depth, placed, stats);
+                let times = pass.timed.then_some(&mut *times);
+                draw_views(gpu, views, target, depth, placed, times);
             })?;
             shots.extend(shot.map(|shot| (shot, placed)));
         }
