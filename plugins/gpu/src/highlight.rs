@@ -4,7 +4,7 @@
 //! with glam's view and projection, Close2GL with its own P·M), so where the two pipelines
 //! disagree on a triangle, so do its highlights.
 
-use close2gl_core::{Camera, Mesh};
+use close2gl_core::{Camera, Mesh, Viewport};
 use close2gl_pipeline::matrices::ClipTransform;
 use glam::Vec4;
 use wgpu::util::DeviceExt;
@@ -14,8 +14,12 @@ use crate::reference::relative_matrices;
 
 const FILL: [u8; 4] = [255, 255, 255, 110];
 const OUTLINE: [u8; 4] = [255, 128, 0, 255];
-/// Three corners to fill, then three edges as six line ends.
-const CORNERS: usize = 9;
+/// Three corners to fill, three edges as six line ends, then the marker's four strokes.
+const CORNERS: usize = 17;
+/// The marker around the triangle's centre, in pixels: a cross with a gap, so that a triangle
+/// smaller than a pixel (a dense mesh's) is still found at a glance.
+const MARK_GAP: f32 = 6.0;
+const MARK_REACH: f32 = 16.0;
 
 pub(crate) struct Highlight {
     /// For the reference's pass, which has a depth attachment.
@@ -44,13 +48,14 @@ impl Highlight {
         }
     }
 
-    /// Places `selected` (a mesh triangle, if any and in range) in both views.
+    /// Places `selected` (a mesh triangle, if any and in range) in both views of `viewport`'s
+    /// size.
     pub(crate) fn update(
         &mut self,
         queue: &wgpu::Queue,
-        mesh: &Mesh,
-        camera: &Camera,
+        (mesh, camera): (&Mesh, &Camera),
         selected: Option<u32>,
+        viewport: Viewport,
     ) {
         let triangle = selected.and_then(|t| mesh.triangles.get(t as usize));
         self.shown = triangle.is_some();
@@ -63,12 +68,9 @@ impl Highlight {
         let reference = world.map(|p| projection * view * (p - world[0]).extend(1.0));
         let transform = ClipTransform::new(camera);
         let close2gl = world.map(|p| gl_to_wgpu_depth(transform.apply(p)));
-        queue.write_buffer(
-            &self.reference,
-            0,
-            bytemuck::cast_slice(&corners(reference)),
-        );
-        queue.write_buffer(&self.close2gl, 0, bytemuck::cast_slice(&corners(close2gl)));
+        for (buffer, clip) in [(&self.reference, reference), (&self.close2gl, close2gl)] {
+            queue.write_buffer(buffer, 0, bytemuck::cast_slice(&corners(clip, viewport)));
+        }
     }
 
     pub(crate) fn draw_reference(&self, pass: &mut wgpu::RenderPass<'_>) {
@@ -96,12 +98,46 @@ impl Highlight {
     }
 }
 
-/// The fill's corners (inside the volume's depth, as the outline's), then the outline's edges.
-fn corners(clip: [Vec4; 3]) -> [Corner; CORNERS] {
+/// The fill's corners (inside the volume's depth, as the outline's), the outline's edges, and
+/// the marker around the centre (off the screen when the centre is not in front of the eye).
+fn corners(clip: [Vec4; 3], viewport: Viewport) -> [Corner; CORNERS] {
     let edges = outline(clip, OUTLINE);
     let fill = [edges[0], edges[2], edges[4]].map(|c| Corner { color: FILL, ..c });
     let mut all = [Corner::default(); CORNERS];
     all[..3].copy_from_slice(&fill);
-    all[3..].copy_from_slice(&edges);
+    all[3..9].copy_from_slice(&edges);
+    all[9..].copy_from_slice(&marker(clip, viewport));
     all
+}
+
+/// Four strokes around the triangle's centre on screen, `MARK_GAP` to `MARK_REACH` pixels out.
+fn marker(clip: [Vec4; 3], viewport: Viewport) -> [Corner; 8] {
+    let centre = (clip[0] + clip[1] + clip[2]) / 3.0;
+    if centre.w <= 0.0 {
+        // Outside the volume, where clipping drops the strokes whole.
+        let away = Corner {
+            clip: [2.0, 2.0, 0.5, 1.0],
+            color: OUTLINE,
+        };
+        return [away; 8];
+    }
+    let (x, y) = (centre.x / centre.w, centre.y / centre.w);
+    // Pixels to NDC: the viewport spans 2 in each direction.
+    let px = 2.0 / viewport.width.max(1) as f32;
+    let py = 2.0 / viewport.height.max(1) as f32;
+    let at = |dx: f32, dy: f32| Corner {
+        clip: [x + dx * px, y + dy * py, 0.5, 1.0],
+        color: OUTLINE,
+    };
+    let (g, r) = (MARK_GAP, MARK_REACH);
+    [
+        at(-r, 0.0),
+        at(-g, 0.0),
+        at(g, 0.0),
+        at(r, 0.0),
+        at(0.0, -r),
+        at(0.0, -g),
+        at(0.0, g),
+        at(0.0, r),
+    ]
 }

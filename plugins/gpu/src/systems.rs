@@ -137,17 +137,19 @@ fn upload_fates(
     }
 }
 
-/// The selected triangle's corners in both views, every frame: nine vertices.
+/// The selected triangle's corners and marker in both views, every frame: seventeen vertices.
 fn upload_highlight(
     gpu: Res<Gpu>,
     mesh: Single<&Mesh>,
     camera: Single<&Camera>,
     selected: Res<SelectedTriangle>,
+    viewport: Res<Viewport>,
     mut views: ResMut<Views>,
 ) {
+    let scene = (&**mesh, &**camera);
     views
         .highlight
-        .update(&gpu.queue, &mesh, &camera, selected.0);
+        .update(&gpu.queue, scene, selected.0, *viewport);
 }
 
 /// The live difference, every frame while it is shown: both views drawn again, after every

@@ -153,6 +153,17 @@ fn the_selected_triangle_is_highlighted_in_both_views_even_where_it_is_hidden() 
             "{view}: inside triangle 2"
         );
         assert_eq!(before.pixel(2, 2), after.pixel(2, 2), "{view}: outside it");
+        // The marker: strokes 6 to 16 pixels from the centre of triangle 2, which projects to
+        // (32, 37.5), so that a triangle smaller than a pixel is found at a glance. (Checked
+        // where the triangle's own outline does not pass: its right edge crosses row 37 at
+        // x = 43, and its sides are over 2 pixels from column 32 below row 23.)
+        let orange = [255, 128, 0, 255];
+        let stroke = |xs: std::ops::Range<u32>, ys: std::ops::Range<u32>| {
+            xs.flat_map(|x| ys.clone().map(move |y| (x, y)))
+                .any(|(x, y)| after.pixel(x, y) == orange)
+        };
+        assert!(stroke(38..42, 36..39), "{view}: the marker's right stroke");
+        assert!(stroke(31..33, 24..31), "{view}: the marker's upper stroke");
     }
     // A triangle the mesh does not have highlights nothing.
     app.insert_resource(SelectedTriangle(Some(3)));
