@@ -7,11 +7,11 @@ mod common;
 
 use close2gl::config::{self, Layout};
 use close2gl_gpu::Image;
-use common::{Xvfb, assert_both_views_show_the_model, run_app, temp_dir};
+use common::{TempDir, Xvfb, assert_both_views_show_the_model, run_app};
 
 /// Runs the app on `xvfb` with `args` until it exits; returns its screenshot.
 fn screenshot(xvfb: &Xvfb, name: &str, args: &[&str]) -> Image {
-    let dir = temp_dir("smoke");
+    let dir = TempDir::new("smoke");
     let file = dir.join(format!("{name}.png"));
     let file_arg = file.display().to_string();
     let mut all = args.to_vec();

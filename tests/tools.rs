@@ -11,7 +11,7 @@ use std::time::{Duration, Instant};
 
 use close2gl_core::parity::Comparison;
 use close2gl_gpu::Image;
-use common::{APP_TIMEOUT, Xvfb, finish, run_app, spawn_app, temp_dir};
+use common::{APP_TIMEOUT, TempDir, Xvfb, finish, run_app, spawn_app};
 
 /// A recording of `frames` frames at 60 Hz: `d` held over frames 2..12 (the camera moves right),
 /// Shift+P on frame 14 (Phong), the copy-command key two frames before the end (the panel
@@ -67,7 +67,7 @@ fn run_command_line(command: &str) {
     let output = Command::new("sh")
         .args(["-c", command])
         .env("PATH", path)
-        .current_dir(&*temp_dir("elsewhere"))
+        .current_dir(&*TempDir::new("elsewhere"))
         .output()
         .expect("sh runs");
     assert!(
@@ -105,7 +105,7 @@ fn assert_same_pixels(what: &str, window: &Image, rendered: &Image) {
 
 #[test]
 fn the_screenshot_key_saves_both_views_and_a_command_that_renders_the_same_pixels() {
-    let dir = temp_dir("tools-shot");
+    let dir = TempDir::new("tools-shot");
     let recording = dir.join("flight.rec");
     std::fs::write(&recording, flight(20, [900, 420])).expect("the recording");
     let shots = dir.join("shots");
@@ -251,7 +251,7 @@ fn views(image: &Image) -> Image {
 
 #[test]
 fn a_recorded_flight_replays_to_the_same_image_every_time() {
-    let dir = temp_dir("tools-replay");
+    let dir = TempDir::new("tools-replay");
     let xvfb = Xvfb::start();
     let (recording, recorded) = record_a_flight(&xvfb, &dir);
     let text = std::fs::read_to_string(&recording).expect("the recording");
@@ -306,7 +306,7 @@ fn a_recorded_flight_replays_to_the_same_image_every_time() {
 
 #[test]
 fn a_recorded_probe_click_selects_the_triangle_under_it_and_highlights_it_in_both_views() {
-    let dir = temp_dir("tools-probe");
+    let dir = TempDir::new("tools-probe");
     let xvfb = Xvfb::start();
     // The views the screenshot key saves after a flight in `layout`, probed or not.
     let views_after = |name: &str, layout: &str, probe: Option<([u32; 2], bool)>| {

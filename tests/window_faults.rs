@@ -19,7 +19,7 @@ use std::process::{Child, Command, ExitStatus, Output, Stdio};
 use std::time::{Duration, Instant};
 
 use close2gl_gpu::Image;
-use common::{Xvfb, temp_dir};
+use common::{TempDir, Xvfb};
 use x11rb::connection::Connection;
 use x11rb::protocol::xproto::{ConnectionExt, ImageFormat, ImageOrder};
 
@@ -37,7 +37,7 @@ const HEIGHT: u32 = 400;
 #[test]
 fn the_window_survives_resizes_minimising_and_huge_sizes_then_draws_the_model_again() {
     let xvfb = Xvfb::start();
-    let dir = temp_dir("faults");
+    let dir = TempDir::new("faults");
     let model = dir.join("big.in");
     write_sphere(&model, 200_000);
     let size = format!("{WIDTH}x{HEIGHT}");
@@ -129,7 +129,7 @@ const DESTROYED_RUNS: u32 = 50;
 #[test]
 fn a_window_destroyed_at_any_moment_of_a_frame_ends_the_run_cleanly() {
     let xvfb = Xvfb::start();
-    let dir = temp_dir("destroyed");
+    let dir = TempDir::new("destroyed");
     let x = XServer::connect(&xvfb);
     // Frame after frame without pause (`--exit-after-frames` draws continuously), each frame a
     // few milliseconds to tens of them: a destroy a few milliseconds later every run lands in

@@ -186,9 +186,8 @@ mod tests {
             ]
             .map(String::from),
         );
-        let empty =
-            std::env::temp_dir().join(format!("close2gl-round-trip-{}.toml", std::process::id()));
-        std::fs::write(&empty, "").expect("an empty config");
+        let dir = close2gl_testkit::TempDir::new("round_trip");
+        let empty = dir.write("empty.toml", b"");
         let original = load(Some(&empty), &sets).expect("the samples are valid");
         let written = args(&original, SIZE, "out");
         let back: Vec<String> = written
@@ -199,7 +198,6 @@ mod tests {
         let mut again = back.clone();
         again.push("model.primitive=torus".into());
         let read = load(Some(&empty), &again).expect("the command's settings read back");
-        std::fs::remove_file(&empty).ok();
         assert_eq!(read, original);
         for key in KEYS.iter().filter(|k| !matches!(k.write, Write::Never)) {
             let name = format!("{}.{}=", key.section, key.name);

@@ -46,7 +46,6 @@ macro_rules! key {
             section: $section,
             name: $name,
             read: |$c, $v, $base| {
-                let _ = &$base;
                 $read;
                 Ok(())
             },

@@ -122,11 +122,6 @@ pub fn finish(mut child: Child, what: &str) -> Output {
     output
 }
 
-/// A new temporary directory for one test's files, removed when dropped (kept if it fails).
-pub fn temp_dir(name: &str) -> TempDir {
-    TempDir::new(name)
-}
-
 /// The model's colour as the window stores it (a linear 8-bit surface, flat shading).
 pub fn model_color() -> [u8; 3] {
     let color = config::load(None, &[])

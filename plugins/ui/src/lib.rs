@@ -70,6 +70,16 @@ pub struct PanelState {
     pub help: bool,
 }
 
+/// What the panel leaves of `screen` for the views: all but its fixed width at the right. Not
+/// the rectangle egui reports for the panel, which grows by a few points when its scroll bar
+/// appears: the views, their viewport and a replay's pixels must not depend on whether the panel
+/// scrolls, nor on what it shows.
+pub fn views_area(screen: egui::Rect) -> egui::Rect {
+    let mut views = screen;
+    views.max.x = (views.max.x - PANEL_WIDTH).max(views.min.x);
+    views
+}
+
 /// Shows the panel at the right of `ui` and returns the rectangle left for the views, in points.
 pub fn show(ui: &mut egui::Ui, world: &mut World) -> egui::Rect {
     world.init_resource::<PanelState>();
@@ -82,11 +92,7 @@ pub fn show(ui: &mut egui::Ui, world: &mut World) -> egui::Rect {
                 .auto_shrink([false, false])
                 .show(ui, |ui| sections(ui, world));
         });
-    // The views' area from the panel's fixed width, not from the rectangle egui reports for it,
-    // which grows by a few points when its scroll bar appears: the views, their viewport and a
-    // replay's pixels must not depend on whether the panel scrolls.
-    let mut views = ui.max_rect();
-    views.max.x = (views.max.x - PANEL_WIDTH).max(views.min.x);
+    let views = views_area(ui.max_rect());
     // After the panel, so that its buttons take effect in the frame they are clicked in.
     tools::carry_out(ui.ctx(), world);
     tools::show_notice(ui, views, world);

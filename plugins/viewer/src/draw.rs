@@ -16,7 +16,11 @@ pub struct AllViews<'a> {
 }
 
 /// When each compared view was drawn this frame and how long it took, for `ViewStats`.
-pub type ViewTimes = Vec<(View, Instant, Duration)>;
+#[derive(Default)]
+pub struct ViewTimes {
+    reference: Option<(Instant, Duration)>,
+    close2gl: Option<(Instant, Duration)>,
+}
 
 /// Clears `target` to the background and draws `placed` into it. Each view is its own
 /// submission, waited on, so that its time covers the GPU's work as well as the recording;
@@ -37,21 +41,26 @@ pub fn draw_views(
         let start = Instant::now();
         let ms = draw_view(gpu, all, target, depth, *p, load);
         load = wgpu::LoadOp::Load;
-        if let Some(times) = times.as_deref_mut().filter(|_| p.view != View::Outside) {
-            times.push((p.view, start, Duration::from_secs_f64(ms / 1e3)));
+        if let Some(times) = times.as_deref_mut() {
+            let took = Some((start, Duration::from_secs_f64(ms / 1e3)));
+            match p.view {
+                View::Reference => times.reference = took,
+                View::Close2gl => times.close2gl = took,
+                View::Outside => {}
+            }
         }
     }
 }
 
 /// The compared views' times into the panel's frame timers.
 pub fn record_times(stats: &mut ViewStats, times: &ViewTimes) {
-    for &(view, start, took) in times {
-        let timer = match view {
-            View::Reference => &mut stats.reference,
-            View::Close2gl => &mut stats.close2gl,
-            View::Outside => continue,
-        };
-        timer.record(start, took);
+    for (timer, time) in [
+        (&mut stats.reference, times.reference),
+        (&mut stats.close2gl, times.close2gl),
+    ] {
+        if let Some((start, took)) = time {
+            timer.record(start, took);
+        }
     }
 }
 

@@ -76,13 +76,10 @@ impl Gui {
     /// from the last `Resized` event instead; the scale factor is winit's cached one.
     pub fn take_input(&mut self, window: &Window, size: (u32, u32)) -> egui::RawInput {
         let native = window.scale_factor() as f32;
-        let pixels_per_point = self.ctx.zoom_factor() * native;
+        let (screen, _) = self.screen(window, size);
         let input = self.state.egui_input_mut();
         input.time = Some(self.started.elapsed().as_secs_f64());
-        input.screen_rect = (size.0 > 0 && size.1 > 0).then(|| {
-            let points = egui::vec2(size.0 as f32, size.1 as f32) / pixels_per_point;
-            egui::Rect::from_min_size(egui::Pos2::ZERO, points)
-        });
+        input.screen_rect = (size.0 > 0 && size.1 > 0).then_some(screen);
         input.viewport_id = egui::ViewportId::ROOT;
         input
             .viewports
@@ -92,15 +89,22 @@ impl Gui {
         input.take()
     }
 
-    /// Where the views go in a `size` window, in points, and the points' size in pixels: all
-    /// but the panel's fixed width at the right. Not from what egui lays out, so that the views,
-    /// their viewport and a replay's pixels never depend on the panel's content.
-    pub fn views_area(&self, window: &Window, size: (u32, u32)) -> (egui::Rect, f32) {
+    /// A `size` surface in points, and the points' size in pixels (egui's zoom times winit's
+    /// cached scale factor).
+    fn screen(&self, window: &Window, size: (u32, u32)) -> (egui::Rect, f32) {
         let pixels_per_point = self.ctx.zoom_factor() * window.scale_factor() as f32;
         let points = egui::vec2(size.0 as f32, size.1 as f32) / pixels_per_point;
-        let width = (points.x - close2gl_ui::PANEL_WIDTH).max(0.0);
-        let area = egui::Rect::from_min_size(egui::Pos2::ZERO, egui::vec2(width, points.y));
-        (area, pixels_per_point)
+        (
+            egui::Rect::from_min_size(egui::Pos2::ZERO, points),
+            pixels_per_point,
+        )
+    }
+
+    /// Where the views go in a `size` window, in points, and the points' size in pixels: what
+    /// the panel leaves (`close2gl_ui::views_area`), known before the panel runs.
+    pub fn views_area(&self, window: &Window, size: (u32, u32)) -> (egui::Rect, f32) {
+        let (screen, pixels_per_point) = self.screen(window, size);
+        (close2gl_ui::views_area(screen), pixels_per_point)
     }
 
     /// Hands the panel system (`close2gl_ui::panel_system`) this frame's `input` (from

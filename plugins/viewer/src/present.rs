@@ -50,7 +50,7 @@ impl Windows {
         if let Some(lost) = self.gpu.lost() {
             return Err(lost);
         }
-        let mut times = ViewTimes::new();
+        let mut times = ViewTimes::default();
         let outside = world.get_resource::<OutsideRenderer>();
         let result = match world.get_resource::<Views>() {
             Some(views) => {
