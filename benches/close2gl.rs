@@ -3,8 +3,8 @@
 //! on the same meshes; then the 1 M sphere with the near plane cutting through it, where full
 //! clipping cuts thousands of triangles. Then the software rasterizer's whole frame (geometry,
 //! raster, Phong shading) for the bundled knot at 640×480 and 1920×1080 beside the GPU's
-//! reference view of the same scene, its fill rate on full-screen layers, and the 1 M sphere at
-//! 1920×1080. Last, loading: a generated grid of 125 k triangles as a `.in` file and as an OBJ
+//! reference view of the same scene, its fill rate on full-screen layers, the 1 M sphere at
+//! 1920×1080, and the big-model grid (a million sub-pixel triangles) flat and Phong-shaded. Last, loading: a generated grid of 125 k triangles as a `.in` file and as an OBJ
 //! file, file to mesh. `cargo bench` runs it; `close2gl bench` gives the same figures as JSON
 //! (`close2gl bench --load FILE` for loading).
 
@@ -104,6 +104,15 @@ fn bench_fast_path(
     frame
 }
 
+/// `close2gl bench --raster --grid`'s scene: a million sub-pixel triangles, framed.
+fn grid_scene(viewport: Viewport) -> (Mesh, Camera) {
+    let (.., config) = scene(12);
+    let mut app = close2gl::build_app(&config, viewport).expect("a small sphere");
+    let grid = close2gl::commands::bench::grid::grid(1_000_000);
+    close2gl::commands::bench::grid::replace_model(&mut app, grid).expect("the grid");
+    parts(&mut app)
+}
+
 /// The bundled knot (the course's cow's size), Phong, software.
 fn knot(viewport: Viewport) -> close2gl::core::App {
     let mut config = Config {
@@ -165,6 +174,14 @@ fn software_raster(c: &mut Criterion) {
     group.bench_function("sphere_1m_gouraud_1920x1080", |b| {
         b.iter(|| software.frame(&mesh, &camera, &settings, &lighting, viewport))
     });
+    let (mesh, camera) = grid_scene(viewport);
+    for shading in [Shading::None, Shading::Phong] {
+        settings.shading = shading;
+        let name = format!("grid_1m_{}_1920x1080", shading.name());
+        group.bench_function(name, |b| {
+            b.iter(|| software.frame(&mesh, &camera, &settings, &lighting, viewport))
+        });
+    }
     group.finish();
 }
 

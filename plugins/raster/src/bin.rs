@@ -1,45 +1,99 @@
-//! Binning: each triangle is listed, once, in every tile its bounding box touches, in
-//! submission order (which the depth test's ties depend on). The bins of a band of tile rows
-//! are filled by one thread, so binning runs in parallel without locks.
+//! Setup and binning in one parallel pass, in submission order. The primitives are cut into
+//! runs (batches), a few per core; each batch is set up by one task, which keeps the triangles
+//! that may cover a pixel centre and lists each, once, in every tile its bounding box touches,
+//! in lists of its own. A tile then reads the batches' lists one after the other, so it meets
+//! its triangles in submission order (which the depth test's ties depend on), and no triangle
+//! is read by more tasks than the tiles it touches.
 
+use close2gl_core::Topology;
 use rayon::prelude::*;
 
+use crate::primitives::{SetupParams, indices_per_primitive, set_up};
 use crate::setup::Triangle;
 use crate::target::{Grid, TILE};
+use crate::vertex::Vertex;
 
-/// One list of triangle indices per tile, kept between frames.
+/// Batches per core: enough for a core done early to take another.
+const BATCHES_PER_CORE: usize = 4;
+
+/// One run of primitives, set up: its triangles, kept between frames.
 #[derive(Debug, Default)]
-pub(crate) struct Bins {
+pub(crate) struct Batch {
+    /// The triangles that may cover a pixel centre, in order.
+    pub triangles: Vec<Triangle>,
+    /// Each one's set-up index (what the id buffer records).
+    pub set_up: Vec<u32>,
+    /// For each tile, the indices in `triangles` of those whose bounding box touches it.
     pub tiles: Vec<Vec<u32>>,
 }
 
+/// Every batch of a frame, in submission order.
+#[derive(Debug, Default)]
+pub(crate) struct Bins {
+    pub batches: Vec<Batch>,
+}
+
+/// What setup reads: the primitives (their vertices' `indices`) and the vertices.
+pub(crate) struct Primitives<'a> {
+    pub topology: Topology,
+    pub indices: &'a [u32],
+    pub vertices: &'a [Vertex],
+}
+
 impl Bins {
-    pub(crate) fn fill(&mut self, grid: Grid, triangles: &[Triangle]) {
-        self.tiles.resize_with(grid.tiles(), Vec::new);
-        let tiles_x = grid.tiles_x as usize;
-        // One band of tile rows per thread (and a few more, to balance uneven bands).
-        let bands = (rayon::current_num_threads() * 2).max(1);
-        let rows_per_band = (grid.tiles_y as usize).div_ceil(bands).max(1);
-        self.tiles
-            .par_chunks_mut(rows_per_band * tiles_x)
+    /// Sets up `primitives` and bins them into the tiles of `grid`.
+    pub(crate) fn fill(&mut self, grid: Grid, primitives: Primitives<'_>, params: SetupParams) {
+        let batches = (rayon::current_num_threads() * BATCHES_PER_CORE).max(1);
+        self.batches.resize_with(batches, Batch::default);
+        let per_primitive = indices_per_primitive(primitives.topology);
+        let count = primitives.indices.len() / per_primitive;
+        let per_batch = count.div_ceil(batches);
+        self.batches
+            .par_iter_mut()
             .enumerate()
-            .for_each(|(band, bins)| {
-                bins.iter_mut().for_each(Vec::clear);
-                let first_row = (band * rows_per_band) as i32;
-                let last_row = first_row + (bins.len() / tiles_x) as i32 - 1;
-                for (index, t) in triangles.iter().enumerate() {
-                    if t.is_empty() {
-                        continue;
-                    }
-                    let [x0, y0, x1, y1] = t.bbox;
-                    let (ty0, ty1) = ((y0 / TILE).max(first_row), (y1 / TILE).min(last_row));
-                    for ty in ty0..=ty1 {
-                        let row = (ty - first_row) as usize * tiles_x;
-                        for tx in x0 / TILE..=x1 / TILE {
-                            bins[row + tx as usize].push(index as u32);
-                        }
-                    }
-                }
+            .for_each(|(k, batch)| {
+                let first = (k * per_batch).min(count);
+                let last = (first + per_batch).min(count);
+                let indices = &primitives.indices[first * per_primitive..last * per_primitive];
+                batch.clear(grid.tiles());
+                set_up(
+                    primitives.topology,
+                    indices,
+                    first,
+                    primitives.vertices,
+                    params,
+                    |set_up, t| batch.push(grid, set_up, t),
+                );
             });
+    }
+
+    /// Every kept triangle with its set-up index, in order.
+    pub(crate) fn triangles(&self) -> impl Iterator<Item = (u32, &Triangle)> {
+        self.batches
+            .iter()
+            .flat_map(|b| b.set_up.iter().copied().zip(&b.triangles))
+    }
+}
+
+impl Batch {
+    fn clear(&mut self, tiles: usize) {
+        self.triangles.clear();
+        self.set_up.clear();
+        self.tiles.resize_with(tiles, Vec::new);
+        self.tiles.iter_mut().for_each(Vec::clear);
+    }
+
+    #[inline(always)]
+    fn push(&mut self, grid: Grid, set_up: u32, t: &Triangle) {
+        let index = self.triangles.len() as u32;
+        self.triangles.push(*t);
+        self.set_up.push(set_up);
+        let [x0, y0, x1, y1] = t.bbox;
+        let tiles_x = grid.tiles_x as usize;
+        for ty in y0 / TILE..=y1 / TILE {
+            for tx in x0 / TILE..=x1 / TILE {
+                self.tiles[ty as usize * tiles_x + tx as usize].push(index);
+            }
+        }
     }
 }

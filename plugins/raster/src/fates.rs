@@ -5,7 +5,7 @@
 
 use close2gl_core::{FateCounts, FateKind, Fates};
 
-use crate::setup::Triangle;
+use crate::bin::Bins;
 use crate::target::NO_TRIANGLE;
 
 const COVERS: u8 = 1;
@@ -13,8 +13,8 @@ const OWNS: u8 = 2;
 
 /// What one frame's rasterization knows about each mesh triangle.
 pub(crate) struct Rasterized<'a> {
-    /// The set-up triangles, `per_primitive` for each primitive.
-    pub triangles: &'a [Triangle],
+    /// The set-up triangles kept for drawing (`per_primitive` were made of each primitive).
+    pub bins: &'a Bins,
     pub per_primitive: usize,
     /// Each primitive's mesh triangle (the pipeline's `RasterGeometry::triangles`).
     pub mesh_triangles: &'a [u32],
@@ -33,8 +33,8 @@ impl Rasterized<'_> {
     pub(crate) fn record(&self, ids: &mut [u32], flags: &mut Vec<u8>, fates: &mut Fates) {
         flags.clear();
         flags.resize(fates.triangles.len(), 0);
-        for (k, t) in self.triangles.iter().enumerate() {
-            if let Some(mesh) = self.mesh_triangle(k)
+        for (k, t) in self.bins.triangles() {
+            if let Some(mesh) = self.mesh_triangle(k as usize)
                 && t.covers_any_centre()
             {
                 flags[mesh as usize] |= COVERS;

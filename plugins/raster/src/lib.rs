@@ -14,9 +14,12 @@
 //! GPU, window or UI.
 //!
 //! Its files follow one frame, in the order `rasterizer` runs them: `vertex` (each vertex's
-//! varyings, lit by `lighting` for Gouraud) → `primitives` and `setup` (each primitive to
-//! triangles: `edge`'s fixed-point edge functions, `varyings`' planes) → `bin` (the triangles
-//! listed in the 64×64 tiles they touch) → `tile` → `row` → `lanes`, the hierarchy tile → rows
+//! varyings, lit by `lighting` for Gouraud) → `bin` (setup and binning in one parallel pass, in
+//! submission order: each primitive to triangles by `primitives` and `setup`, with `edge`'s
+//! fixed-point edge functions and `varyings`' planes, those that cover no pixel centre dropped
+//! before their planes are built, the rest listed in the 64×64 tiles they touch) → `tile` (a
+//! narrow triangle's rows found pixel by pixel, a wide one's solved) → `row` → `lanes`, the
+//! hierarchy tile → rows
 //! → blocks of eight lanes (llvmpipe's is tile → block → quad): each block depth-tested, then
 //! coloured by `shading` (with `texture`'s level of detail and sampling) into `target`'s
 //! buffers, which are then copied out as the image. `fates` and `probe` read what a frame left.

@@ -2,69 +2,60 @@
 //! pixel wide around it, and a point as the one-pixel square around it, both as two triangles
 //! that share a diagonal (the fill rule then draws each pixel of the rectangle once). These are
 //! the shapes the reference's rasterizer gives lines and points of width and size 1: Vulkan's
-//! default rectangular lines, and points as squares. Set up in parallel, in submission order.
+//! default rectangular lines, and points as squares.
 
 use close2gl_core::Topology;
-use rayon::prelude::*;
 
 use crate::edge::FIXED_ONE;
-use crate::setup::{Corner, Triangle, setup};
+use crate::setup::{Corner, Triangle, map3, setup};
 use crate::varyings::Used;
 use crate::vertex::Vertex;
 
-/// Primitives set up per parallel task.
-const CHUNK: usize = 4096;
-
-/// Every primitive of `topology` (its vertices' `indices`) to its triangles, in order, in
-/// parallel.
-pub(crate) fn set_up_all(
-    topology: Topology,
-    indices: &[u32],
-    vertices: &[Vertex],
-    params: SetupParams,
-    triangles: &mut Vec<Triangle>,
-) {
-    let per_primitive = indices_per_primitive(topology);
-    let triangles_per = triangles_per_primitive(topology);
-    let count = indices.len() / per_primitive;
-    triangles.resize(count * triangles_per, Triangle::EMPTY);
-    triangles
-        .par_chunks_mut(CHUNK * triangles_per)
-        .zip(indices.par_chunks(CHUNK * per_primitive))
-        .for_each(|(out, indices)| set_up(topology, indices, vertices, params, out));
-}
-
-/// One task's primitives (their vertices' `indices`) to their triangles.
+/// The primitives of `topology` whose vertices' `indices` are given, the first being primitive
+/// number `first`, to their triangles, in order: each one that may cover a pixel centre is
+/// handed to `emit` with its set-up index (a primitive's index times its triangles, plus which).
 #[inline(always)]
-fn set_up(
+pub(crate) fn set_up(
     topology: Topology,
     indices: &[u32],
+    first: usize,
     vertices: &[Vertex],
     params: SetupParams,
-    out: &mut [Triangle],
+    mut emit: impl FnMut(u32, &Triangle),
 ) {
-    let vertex = |i: u32| vertices[i as usize];
+    let vertex = |i: u32| &vertices[i as usize];
     let primitives = indices.chunks_exact(indices_per_primitive(topology));
+    let per = triangles_per_primitive(topology);
+    let mut emit_all = |primitive: usize, triangles: &[Triangle]| {
+        for (k, t) in triangles.iter().enumerate() {
+            if !t.is_empty() {
+                emit(((first + primitive) * per + k) as u32, t);
+            }
+        }
+    };
     match topology {
         Topology::Triangles => {
-            for (o, p) in out.iter_mut().zip(primitives) {
-                *o = triangle([p[0], p[1], p[2]].map(vertex), params);
+            for (i, p) in primitives.enumerate() {
+                let t = triangle([vertex(p[0]), vertex(p[1]), vertex(p[2])], params);
+                if !t.is_empty() {
+                    emit((first + i) as u32, &t);
+                }
             }
         }
         Topology::Lines => {
-            for (o, p) in out.chunks_exact_mut(2).zip(primitives) {
-                o.copy_from_slice(&line(vertex(p[0]), vertex(p[1]), params));
+            for (i, p) in primitives.enumerate() {
+                emit_all(i, &line(vertex(p[0]), vertex(p[1]), params));
             }
         }
         Topology::Points => {
-            for (o, p) in out.chunks_exact_mut(2).zip(primitives) {
-                o.copy_from_slice(&point(vertex(p[0]), params));
+            for (i, p) in primitives.enumerate() {
+                emit_all(i, &point(vertex(p[0]), params));
             }
         }
     }
 }
 
-fn indices_per_primitive(topology: Topology) -> usize {
+pub(crate) fn indices_per_primitive(topology: Topology) -> usize {
     match topology {
         Topology::Triangles => 3,
         Topology::Lines => 2,
@@ -85,19 +76,22 @@ pub(crate) fn triangles_per_primitive(topology: Topology) -> usize {
 pub(crate) struct SetupParams {
     pub size: [i32; 2],
     pub used: Used,
+    /// Whether triangles that cover no pixel centre are dropped before their planes are built
+    /// (drawing), or kept (the probe's questions).
+    pub drop_uncovered: bool,
 }
 
-pub(crate) fn triangle(v: [Vertex; 3], params: SetupParams) -> Triangle {
-    if !v.iter().all(Vertex::in_guard_band) {
+pub(crate) fn triangle(v: [&Vertex; 3], params: SetupParams) -> Triangle {
+    if !v.iter().all(|v| v.in_guard_band()) {
         return Triangle::EMPTY;
     }
-    let corners = v.map(|v| v.corner());
-    setup(corners, params.size, params.used)
+    let corners = map3(&v, |v| v.corner());
+    setup(corners, params.size, params.used, params.drop_uncovered)
 }
 
 /// A line one pixel wide: the rectangle whose long sides lie half a pixel either side of it and
 /// whose short sides pass through its ends.
-pub(crate) fn line(a: Vertex, b: Vertex, params: SetupParams) -> [Triangle; 2] {
+pub(crate) fn line(a: &Vertex, b: &Vertex, params: SetupParams) -> [Triangle; 2] {
     if !(a.in_guard_band() && b.in_guard_band()) {
         return [Triangle::EMPTY; 2];
     }
@@ -122,7 +116,7 @@ pub(crate) fn line(a: Vertex, b: Vertex, params: SetupParams) -> [Triangle; 2] {
 }
 
 /// A point of size 1: the square one pixel wide centred on it.
-pub(crate) fn point(v: Vertex, params: SetupParams) -> [Triangle; 2] {
+pub(crate) fn point(v: &Vertex, params: SetupParams) -> [Triangle; 2] {
     if !v.in_guard_band() {
         return [Triangle::EMPTY; 2];
     }
@@ -137,9 +131,19 @@ pub(crate) fn point(v: Vertex, params: SetupParams) -> [Triangle; 2] {
     quad(corners, params)
 }
 
-fn quad(c: [Corner; 4], params: SetupParams) -> [Triangle; 2] {
+fn quad(c: [Corner<'_>; 4], params: SetupParams) -> [Triangle; 2] {
     [
-        setup([c[0], c[1], c[2]], params.size, params.used),
-        setup([c[0], c[2], c[3]], params.size, params.used),
+        setup(
+            [c[0], c[1], c[2]],
+            params.size,
+            params.used,
+            params.drop_uncovered,
+        ),
+        setup(
+            [c[0], c[2], c[3]],
+            params.size,
+            params.used,
+            params.drop_uncovered,
+        ),
     ]
 }

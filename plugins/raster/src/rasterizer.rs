@@ -1,5 +1,5 @@
 //! One software frame, top to bottom: the vertex stage (`vertex`), setup of every primitive to
-//! triangles (`primitives`, `setup`), binning into tiles (`bin`), the tiles drawn in parallel
+//! triangles binned into tiles in one pass (`bin`, with `primitives` and `setup`), the tiles drawn in parallel
 //! (`tile`: clear, then each triangle's rows, depth-tested and shaded in blocks of eight lanes),
 //! and the tiles copied out as an image (`target`); while fates are recorded, which triangles
 //! covered no pixel centre and which won none (`fates`).
@@ -13,11 +13,10 @@ use close2gl_pipeline::matrices::ClipTransform;
 use rayon::iter::Either;
 use rayon::prelude::*;
 
-use crate::bin::Bins;
+use crate::bin::{Bins, Primitives};
 use crate::fates::Rasterized;
 use crate::lighting::Light;
-use crate::primitives::{SetupParams, set_up_all, triangles_per_primitive};
-use crate::setup::Triangle;
+use crate::primitives::{SetupParams, triangles_per_primitive};
 use crate::shading::{Colour, Flat, Gouraud, Phong, PixelShader, Shaded, Textured, Untextured};
 use crate::target::{NO_TRIANGLE, TILE_PIXELS, Target, pack};
 use crate::texture::{Bilinear, Filter, Mips, Nearest, Trilinear};
@@ -29,7 +28,6 @@ use crate::vertex::{Vertex, vertex_stage};
 #[derive(Resource, Default)]
 pub struct SoftwareRasterizer {
     vertices: Vec<Vertex>,
-    triangles: Vec<Triangle>,
     bins: Bins,
     target: Target,
     mips: Mips,
@@ -83,7 +81,6 @@ impl SoftwareRasterizer {
             &mut self.vertices,
         );
         self.setup(&frame);
-        self.bins.fill(self.target.grid, &self.triangles);
         self.shade(&frame, settings);
         self.target.resolve(&mut out.image.pixels);
         (out.image.width, out.image.height) = (size.width, size.height);
@@ -104,7 +101,7 @@ impl SoftwareRasterizer {
         self.target.depth.get(self.target.index(x, y)?).copied()
     }
 
-    /// Every primitive to its triangles (two for a line or a point), in order.
+    /// Every primitive to its triangles (two for a line or a point), binned, in order.
     fn setup(&mut self, frame: &Frame<'_>) {
         let geometry = frame.geometry;
         let params = SetupParams {
@@ -116,15 +113,14 @@ impl SoftwareRasterizer {
                 shading: varyings_used(frame.shading),
                 textured: frame.textured,
             },
+            drop_uncovered: true,
         };
-        let indices = &geometry.raster.primitives;
-        set_up_all(
-            geometry.topology,
-            indices,
-            &self.vertices,
-            params,
-            &mut self.triangles,
-        );
+        let primitives = Primitives {
+            topology: geometry.topology,
+            indices: &geometry.raster.primitives,
+            vertices: &self.vertices,
+        };
+        self.bins.fill(self.target.grid, primitives, params);
     }
 
     /// The tiles drawn with the frame's shading.
@@ -147,7 +143,7 @@ impl SoftwareRasterizer {
     /// `hidden`, and turns the id buffer's set-up triangles into mesh triangles.
     fn record(&mut self, geometry: &Close2glFrame, fates: &mut Fates) {
         let rasterized = Rasterized {
-            triangles: &self.triangles,
+            bins: &self.bins,
             per_primitive: triangles_per_primitive(geometry.topology),
             mesh_triangles: &geometry.raster.triangles,
         };
@@ -165,7 +161,6 @@ impl SoftwareRasterizer {
         let tiles = Tiles {
             target: &mut self.target,
             bins: &self.bins,
-            triangles: &self.triangles,
             background,
         };
         if frame.textured {
@@ -188,7 +183,6 @@ impl SoftwareRasterizer {
 struct Tiles<'a> {
     target: &'a mut Target,
     bins: &'a Bins,
-    triangles: &'a [Triangle],
     background: u32,
 }
 
@@ -205,7 +199,7 @@ impl Tiles<'_> {
     /// own piece of the id buffer, or an empty one when it is not recorded.
     fn draw<S: PixelShader>(self, shader: &S) {
         let grid = self.target.grid;
-        let (bins, triangles, background) = (&self.bins.tiles, self.triangles, self.background);
+        let (bins, background) = (self.bins, self.background);
         let ids = match self.target.ids.is_empty() {
             true => Either::Left(
                 (0..grid.tiles())
@@ -223,7 +217,7 @@ impl Tiles<'_> {
             .for_each(|(tile, ((color, depth), ids))| {
                 let rect = grid.tile_rect(tile);
                 let buffers = TileBuffers { color, depth, ids };
-                draw_tile(rect, buffers, background, &bins[tile], triangles, shader);
+                draw_tile(rect, buffers, background, bins, tile, shader);
             });
     }
 }

@@ -70,16 +70,25 @@ impl Triangle {
 /// A corner as setup sees it: fixed-point position for coverage, window x, y, depth and 1/w,
 /// and the varyings.
 #[derive(Clone, Copy, Debug)]
-pub(crate) struct Corner {
+pub(crate) struct Corner<'a> {
     pub fixed: [i64; 2],
     pub window: [f32; 4],
-    pub varyings: [f32; VARYINGS],
+    /// Borrowed from the vertex: setup copies nothing it may not need.
+    pub varyings: &'a [f32; VARYINGS],
 }
 
 /// Sets up the triangle `corners` in a viewport of `size` pixels, with planes for the varyings
-/// `used` (and 1/w when there are any).
-pub(crate) fn setup(mut corners: [Corner; 3], size: [i32; 2], used: Used) -> Triangle {
-    let [a, b, c] = corners.map(|c| c.fixed);
+/// `used` (and 1/w when there are any). With `drop_uncovered`, a triangle that covers no pixel
+/// centre comes back empty, found out before its planes are built: the drawing path's early
+/// rejection, which most sub-pixel triangles of a big mesh meet (the probe keeps them, to say
+/// which centre the fill rule gave away).
+pub(crate) fn setup(
+    mut corners: [Corner<'_>; 3],
+    size: [i32; 2],
+    used: Used,
+    drop_uncovered: bool,
+) -> Triangle {
+    let [a, b, c] = map3(&corners, |c| c.fixed);
     let det = (a[0] - b[0]) * (c[1] - a[1]) - (a[1] - b[1]) * (c[0] - a[0]);
     if det == 0
         || corners
@@ -91,16 +100,50 @@ pub(crate) fn setup(mut corners: [Corner; 3], size: [i32; 2], used: Used) -> Tri
     if det < 0 {
         corners.swap(1, 2);
     }
-    let fixed = corners.map(|c| c.fixed);
-    let [c0, c1, c2] = &corners;
-    Triangle {
-        edges: [0, 1, 2].map(|i| Edge::new(fixed[i], fixed[(i + 1) % 3])),
+    let fixed = map3(&corners, |c| c.fixed);
+    let mut triangle = Triangle {
+        edges: [
+            Edge::new(fixed[0], fixed[1]),
+            Edge::new(fixed[1], fixed[2]),
+            Edge::new(fixed[2], fixed[0]),
+        ],
         bbox: bounds(fixed, size),
-        planes: Planes::new(
-            corners.map(|c| c.window),
-            [&c0.varyings, &c1.varyings, &c2.varyings],
-            used,
-        ),
+        planes: Planes::ZERO,
+    };
+    if drop_uncovered && !triangle.may_cover_a_centre() {
+        return Triangle::EMPTY;
+    }
+    triangle.planes = Planes::new(
+        map3(&corners, |c| c.window),
+        map3(&corners, |c| c.varyings),
+        used,
+    );
+    triangle
+}
+
+/// `[T; 3]::map`, which the compiler does not always inline into setup's hot loop (it then
+/// costs more than the arithmetic).
+#[inline(always)]
+pub(crate) fn map3<T, U>(a: &[T; 3], f: impl Fn(&T) -> U) -> [U; 3] {
+    [f(&a[0]), f(&a[1]), f(&a[2])]
+}
+
+/// Bounding boxes of at most this many pixels have their centres tested one by one.
+const FEW_PIXELS: i32 = 4;
+
+impl Triangle {
+    /// False when the triangle surely covers no pixel centre: its snapped bounding box holds
+    /// none, or holds a few that are each tested and found outside. A larger box is taken on
+    /// trust (the rows find out).
+    fn may_cover_a_centre(&self) -> bool {
+        let [x0, y0, x1, y1] = self.bbox;
+        if self.is_empty() {
+            return false;
+        }
+        if (x1 - x0 + 1) * (y1 - y0 + 1) > FEW_PIXELS {
+            return true;
+        }
+        (y0..=y1).any(|y| (x0..=x1).any(|x| self.edges.iter().all(|e| e.at(x, y) > 0)))
     }
 }
 
@@ -110,8 +153,8 @@ fn bounds(fixed: [[i64; 2]; 3], size: [i32; 2]) -> [i32; 4] {
     let ceil_px = |v: i64| (v + FIXED_ONE - 1).div_euclid(FIXED_ONE);
     let floor_px = |v: i64| v.div_euclid(FIXED_ONE);
     let axis = |axis: usize| {
-        let lo = fixed.iter().map(|p| p[axis]).min().unwrap_or(0);
-        let hi = fixed.iter().map(|p| p[axis]).max().unwrap_or(-1);
+        let [a, b, c] = map3(&fixed, |p| p[axis]);
+        let (lo, hi) = (a.min(b).min(c), a.max(b).max(c));
         let (lo, hi) = (ceil_px(lo).max(0), floor_px(hi).min(size[axis] as i64 - 1));
         (lo as i32, hi as i32)
     };
@@ -124,11 +167,11 @@ mod tests {
     use super::*;
     use crate::edge::snap;
 
-    fn corner(x: f32, y: f32) -> Corner {
+    fn corner(x: f32, y: f32) -> Corner<'static> {
         Corner {
             fixed: [snap(x), snap(y)],
             window: [x, y, 0.5, 1.0],
-            varyings: [0.0; VARYINGS],
+            varyings: &[0.0; VARYINGS],
         }
     }
 
@@ -150,11 +193,13 @@ mod tests {
             [corner(2.0, 1.0), corner(6.0, 1.0), corner(6.0, 3.0)],
             size,
             Used::default(),
+            false,
         );
         let b = setup(
             [corner(2.0, 1.0), corner(6.0, 3.0), corner(2.0, 3.0)],
             size,
             Used::default(),
+            false,
         );
         let mut pixels = covered(&a);
         pixels.extend(covered(&b));
@@ -172,11 +217,13 @@ mod tests {
             [corner(2.5, 1.5), corner(5.5, 1.5), corner(5.5, 3.5)],
             size,
             Used::default(),
+            false,
         );
         let b = setup(
             [corner(2.5, 1.5), corner(5.5, 3.5), corner(2.5, 3.5)],
             size,
             Used::default(),
+            false,
         );
         let mut pixels = covered(&a);
         pixels.extend(covered(&b));
@@ -255,7 +302,8 @@ mod tests {
                     if random.next() < 0.5 {
                         t.swap(1, 2);
                     }
-                    let triangle = setup(t.map(|p| corner(p[0], p[1])), size, Used::default());
+                    let triangle =
+                        setup(t.map(|p| corner(p[0], p[1])), size, Used::default(), false);
                     for (x, y) in covered(&triangle) {
                         count[(y * size[0] + x) as usize] += 1;
                     }
@@ -280,7 +328,7 @@ mod tests {
             [corner(2.5, 1.5), corner(9.5, 1.5), corner(9.5, 8.5)],
             [corner(2.5, 1.5), corner(9.5, 8.5), corner(2.5, 8.5)],
         ]
-        .map(|c| setup(c, size, Used::default()));
+        .map(|c| setup(c, size, Used::default(), false));
         for t in &halves {
             assert!(t.covers_any_centre());
             let runs = covered(t);
@@ -299,8 +347,41 @@ mod tests {
             [corner(3.6, 3.6), corner(3.9, 3.6), corner(3.6, 3.9)],
             size,
             Used::default(),
+            false,
         );
         assert!(!tiny.covers_any_centre(), "between centres");
+    }
+
+    #[test]
+    fn only_triangles_that_cover_no_centre_are_dropped_before_their_planes() {
+        let size = [16, 16];
+        let mut random = Random(0x9e37_79b9_7f4a_7c15);
+        let (mut dropped, mut kept) = (0, 0);
+        for _ in 0..20_000 {
+            // Sub-pixel to a few pixels wide, anywhere over the viewport's edge too.
+            let (x, y) = (random.next() * 18.0 - 1.0, random.next() * 18.0 - 1.0);
+            let reach = 0.2 + random.next() * 3.0;
+            let mut point = || corner(x + random.next() * reach, y + random.next() * reach);
+            let corners = [point(), point(), point()];
+            let full = setup(corners, size, Used::default(), false);
+            let early = setup(corners, size, Used::default(), true);
+            if early.is_empty() {
+                assert!(!full.covers_any_centre(), "{corners:?}");
+                dropped += 1;
+            } else {
+                assert_eq!(early.bbox, full.bbox);
+                assert_eq!(
+                    early.planes.depth_at(8.5, 8.5),
+                    full.planes.depth_at(8.5, 8.5)
+                );
+                kept += 1;
+            }
+        }
+        // Both ways are met often: the test cannot pass by dropping nothing or everything.
+        assert!(
+            dropped > 2_000 && kept > 2_000,
+            "{dropped} dropped, {kept} kept"
+        );
     }
 
     #[test]
@@ -310,11 +391,13 @@ mod tests {
             [corner(1.0, 1.0), corner(9.0, 2.0), corner(3.0, 8.0)],
             size,
             Used::default(),
+            false,
         );
         let ccw = setup(
             [corner(1.0, 1.0), corner(3.0, 8.0), corner(9.0, 2.0)],
             size,
             Used::default(),
+            false,
         );
         assert_eq!(covered(&cw), covered(&ccw));
         assert!(!covered(&cw).is_empty());
@@ -322,6 +405,7 @@ mod tests {
             [corner(1.0, 1.0), corner(5.0, 5.0), corner(9.0, 9.0)],
             size,
             Used::default(),
+            false,
         );
         assert!(line.is_empty());
     }
@@ -332,7 +416,7 @@ mod tests {
         c[0].window[2] = 0.1;
         c[1].window[2] = 0.5;
         c[2].window[2] = 0.9;
-        let t = setup(c, [16, 16], Used::default());
+        let t = setup(c, [16, 16], Used::default(), false);
         for corner in c {
             let z = t.planes.depth_at(corner.window[0], corner.window[1]);
             assert!((z - corner.window[2]).abs() < 1e-6, "{z}");

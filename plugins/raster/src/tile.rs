@@ -3,7 +3,9 @@
 //! others are left out of every row), then each row's span of covered pixels, solved exactly
 //! from those edges (no per-pixel edge test), handed to `row`.
 
-use crate::edge::{Cover, Edge, row_inside};
+use crate::bin::Bins;
+use crate::edge::{Cover, Edge, row_inside, row_inside_narrow};
+use crate::lanes::LANES;
 use crate::row::{ROW, RowBuffers, Span, draw_span};
 use crate::setup::Triangle;
 use crate::shading::PixelShader;
@@ -16,30 +18,33 @@ pub(crate) struct TileBuffers<'a> {
     pub ids: &'a mut [u32],
 }
 
-/// Clears the tile to `background`, the far plane and no triangle, then draws `bin`'s
-/// triangles into it.
+/// Clears tile number `tile` to `background`, the far plane and no triangle, then draws the
+/// triangles binned there, batch after batch.
 pub(crate) fn draw_tile<S: PixelShader>(
     rect: TileRect,
-    tile: TileBuffers<'_>,
+    buffers: TileBuffers<'_>,
     background: u32,
-    bin: &[u32],
-    triangles: &[Triangle],
+    bins: &Bins,
+    tile: usize,
     shader: &S,
 ) {
-    tile.color.fill(background);
-    tile.depth.fill(1.0);
-    tile.ids.fill(NO_TRIANGLE);
-    let (color_rows, _) = tile.color.as_chunks_mut::<ROW>();
-    let (depth_rows, _) = tile.depth.as_chunks_mut::<ROW>();
-    let (id_rows, _) = tile.ids.as_chunks_mut::<ROW>();
+    buffers.color.fill(background);
+    buffers.depth.fill(1.0);
+    buffers.ids.fill(NO_TRIANGLE);
+    let (color_rows, _) = buffers.color.as_chunks_mut::<ROW>();
+    let (depth_rows, _) = buffers.depth.as_chunks_mut::<ROW>();
+    let (id_rows, _) = buffers.ids.as_chunks_mut::<ROW>();
     let mut rows = Rows {
         color: color_rows,
         depth: depth_rows,
         ids: id_rows,
     };
-    for &index in bin {
-        let t = &triangles[index as usize];
-        draw_rows(rect, &mut rows, index, t, shader);
+    for batch in &bins.batches {
+        for &index in &batch.tiles[tile] {
+            let index = index as usize;
+            let t = &batch.triangles[index];
+            draw_rows(rect, &mut rows, batch.set_up[index], t, shader);
+        }
     }
 }
 
@@ -70,8 +75,13 @@ fn draw_rows<S: PixelShader>(
     let Some((crossing, count)) = crossing_edges(&t.edges, area) else {
         return;
     };
+    let crossing = &crossing[..count];
+    let narrow = area.x1 - area.x0 < LANES as i32;
     for y in area.y0..=area.y1 {
-        let (lo, hi) = row_inside(&crossing[..count], y, (area.x0, area.x1));
+        let (lo, hi) = match narrow {
+            true => row_inside_narrow(crossing, y, (area.x0, area.x1)),
+            false => row_inside(crossing, y, (area.x0, area.x1)),
+        };
         if lo <= hi {
             let row = (y - rect.y0) as usize;
             let span = Span {

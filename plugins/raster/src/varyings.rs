@@ -6,6 +6,7 @@
 use close2gl_core::Shading;
 
 use crate::lanes::{F8, V8};
+use crate::setup::map3;
 
 /// How many floats a vertex carries for shading: eye position and normal (Phong), or the
 /// Gouraud intensity in the first three; then the texture coordinates.
@@ -107,10 +108,11 @@ impl Planes {
             ..Planes::ZERO
         };
         if used.any() {
-            let inv_w = window.map(|p| p[3]);
+            let inv_w = map3(&window, |p| p[3]);
             planes.inv_w = plane(inv_w);
             for k in used.indices() {
-                let v = [0, 1, 2].map(|i| varyings[i][k] * inv_w[i]);
+                let v = [0, 1, 2];
+                let v = map3(&v, |&i| varyings[i][k] * inv_w[i]);
                 planes.varyings[k] = plane(v);
             }
         }

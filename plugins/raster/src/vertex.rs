@@ -31,17 +31,17 @@ impl Vertex {
     };
 
     /// The vertex as a corner at its own position.
-    pub(crate) fn corner(&self) -> Corner {
+    pub(crate) fn corner(&self) -> Corner<'_> {
         Corner {
             fixed: self.fixed(),
             window: self.window,
-            varyings: self.varyings,
+            varyings: &self.varyings,
         }
     }
 
     /// The same vertex moved to a fixed-point position (where a line's or a point's rectangle
     /// has its corners), keeping depth, 1/w and the varyings.
-    pub(crate) fn moved(&self, fixed: [i64; 2]) -> Corner {
+    pub(crate) fn moved(&self, fixed: [i64; 2]) -> Corner<'_> {
         let to_window = |f: i64| f as f32 / FIXED_ONE as f32 + 0.5;
         let mut window = self.window;
         window[0] = to_window(fixed[0]);
@@ -49,7 +49,7 @@ impl Vertex {
         Corner {
             fixed,
             window,
-            varyings: self.varyings,
+            varyings: &self.varyings,
         }
     }
 

@@ -5,6 +5,7 @@
 //! fast a model file loads.
 
 pub mod baseline;
+pub mod grid;
 pub mod load;
 pub mod raster;
 
@@ -34,6 +35,10 @@ pub struct BenchArgs {
     /// reference view of the same scene (set the shading with --set render.shading=...).
     #[arg(long)]
     pub raster: bool,
+    /// With --raster: instead of the model, a generated flat grid of about --triangles (default
+    /// 1,000,000) triangles, each smaller than a pixel at 1920x1080.
+    #[arg(long)]
+    pub grid: bool,
     /// Time the software rasterizer's fill rate on a screen of large triangles.
     #[arg(long)]
     pub fill: bool,
@@ -61,6 +66,12 @@ pub fn run(args: BenchArgs) -> Result<(), CliError> {
     if modes.into_iter().filter(|&m| m).count() > 1 {
         return Err(CliError::Input(
             "bench: --raster, --fill and --load time different things; give one of them".into(),
+        ));
+    }
+    if args.grid && (!args.raster || args.scene.model.is_some()) {
+        return Err(CliError::Input(
+            "bench: --grid is a scene for --raster, in place of a MODEL; give --raster and no MODEL"
+                .into(),
         ));
     }
     let pool = thread_pool(args.threads)?;

@@ -18,10 +18,18 @@ use crate::commands::scene::viewport;
 
 /// Geometry and raster, start to finish, on the configured scene.
 pub fn frame(args: &BenchArgs, pool: &rayon::ThreadPool) -> Result<Value, CliError> {
-    let mut config = scene_config(args, args.triangles)?;
+    let mut config = match args.grid {
+        // A small sphere stands in until the grid replaces it: no model file is read.
+        true => scene_config(args, Some(12))?,
+        false => scene_config(args, args.triangles)?,
+    };
     config.render.close2gl_raster = Rasterizer::Software;
     let viewport = viewport(args.size.as_deref(), &config)?;
     let mut app = crate::build_app(&config, viewport).map_err(CliError::Input)?;
+    if args.grid {
+        let mesh = super::grid::grid(args.triangles.unwrap_or(1_000_000));
+        super::grid::replace_model(&mut app, mesh).map_err(CliError::Runtime)?;
+    }
     let (mesh, camera) = scene(&mut app)?;
     let mut software = SoftwareTimer {
         texture: app.world().get_resource::<Texture>().cloned(),
