@@ -11,8 +11,8 @@ use std::path::{Path, PathBuf};
 use close2gl::config;
 use close2gl::core::glam::{Vec3, Vec4};
 use close2gl::core::{
-    App, CameraSpeeds, Clipping, FrontFace, Mesh, ModelStatus, Rasterizer, RenderMode,
-    RenderSettings, Shading, TextureFilter, Viewport,
+    App, CameraSpeeds, Clipping, FrontFace, Mesh, Rasterizer, RenderMode, RenderSettings, Shading,
+    TextureFilter, Viewport,
 };
 use close2gl_core::parity::{ColorComparison, Comparison, coverage, diff_image};
 use close2gl_gpu::{OffscreenPlugin, Snapshot, camera_matrices, render_offscreen};
@@ -585,7 +585,6 @@ fn border_triangles(app: &mut App) -> (usize, Option<Snapshot>) {
         .collect();
     let border_count = border.len();
     mesh.triangles = border;
-    app.world_mut().resource_mut::<ModelStatus>().generation += 1;
     settings(app).clipping = Clipping::Full;
     // A new mesh is framed again: run that frame, then put the pose back.
     app.update();

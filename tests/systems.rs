@@ -5,12 +5,14 @@ use close2gl::camera::CameraPlugin;
 use close2gl::config::Config;
 use std::any::TypeId;
 
+use close2gl::core::bevy_ecs::change_detection::DetectChanges;
 use close2gl::core::bevy_ecs::schedule::{ApplyDeferred, Schedules, SystemSet};
 use close2gl::core::glam::{Vec2, Vec3};
 use close2gl::core::{
     App, Camera, CameraAction, CameraActions, CameraHome, CameraMode, Clipping, Close2glFrame,
-    FrameSet, FrontFace, InputState, Lighting, Mesh, ModelSource, ModelStatus, Rasterizer,
-    RenderMode, RenderSettings, SettingsPlugin, Shading, SoftwareFrame, Viewport, frame_schedules,
+    FrameSet, FrontFace, Image, InputState, Lighting, Mesh, ModelSource, ModelStatus, Rasterizer,
+    RenderMode, RenderSettings, SettingsPlugin, Shading, SoftwareFrame, Texture, Viewport,
+    frame_schedules,
 };
 use close2gl::input::InputPlugin;
 use close2gl::pipeline::Close2glPlugin;
@@ -303,6 +305,51 @@ fn each_mode_emits_its_primitives() {
 /// The software rasterizer on a headless world: it draws only when asked for, only when
 /// something changed, and its image has the viewport's size with the cube in the middle.
 #[test]
+fn the_software_view_follows_the_texture_as_it_changes_and_goes() {
+    let mut mesh = cube();
+    mesh.uvs = vec![Vec2::splat(0.5); mesh.positions.len()];
+    let settings = RenderSettings {
+        close2gl_raster: Rasterizer::Software,
+        texture: true,
+        ..RenderSettings::default()
+    };
+    let mut app = app_with(mesh, settings);
+    app.init_resource::<Lighting>().add_plugins(RasterPlugin);
+    let world = app.world_mut();
+    let mut camera = world
+        .query::<&mut Camera>()
+        .single_mut(world)
+        .expect("a camera");
+    camera.position = Vec3::new(0.0, 0.0, 6.0);
+    let centre = |app: &App| {
+        app.world()
+            .resource::<SoftwareFrame>()
+            .image
+            .pixel(320, 240)
+    };
+    let texture = |rgba| Texture {
+        source: None,
+        image: Image::filled(1, 1, rgba),
+    };
+
+    app.insert_resource(texture([255, 0, 0, 255]));
+    app.update();
+    let red = centre(&app);
+    assert!(red[0] > 100 && red[1] == 0 && red[2] == 0, "{red:?}");
+    app.insert_resource(texture([0, 0, 255, 255]));
+    app.update();
+    let blue = centre(&app);
+    assert!(blue[0] == 0 && blue[1] == 0 && blue[2] > 30, "{blue:?}");
+    app.world_mut().remove_resource::<Texture>();
+    app.update();
+    assert_eq!(
+        centre(&app)[..3],
+        [217, 166, 64],
+        "the flat colour, untextured"
+    );
+}
+
+#[test]
 fn the_raster_system_draws_when_asked_and_when_something_changed() {
     let mut app = app_with(cube(), RenderSettings::default());
     app.init_resource::<Lighting>().add_plugins(RasterPlugin);
@@ -312,20 +359,20 @@ fn the_raster_system_draws_when_asked_and_when_something_changed() {
         .single_mut(world)
         .expect("a camera");
     camera.position = Vec3::new(0.0, 0.0, 6.0);
+    let drawn = |app: &App| app.world().resource_ref::<SoftwareFrame>().last_changed();
+    let inserted = drawn(&app);
     app.update();
-    assert_eq!(
-        app.world().resource::<SoftwareFrame>().generation,
-        0,
-        "gpu: nothing drawn"
-    );
+    assert_eq!(drawn(&app), inserted, "gpu: nothing drawn");
 
     app.world_mut()
         .resource_mut::<RenderSettings>()
         .close2gl_raster = Rasterizer::Software;
     app.update();
+    let first = drawn(&app);
+    assert_ne!(first, inserted, "software: drawn");
     let frame = app.world().resource::<SoftwareFrame>().clone();
     let image = &frame.image;
-    assert_eq!((image.width, image.height, frame.generation), (640, 480, 1));
+    assert_eq!((image.width, image.height), (640, 480));
     let at = |x: u32, y: u32| image.pixel(x, y);
     assert_eq!(
         at(320, 240)[..3],
@@ -335,16 +382,12 @@ fn the_raster_system_draws_when_asked_and_when_something_changed() {
     assert_eq!(at(2, 2)[..3], [20, 20, 26], "the background in a corner");
 
     app.update();
-    assert_eq!(
-        app.world().resource::<SoftwareFrame>().generation,
-        1,
-        "nothing changed"
-    );
+    assert_eq!(drawn(&app), first, "nothing changed");
     app.world_mut().resource_mut::<Lighting>().kd = 0.5;
     app.world_mut().resource_mut::<RenderSettings>().shading = Shading::Phong;
     app.update();
+    assert_ne!(drawn(&app), first, "lit: drawn again");
     let lit = app.world().resource::<SoftwareFrame>();
-    assert_eq!(lit.generation, 2);
     assert_ne!(
         lit.image.pixel(320, 240),
         image.pixels[240 * 640 + 320],

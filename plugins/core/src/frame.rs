@@ -121,8 +121,6 @@ pub struct SoftwareFrame {
     /// Rasterization, depth test, shading and the copy into the image, in milliseconds (the
     /// geometry before it is `Close2glFrame::stage_ms`).
     pub raster_ms: f64,
-    /// Bumped for every new image, so that uploaders can tell a new one from the last.
-    pub generation: u64,
 }
 
 /// What one frame of the views is drawn from, borrowed: the mesh, the camera, the settings and

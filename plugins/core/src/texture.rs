@@ -47,13 +47,11 @@ impl Image {
 
 /// The texture of the current model (a Resource): the image given in `[model] texture`, dropped
 /// on the window or picked in the panel, or the course's 8×8 checkerboard when none is given.
-/// `generation` changes with every new image, so that uploaders can tell.
 #[derive(Resource, Clone, Debug, PartialEq)]
 pub struct Texture {
     /// The file it came from; `None` for the built-in checkerboard.
     pub source: Option<std::path::PathBuf>,
     pub image: Image,
-    pub generation: u64,
 }
 
 impl Default for Texture {
@@ -61,7 +59,6 @@ impl Default for Texture {
         Texture {
             source: None,
             image: checkerboard(),
-            generation: 0,
         }
     }
 }

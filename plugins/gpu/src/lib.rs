@@ -4,7 +4,7 @@
 //! rasterizer's image drawn as one textured triangle, or in the fate view each triangle in its
 //! fate's colour, or in the live difference where the two views differ), both held in [`Views`],
 //! with the selected triangle's highlight. [`GpuPlugin`] adds
-//! the `Render` systems that read `Camera`, `Mesh`, `ModelStatus`, `RenderSettings`, `Lighting`,
+//! the `Render` systems that read `Camera`, `Mesh`, `RenderSettings`, `Lighting`,
 //! `Texture`, `Close2glFrame`, `SoftwareFrame`, `SelectedTriangle`, `Viewport` and `Fates` (asking
 //! for it to be recorded while the fate view is shown) and upload what changed into `Views`; whoever
 //! owns the target (a window, or [`render_offscreen`]) records the draws.

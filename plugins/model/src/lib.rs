@@ -214,12 +214,11 @@ fn show(
     }
 }
 
-/// Serves a pending `TextureRequest`: on success the texture is replaced (a new generation); on
+/// Serves a pending `TextureRequest`: on success the texture is replaced; on
 /// failure it is removed, so that the model shows untextured, and the error is recorded.
 pub fn load_requested_texture(
     mut commands: Commands,
     mut request: ResMut<TextureRequest>,
-    texture: Option<Res<Texture>>,
     mut status: ResMut<ModelStatus>,
 ) {
     let Some(path) = request.0.take() else {
@@ -227,11 +226,9 @@ pub fn load_requested_texture(
     };
     match load_texture(&path) {
         Ok(image) => {
-            let generation = texture.map_or(0, |t| t.generation) + 1;
             commands.insert_resource(Texture {
                 source: Some(path),
                 image,
-                generation,
             });
         }
         Err(message) => {

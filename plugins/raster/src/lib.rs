@@ -84,21 +84,23 @@ pub fn raster_system(
     (mut image, mut fates): (ResMut<SoftwareFrame>, ResMut<Fates>),
 ) {
     let wanted = settings.close2gl_raster == Rasterizer::Software;
-    let new_texture = texture.as_ref().is_some_and(|t| t.is_changed());
+    // Set even while the GPU draws the view, so that switching to software finds it ready.
+    let new_texture = texture
+        .as_ref()
+        .map_or(rasterizer.has_texture(), |t| t.is_changed());
+    if new_texture {
+        rasterizer.set_texture(texture.as_deref());
+    }
     let stale = frame.is_changed() || lighting.is_changed() || settings.is_changed() || new_texture;
     if !wanted || !stale {
         return;
     }
     let start = Instant::now();
-    let texture = texture.as_deref();
     // Fates are written only while recorded; otherwise nobody needs telling.
     let fates = match fates.record {
         true => fates.into_inner(),
         false => fates.bypass_change_detection(),
     };
-    rasterizer.draw(
-        &frame, &camera, &settings, &lighting, texture, &mut image, fates,
-    );
+    rasterizer.draw(&frame, &camera, &settings, &lighting, &mut image, fates);
     image.raster_ms = start.elapsed().as_secs_f64() * 1e3;
-    image.generation += 1;
 }

@@ -45,32 +45,38 @@ struct Frame<'a> {
 }
 
 impl SoftwareRasterizer {
+    /// Takes `texture` (or none) as the one to sample from now on. Its mipmap chain is built
+    /// here, once, not each frame: call it when the texture changes.
+    pub fn set_texture(&mut self, texture: Option<&Texture>) {
+        self.mips.set(texture);
+    }
+
+    /// Whether a texture is set.
+    pub fn has_texture(&self) -> bool {
+        self.mips.is_set()
+    }
+
     /// Draws the pipeline's output `geometry` (which must have been made with the software
-    /// rasterizer on, for `camera`) into `out`, textured with `texture` when there is one, the
-    /// settings ask for it and the mesh has texture coordinates. While `fates.record` is set
+    /// rasterizer on, for `camera`) into `out`, textured with the texture set when there is
+    /// one, the settings ask for it and the mesh has texture coordinates. While `fates.record` is set
     /// (and `fates` holds the pipeline's fates for `geometry`), also notes who drew each pixel
     /// ([`Self::owner`]) and moves the drawn triangles that covered no pixel centre or won
     /// none to `no_pixels` and `hidden`.
-    #[allow(clippy::too_many_arguments)]
     pub fn draw(
         &mut self,
         geometry: &Close2glFrame,
         camera: &Camera,
         settings: &RenderSettings,
         lighting: &Lighting,
-        texture: Option<&Texture>,
         out: &mut SoftwareFrame,
         fates: &mut Fates,
     ) {
         let light_eye = ClipTransform::new(camera).eye(lighting.light_position);
-        if let Some(texture) = texture {
-            self.mips.update(texture);
-        }
         let frame = Frame {
             geometry,
             shading: settings.shading,
             light: Light::new(lighting, light_eye, settings.shading),
-            textured: settings.texture && geometry.raster.textured && texture.is_some(),
+            textured: settings.texture && geometry.raster.textured && self.mips.is_set(),
         };
         let size = geometry.viewport;
         self.target.resize(size.width, size.height, fates.record);

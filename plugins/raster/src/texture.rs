@@ -13,10 +13,10 @@ use close2gl_core::Texture;
 use crate::lanes::{F8, LANES, V8};
 use crate::varyings::Planes;
 
-/// The mipmap chain of the current texture, rebuilt only when the texture's generation changes.
+/// The mipmap chain of the current texture, built when a new texture is set (the raster system
+/// sets it when bevy's change ticks say the `Texture` resource changed).
 #[derive(Debug, Default)]
 pub(crate) struct Mips {
-    generation: Option<u64>,
     /// Every level's texels, level 0 first, as little-endian RGBA8.
     texels: Vec<u32>,
     levels: Vec<Level>,
@@ -34,12 +34,13 @@ struct Level {
 }
 
 impl Mips {
-    pub(crate) fn update(&mut self, texture: &Texture) {
-        if self.generation == Some(texture.generation) {
-            return;
-        }
+    /// Builds the chain of `texture`, or drops it when there is none.
+    pub(crate) fn set(&mut self, texture: Option<&Texture>) {
         self.texels.clear();
         self.levels.clear();
+        let Some(texture) = texture else {
+            return;
+        };
         for image in texture.image.mip_chain() {
             self.levels.push(Level {
                 width: image.width,
@@ -52,7 +53,11 @@ impl Mips {
         }
         let base = texture.image.width.max(1);
         self.power_of_two = base.is_power_of_two() && texture.image.height.is_power_of_two();
-        self.generation = Some(texture.generation);
+    }
+
+    /// Whether there is a texture to sample.
+    pub(crate) fn is_set(&self) -> bool {
+        !self.levels.is_empty()
     }
 
     /// Level 0's width and height, for turning derivatives of (s, t) into texels.
@@ -309,11 +314,10 @@ mod tests {
 
     fn mips(image: Image) -> Mips {
         let mut mips = Mips::default();
-        mips.update(&Texture {
+        mips.set(Some(&Texture {
             source: None,
             image,
-            generation: 1,
-        });
+        }));
         mips
     }
 

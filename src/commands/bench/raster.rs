@@ -31,10 +31,8 @@ pub fn frame(args: &BenchArgs, pool: &rayon::ThreadPool) -> Result<Value, CliErr
         super::grid::replace_model(&mut app, mesh).map_err(CliError::Runtime)?;
     }
     let (mesh, camera) = scene(&mut app)?;
-    let mut software = SoftwareTimer {
-        texture: app.world().get_resource::<Texture>().cloned(),
-        ..SoftwareTimer::default()
-    };
+    let mut software = SoftwareTimer::default();
+    software.set_texture(app.world().get_resource::<Texture>());
     let software_ms = pool.install(|| {
         median_ms(args.frames, || {
             software.frame(&mesh, &camera, &config.render, &config.lighting, viewport)
@@ -102,11 +100,14 @@ pub struct SoftwareTimer {
     geometry: Close2glFrame,
     fates: Fates,
     image: SoftwareFrame,
-    /// The model's texture, if it has one.
-    pub texture: Option<Texture>,
 }
 
 impl SoftwareTimer {
+    /// Samples `texture` from now on (none: untextured).
+    pub fn set_texture(&mut self, texture: Option<&Texture>) {
+        self.rasterizer.set_texture(texture);
+    }
+
     /// One whole software frame: geometry, raster, shading, the image finished.
     pub fn frame(
         &mut self,
@@ -129,7 +130,6 @@ impl SoftwareTimer {
             camera,
             settings,
             lighting,
-            self.texture.as_ref(),
             &mut self.image,
             &mut self.fates,
         );

@@ -44,6 +44,8 @@ pub struct Drawing {
     pub frame: Close2glFrame,
     pub image: SoftwareFrame,
     pub fates: Fates,
+    /// The texture last set, so that a scene's texture is set once, as the app sets it.
+    pub texture: Option<Texture>,
 }
 
 impl Drawing {
@@ -58,13 +60,16 @@ impl Drawing {
             &mut self.frame,
             &mut self.fates,
         );
+        if self.texture.as_ref() != scene.texture {
+            self.texture = scene.texture.cloned();
+            self.rasterizer.set_texture(scene.texture);
+        }
         if settings.close2gl_raster == Rasterizer::Software {
             self.rasterizer.draw(
                 &self.frame,
                 &scene.camera,
                 settings,
                 &scene.lighting,
-                scene.texture,
                 &mut self.image,
                 &mut self.fates,
             );
