@@ -3,14 +3,16 @@
 //! that may cover a pixel centre and lists each, once, in every tile its bounding box touches,
 //! in lists of its own. A tile then reads the batches' lists one after the other, so it meets
 //! its triangles in submission order (which the depth test's ties depend on), and no triangle
-//! is read by more tasks than the tiles it touches.
+//! is read by more tasks than the tiles it touches. A kept triangle is stored in two parts: its
+//! footprint (edges and bounds, one cache line) and only the planes the frame's shading uses.
 
 use close2gl_core::Topology;
 use rayon::prelude::*;
 
 use crate::primitives::{SetupParams, indices_per_primitive, set_up};
-use crate::setup::Triangle;
+use crate::setup::{Footprint, Triangle};
 use crate::target::{Grid, TILE};
+use crate::varyings::{Planes, Used};
 use crate::vertex::Vertex;
 
 /// Batches per core: enough for a core done early to take another.
@@ -19,9 +21,11 @@ const BATCHES_PER_CORE: usize = 4;
 /// One run of primitives, set up: its triangles, kept between frames.
 #[derive(Debug, Default)]
 pub(crate) struct Batch {
-    /// The triangles that may cover a pixel centre, in order.
-    pub triangles: Vec<Triangle>,
-    /// Each one's set-up index (what the id buffer records).
+    /// The triangles that may cover a pixel centre, in order: where each draws...
+    pub footprints: Vec<Footprint>,
+    /// ...its planes, packed ([`Planes::pack`]), `Bins::used.packed_floats()` each...
+    pub planes: Vec<f32>,
+    /// ...and its set-up index (what the id buffer records).
     pub set_up: Vec<u32>,
     /// For each tile, the indices in `triangles` of those whose bounding box touches it.
     pub tiles: Vec<Vec<u32>>,
@@ -31,6 +35,8 @@ pub(crate) struct Batch {
 #[derive(Debug, Default)]
 pub(crate) struct Bins {
     pub batches: Vec<Batch>,
+    /// The planes stored with each triangle.
+    pub used: Used,
 }
 
 /// What setup reads: the primitives (their vertices' `indices`) and the vertices.
@@ -43,6 +49,7 @@ pub(crate) struct Primitives<'a> {
 impl Bins {
     /// Sets up `primitives` and bins them into the tiles of `grid`.
     pub(crate) fn fill(&mut self, grid: Grid, primitives: Primitives<'_>, params: SetupParams) {
+        self.used = params.used;
         let batches = (rayon::current_num_threads() * BATCHES_PER_CORE).max(1);
         self.batches.resize_with(batches, Batch::default);
         let per_primitive = indices_per_primitive(primitives.topology);
@@ -62,33 +69,42 @@ impl Bins {
                     first,
                     primitives.vertices,
                     params,
-                    |set_up, t| batch.push(grid, set_up, t),
+                    |set_up, t| batch.push(grid, params.used, set_up, t),
                 );
             });
     }
 
-    /// Every kept triangle with its set-up index, in order.
-    pub(crate) fn triangles(&self) -> impl Iterator<Item = (u32, &Triangle)> {
+    /// Where every kept triangle draws, with its set-up index, in order.
+    pub(crate) fn footprints(&self) -> impl Iterator<Item = (u32, &Footprint)> {
         self.batches
             .iter()
-            .flat_map(|b| b.set_up.iter().copied().zip(&b.triangles))
+            .flat_map(|b| b.set_up.iter().copied().zip(&b.footprints))
     }
 }
 
 impl Batch {
+    /// Triangle `index`'s planes, unpacked.
+    #[inline(always)]
+    pub(crate) fn planes(&self, index: usize, used: Used) -> Planes {
+        let floats = used.packed_floats();
+        Planes::unpack(&self.planes[index * floats..][..floats], used)
+    }
+
     fn clear(&mut self, tiles: usize) {
-        self.triangles.clear();
+        self.footprints.clear();
+        self.planes.clear();
         self.set_up.clear();
         self.tiles.resize_with(tiles, Vec::new);
         self.tiles.iter_mut().for_each(Vec::clear);
     }
 
     #[inline(always)]
-    fn push(&mut self, grid: Grid, set_up: u32, t: &Triangle) {
-        let index = self.triangles.len() as u32;
-        self.triangles.push(*t);
+    fn push(&mut self, grid: Grid, used: Used, set_up: u32, t: &Triangle) {
+        let index = self.footprints.len() as u32;
+        self.footprints.push(t.footprint);
+        t.planes.pack(used, &mut self.planes);
         self.set_up.push(set_up);
-        let [x0, y0, x1, y1] = t.bbox;
+        let [x0, y0, x1, y1] = t.footprint.bbox;
         let tiles_x = grid.tiles_x as usize;
         for ty in y0 / TILE..=y1 / TILE {
             for tx in x0 / TILE..=x1 / TILE {

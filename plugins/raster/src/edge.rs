@@ -44,11 +44,13 @@ fn round_ties_even(x: f32) -> f32 {
 }
 
 /// One edge as llvmpipe writes it: the sample (X, Y) (in fixed point) is inside when
-/// `c + dcdy·Y − dcdx·X > 0`; `c` already holds the fill rule's +1 for left and top edges.
+/// `c + dcdy·Y − dcdx·X > 0`; `c` already holds the fill rule's +1 for left and top edges. The
+/// steps are differences of positions inside the guard band (under 2³⁰), so they fit an i32,
+/// which keeps three edges and the bounds in one cache line; all arithmetic is in i64.
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct Edge {
-    pub dcdx: i64,
-    pub dcdy: i64,
+    pub dcdx: i32,
+    pub dcdy: i32,
     pub c: i64,
 }
 
@@ -71,8 +73,8 @@ impl Edge {
         let dcdx = from[1] - to[1];
         let dcdy = from[0] - to[0];
         let mut edge = Edge {
-            dcdx,
-            dcdy,
+            dcdx: dcdx as i32,
+            dcdy: dcdy as i32,
             c: dcdx * from[0] - dcdy * from[1],
         };
         edge.c += edge.fill_rule_bias();
@@ -85,16 +87,18 @@ impl Edge {
     }
 
     /// The edge function at the centre of pixel (x, y): the sample is inside when it is > 0.
+    #[inline(always)]
     pub(crate) fn at(&self, x: i32, y: i32) -> i64 {
-        self.c + self.dcdy * (y as i64 * FIXED_ONE) - self.dcdx * (x as i64 * FIXED_ONE)
+        self.c + self.dcdy as i64 * (y as i64 * FIXED_ONE)
+            - self.dcdx as i64 * (x as i64 * FIXED_ONE)
     }
 
     /// The pixels of row `y` inside this edge, as an inclusive range (empty when lo > hi).
     /// Exact: the same integer inequality a per-pixel test would evaluate, solved for x.
     #[inline(always)]
     pub(crate) fn span(&self, y: i32) -> (i32, i32) {
-        let k = self.c + self.dcdy * (y as i64 * FIXED_ONE);
-        let d = self.dcdx * FIXED_ONE;
+        let k = self.c + self.dcdy as i64 * (y as i64 * FIXED_ONE);
+        let d = self.dcdx as i64 * FIXED_ONE;
         // Inside: d·x < k.
         match d.signum() {
             1 => (i32::MIN, clamp_i32((k - 1).div_euclid(d))),
@@ -109,8 +113,9 @@ impl Edge {
     pub(crate) fn over(&self, area: TileRect) -> Cover {
         let (x0, x1) = (area.x0 as i64 * FIXED_ONE, area.x1 as i64 * FIXED_ONE);
         let (y0, y1) = (area.y0 as i64 * FIXED_ONE, area.y1 as i64 * FIXED_ONE);
-        let dy = (self.dcdy * y0).min(self.dcdy * y1)..=(self.dcdy * y0).max(self.dcdy * y1);
-        let dx = (self.dcdx * x0).min(self.dcdx * x1)..=(self.dcdx * x0).max(self.dcdx * x1);
+        let (dcdx, dcdy) = (self.dcdx as i64, self.dcdy as i64);
+        let dy = (dcdy * y0).min(dcdy * y1)..=(dcdy * y0).max(dcdy * y1);
+        let dx = (dcdx * x0).min(dcdx * x1)..=(dcdx * x0).max(dcdx * x1);
         // F = c + dcdy·Y − dcdx·X; inside when F > 0.
         if self.c + dy.start() - dx.end() > 0 {
             Cover::All
@@ -144,7 +149,7 @@ pub(crate) fn row_inside_narrow(edges: &[Edge], y: i32, (lo, hi): (i32, i32)) ->
     let mut step = [0i64; 3];
     for (k, edge) in edges.iter().enumerate().take(3) {
         f[k] = edge.at(lo, y);
-        step[k] = edge.dcdx * FIXED_ONE;
+        step[k] = edge.dcdx as i64 * FIXED_ONE;
     }
     let (mut first, mut last) = (i32::MAX, i32::MIN);
     for x in lo..=hi {

@@ -33,7 +33,7 @@ impl Rasterized<'_> {
     pub(crate) fn record(&self, ids: &mut [u32], flags: &mut Vec<u8>, fates: &mut Fates) {
         flags.clear();
         flags.resize(fates.triangles.len(), 0);
-        for (k, t) in self.bins.triangles() {
+        for (k, t) in self.bins.footprints() {
             if let Some(mesh) = self.mesh_triangle(k as usize)
                 && t.covers_any_centre()
             {

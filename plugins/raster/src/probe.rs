@@ -211,7 +211,7 @@ fn cover(
     for i in 1..polygon.len.saturating_sub(1) {
         let t: Triangle = triangle([&vertex(0), &vertex(i), &vertex(i + 1)], params);
         let depth = t.planes.depth_at(x as f32 + 0.5, y as f32 + 0.5);
-        match t.coverage(x as i32, y as i32) {
+        match t.footprint.coverage(x as i32, y as i32) {
             Coverage::Inside => return Some((Coverage::Inside, depth)),
             Coverage::LostToFillRule => lost = Some((Coverage::LostToFillRule, depth)),
             Coverage::Outside => {}

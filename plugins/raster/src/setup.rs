@@ -14,20 +14,37 @@ pub(crate) enum Coverage {
     Outside,
 }
 
-/// A triangle ready to rasterize.
+/// A triangle ready to rasterize: where it draws, and its planes.
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct Triangle {
-    pub edges: [Edge; 3],
-    /// Inclusive pixel bounds [x0, y0, x1, y1], within the viewport; empty when x0 > x1.
-    pub bbox: [i32; 4],
+    pub footprint: Footprint,
     pub planes: Planes,
 }
 
 impl Triangle {
     pub(crate) const EMPTY: Triangle = Triangle {
+        footprint: Footprint::EMPTY,
+        planes: Planes::ZERO,
+    };
+
+    pub(crate) fn is_empty(&self) -> bool {
+        self.footprint.is_empty()
+    }
+}
+
+/// Where a triangle may draw: its three edges and the pixels its bounding box holds. One cache
+/// line: the tiles read it for every triangle binned there, shaded or not.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Footprint {
+    pub edges: [Edge; 3],
+    /// Inclusive pixel bounds [x0, y0, x1, y1], within the viewport; empty when x0 > x1.
+    pub bbox: [i32; 4],
+}
+
+impl Footprint {
+    pub(crate) const EMPTY: Footprint = Footprint {
         edges: [Edge::ZERO; 3],
         bbox: [0, 0, -1, -1],
-        planes: Planes::ZERO,
     };
 
     pub(crate) fn is_empty(&self) -> bool {
@@ -101,24 +118,25 @@ pub(crate) fn setup(
         corners.swap(1, 2);
     }
     let fixed = map3(&corners, |c| c.fixed);
-    let mut triangle = Triangle {
+    let footprint = Footprint {
         edges: [
             Edge::new(fixed[0], fixed[1]),
             Edge::new(fixed[1], fixed[2]),
             Edge::new(fixed[2], fixed[0]),
         ],
         bbox: bounds(fixed, size),
-        planes: Planes::ZERO,
     };
-    if drop_uncovered && !triangle.may_cover_a_centre() {
+    if drop_uncovered && !footprint.may_cover_a_centre() {
         return Triangle::EMPTY;
     }
-    triangle.planes = Planes::new(
-        map3(&corners, |c| c.window),
-        map3(&corners, |c| c.varyings),
-        used,
-    );
-    triangle
+    Triangle {
+        footprint,
+        planes: Planes::new(
+            map3(&corners, |c| c.window),
+            map3(&corners, |c| c.varyings),
+            used,
+        ),
+    }
 }
 
 /// `[T; 3]::map`, which the compiler does not always inline into setup's hot loop (it then
@@ -131,7 +149,7 @@ pub(crate) fn map3<T, U>(a: &[T; 3], f: impl Fn(&T) -> U) -> [U; 3] {
 /// Bounding boxes of at most this many pixels have their centres tested one by one.
 const FEW_PIXELS: i32 = 4;
 
-impl Triangle {
+impl Footprint {
     /// False when the triangle surely covers no pixel centre: its snapped bounding box holds
     /// none, or holds a few that are each tested and found outside. A larger box is taken on
     /// trust (the rows find out).
@@ -177,8 +195,8 @@ mod tests {
 
     fn covered(t: &Triangle) -> Vec<(i32, i32)> {
         let mut pixels = Vec::new();
-        for y in t.bbox[1]..=t.bbox[3] {
-            let (lo, hi) = t.row(y);
+        for y in t.footprint.bbox[1]..=t.footprint.bbox[3] {
+            let (lo, hi) = t.footprint.row(y);
             pixels.extend((lo..=hi).map(|x| (x, y)));
         }
         pixels
@@ -330,14 +348,14 @@ mod tests {
         ]
         .map(|c| setup(c, size, Used::default(), false));
         for t in &halves {
-            assert!(t.covers_any_centre());
+            assert!(t.footprint.covers_any_centre());
             let runs = covered(t);
             for (x, y) in (0..16).flat_map(|y| (0..16).map(move |x| (x, y))) {
-                let inside = t.coverage(x, y) == Coverage::Inside;
+                let inside = t.footprint.coverage(x, y) == Coverage::Inside;
                 assert_eq!(inside, runs.contains(&(x, y)), "({x}, {y})");
             }
         }
-        let on_diagonal = halves.map(|t| t.coverage(5, 4));
+        let on_diagonal = halves.map(|t| t.footprint.coverage(5, 4));
         assert!(on_diagonal.contains(&Coverage::Inside), "{on_diagonal:?}");
         assert!(
             on_diagonal.contains(&Coverage::LostToFillRule),
@@ -349,7 +367,7 @@ mod tests {
             Used::default(),
             false,
         );
-        assert!(!tiny.covers_any_centre(), "between centres");
+        assert!(!tiny.footprint.covers_any_centre(), "between centres");
     }
 
     #[test]
@@ -366,10 +384,10 @@ mod tests {
             let full = setup(corners, size, Used::default(), false);
             let early = setup(corners, size, Used::default(), true);
             if early.is_empty() {
-                assert!(!full.covers_any_centre(), "{corners:?}");
+                assert!(!full.footprint.covers_any_centre(), "{corners:?}");
                 dropped += 1;
             } else {
-                assert_eq!(early.bbox, full.bbox);
+                assert_eq!(early.footprint.bbox, full.footprint.bbox);
                 assert_eq!(
                     early.planes.depth_at(8.5, 8.5),
                     full.planes.depth_at(8.5, 8.5)

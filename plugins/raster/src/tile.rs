@@ -7,9 +7,10 @@ use crate::bin::Bins;
 use crate::edge::{Cover, Edge, row_inside, row_inside_narrow};
 use crate::lanes::LANES;
 use crate::row::{ROW, RowBuffers, Span, draw_span};
-use crate::setup::Triangle;
+use crate::setup::Footprint;
 use crate::shading::PixelShader;
 use crate::target::{NO_TRIANGLE, TileRect};
+use crate::varyings::Planes;
 
 /// One tile's buffers: colour, depth, and the id buffer (empty when not recorded).
 pub(crate) struct TileBuffers<'a> {
@@ -42,8 +43,16 @@ pub(crate) fn draw_tile<S: PixelShader>(
     for batch in &bins.batches {
         for &index in &batch.tiles[tile] {
             let index = index as usize;
-            let t = &batch.triangles[index];
-            draw_rows(rect, &mut rows, batch.set_up[index], t, shader);
+            let planes = || batch.planes(index, bins.used);
+            let footprint = &batch.footprints[index];
+            draw_rows(
+                rect,
+                &mut rows,
+                batch.set_up[index],
+                footprint,
+                planes,
+                shader,
+            );
         }
     }
 }
@@ -55,28 +64,34 @@ struct Rows<'a> {
     ids: &'a mut [[u32; ROW]],
 }
 
-/// Triangle `t` (set-up triangle `index`) in the tile `rect`: each of its rows there.
+/// Set-up triangle `index`, drawing where `footprint` says, in the tile `rect`: each of its
+/// rows there. Its `planes` are unpacked only when it has a row to draw.
+#[inline(always)]
 fn draw_rows<S: PixelShader>(
     rect: TileRect,
     rows: &mut Rows<'_>,
     index: u32,
-    t: &Triangle,
+    footprint: &Footprint,
+    planes: impl FnOnce() -> Planes,
     shader: &S,
 ) {
+    let [x0, y0, x1, y1] = footprint.bbox;
     let area = TileRect {
-        x0: t.bbox[0].max(rect.x0),
-        y0: t.bbox[1].max(rect.y0),
-        x1: t.bbox[2].min(rect.x1),
-        y1: t.bbox[3].min(rect.y1),
+        x0: x0.max(rect.x0),
+        y0: y0.max(rect.y0),
+        x1: x1.min(rect.x1),
+        y1: y1.min(rect.y1),
     };
     if area.x0 > area.x1 || area.y0 > area.y1 {
         return;
     }
-    let Some((crossing, count)) = crossing_edges(&t.edges, area) else {
+    let Some((crossing, count)) = crossing_edges(&footprint.edges, area) else {
         return;
     };
     let crossing = &crossing[..count];
     let narrow = area.x1 - area.x0 < LANES as i32;
+    let mut planes = Some(planes);
+    let mut unpacked = Planes::ZERO;
     for y in area.y0..=area.y1 {
         let (lo, hi) = match narrow {
             true => row_inside_narrow(crossing, y, (area.x0, area.x1)),
@@ -95,7 +110,10 @@ fn draw_rows<S: PixelShader>(
                 depth: &mut rows.depth[row],
                 ids: rows.ids.get_mut(row).map(|ids| (index, ids)),
             };
-            draw_span(shader, &t.planes, span, buffers);
+            if let Some(planes) = planes.take() {
+                unpacked = planes();
+            }
+            draw_span(shader, &unpacked, span, buffers);
         }
     }
 }

@@ -46,10 +46,20 @@ impl Used {
     fn any(self) -> bool {
         self.shading > 0 || self.textured
     }
+
+    /// How many floats [`Planes::pack`] writes: the origin and depth always, 1/w and the used
+    /// varyings' planes when there are any.
+    pub(crate) fn packed_floats(self) -> usize {
+        let planes = match self.any() {
+            true => 2 + self.shading + 2 * self.textured as usize,
+            false => 1,
+        };
+        2 + 3 * planes
+    }
 }
 
 /// a + dadx·(x − ox) + dady·(y − oy), where (ox, oy) is the triangle's origin.
-#[derive(Clone, Copy, Debug)]
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub(crate) struct Plane {
     pub a: f32,
     pub dadx: f32,
@@ -119,6 +129,56 @@ impl Planes {
         planes
     }
 
+    /// Appends the planes `used` to `out`, [`Used::packed_floats`] of them: a triangle stored
+    /// for the tiles takes the room its shading needs, not the room every shading could.
+    #[inline(always)]
+    pub(crate) fn pack(&self, used: Used, out: &mut Vec<f32>) {
+        let start = out.len();
+        out.resize(start + used.packed_floats(), 0.0);
+        let out = &mut out[start..];
+        out[..2].copy_from_slice(&self.origin);
+        let mut put = |slot: usize, p: &Plane| {
+            out[2 + 3 * slot..][..3].copy_from_slice(&[p.a, p.dadx, p.dady]);
+        };
+        put(0, &self.depth);
+        if used.any() {
+            put(1, &self.inv_w);
+            for (slot, p) in self.varyings[..used.shading].iter().enumerate() {
+                put(2 + slot, p);
+            }
+            if used.textured {
+                put(2 + used.shading, &self.varyings[UV]);
+                put(3 + used.shading, &self.varyings[UV + 1]);
+            }
+        }
+    }
+
+    /// The planes [`Self::pack`] wrote (the others zero).
+    #[inline(always)]
+    pub(crate) fn unpack(packed: &[f32], used: Used) -> Planes {
+        let plane = |at: usize| Plane {
+            a: packed[at],
+            dadx: packed[at + 1],
+            dady: packed[at + 2],
+        };
+        let mut planes = Planes {
+            origin: [packed[0], packed[1]],
+            depth: plane(2),
+            ..Planes::ZERO
+        };
+        if used.any() {
+            planes.inv_w = plane(5);
+            for (slot, p) in planes.varyings[..used.shading].iter_mut().enumerate() {
+                *p = plane(8 + 3 * slot);
+            }
+            if used.textured {
+                planes.varyings[UV] = plane(8 + 3 * used.shading);
+                planes.varyings[UV + 1] = plane(11 + 3 * used.shading);
+            }
+        }
+        planes
+    }
+
     /// The depth at the centre of pixel (x, y). Summed in its own order (a, then x, then y):
     /// the depth buffer and the probe take it so, and the reference's pixels agree with it.
     #[inline(always)]
@@ -160,5 +220,47 @@ impl Planes {
     #[inline(always)]
     pub(crate) fn texture_coordinates(&self, x: F8, y: f32, w: F8) -> (F8, F8) {
         (self.varying(UV, x, y, w), self.varying(UV + 1, x, y, w))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn packed_planes_come_back_as_they_went_for_every_shading() {
+        let plane = |k: f32| Plane {
+            a: k,
+            dadx: k + 0.25,
+            dady: k + 0.5,
+        };
+        let mut planes = Planes {
+            origin: [3.0, 4.0],
+            depth: plane(1.0),
+            inv_w: plane(2.0),
+            varyings: [0.0; VARYINGS].map(|_| plane(0.0)),
+        };
+        for (k, p) in planes.varyings.iter_mut().enumerate() {
+            *p = plane(10.0 + k as f32);
+        }
+        for shading in [0, 3, UV] {
+            for textured in [false, true] {
+                let used = Used { shading, textured };
+                let mut packed = vec![-1.0];
+                planes.pack(used, &mut packed);
+                assert_eq!(packed.len(), 1 + used.packed_floats());
+                let back = Planes::unpack(&packed[1..], used);
+                assert_eq!((back.origin, back.depth.a), (planes.origin, 1.0));
+                let kept: Vec<usize> = used.indices().collect();
+                for k in 0..VARYINGS {
+                    let expected = match kept.contains(&k) {
+                        true => planes.varyings[k],
+                        false => Plane::ZERO,
+                    };
+                    assert_eq!(back.varyings[k], expected, "{used:?}, varying {k}");
+                }
+                assert_eq!(back.inv_w.a, if used.any() { 2.0 } else { 0.0 });
+            }
+        }
     }
 }
