@@ -132,13 +132,16 @@ fn shot(capture: Capture, shots: Vec<(Image, &Vec<Placed>)>) -> Option<Shot> {
 }
 
 /// Draws one window with `draw(target, depth, pass)` and presents it; when `capture` asks,
-/// draws it once more into a texture that can be read back (untimed) and returns that image.
+/// returns the picture: the window's frame read back before it is presented, where the surface
+/// allows; else, and for the views alone (without the panel's labels over them), drawn once
+/// more (untimed) into a texture that can be read back.
 fn draw_window(
     gpu: &Gpu,
     window: &mut WindowSurface,
     capture: Capture,
     mut draw: impl FnMut(&wgpu::TextureView, &wgpu::TextureView, Pass),
 ) -> Result<Option<Image>, String> {
+    let mut shot = None;
     if let Some(texture) = window.acquire()? {
         let target = texture.texture.create_view(&Default::default());
         if let Some(depth) = window.depth() {
@@ -147,8 +150,14 @@ fn draw_window(
                 panel: true,
             };
             draw(&target, depth, shown);
+            if capture == Capture::Window && window.readable() {
+                shot = Some(screenshot::read_back(gpu, &texture.texture)?);
+            }
         }
         window.present(texture);
+    }
+    if shot.is_some() {
+        return Ok(shot);
     }
     let Some(depth) = window.depth().filter(|_| capture != Capture::Nothing) else {
         return Ok(None);

@@ -51,7 +51,8 @@ pub fn save_views(
     ))
 }
 
-/// Draws with `draw` into a `width` x `height` texture of `format` and reads it back as RGBA.
+/// Draws with `draw` into a `width` x `height` texture of `format` and reads it back as RGBA:
+/// for a window whose surface cannot be read back itself.
 pub fn capture(
     gpu: &Gpu,
     format: wgpu::TextureFormat,
@@ -59,16 +60,27 @@ pub fn capture(
     height: u32,
     draw: impl FnOnce(&wgpu::TextureView),
 ) -> Result<Image, String> {
-    let swap_red_blue = match format {
+    let texture = texture_2d(
+        &gpu.device,
+        "screenshot",
+        (width, height),
+        format,
+        READABLE_TARGET,
+    );
+    draw(&texture.create_view(&Default::default()));
+    read_back(gpu, &texture)
+}
+
+/// What `texture` (a window's frame, in its 8-bit colour format) holds, as RGBA.
+pub fn read_back(gpu: &Gpu, texture: &wgpu::Texture) -> Result<Image, String> {
+    let swap_red_blue = match texture.format() {
         wgpu::TextureFormat::Bgra8Unorm | wgpu::TextureFormat::Bgra8UnormSrgb => true,
         wgpu::TextureFormat::Rgba8Unorm | wgpu::TextureFormat::Rgba8UnormSrgb => false,
         other => return Err(format!("cannot save a screenshot of a {other:?} window")),
     };
-    let size = (width, height);
-    let texture = texture_2d(&gpu.device, "screenshot", size, format, READABLE_TARGET);
-    draw(&texture.create_view(&Default::default()));
-    let stored = Readback::new(&gpu.device, size, 1)
-        .read(gpu, &[&texture])?
+    let (width, height) = (texture.width(), texture.height());
+    let stored = Readback::new(&gpu.device, (width, height), 1)
+        .read(gpu, &[texture])?
         .concat();
     // A window's alpha is how it blends with the desktop, not part of the picture.
     let pixels = stored

@@ -47,7 +47,10 @@ impl WindowSurface {
         let caps = surface.get_capabilities(&gpu.adapter);
         let format = choose_format(&caps, format)?;
         let config = wgpu::SurfaceConfiguration {
-            usage: wgpu::TextureUsages::RENDER_ATTACHMENT,
+            // Readable where the surface allows it, so that a screenshot is the frame shown,
+            // read back, not the window drawn a second time.
+            usage: wgpu::TextureUsages::RENDER_ATTACHMENT
+                | (caps.usages & wgpu::TextureUsages::COPY_SRC),
             format,
             width: 0,
             height: 0,
@@ -75,6 +78,14 @@ impl WindowSurface {
 
     pub fn format(&self) -> wgpu::TextureFormat {
         self.wgpu.config.format
+    }
+
+    /// Whether the frames it presents can be read back (see [`crate::screenshot::read_back`]).
+    pub fn readable(&self) -> bool {
+        self.wgpu
+            .config
+            .usage
+            .contains(wgpu::TextureUsages::COPY_SRC)
     }
 
     /// The size drawn: the window's, at most the GPU's largest texture (the rest of a wider
