@@ -302,8 +302,7 @@ fn each_mode_emits_its_primitives() {
     }
 }
 
-/// The software rasterizer on a headless world: it draws only when asked for, only when
-/// something changed, and its image has the viewport's size with the cube in the middle.
+/// The software rasterizer follows the model's texture: set, replaced, removed.
 #[test]
 fn the_software_view_follows_the_texture_as_it_changes_and_goes() {
     let mut mesh = cube();
@@ -315,12 +314,7 @@ fn the_software_view_follows_the_texture_as_it_changes_and_goes() {
     };
     let mut app = app_with(mesh, settings);
     app.init_resource::<Lighting>().add_plugins(RasterPlugin);
-    let world = app.world_mut();
-    let mut camera = world
-        .query::<&mut Camera>()
-        .single_mut(world)
-        .expect("a camera");
-    camera.position = Vec3::new(0.0, 0.0, 6.0);
+    camera_mut(&mut app).position = Vec3::new(0.0, 0.0, 6.0);
     let centre = |app: &App| {
         app.world()
             .resource::<SoftwareFrame>()
@@ -349,16 +343,13 @@ fn the_software_view_follows_the_texture_as_it_changes_and_goes() {
     );
 }
 
+/// The software rasterizer on a headless world: it draws only when asked for, only when
+/// something changed, and its image has the viewport's size with the cube in the middle.
 #[test]
 fn the_raster_system_draws_when_asked_and_when_something_changed() {
     let mut app = app_with(cube(), RenderSettings::default());
     app.init_resource::<Lighting>().add_plugins(RasterPlugin);
-    let world = app.world_mut();
-    let mut camera = world
-        .query::<&mut Camera>()
-        .single_mut(world)
-        .expect("a camera");
-    camera.position = Vec3::new(0.0, 0.0, 6.0);
+    camera_mut(&mut app).position = Vec3::new(0.0, 0.0, 6.0);
     let drawn = |app: &App| app.world().resource_ref::<SoftwareFrame>().last_changed();
     let inserted = drawn(&app);
     app.update();

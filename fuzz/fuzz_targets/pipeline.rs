@@ -160,24 +160,34 @@ fn mesh(input: &Input) -> Mesh {
     }
 }
 
-/// The camera, and whether it is one the app could hold: built by `looking_at` from finite,
-/// moderate points, with fields of view in range and 1e-4 <= near < far <= 1e6.
-fn camera(input: &CameraIn) -> (Camera, bool) {
-    let lens = |l: &Lens| Camera {
+/// A camera with the lens `l`, at the default pose.
+fn lens(l: &Lens) -> Camera {
+    Camera {
         hfov: l.hfov.get(),
         vfov: l.vfov.get(),
         near: l.near.get(),
         far: l.far.get(),
         ..Camera::default()
-    };
-    let sane_lens = |c: &Camera| {
-        FOV_RANGE.contains(&c.hfov)
-            && FOV_RANGE.contains(&c.vfov)
-            && (1e-4..=1e6).contains(&c.near)
-            && (1e-4..=1e6).contains(&c.far)
-            && c.near < c.far
-    };
-    let moderate = |v: Vec3| v.is_finite() && v.abs().max_element() <= 1e4;
+    }
+}
+
+/// Fields of view in range and 1e-4 <= near < far <= 1e6.
+fn sane_lens(c: &Camera) -> bool {
+    FOV_RANGE.contains(&c.hfov)
+        && FOV_RANGE.contains(&c.vfov)
+        && (1e-4..=1e6).contains(&c.near)
+        && (1e-4..=1e6).contains(&c.far)
+        && c.near < c.far
+}
+
+/// Finite, and no farther than 1e4 along any axis.
+fn moderate(v: Vec3) -> bool {
+    v.is_finite() && v.abs().max_element() <= 1e4
+}
+
+/// The camera, and whether it is one the app could hold: built by `looking_at` from finite,
+/// moderate points, with a sane lens.
+fn camera(input: &CameraIn) -> (Camera, bool) {
     match input {
         CameraIn::LookAt {
             position,
@@ -354,7 +364,10 @@ fuzz_target!(|input: Input| {
             // The rasterizer moves drawn triangles to no_pixels or hidden, never others.
             let (c, e) = (fates.counts, expected_fates.counts);
             assert_eq!(c.drawn + c.cut + c.no_pixels + c.hidden, e.drawn + e.cut);
-            assert_eq!((c.clipped, c.culled, c.zero_area), (e.clipped, e.culled, e.zero_area));
+            assert_eq!(
+                (c.clipped, c.culled, c.zero_area),
+                (e.clipped, e.culled, e.zero_area)
+            );
             assert_eq!(
                 image.pixels.len(),
                 (viewport.width * viewport.height) as usize

@@ -7,6 +7,7 @@ use close2gl_viewer::{Recording, ViewerOptions, ViewerPlugin};
 
 use super::CliError;
 use super::scene::{SceneArgs, print_warnings, viewport};
+use crate::config::Config;
 use crate::watch::WatchPlugin;
 
 /// Frames drawn before `--screenshot` saves one, when `--exit-after-frames` does not say.
@@ -53,46 +54,13 @@ pub fn run(args: RunArgs) -> Result<(), CliError> {
         .map(Recording::read)
         .transpose()
         .map_err(CliError::Input)?;
-    // A replay given no scene shows the one it was recorded on.
-    let scene = match &replay {
-        Some(recording) if args.scene.is_empty() => {
-            SceneArgs::from_words(&recording.header.scene).map_err(CliError::Input)?
-        }
-        _ => args.scene.clone(),
-    };
-    let config = scene.config()?;
-    let size = match &replay {
-        Some(recording) => close2gl_core::Viewport {
-            width: recording.header.size[0],
-            height: recording.header.size[1],
-        },
-        None => viewport(args.size.as_deref(), &config)?,
-    };
+    let (scene, config, size) = scene_and_size(&args, replay.as_ref())?;
     // The first frame's layout replaces this with the views' real size.
     let mut app = crate::build_app(&config, size).map_err(CliError::Input)?;
     print_warnings(&app);
-    let (exit_after_frames, screenshot_frame) = match &replay {
-        Some(recording) => {
-            let frames = recording.frames.len() as u32;
-            ((!args.keep_open).then_some(frames), Some(frames))
-        }
-        None => {
-            let exit = args
-                .exit_after_frames
-                .or(args.screenshot.is_some().then_some(SCREENSHOT_FRAMES));
-            (exit, exit)
-        }
-    };
+    let (exit_after_frames, screenshot_frame) = last_frames(&args, replay.as_ref());
     if args.watch {
-        let scene = scene.clone();
-        app.add_plugins(WatchPlugin {
-            config_file: crate::config::file_to_read(scene.config.as_deref()),
-            reload: Arc::new(move || {
-                scene.config().map_err(|e| match e {
-                    CliError::Input(m) | CliError::Runtime(m) => m,
-                })
-            }),
-        });
+        app.add_plugins(watch(scene.clone()));
     }
     app.add_plugins(ViewerPlugin(ViewerOptions {
         layout: config.window.layout,
@@ -108,4 +76,56 @@ pub fn run(args: RunArgs) -> Result<(), CliError> {
         replay,
     }));
     app.run().map_err(CliError::Runtime)
+}
+
+/// The scene (a replay given none shows the one it was recorded on), its configuration, and
+/// the size of the views (a replay's own).
+fn scene_and_size(
+    args: &RunArgs,
+    replay: Option<&Recording>,
+) -> Result<(SceneArgs, Config, close2gl_core::Viewport), CliError> {
+    let scene = match replay {
+        Some(recording) if args.scene.is_empty() => {
+            SceneArgs::from_words(&recording.header.scene).map_err(CliError::Input)?
+        }
+        _ => args.scene.clone(),
+    };
+    let config = scene.config()?;
+    let size = match replay {
+        Some(recording) => close2gl_core::Viewport {
+            width: recording.header.size[0],
+            height: recording.header.size[1],
+        },
+        None => viewport(args.size.as_deref(), &config)?,
+    };
+    Ok((scene, config, size))
+}
+
+/// The frame after which the app exits, and the one the screenshot is taken on: a replay's
+/// last (staying open with --keep-open); else as asked, a screenshot waiting a few frames.
+fn last_frames(args: &RunArgs, replay: Option<&Recording>) -> (Option<u32>, Option<u32>) {
+    match replay {
+        Some(recording) => {
+            let frames = recording.frames.len() as u32;
+            ((!args.keep_open).then_some(frames), Some(frames))
+        }
+        None => {
+            let exit = args
+                .exit_after_frames
+                .or(args.screenshot.is_some().then_some(SCREENSHOT_FRAMES));
+            (exit, exit)
+        }
+    }
+}
+
+/// Watches the scene's files, reloading its configuration when one changes.
+fn watch(scene: SceneArgs) -> WatchPlugin {
+    WatchPlugin {
+        config_file: crate::config::file_to_read(scene.config.as_deref()),
+        reload: Arc::new(move || {
+            scene.config().map_err(|e| match e {
+                CliError::Input(m) | CliError::Runtime(m) => m,
+            })
+        }),
+    }
 }

@@ -88,19 +88,7 @@ pub fn render_offscreen(app: &mut App) -> Result<Snapshot, String> {
     let size = *world
         .get_resource::<Viewport>()
         .ok_or("render_offscreen needs the Viewport resource")?;
-    let max = gpu.device.limits().max_texture_dimension_2d;
-    if size.width == 0 || size.height == 0 || size.width > max || size.height > max {
-        return Err(format!(
-            "cannot render {}x{}: this adapter draws 1x1 to {max}x{max}",
-            size.width, size.height
-        ));
-    }
-    if world
-        .get_resource::<Target>()
-        .is_none_or(|t| t.size != size)
-    {
-        world.insert_resource(Target::new(&gpu.device, size));
-    }
+    sized_target(world, &gpu, size)?;
     let views = world
         .get_resource::<Views>()
         .ok_or("render_offscreen needs the Views resource (add OffscreenPlugin)")?;
@@ -134,6 +122,25 @@ pub fn render_offscreen(app: &mut App) -> Result<Snapshot, String> {
         counts: frame.counts,
         background,
     })
+}
+
+/// Makes sure the world's [`Target`] is `size` (making a new one when it is not), or says why
+/// the adapter cannot draw that size.
+fn sized_target(world: &mut World, gpu: &Gpu, size: Viewport) -> Result<(), String> {
+    let max = gpu.device.limits().max_texture_dimension_2d;
+    if size.width == 0 || size.height == 0 || size.width > max || size.height > max {
+        return Err(format!(
+            "cannot render {}x{}: this adapter draws 1x1 to {max}x{max}",
+            size.width, size.height
+        ));
+    }
+    if world
+        .get_resource::<Target>()
+        .is_none_or(|t| t.size != size)
+    {
+        world.insert_resource(Target::new(&gpu.device, size));
+    }
+    Ok(())
 }
 
 /// One view into `color`, cleared to the background: record, submit, wait. Returns milliseconds.

@@ -291,18 +291,7 @@ impl Reference {
         key: PipelineKey,
         drawing: &Drawing<'_>,
     ) -> wgpu::RenderPipeline {
-        let (gouraud, phong, specular) = match key.shading {
-            Shading::None => (0.0, 0.0, 0.0),
-            Shading::GouraudAd => (1.0, 0.0, 0.0),
-            Shading::GouraudAds => (1.0, 0.0, 1.0),
-            Shading::Phong => (0.0, 1.0, 1.0),
-        };
-        let mut constants = vec![
-            ("GOURAUD", gouraud),
-            ("PHONG", phong),
-            ("SPECULAR", specular),
-        ];
-        constants.extend_from_slice(drawing.constants);
+        let constants = shader_constants(key.shading, drawing.constants);
         let options = wgpu::PipelineCompilationOptions {
             constants: &constants,
             ..Default::default()
@@ -435,6 +424,23 @@ pub fn clear_color(background: Vec3) -> wgpu::Color {
         b: background.z as f64,
         a: 1.0,
     }
+}
+
+/// The shader's override constants: which lighting `shading` is, then the drawing's own.
+fn shader_constants<'a>(shading: Shading, own: &[(&'a str, f64)]) -> Vec<(&'a str, f64)> {
+    let (gouraud, phong, specular) = match shading {
+        Shading::None => (0.0, 0.0, 0.0),
+        Shading::GouraudAd => (1.0, 0.0, 0.0),
+        Shading::GouraudAds => (1.0, 0.0, 1.0),
+        Shading::Phong => (0.0, 1.0, 1.0),
+    };
+    let mut constants = vec![
+        ("GOURAUD", gouraud),
+        ("PHONG", phong),
+        ("SPECULAR", specular),
+    ];
+    constants.extend_from_slice(own);
+    constants
 }
 
 #[cfg(test)]

@@ -26,13 +26,26 @@ pub fn section(ui: &mut egui::Ui, world: &mut World) {
         ui.label("Clipping");
         choice(ui, &mut settings.clipping, Clipping::ALL, Clipping::name);
     });
+    shading(ui, &mut settings.shading);
+    rasterizer(ui, &mut settings.close2gl_raster);
+    ui.horizontal(|ui| {
+        ui.label("Colour");
+        color(ui, &mut settings.color);
+        ui.label("Background");
+        color(ui, &mut settings.background);
+    });
+    crate::write_if_changed(world, &settings);
+}
+
+/// The shading, from a list: it names what the two views' lighting is.
+fn shading(ui: &mut egui::Ui, shading: &mut Shading) {
     ui.horizontal(|ui| {
         ui.label("Shading");
         egui::ComboBox::from_id_salt("shading")
-            .selected_text(settings.shading.name())
+            .selected_text(shading.name())
             .show_ui(ui, |ui| {
-                for &shading in Shading::ALL {
-                    ui.selectable_value(&mut settings.shading, shading, shading.name());
+                for &option in Shading::ALL {
+                    ui.selectable_value(shading, option, option.name());
                 }
             })
             .response
@@ -41,13 +54,17 @@ pub fn section(ui: &mut egui::Ui, world: &mut World) {
                  rasterizer, Close2GL draws flat colour.",
             );
     });
+}
+
+/// Who rasterizes Close2GL's output: the GPU, as the assignment asks, or Close2GL itself.
+fn rasterizer(ui: &mut egui::Ui, rasterizer: &mut Rasterizer) {
     ui.horizontal(|ui| {
         ui.label("Close2GL");
         let name = |r: Rasterizer| match r {
             Rasterizer::Gpu => "GPU (assignment)",
             Rasterizer::Software => "software",
         };
-        choice(ui, &mut settings.close2gl_raster, Rasterizer::ALL, name);
+        choice(ui, rasterizer, Rasterizer::ALL, name);
     })
     .response
     .on_hover_text(
@@ -55,13 +72,6 @@ pub fn section(ui: &mut egui::Ui, world: &mut World) {
          assignment's rule; render.close2gl_raster = \"gpu\"). software: Close2GL's own \
          rasterizer, z-buffer and shading.",
     );
-    ui.horizontal(|ui| {
-        ui.label("Colour");
-        color(ui, &mut settings.color);
-        ui.label("Background");
-        color(ui, &mut settings.background);
-    });
-    crate::write_if_changed(world, &settings);
 }
 
 /// One selectable button per option.

@@ -60,6 +60,26 @@ pub fn section(ui: &mut egui::Ui, world: &mut World) {
     if let Some((frame, frames)) = stats.replay {
         ui.label(format!("Replaying frame {} of {frames}", frame + 1));
     }
+    frame_rates(ui, stats, timed);
+    if let Some(frame) = world.get_resource::<Close2glFrame>() {
+        let software = world
+            .get_resource::<RenderSettings>()
+            .is_some_and(|s| s.close2gl_raster == Rasterizer::Software);
+        let raster_ms = world
+            .get_resource::<SoftwareFrame>()
+            .filter(|_| timed && software)
+            .map(|image| image.raster_ms);
+        counts(ui, frame, timed.then_some(frame.stage_ms), raster_ms);
+    }
+    ui.label(format!("Adapter: {}", stats.adapter));
+    if let Some(limits) = &stats.limitations {
+        ui.colored_label(ui.visuals().warn_fg_color, limits);
+    }
+}
+
+/// Each view's frames a second and frame time (none while replaying: a replay's pace is not
+/// the app's).
+fn frame_rates(ui: &mut egui::Ui, stats: &ViewStats, timed: bool) {
     egui::Grid::new("stats_grid").num_columns(3).show(ui, |ui| {
         ui.label("");
         ui.label("FPS");
@@ -77,44 +97,44 @@ pub fn section(ui: &mut egui::Ui, world: &mut World) {
             ui.end_row();
         }
     });
-    if let Some(frame) = world.get_resource::<Close2glFrame>() {
-        let c = frame.counts;
-        egui::Grid::new("counts_grid")
-            .num_columns(4)
-            .show(ui, |ui| {
-                let rows = [
-                    [("Triangles in", c.triangles_in), ("Clipped", c.clipped)],
-                    [("Culled", c.culled), ("Drawn", c.drawn)],
-                ];
-                for row in rows {
-                    for (name, value) in row {
-                        ui.label(name);
-                        ui.monospace(value.to_string());
-                    }
-                    ui.end_row();
-                }
-                ui.label("2D primitives");
-                ui.monospace(c.output_primitives.to_string());
-                if timed {
-                    ui.label("Geometry");
-                    ui.monospace(format!("{:.2} ms", frame.stage_ms));
+}
+
+/// The Close2GL stage's counts, and its times when given: the geometry's, and the software
+/// rasterizer's when it draws.
+fn counts(
+    ui: &mut egui::Ui,
+    frame: &Close2glFrame,
+    geometry_ms: Option<f64>,
+    raster_ms: Option<f64>,
+) {
+    let c = frame.counts;
+    egui::Grid::new("counts_grid")
+        .num_columns(4)
+        .show(ui, |ui| {
+            let rows = [
+                [("Triangles in", c.triangles_in), ("Clipped", c.clipped)],
+                [("Culled", c.culled), ("Drawn", c.drawn)],
+            ];
+            for row in rows {
+                for (name, value) in row {
+                    ui.label(name);
+                    ui.monospace(value.to_string());
                 }
                 ui.end_row();
-                let software = world
-                    .get_resource::<RenderSettings>()
-                    .is_some_and(|s| s.close2gl_raster == Rasterizer::Software);
-                let image = world.get_resource::<SoftwareFrame>();
-                if let (true, true, Some(image)) = (timed, software, image) {
-                    ui.label("Raster");
-                    ui.monospace(format!("{:.2} ms", image.raster_ms));
-                    ui.end_row();
-                }
-            });
-    }
-    ui.label(format!("Adapter: {}", stats.adapter));
-    if let Some(limits) = &stats.limitations {
-        ui.colored_label(ui.visuals().warn_fg_color, limits);
-    }
+            }
+            ui.label("2D primitives");
+            ui.monospace(c.output_primitives.to_string());
+            if let Some(ms) = geometry_ms {
+                ui.label("Geometry");
+                ui.monospace(format!("{ms:.2} ms"));
+            }
+            ui.end_row();
+            if let Some(ms) = raster_ms {
+                ui.label("Raster");
+                ui.monospace(format!("{ms:.2} ms"));
+                ui.end_row();
+            }
+        });
 }
 
 fn number(value: Option<f64>, decimals: usize) -> String {
