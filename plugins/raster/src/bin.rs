@@ -37,6 +37,9 @@ pub(crate) struct Bins {
     pub batches: Vec<Batch>,
     /// The planes stored with each triangle.
     pub used: Used,
+    /// Where each batch's triangles start in the frame's numbering of them all (what a tile's
+    /// visibility buffer records).
+    pub starts: Vec<u32>,
 }
 
 /// What setup reads: the primitives (their vertices' `indices`) and the vertices.
@@ -72,6 +75,26 @@ impl Bins {
                     |set_up, t| batch.push(grid, params.used, set_up, t),
                 );
             });
+        self.starts.clear();
+        let mut start = 0;
+        for batch in &self.batches {
+            self.starts.push(start);
+            start += batch.footprints.len() as u32;
+        }
+    }
+
+    /// How many triangles are binned in tile number `tile`.
+    pub(crate) fn binned(&self, tile: usize) -> usize {
+        self.batches.iter().map(|b| b.tiles[tile].len()).sum()
+    }
+
+    /// The packed planes of triangle `number` in the frame's numbering (see `starts`).
+    #[inline(always)]
+    pub(crate) fn packed(&self, number: u32) -> &[f32] {
+        let batch = self.starts.partition_point(|&s| s <= number) - 1;
+        let index = (number - self.starts[batch]) as usize;
+        let floats = self.used.packed_floats();
+        &self.batches[batch].planes[index * floats..][..floats]
     }
 
     /// Where every kept triangle draws, with its set-up index, in order.

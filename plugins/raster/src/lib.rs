@@ -18,13 +18,15 @@
 //! submission order: each primitive to triangles by `primitives` and `setup`, with `edge`'s
 //! fixed-point edge functions and `varyings`' planes, those that cover no pixel centre dropped
 //! before their planes are built, the rest listed in the 64×64 tiles they touch) → `tile` (a
-//! narrow triangle's rows found pixel by pixel, a wide one's solved) → `row` → `lanes`, the
-//! hierarchy tile → rows
+//! narrow triangle's rows found pixel by pixel, a wide one's solved; or `deferred`, a tile of
+//! small Phong-shaded triangles depth-tested first and shaded once per pixel after) → `row` →
+//! `lanes`, the hierarchy tile → rows
 //! → blocks of eight lanes (llvmpipe's is tile → block → quad): each block depth-tested, then
 //! coloured by `shading` (with `texture`'s level of detail and sampling) into `target`'s
 //! buffers, which are then copied out as the image. `fates` and `probe` read what a frame left.
 
 mod bin;
+mod deferred;
 mod edge;
 mod fates;
 mod lanes;

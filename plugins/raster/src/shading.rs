@@ -9,7 +9,7 @@ use crate::lanes::{F8, LANES, V8};
 use crate::lighting::Light;
 use crate::target::pack8;
 use crate::texture::{Filter, Mips};
-use crate::varyings::{EYE, INTENSITY, NORMAL, Planes};
+use crate::varyings::{EYE, INTENSITY, Interpolant, LanePlanes, NORMAL, Planes};
 
 /// The colours of eight pixels of a triangle (its `planes`), centred at (x, y). Inlined into
 /// the row loop (see `row::draw_span`).
@@ -19,7 +19,14 @@ pub(crate) trait PixelShader: Sync {
 
 /// A shading's colour at eight pixels before texturing, given w there.
 pub(crate) trait Colour: Sync {
-    fn colour(&self, planes: &Planes, x: F8, y: f32, w: F8) -> V8;
+    fn colour<P: Interpolant>(&self, planes: &P, x: F8, y: f32, w: F8) -> V8;
+}
+
+/// A shading that colours eight pixels of different triangles at once (`LanePlanes`), as a
+/// tile does after its depth test (see `deferred`). Untextured only: texturing's level of
+/// detail takes differences across each quad of pixels of one triangle.
+pub(crate) trait LaneShader: Sync {
+    fn shade_lanes(&self, planes: &LanePlanes, x: F8, y: f32) -> [u32; LANES];
 }
 
 /// What the texture does to a colour: nothing, or modulate it by the texel.
@@ -43,12 +50,20 @@ impl<C: Colour, T: Texturing> PixelShader for Shaded<C, T> {
     }
 }
 
+impl<C: Colour> LaneShader for Shaded<C, Untextured> {
+    #[inline(always)]
+    fn shade_lanes(&self, planes: &LanePlanes, x: F8, y: f32) -> [u32; LANES] {
+        let w = planes.w(x, y);
+        pack8(self.colour.colour(planes, x, y, w))
+    }
+}
+
 /// The user's colour, unlit.
 pub(crate) struct Flat(pub Vec3);
 
 impl Colour for Flat {
     #[inline(always)]
-    fn colour(&self, _: &Planes, _: F8, _: f32, _: F8) -> V8 {
+    fn colour<P: Interpolant>(&self, _: &P, _: F8, _: f32, _: F8) -> V8 {
         V8::splat(self.0)
     }
 }
@@ -60,7 +75,7 @@ pub(crate) struct Gouraud {
 
 impl Colour for Gouraud {
     #[inline(always)]
-    fn colour(&self, planes: &Planes, x: F8, y: f32, w: F8) -> V8 {
+    fn colour<P: Interpolant>(&self, planes: &P, x: F8, y: f32, w: F8) -> V8 {
         multiply(self.color, planes.varying3(INTENSITY, x, y, w))
     }
 }
@@ -73,7 +88,7 @@ pub(crate) struct Phong {
 
 impl Colour for Phong {
     #[inline(always)]
-    fn colour(&self, planes: &Planes, x: F8, y: f32, w: F8) -> V8 {
+    fn colour<P: Interpolant>(&self, planes: &P, x: F8, y: f32, w: F8) -> V8 {
         let eye = planes.varying3(EYE, x, y, w);
         let normal = planes.varying3(NORMAL, x, y, w);
         multiply(self.color, self.light.illumination(eye, normal))

@@ -42,6 +42,9 @@ pub(crate) struct Target {
     pub color: Vec<u32>,
     pub depth: Vec<f32>,
     pub ids: Vec<u32>,
+    /// While a tile is shaded after its depth test (see `deferred`): which triangle each pixel
+    /// shows, by the frame's numbering.
+    pub visible: Vec<u32>,
 }
 
 impl Target {
@@ -58,6 +61,7 @@ impl Target {
         let pixels = self.grid.tiles() * TILE_PIXELS;
         self.color.resize(pixels, 0);
         self.depth.resize(pixels, 1.0);
+        self.visible.resize(pixels, NO_TRIANGLE);
         self.ids
             .resize(if record { pixels } else { 0 }, NO_TRIANGLE);
     }

@@ -11,7 +11,7 @@
 use close2gl_core::Texture;
 
 use crate::lanes::{F8, LANES, V8};
-use crate::varyings::Planes;
+use crate::varyings::{Interpolant, Planes};
 
 /// The mipmap chain of the current texture, built when a new texture is set (the raster system
 /// sets it when bevy's change ticks say the `Texture` resource changed).

@@ -3,7 +3,7 @@
 //! others are left out of every row), then each row's span of covered pixels, solved exactly
 //! from those edges (no per-pixel edge test), handed to `row`.
 
-use crate::bin::Bins;
+use crate::bin::{Batch, Bins};
 use crate::edge::{Cover, Edge, row_inside, row_inside_narrow};
 use crate::lanes::LANES;
 use crate::row::{ROW, RowBuffers, Span, draw_span};
@@ -12,11 +12,13 @@ use crate::shading::PixelShader;
 use crate::target::{NO_TRIANGLE, TileRect};
 use crate::varyings::Planes;
 
-/// One tile's buffers: colour, depth, and the id buffer (empty when not recorded).
+/// One tile's buffers: colour, depth, the id buffer (empty when not recorded) and the
+/// visibility buffer (used only when the tile is shaded after its depth test).
 pub(crate) struct TileBuffers<'a> {
     pub color: &'a mut [u32],
     pub depth: &'a mut [f32],
     pub ids: &'a mut [u32],
+    pub visible: &'a mut [u32],
 }
 
 /// Clears tile number `tile` to `background`, the far plane and no triangle, then draws the
@@ -32,42 +34,47 @@ pub(crate) fn draw_tile<S: PixelShader>(
     buffers.color.fill(background);
     buffers.depth.fill(1.0);
     buffers.ids.fill(NO_TRIANGLE);
-    let (color_rows, _) = buffers.color.as_chunks_mut::<ROW>();
-    let (depth_rows, _) = buffers.depth.as_chunks_mut::<ROW>();
-    let (id_rows, _) = buffers.ids.as_chunks_mut::<ROW>();
-    let mut rows = Rows {
-        color: color_rows,
-        depth: depth_rows,
-        ids: id_rows,
-    };
-    for batch in &bins.batches {
+    let mut rows = Rows::new(buffers.color, buffers.depth, buffers.ids);
+    for_each_binned(bins, tile, |_, batch, index| {
+        let planes = || batch.planes(index, bins.used);
+        let set_up = batch.set_up[index];
+        let footprint = &batch.footprints[index];
+        draw_rows(rect, &mut rows, set_up, footprint, planes, shader);
+    });
+}
+
+/// Each triangle binned in tile number `tile`, in submission order: `f(number, batch, index)`,
+/// `number` counting the frame's kept triangles across the batches.
+#[inline(always)]
+pub(crate) fn for_each_binned(bins: &Bins, tile: usize, mut f: impl FnMut(u32, &Batch, usize)) {
+    for (batch, start) in bins.batches.iter().zip(&bins.starts) {
         for &index in &batch.tiles[tile] {
-            let index = index as usize;
-            let planes = || batch.planes(index, bins.used);
-            let footprint = &batch.footprints[index];
-            draw_rows(
-                rect,
-                &mut rows,
-                batch.set_up[index],
-                footprint,
-                planes,
-                shader,
-            );
+            f(start + index, batch, index as usize);
         }
     }
 }
 
 /// A tile's buffers as rows (`ids` has none when not recorded).
-struct Rows<'a> {
+pub(crate) struct Rows<'a> {
     color: &'a mut [[u32; ROW]],
     depth: &'a mut [[f32; ROW]],
     ids: &'a mut [[u32; ROW]],
 }
 
+impl<'a> Rows<'a> {
+    pub(crate) fn new(color: &'a mut [u32], depth: &'a mut [f32], ids: &'a mut [u32]) -> Self {
+        Rows {
+            color: color.as_chunks_mut::<ROW>().0,
+            depth: depth.as_chunks_mut::<ROW>().0,
+            ids: ids.as_chunks_mut::<ROW>().0,
+        }
+    }
+}
+
 /// Set-up triangle `index`, drawing where `footprint` says, in the tile `rect`: each of its
 /// rows there. Its `planes` are unpacked only when it has a row to draw.
 #[inline(always)]
-fn draw_rows<S: PixelShader>(
+pub(crate) fn draw_rows<S: PixelShader>(
     rect: TileRect,
     rows: &mut Rows<'_>,
     index: u32,

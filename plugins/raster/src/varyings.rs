@@ -5,7 +5,7 @@
 
 use close2gl_core::Shading;
 
-use crate::lanes::{F8, V8};
+use crate::lanes::{F8, LANES, V8};
 use crate::setup::map3;
 
 /// How many floats a vertex carries for shading: eye position and normal (Phong), or the
@@ -194,32 +194,131 @@ impl Planes {
         (x - F8::splat(self.origin[0])).mul_add(F8::splat(plane.dadx), F8::splat(row))
     }
 
+    /// The texture coordinates (s, t) at eight pixels, given w there.
+    #[inline(always)]
+    pub(crate) fn texture_coordinates(&self, x: F8, y: f32, w: F8) -> (F8, F8) {
+        (self.varying(UV, x, y, w), self.varying(UV + 1, x, y, w))
+    }
+}
+
+/// What the pixel shaders interpolate from: one triangle's planes for all eight lanes
+/// ([`Planes`]), or each lane its own triangle's ([`LanePlanes`]). Both compute a lane's value
+/// by the same operations in the same order, so a pixel's colour does not depend on which.
+pub(crate) trait Interpolant {
+    /// 1/w at eight pixel centres of row y.
+    fn inv_w_at(&self, x: F8, y: f32) -> F8;
+    /// Varying `k` times 1/w at eight pixel centres of row y.
+    fn varying_at(&self, k: usize, x: F8, y: f32) -> F8;
+
     /// w at eight pixels, from the plane of 1/w.
     #[inline(always)]
-    pub(crate) fn w(&self, x: F8, y: f32) -> F8 {
-        F8::splat(1.0) / self.lanes_at(&self.inv_w, x, y)
+    fn w(&self, x: F8, y: f32) -> F8 {
+        F8::splat(1.0) / self.inv_w_at(x, y)
     }
 
     /// Varying `k`, perspective-correct, at eight pixels, given w there.
     #[inline(always)]
-    pub(crate) fn varying(&self, k: usize, x: F8, y: f32, w: F8) -> F8 {
-        self.lanes_at(&self.varyings[k], x, y) * w
+    fn varying(&self, k: usize, x: F8, y: f32, w: F8) -> F8 {
+        self.varying_at(k, x, y) * w
     }
 
     /// Varyings `first..first + 3` at eight pixels, given w there.
     #[inline(always)]
-    pub(crate) fn varying3(&self, first: usize, x: F8, y: f32, w: F8) -> V8 {
+    fn varying3(&self, first: usize, x: F8, y: f32, w: F8) -> V8 {
         V8 {
             x: self.varying(first, x, y, w),
             y: self.varying(first + 1, x, y, w),
             z: self.varying(first + 2, x, y, w),
         }
     }
+}
 
-    /// The texture coordinates (s, t) at eight pixels, given w there.
+impl Interpolant for Planes {
     #[inline(always)]
-    pub(crate) fn texture_coordinates(&self, x: F8, y: f32, w: F8) -> (F8, F8) {
-        (self.varying(UV, x, y, w), self.varying(UV + 1, x, y, w))
+    fn inv_w_at(&self, x: F8, y: f32) -> F8 {
+        self.lanes_at(&self.inv_w, x, y)
+    }
+
+    #[inline(always)]
+    fn varying_at(&self, k: usize, x: F8, y: f32) -> F8 {
+        self.lanes_at(&self.varyings[k], x, y)
+    }
+}
+
+/// One plane with a value for each of eight lanes.
+#[derive(Clone, Copy, Debug)]
+struct LanePlane {
+    a: F8,
+    dadx: F8,
+    dady: F8,
+}
+
+impl LanePlane {
+    const ZERO: LanePlane = LanePlane {
+        a: F8([0.0; LANES]),
+        dadx: F8([0.0; LANES]),
+        dady: F8([0.0; LANES]),
+    };
+
+    #[inline(always)]
+    fn set(&mut self, lane: usize, packed: &[f32]) {
+        self.a.0[lane] = packed[0];
+        self.dadx.0[lane] = packed[1];
+        self.dady.0[lane] = packed[2];
+    }
+}
+
+/// Eight pixels' planes, each lane its own triangle's (1/w and the varyings; depth is done
+/// with by then): what a block shaded once after the depth test interpolates from.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct LanePlanes {
+    origin: [F8; 2],
+    inv_w: LanePlane,
+    varyings: [LanePlane; VARYINGS],
+}
+
+impl LanePlanes {
+    pub(crate) const ZERO: LanePlanes = LanePlanes {
+        origin: [F8([0.0; LANES]); 2],
+        inv_w: LanePlane::ZERO,
+        varyings: [LanePlane::ZERO; VARYINGS],
+    };
+
+    /// Lane `lane` takes the planes [`Planes::pack`] wrote into `packed` for `used`.
+    #[inline(always)]
+    pub(crate) fn set_lane(&mut self, lane: usize, packed: &[f32], used: Used) {
+        self.origin[0].0[lane] = packed[0];
+        self.origin[1].0[lane] = packed[1];
+        if !used.any() {
+            return;
+        }
+        self.inv_w.set(lane, &packed[5..]);
+        for (slot, p) in self.varyings[..used.shading].iter_mut().enumerate() {
+            p.set(lane, &packed[8 + 3 * slot..]);
+        }
+        if used.textured {
+            self.varyings[UV].set(lane, &packed[8 + 3 * used.shading..]);
+            self.varyings[UV + 1].set(lane, &packed[11 + 3 * used.shading..]);
+        }
+    }
+
+    /// As [`Planes`]' `lanes_at`, lane by lane.
+    #[inline(always)]
+    fn lanes_at(&self, plane: &LanePlane, x: F8, y: f32) -> F8 {
+        let row = plane.a + plane.dady * (F8::splat(y) - self.origin[1]);
+        (x - self.origin[0]).mul_add(plane.dadx, row)
+    }
+}
+
+impl Interpolant for LanePlanes {
+    #[inline(always)]
+    fn inv_w_at(&self, x: F8, y: f32) -> F8 {
+        self.lanes_at(&self.inv_w, x, y)
+    }
+
+    #[inline(always)]
+    fn varying_at(&self, k: usize, x: F8, y: f32) -> F8 {
+        self.lanes_at(&self.varyings[k], x, y)
     }
 }
 
