@@ -194,6 +194,39 @@ fn bench_load_times_a_model_file_into_its_mesh() {
 }
 
 #[test]
+fn bench_raster_grid_draws_the_generated_big_model() {
+    let out = close2gl(&[
+        "bench",
+        "--raster",
+        "--grid",
+        "--triangles",
+        "2000",
+        "--frames",
+        "2",
+        "--size",
+        "96x64",
+        "--set",
+        "render.shading=phong",
+    ]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let report: Value = serde_json::from_slice(&out.stdout).expect("one JSON object");
+    // 32 × 32 squares of two triangles: the nearest grid of at least 2,000.
+    assert_eq!(report["triangles"], 2048, "{report}");
+    assert_eq!(report["model"], "grid of 2048 triangles", "{report}");
+    assert_eq!(report["shading"], "phong", "{report}");
+    assert!(
+        report["software_median_ms"]
+            .as_f64()
+            .is_some_and(|ms| ms > 0.0),
+        "{report}"
+    );
+}
+
+#[test]
 fn bad_input_is_one_line_and_exit_code_2() {
     let dir = TempDir::new("cli");
     let bad_model = dir.join("bad.in");
@@ -216,6 +249,11 @@ fn bad_input_is_one_line_and_exit_code_2() {
             "render.close2gl_raster",
         ),
         (vec!["bench", "--raster", "--fill"], "--fill"),
+        (vec!["bench", "--grid"], "--grid"),
+        (
+            vec!["bench", "--raster", "--grid", "assets/cube.in"],
+            "--grid",
+        ),
         (
             vec!["bench", "--load", "assets/cube.in", "--fill"],
             "--load",
