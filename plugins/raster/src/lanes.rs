@@ -6,6 +6,13 @@ use std::ops::{Add, Div, Mul, Neg, Sub};
 
 pub(crate) const LANES: usize = 8;
 
+/// `[T; 3]::map`, which the compiler does not always inline into setup's hot loop (it then
+/// costs more than the arithmetic).
+#[inline(always)]
+pub(crate) fn map3<T, U>(a: &[T; 3], f: impl Fn(&T) -> U) -> [U; 3] {
+    [f(&a[0]), f(&a[1]), f(&a[2])]
+}
+
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub(crate) struct F8(pub [f32; LANES]);
 

@@ -7,7 +7,8 @@
 use close2gl_core::Topology;
 
 use crate::edge::FIXED_ONE;
-use crate::setup::{Corner, Triangle, map3, setup};
+use crate::lanes::map3;
+use crate::setup::{Corner, Triangle, setup};
 use crate::varyings::Used;
 use crate::vertex::Vertex;
 

@@ -3,6 +3,7 @@
 //! and the probe, whether it covers one pixel centre or any.
 
 use crate::edge::{Edge, FIXED_ONE, row_inside};
+use crate::lanes::map3;
 use crate::varyings::{Planes, Used, VARYINGS};
 
 /// How a triangle's coverage meets one pixel centre.
@@ -137,13 +138,6 @@ pub(crate) fn setup(
             used,
         ),
     }
-}
-
-/// `[T; 3]::map`, which the compiler does not always inline into setup's hot loop (it then
-/// costs more than the arithmetic).
-#[inline(always)]
-pub(crate) fn map3<T, U>(a: &[T; 3], f: impl Fn(&T) -> U) -> [U; 3] {
-    [f(&a[0]), f(&a[1]), f(&a[2])]
 }
 
 /// Bounding boxes of at most this many pixels have their centres tested one by one.

@@ -5,8 +5,8 @@
 
 use close2gl_core::Shading;
 
+use crate::lanes::map3;
 use crate::lanes::{F8, LANES, V8};
-use crate::setup::map3;
 
 /// How many floats a vertex carries for shading: eye position and normal (Phong), or the
 /// Gouraud intensity in the first three; then the texture coordinates.

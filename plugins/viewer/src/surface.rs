@@ -13,7 +13,15 @@ use winit::window::Window;
 
 use crate::acquire::{NoTexture, Presentable, SurfaceState};
 use crate::surface_source::SurfaceSource;
-use crate::windows::NewWindow;
+
+/// A window just opened, and the size it was opened at: the size its surface starts with.
+/// Asking X for it instead could panic inside winit if another client destroyed the window in
+/// that instant; if the window manager gives another size, a `Resized` event says so.
+#[derive(Clone)]
+pub struct NewWindow {
+    pub window: Arc<Window>,
+    pub size: PhysicalSize<u32>,
+}
 
 pub struct WindowSurface {
     pub window: Arc<Window>,

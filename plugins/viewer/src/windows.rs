@@ -15,7 +15,7 @@ use winit::window::{Window, WindowId};
 use crate::ViewerOptions;
 use crate::gui::Gui;
 use crate::layout::{self, PixelRect, Placement};
-use crate::surface::WindowSurface;
+use crate::surface::{NewWindow, WindowSurface};
 use crate::surface_source::{Connections, SurfaceSource};
 
 /// Everything that exists once the windows do.
@@ -178,15 +178,6 @@ impl Windows {
             let _ = other.window.request_inner_size(wanted);
         }
     }
-}
-
-/// A window just opened, and the size it was opened at: the size its surface starts with.
-/// Asking X for it instead could panic inside winit if another client destroyed the window in
-/// that instant; if the window manager gives another size, a `Resized` event says so.
-#[derive(Clone)]
-pub struct NewWindow {
-    pub window: Arc<Window>,
-    pub size: PhysicalSize<u32>,
 }
 
 /// The main window and, in the windows layout, the Close2GL window beside it.
