@@ -135,6 +135,12 @@ impl SurfaceState {
             }
         }
         self.missed = has_pixels;
+        self.count_refusal()?;
+        Ok(None)
+    }
+
+    /// Counts a frame the surface refused to configure; too many in a row is an error.
+    fn count_refusal(&mut self) -> Result<(), String> {
         if self.stale {
             self.refusals += 1;
             if self.refusals >= REFUSALS_BEFORE_FAILING {
@@ -144,7 +150,7 @@ impl SurfaceState {
                 ));
             }
         }
-        Ok(None)
+        Ok(())
     }
 }
 
