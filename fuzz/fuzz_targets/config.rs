@@ -8,72 +8,26 @@
 
 use std::fmt::Write as _;
 use std::path::Path;
+use std::sync::LazyLock;
 
 use arbitrary::Arbitrary;
 use close2gl::config::{Config, load_text};
 use close2gl_core::glam::Vec3;
 use close2gl_core::limits::{FOV_RANGE, MAX_PIXELS};
 use close2gl_core::{
-    Camera, CameraMode, Clipping, FrontFace, InputBindings, ModelSource, PrimitiveKind, Rasterizer,
+    Action, Camera, CameraMode, Clipping, FrontFace, ModelSource, PrimitiveKind, Rasterizer,
     RenderMode, Shading, TextureFilter, Viewport,
 };
 use close2gl_fuzz::Num;
 use libfuzzer_sys::fuzz_target;
 
-/// Every key of `src/config/keys.rs` but `[input]`'s (taken from `InputBindings`).
-const KEYS: &[&str] = &[
-    "model.path",
-    "model.primitive",
-    "model.texture",
-    "camera.position",
-    "camera.target",
-    "camera.up",
-    "camera.u",
-    "camera.v",
-    "camera.n",
-    "camera.hfov",
-    "camera.vfov",
-    "camera.near",
-    "camera.far",
-    "camera.mode",
-    "camera.move_speed",
-    "camera.rotate_speed",
-    "render.mode",
-    "render.front_face",
-    "render.backface_culling",
-    "render.clipping",
-    "render.shading",
-    "render.close2gl_raster",
-    "render.texture",
-    "render.texture_filter",
-    "render.color",
-    "render.background",
-    "lighting.light_position",
-    "lighting.ia",
-    "lighting.il",
-    "lighting.ka",
-    "lighting.kd",
-    "lighting.ks",
-    "lighting.shininess",
-    "lighting.attenuation",
-    "primitives.box_size",
-    "primitives.sphere_radius",
-    "primitives.sphere_stacks",
-    "primitives.sphere_slices",
-    "primitives.torus_r0",
-    "primitives.torus_r1",
-    "primitives.torus_n0",
-    "primitives.torus_n1",
-    "primitives.cone_radius",
-    "primitives.cone_height",
-    "primitives.cone_slices",
-    "primitives.cylinder_radius",
-    "primitives.cylinder_height",
-    "primitives.cylinder_slices",
-    "window.width",
-    "window.height",
-    "window.layout",
-];
+/// Every key of the configuration's table but `[input]`'s, as `section.name`.
+static KEYS: LazyLock<Vec<String>> = LazyLock::new(|| {
+    close2gl::config::keys::KEYS
+        .iter()
+        .map(|k| format!("{}.{}", k.section, k.name))
+        .collect()
+});
 
 #[derive(Arbitrary, Debug)]
 enum Key<'a> {
@@ -135,7 +89,7 @@ fn toml_float(x: f32) -> String {
 
 fn render(o: &Override, inputs: &[String], names: &[&str]) -> String {
     let mut item = match &o.key {
-        Key::Known(i) => KEYS[usize::from(*i) % KEYS.len()].to_string(),
+        Key::Known(i) => KEYS[usize::from(*i) % KEYS.len()].clone(),
         Key::Input(i) => format!("input.{}", inputs[usize::from(*i) % inputs.len()]),
         Key::Raw(text) => text.to_string(),
     };
@@ -210,7 +164,7 @@ fn small_model(config: &Config) -> ModelSource {
 
 fuzz_target!(|input: Input| {
     let names = names();
-    let inputs: Vec<String> = InputBindings::default().0.into_keys().collect();
+    let inputs: Vec<String> = Action::ALL.iter().map(|a| a.name().to_string()).collect();
     let overrides: Vec<String> = input
         .overrides
         .iter()
