@@ -1,7 +1,8 @@
-//! The mesh builder's index of corners: a 64-bit fingerprint of each corner → the first vertex
-//! with that fingerprint, in 8 bytes a slot (a 32-bit tag of the fingerprint and the vertex),
-//! half what a `HashMap<u64, u32>` takes, because it is the largest thing a big load holds
-//! besides the mesh. Open addressing with linear probing, at most 3/4 full.
+//! The mesh builder's index of corners (and the OBJ loader's of distinct positions):
+//! a 64-bit fingerprint of each corner → the first vertex with that fingerprint, in 8 bytes a
+//! slot (a 32-bit tag of the fingerprint and the vertex), half what a `HashMap<u64, u32>` takes,
+//! because it is the largest thing a big load holds besides the mesh. Open addressing with
+//! linear probing, at most 3/4 full.
 
 /// An empty slot.
 const EMPTY: u64 = u64::MAX;
@@ -13,6 +14,17 @@ pub(crate) struct CornerIndex {
 }
 
 impl CornerIndex {
+    /// An index that holds `len` entries without growing.
+    pub(crate) fn with_capacity(len: usize) -> Self {
+        let slots = (len.saturating_mul(4) / 3 + 1)
+            .next_power_of_two()
+            .max(1024);
+        Self {
+            slots: vec![EMPTY; slots],
+            len: 0,
+        }
+    }
+
     /// The vertex that holds `fingerprint`, if any. `has_fingerprint` says whether a vertex
     /// whose slot has the fingerprint's tag has the whole fingerprint.
     pub(crate) fn get(

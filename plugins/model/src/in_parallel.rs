@@ -13,6 +13,7 @@ use close2gl_core::limits::MAX_LINE_BYTES;
 use crate::decimal::parse_f32;
 use crate::in_format::{Body, FileTriangle, Orientation, VERTEX_TAGS, VertexLayout};
 use crate::mesh_builder::Corner;
+use crate::words::{Words, is_space, trim};
 
 /// Bytes read at a time for each core: large enough that the cores' start and join are nothing
 /// beside the parse, small enough that the text held stays small beside the mesh.
@@ -67,7 +68,7 @@ pub(crate) fn read_body<R: Read>(
 }
 
 /// Reads until `text` holds `want` bytes or the file ends; whether it ended.
-fn fill(
+pub(crate) fn fill(
     reader: &mut impl Read,
     text: &mut Vec<u8>,
     want: usize,
@@ -244,39 +245,6 @@ fn read_numbers<'n>(
         count += 1;
     }
     counts.contains(&count).then_some(&numbers[..count])
-}
-
-/// The words of a record: its runs of bytes other than spaces.
-struct Words<'t>(&'t [u8]);
-
-impl<'t> Iterator for Words<'t> {
-    type Item = &'t [u8];
-
-    fn next(&mut self) -> Option<&'t [u8]> {
-        let start = self.0.iter().position(|&b| !is_space(b))?;
-        let rest = &self.0[start..];
-        let end = rest.iter().position(|&b| is_space(b)).unwrap_or(rest.len());
-        self.0 = &rest[end..];
-        Some(&rest[..end])
-    }
-}
-
-/// The ASCII bytes `char::is_whitespace` takes for space, as `str::trim` and
-/// `str::split_whitespace` do in the line reader.
-fn is_space(b: u8) -> bool {
-    matches!(b, b'\t' | b'\n' | 0x0b | 0x0c | b'\r' | b' ')
-}
-
-fn trim(line: &[u8]) -> &[u8] {
-    let start = line
-        .iter()
-        .position(|&b| !is_space(b))
-        .unwrap_or(line.len());
-    let end = line
-        .iter()
-        .rposition(|&b| !is_space(b))
-        .map_or(start, |i| i + 1);
-    &line[start..end]
 }
 
 #[cfg(test)]

@@ -1,5 +1,5 @@
 //! The model plugin. It owns turning a `ModelSource` into a `Mesh`: the course's `.in` triangle
-//! files (every variant the README's Models section lists), Wavefront `.obj` files through tobj,
+//! files (every variant the README's Models section lists), Wavefront `.obj` files (our parser),
 //! and the shading lecture's primitives (box, sphere, torus, cone, cylinder) with exact normals.
 //! Its system reads and takes the `ModelRequest` resource, reads `PrimitiveParams`, replaces the
 //! one `Mesh` component (spawning it if there is none) and writes `ModelStatus`. A load that
@@ -25,9 +25,10 @@ mod obj;
 mod primitives;
 mod progress;
 mod texture;
+mod words;
 
 use std::fs::File;
-use std::io::{BufReader, Seek};
+use std::io::Seek;
 use std::path::Path;
 
 use bevy_ecs::prelude::*;
@@ -43,7 +44,6 @@ pub use primitives::primitive;
 pub use texture::load_texture;
 
 use background::Poll;
-use lines::Lines;
 use progress::{Counted, LoadProgress};
 
 /// A mesh ready to show, and what the loader noticed but forgave (e.g. a header that lies about
@@ -67,8 +67,7 @@ pub fn load(source: &ModelSource, params: &PrimitiveParams) -> Result<LoadedMode
 }
 
 /// Loads a `.in` or `.obj` file, counting what it reads into `progress`. Both stream, so memory
-/// follows the mesh, not the file: a `.in` file in one pass, an OBJ file in two (its progress
-/// counts both).
+/// follows the mesh, not the file.
 pub(crate) fn load_file(path: &Path, progress: &LoadProgress) -> Result<LoadedModel, String> {
     let label = path.display().to_string();
     let extension = path
@@ -93,10 +92,9 @@ pub(crate) fn load_file(path: &Path, progress: &LoadProgress) -> Result<LoadedMo
             "{label}: expected a .in or .obj file, found a directory or device"
         ));
     }
-    // An OBJ file is read twice (see `obj::read_obj`), each pass from the start; a `.in` file
-    // once (its header twice, and all of it again if it has an error: see `in_format::read_in`).
-    let passes = if obj { 2 } else { 1 };
-    progress.set_total(passes * metadata.len());
+    // Either file is read once (a `.in` file's header twice); one with an error again, line by
+    // line (see `obj::read_obj` and `in_format::read_in`), which the bar does not foresee.
+    progress.set_total(metadata.len());
     let label = label.as_str();
     let open = || {
         (&file).rewind().map_err(cannot_read)?;
@@ -106,7 +104,7 @@ pub(crate) fn load_file(path: &Path, progress: &LoadProgress) -> Result<LoadedMo
         })
     };
     if obj {
-        obj::read_obj(|| Ok(Lines::new(BufReader::new(open()?), label)), label)
+        obj::read_obj(open, label)
     } else {
         in_format::read_in(open, label)
     }

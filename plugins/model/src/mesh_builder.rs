@@ -30,17 +30,6 @@ impl MeshBuilder {
         }
     }
 
-    /// The index of the vertex (`position`, `normal`, `uv`), added if it is new. Exact f32 bits
-    /// are compared, except that -0.0 and 0.0 are the same corner.
-    pub(crate) fn vertex(
-        &mut self,
-        position: Vec3,
-        normal: Vec3,
-        uv: Option<Vec2>,
-    ) -> Result<u32, String> {
-        self.corner(&Corner::new(position, normal, uv))
-    }
-
     /// The index of the vertex `c`, added if it is new.
     pub(crate) fn corner(&mut self, c: &Corner) -> Result<u32, String> {
         if c.textured && !self.textured {
@@ -110,8 +99,8 @@ impl Corner {
     }
 }
 
-/// A 64-bit fingerprint of a corner's bits.
-fn fingerprint(key: &[u32; 8]) -> u64 {
+/// A 64-bit fingerprint of a corner's (or any key's) bits.
+pub(crate) fn fingerprint(key: &[u32]) -> u64 {
     key.iter().fold(0u64, |h, &w| {
         (h ^ u64::from(w))
             .wrapping_mul(0x9e37_79b9_7f4a_7c15)
@@ -131,9 +120,11 @@ mod tests {
     #[test]
     fn identical_corners_share_an_index_and_different_normals_do_not() {
         let mut b = MeshBuilder::new("t".into());
-        let a = b.vertex(Vec3::ZERO, Vec3::Z, None).unwrap();
-        let again = b.vertex(Vec3::new(-0.0, 0.0, 0.0), Vec3::Z, None).unwrap();
-        let other_normal = b.vertex(Vec3::ZERO, Vec3::X, None).unwrap();
+        let a = b.corner(&Corner::new(Vec3::ZERO, Vec3::Z, None)).unwrap();
+        let again = b
+            .corner(&Corner::new(Vec3::new(-0.0, 0.0, 0.0), Vec3::Z, None))
+            .unwrap();
+        let other_normal = b.corner(&Corner::new(Vec3::ZERO, Vec3::X, None)).unwrap();
         assert_eq!(a, again);
         assert_ne!(a, other_normal);
         let mesh = b.finish();
@@ -144,8 +135,12 @@ mod tests {
     #[test]
     fn different_texture_coordinates_make_different_vertices() {
         let mut b = MeshBuilder::new("t".into());
-        let a = b.vertex(Vec3::ZERO, Vec3::Z, Some(Vec2::ZERO)).unwrap();
-        let seam = b.vertex(Vec3::ZERO, Vec3::Z, Some(Vec2::X)).unwrap();
+        let a = b
+            .corner(&Corner::new(Vec3::ZERO, Vec3::Z, Some(Vec2::ZERO)))
+            .unwrap();
+        let seam = b
+            .corner(&Corner::new(Vec3::ZERO, Vec3::Z, Some(Vec2::X)))
+            .unwrap();
         assert_ne!(a, seam);
         assert_eq!(b.finish().uvs, vec![Vec2::ZERO, Vec2::X]);
     }
