@@ -147,10 +147,10 @@ proptest! {
             prop_assert_eq!(a.position, b.position, "corner {}\n{}", k, text);
             // Where the file gives a normal, ours is that normal, normalised; where it gives
             // none, ours is computed (smooth) and tobj has none to compare.
-            if let (Some(ours), Some(theirs)) = (a.normal, b.normal) {
-                if theirs != Vec3::ZERO {
-                    prop_assert!((ours - theirs).length() < 1e-6, "corner {}: {} vs {}\n{}", k, ours, theirs, text);
-                }
+            if let (Some(ours), Some(theirs)) = (a.normal, b.normal)
+                && theirs != Vec3::ZERO
+            {
+                prop_assert!((ours - theirs).length() < 1e-6, "corner {}: {} vs {}\n{}", k, ours, theirs, text);
             }
             if b.uv.is_some() {
                 prop_assert_eq!(a.uv, b.uv, "corner {}\n{}", k, text);
