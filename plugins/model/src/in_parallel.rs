@@ -11,7 +11,7 @@ use std::io::Read;
 use close2gl_core::limits::MAX_LINE_BYTES;
 
 use crate::decimal::parse_f32;
-use crate::in_format::{Body, FileTriangle, Orientation, VERTEX_TAGS, VertexLayout};
+use crate::in_triangles::{Body, FileTriangle, Orientation, VERTEX_TAGS, VertexLayout};
 use crate::mesh_builder::Corner;
 use crate::words::{Words, is_space, trim};
 

@@ -19,6 +19,7 @@ mod decimal;
 mod diagnostics;
 mod in_format;
 mod in_parallel;
+mod in_triangles;
 mod lines;
 mod mesh_builder;
 mod obj;
