@@ -18,15 +18,13 @@ use crate::varyings::{LanePlanes, Planes};
 /// Draws tile number `tile` as [`crate::tile::draw_tile`] does, shading after the depth test.
 pub(crate) fn draw_tile_deferred<S: PixelShader + LaneShader>(
     rect: TileRect,
-    buffers: TileBuffers<'_>,
+    mut buffers: TileBuffers<'_>,
     background: u32,
     bins: &Bins,
     tile: usize,
     shader: &S,
 ) {
-    buffers.color.fill(background);
-    buffers.depth.fill(1.0);
-    buffers.ids.fill(NO_TRIANGLE);
+    buffers.clear(background);
     buffers.visible.fill(NO_TRIANGLE);
     // The visibility buffer takes the colour buffer's place: each triangle "shades" its number.
     let mut rows = Rows::new(buffers.visible, buffers.depth, buffers.ids);

@@ -21,19 +21,26 @@ pub(crate) struct TileBuffers<'a> {
     pub visible: &'a mut [u32],
 }
 
+impl TileBuffers<'_> {
+    /// Clears the tile to `background`, the far plane and no triangle.
+    pub(crate) fn clear(&mut self, background: u32) {
+        self.color.fill(background);
+        self.depth.fill(1.0);
+        self.ids.fill(NO_TRIANGLE);
+    }
+}
+
 /// Clears tile number `tile` to `background`, the far plane and no triangle, then draws the
 /// triangles binned there, batch after batch.
 pub(crate) fn draw_tile<S: PixelShader>(
     rect: TileRect,
-    buffers: TileBuffers<'_>,
+    mut buffers: TileBuffers<'_>,
     background: u32,
     bins: &Bins,
     tile: usize,
     shader: &S,
 ) {
-    buffers.color.fill(background);
-    buffers.depth.fill(1.0);
-    buffers.ids.fill(NO_TRIANGLE);
+    buffers.clear(background);
     let mut rows = Rows::new(buffers.color, buffers.depth, buffers.ids);
     for_each_binned(bins, tile, |_, batch, index| {
         let planes = || batch.planes(index, bins.used);

@@ -233,17 +233,24 @@ pub(crate) trait Interpolant {
     }
 }
 
-impl Interpolant for Planes {
-    #[inline(always)]
-    fn inv_w_at(&self, x: F8, y: f32) -> F8 {
-        self.lanes_at(&self.inv_w, x, y)
-    }
+/// Both kinds of planes interpolate through their own `lanes_at`.
+macro_rules! interpolant {
+    ($planes:ty) => {
+        impl Interpolant for $planes {
+            #[inline(always)]
+            fn inv_w_at(&self, x: F8, y: f32) -> F8 {
+                self.lanes_at(&self.inv_w, x, y)
+            }
 
-    #[inline(always)]
-    fn varying_at(&self, k: usize, x: F8, y: f32) -> F8 {
-        self.lanes_at(&self.varyings[k], x, y)
-    }
+            #[inline(always)]
+            fn varying_at(&self, k: usize, x: F8, y: f32) -> F8 {
+                self.lanes_at(&self.varyings[k], x, y)
+            }
+        }
+    };
 }
+
+interpolant!(Planes);
 
 /// One plane with a value for each of eight lanes.
 #[derive(Clone, Copy, Debug)]
@@ -310,17 +317,7 @@ impl LanePlanes {
     }
 }
 
-impl Interpolant for LanePlanes {
-    #[inline(always)]
-    fn inv_w_at(&self, x: F8, y: f32) -> F8 {
-        self.lanes_at(&self.inv_w, x, y)
-    }
-
-    #[inline(always)]
-    fn varying_at(&self, k: usize, x: F8, y: f32) -> F8 {
-        self.lanes_at(&self.varyings[k], x, y)
-    }
-}
+interpolant!(LanePlanes);
 
 #[cfg(test)]
 mod tests {
