@@ -31,7 +31,7 @@ pub(crate) fn varyings_used(shading: Shading) -> usize {
 }
 
 /// Which varyings get planes: the first `shading` ones, and the texture coordinates when
-/// `textured`.
+/// `textured` (see `for_each_stored`).
 #[derive(Clone, Copy, Debug, Default)]
 pub(crate) struct Used {
     pub shading: usize,
@@ -39,12 +39,22 @@ pub(crate) struct Used {
 }
 
 impl Used {
-    fn indices(self) -> impl Iterator<Item = usize> {
-        (0..self.shading).chain((UV..UV + 2).filter(move |_| self.textured))
-    }
-
     fn any(self) -> bool {
         self.shading > 0 || self.textured
+    }
+
+    /// Each varying whose plane is stored, `f(slot, k)`, in the order they are packed: `slot`
+    /// counts the stored planes, depth and 1/w being the first two. The one statement of the
+    /// packed layout, which packing and both kinds of unpacking follow.
+    #[inline(always)]
+    fn for_each_stored(self, mut f: impl FnMut(usize, usize)) {
+        for k in 0..self.shading {
+            f(2 + k, k);
+        }
+        if self.textured {
+            f(2 + self.shading, UV);
+            f(3 + self.shading, UV + 1);
+        }
     }
 
     /// How many floats [`Planes::pack`] writes: the origin and depth always, 1/w and the used
@@ -56,6 +66,13 @@ impl Used {
         };
         2 + 3 * planes
     }
+}
+
+/// Where stored plane number `slot` starts in a packed triangle: after the origin's two floats,
+/// three floats a plane.
+#[inline(always)]
+const fn packed_at(slot: usize) -> usize {
+    2 + 3 * slot
 }
 
 /// a + dadx·(x − ox) + dady·(y − oy), where (ox, oy) is the triangle's origin.
@@ -120,11 +137,10 @@ impl Planes {
         if used.any() {
             let inv_w = map3(&window, |p| p[3]);
             planes.inv_w = plane(inv_w);
-            for k in used.indices() {
-                let v = [0, 1, 2];
-                let v = map3(&v, |&i| varyings[i][k] * inv_w[i]);
-                planes.varyings[k] = plane(v);
-            }
+            let planes = &mut planes.varyings;
+            used.for_each_stored(|_, k| {
+                planes[k] = plane(map3(&[0, 1, 2], |&i| varyings[i][k] * inv_w[i]));
+            });
         }
         planes
     }
@@ -138,43 +154,34 @@ impl Planes {
         let out = &mut out[start..];
         out[..2].copy_from_slice(&self.origin);
         let mut put = |slot: usize, p: &Plane| {
-            out[2 + 3 * slot..][..3].copy_from_slice(&[p.a, p.dadx, p.dady]);
+            out[packed_at(slot)..][..3].copy_from_slice(&[p.a, p.dadx, p.dady]);
         };
         put(0, &self.depth);
         if used.any() {
             put(1, &self.inv_w);
-            for (slot, p) in self.varyings[..used.shading].iter().enumerate() {
-                put(2 + slot, p);
-            }
-            if used.textured {
-                put(2 + used.shading, &self.varyings[UV]);
-                put(3 + used.shading, &self.varyings[UV + 1]);
-            }
+            used.for_each_stored(|slot, k| put(slot, &self.varyings[k]));
         }
     }
 
     /// The planes [`Self::pack`] wrote (the others zero).
     #[inline(always)]
     pub(crate) fn unpack(packed: &[f32], used: Used) -> Planes {
-        let plane = |at: usize| Plane {
-            a: packed[at],
-            dadx: packed[at + 1],
-            dady: packed[at + 2],
+        let plane = |slot: usize| {
+            let at = packed_at(slot);
+            Plane {
+                a: packed[at],
+                dadx: packed[at + 1],
+                dady: packed[at + 2],
+            }
         };
         let mut planes = Planes {
             origin: [packed[0], packed[1]],
-            depth: plane(2),
+            depth: plane(0),
             ..Planes::ZERO
         };
         if used.any() {
-            planes.inv_w = plane(5);
-            for (slot, p) in planes.varyings[..used.shading].iter_mut().enumerate() {
-                *p = plane(8 + 3 * slot);
-            }
-            if used.textured {
-                planes.varyings[UV] = plane(8 + 3 * used.shading);
-                planes.varyings[UV + 1] = plane(11 + 3 * used.shading);
-            }
+            planes.inv_w = plane(1);
+            used.for_each_stored(|slot, k| planes.varyings[k] = plane(slot));
         }
         planes
     }
@@ -299,14 +306,9 @@ impl LanePlanes {
         if !used.any() {
             return;
         }
-        self.inv_w.set(lane, &packed[5..]);
-        for (slot, p) in self.varyings[..used.shading].iter_mut().enumerate() {
-            p.set(lane, &packed[8 + 3 * slot..]);
-        }
-        if used.textured {
-            self.varyings[UV].set(lane, &packed[8 + 3 * used.shading..]);
-            self.varyings[UV + 1].set(lane, &packed[11 + 3 * used.shading..]);
-        }
+        self.inv_w.set(lane, &packed[packed_at(1)..]);
+        let varyings = &mut self.varyings;
+        used.for_each_stored(|slot, k| varyings[k].set(lane, &packed[packed_at(slot)..]));
     }
 
     /// As [`Planes`]' `lanes_at`, lane by lane.
@@ -347,7 +349,8 @@ mod tests {
                 assert_eq!(packed.len(), 1 + used.packed_floats());
                 let back = Planes::unpack(&packed[1..], used);
                 assert_eq!((back.origin, back.depth.a), (planes.origin, 1.0));
-                let kept: Vec<usize> = used.indices().collect();
+                let mut kept = Vec::new();
+                used.for_each_stored(|_, k| kept.push(k));
                 for k in 0..VARYINGS {
                     let expected = match kept.contains(&k) {
                         true => planes.varyings[k],
