@@ -15,6 +15,8 @@
 
 mod background;
 mod corner_index;
+#[cfg(test)]
+mod damage;
 mod decimal;
 mod diagnostics;
 mod in_format;

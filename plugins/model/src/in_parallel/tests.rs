@@ -7,6 +7,8 @@ use std::io::{BufReader, Read};
 
 use proptest::prelude::*;
 
+use crate::damage::{cuts, damaged};
+
 use crate::LoadedModel;
 use crate::in_format::{read_in_blocks, read_in_lines};
 use crate::lines::Lines;
@@ -179,16 +181,10 @@ proptest! {
     #[test]
     fn broken_files_give_the_line_readers_error_or_mesh(
         text in file(),
-        cuts in prop::collection::vec((0.0f64..1.0, 0usize..3, damage()), 1..4),
+        cuts in cuts(damage()),
         block in 1usize..300,
     ) {
-        let mut bytes = text.into_bytes();
-        for (at, removed, inserted) in cuts {
-            let at = (at * bytes.len() as f64) as usize;
-            let end = (at + removed).min(bytes.len());
-            bytes.splice(at..end, inserted.iter().copied());
-        }
-        let (parallel, lines, _) = both(&bytes, block);
+        let (parallel, lines, _) = both(&damaged(text, cuts), block);
         prop_assert_eq!(parallel, lines);
     }
 }

@@ -7,6 +7,8 @@ use std::io::BufReader;
 
 use proptest::prelude::*;
 
+use crate::damage::{cuts, damaged};
+
 use super::super::{model, read_obj_blocks, serial};
 use crate::lines::Lines;
 
@@ -217,16 +219,10 @@ proptest! {
     #[test]
     fn broken_files_give_the_line_readers_error_or_mesh(
         text in file(),
-        cuts in prop::collection::vec((0.0f64..1.0, 0usize..3, damage()), 1..4),
+        cuts in cuts(damage()),
         block in 1usize..300,
     ) {
-        let mut bytes = text.into_bytes();
-        for (at, removed, inserted) in cuts {
-            let at = (at * bytes.len() as f64) as usize;
-            let end = (at + removed).min(bytes.len());
-            bytes.splice(at..end, inserted.iter().copied());
-        }
-        let (fast, lines, _) = both(&bytes, block);
+        let (fast, lines, _) = both(&damaged(text, cuts), block);
         prop_assert_eq!(fast, lines);
     }
 }
