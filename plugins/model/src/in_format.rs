@@ -14,23 +14,26 @@ use crate::{LoadedModel, file_stem};
 
 /// Parses the text of a `.in` file; `label` names the file in messages and warnings.
 pub fn parse_in(text: &str, label: &str) -> Result<LoadedModel, String> {
-    read_in(|| Ok(text.as_bytes()), label)
+    read_in(|| Ok(text.as_bytes()), text.len() as u64, label)
 }
 
 /// Parses a `.in` file read from the start by each `open()`: the header line by line, then the
 /// triangles in blocks on all cores (see `in_parallel`), so that memory follows the mesh, not
 /// the file. A body the parallel reader does not take whole (any bad record) is read again line
-/// by line, whose error is the one reported: the same file and line as ever.
+/// by line, whose error is the one reported: the same file and line as ever. `size` is the
+/// file's length in bytes.
 pub(crate) fn read_in<R: Read>(
     open: impl Fn() -> Result<R, String>,
+    size: u64,
     label: &str,
 ) -> Result<LoadedModel, String> {
-    read_in_blocks(open, label, in_parallel::block_bytes())
+    read_in_blocks(open, size, label, in_parallel::block_bytes())
 }
 
 /// [`read_in`] reading the triangles `block` bytes at a time (the tests use tiny blocks).
 pub(crate) fn read_in_blocks<R: Read>(
     open: impl Fn() -> Result<R, String>,
+    size: u64,
     label: &str,
     block: usize,
 ) -> Result<LoadedModel, String> {
@@ -41,7 +44,8 @@ pub(crate) fn read_in_blocks<R: Read>(
     let mut reader = open()?;
     io::copy(&mut (&mut reader).take(body_start), &mut io::sink())
         .map_err(|e| format!("{label}: cannot read: {e}"))?;
-    let empty = Body::new(MeshBuilder::new(header.name.clone()));
+    let capacity = header.triangles_to_expect(size.saturating_sub(body_start));
+    let empty = Body::new(MeshBuilder::with_capacity(header.name.clone(), capacity));
     match in_parallel::read_body(reader, &header.layout, empty, block, label)? {
         Some(body) => Ok(header.finish(body, label)),
         None => read_in_lines(Lines::new(BufReader::new(open()?), label)),
@@ -65,6 +69,10 @@ pub(crate) fn read_in_lines<R: BufRead>(lines: Lines<R>) -> Result<LoadedModel, 
     }
     Ok(header.finish(body, label))
 }
+
+/// The fewest bytes a triangle's four records take: `v0 0 0 0 0 0 0 0` and its newline, three
+/// times, then `face normal 0 0 0` (69 bytes), rounded down.
+const MIN_TRIANGLE_BYTES: u64 = 64;
 
 /// Everything before the first triangle.
 struct Header {
@@ -100,6 +108,13 @@ impl Header {
             layout,
             warnings: materials.warnings(label).into_iter().collect(),
         })
+    }
+
+    /// How many triangles to make room for in a body of `bytes` bytes: the header's count, but
+    /// never more than the body can hold, so that a header that lies costs no memory.
+    fn triangles_to_expect(&self, bytes: u64) -> usize {
+        let most = bytes / MIN_TRIANGLE_BYTES;
+        usize::try_from(self.triangles.min(most)).unwrap_or(0)
     }
 
     /// The model, with what was forgiven on the way.

@@ -74,7 +74,10 @@ pub(crate) fn fill(
     want: usize,
     label: &str,
 ) -> Result<bool, String> {
-    let want = want.saturating_sub(text.len()).max(1) as u64;
+    let want = want.saturating_sub(text.len()).max(1);
+    // Exactly, or `read_to_end` would double the block's room.
+    text.reserve_exact(want);
+    let want = want as u64;
     let read = reader
         .take(want)
         .read_to_end(text)

@@ -109,7 +109,7 @@ pub(crate) fn load_file(path: &Path, progress: &LoadProgress) -> Result<LoadedMo
     if obj {
         obj::read_obj(open, label)
     } else {
-        in_format::read_in(open, label)
+        in_format::read_in(open, metadata.len(), label)
     }
 }
 

@@ -20,12 +20,24 @@ pub(crate) struct MeshBuilder {
 
 impl MeshBuilder {
     pub(crate) fn new(name: String) -> Self {
+        Self::with_capacity(name, 0)
+    }
+
+    /// A builder with room for `triangles` triangles and about half as many vertices (a closed
+    /// mesh has half as many and two; an open one a few more, along its border), so that a
+    /// load whose header tells its size neither copies its vectors as they grow nor holds the
+    /// old and the new at once: its peak memory stays near the mesh's.
+    pub(crate) fn with_capacity(name: String, triangles: usize) -> Self {
+        let vertices = triangles / 2 + triangles / 32 + 16;
         Self {
             mesh: Mesh {
                 name,
+                positions: Vec::with_capacity(vertices),
+                normals: Vec::with_capacity(vertices),
+                triangles: Vec::with_capacity(triangles),
                 ..Mesh::default()
             },
-            index: CornerIndex::default(),
+            index: CornerIndex::with_capacity(vertices),
             textured: false,
         }
     }

@@ -27,7 +27,7 @@ fn both(text: &[u8], block: usize) -> (String, String, bool) {
         opened.set(opened.get() + 1);
         Ok(text)
     };
-    let parallel = read_in_blocks(open, "p.in", block);
+    let parallel = read_in_blocks(open, text.len() as u64, "p.in", block);
     let lines = read_in_lines(Lines::new(BufReader::new(text), "p.in"));
     (outcome(parallel), outcome(lines), opened.get() == 2)
 }
@@ -251,7 +251,8 @@ fn progress_reaches_the_end_and_a_cancelled_load_stops_between_blocks() {
                 progress: &progress,
             })
         };
-        let loaded = read_in_blocks(open, "c.in", 64 << 10).map(|m| m.mesh.triangles.len());
+        let loaded = read_in_blocks(open, text.len() as u64, "c.in", 64 << 10)
+            .map(|m| m.mesh.triangles.len());
         (loaded, progress.fraction())
     };
     assert_eq!(load(usize::MAX), (Ok(20_000), 1.0));
