@@ -9,6 +9,7 @@
 
 use crate::bin::Bins;
 use crate::lanes::{F8, LANES};
+use crate::queue::Unqueued;
 use crate::row::ROW;
 use crate::shading::{LaneShader, PixelShader};
 use crate::target::{NO_TRIANGLE, TileRect};
@@ -32,7 +33,15 @@ pub(crate) fn draw_tile_deferred<S: PixelShader + LaneShader>(
         let planes = || batch.planes(index, bins.used);
         let set_up = batch.set_up[index];
         let footprint = &batch.footprints[index];
-        draw_rows(rect, &mut rows, set_up, footprint, planes, &Number(number));
+        draw_rows(
+            rect,
+            &mut rows,
+            set_up,
+            footprint,
+            planes,
+            &Number(number),
+            &mut Unqueued,
+        );
     });
     let (color, _) = buffers.color.as_chunks_mut::<ROW>();
     let (visible, _) = buffers.visible.as_chunks::<ROW>();

@@ -33,6 +33,7 @@ mod lanes;
 mod lighting;
 mod primitives;
 pub mod probe;
+mod queue;
 mod rasterizer;
 mod row;
 mod setup;

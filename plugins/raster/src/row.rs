@@ -3,6 +3,7 @@
 //! outside the span masked off; while fates are recorded, the winner's index in the id buffer.
 
 use crate::lanes::{F8, LANES};
+use crate::queue::Queue;
 use crate::shading::PixelShader;
 use crate::varyings::Planes;
 
@@ -10,7 +11,7 @@ use crate::varyings::Planes;
 pub(crate) const ROW: usize = crate::target::TILE as usize;
 
 /// One block's lanes that pass: all ones where a lane passes, zero where it does not.
-type Mask = [u32; LANES];
+pub(crate) type Mask = [u32; LANES];
 
 /// Pixels lo..=hi (columns within the tile) of row y; the tile starts at column x0.
 #[derive(Clone, Copy)]
@@ -29,14 +30,15 @@ pub(crate) struct RowBuffers<'a> {
     pub ids: Option<(u32, &'a mut [u32; ROW])>,
 }
 
-/// The depth test and the shader over a span. Compiled twice: for the baseline x86-64 and,
+/// The depth test and the shader over a span, or the `queue` for blocks it takes. Compiled twice: for the baseline x86-64 and,
 /// chosen at run time, for AVX2 and FMA.
 #[inline(always)]
-pub(crate) fn draw_span<S: PixelShader>(
+pub(crate) fn draw_span<S: PixelShader, Q: Queue<S>>(
     shader: &S,
     planes: &Planes,
     span: Span,
     row: RowBuffers<'_>,
+    queue: &mut Q,
 ) {
     // The row's buffers go apart, as separate arguments in registers, to the function that is
     // not inlined.
@@ -44,37 +46,39 @@ pub(crate) fn draw_span<S: PixelShader>(
     #[cfg(target_arch = "x86_64")]
     if std::arch::is_x86_feature_detected!("avx2") && std::arch::is_x86_feature_detected!("fma") {
         // SAFETY: the CPU has the features the function is compiled for, checked just above.
-        unsafe { draw_span_avx2(shader, planes, span, color, depth, ids) };
+        unsafe { draw_span_avx2(shader, planes, span, color, depth, ids, queue) };
         return;
     }
-    draw_span_portable(shader, planes, span, color, depth, ids);
+    draw_span_portable(shader, planes, span, color, depth, ids, queue);
 }
 
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx2,fma")]
 #[inline(never)]
-fn draw_span_avx2<S: PixelShader>(
+fn draw_span_avx2<S: PixelShader, Q: Queue<S>>(
     shader: &S,
     planes: &Planes,
     span: Span,
     color: &mut [u32; ROW],
     depth: &mut [f32; ROW],
     ids: Option<(u32, &mut [u32; ROW])>,
+    queue: &mut Q,
 ) {
-    draw_span_portable(shader, planes, span, color, depth, ids);
+    draw_span_portable(shader, planes, span, color, depth, ids, queue);
 }
 
 /// Works on whole blocks of eight pixels of the tile's row (the row is 64 wide, so they always
 /// exist), with lanes outside the span masked off: fixed-size, branch-free code is what the
 /// compiler vectorises.
 #[inline(always)]
-fn draw_span_portable<S: PixelShader>(
+fn draw_span_portable<S: PixelShader, Q: Queue<S>>(
     shader: &S,
     planes: &Planes,
     span: Span,
     color: &mut [u32; ROW],
     depth: &mut [f32; ROW],
     mut ids: Option<(u32, &mut [u32; ROW])>,
+    queue: &mut Q,
 ) {
     let fy = span.y as f32 + 0.5;
     let z_row = planes.depth_at(span.x0 as f32 + 0.5, fy);
@@ -95,6 +99,9 @@ fn draw_span_portable<S: PixelShader>(
             for (id, p) in ids.iter_mut().zip(pass) {
                 *id = (*index & p) | (*id & !p);
             }
+        }
+        if queue.take(span.y, base, &pass) {
+            continue;
         }
         let x = F8::ramp((span.x0 + base as i32) as f32 + 0.5);
         let shaded = shader.shade(planes, x, fy);

@@ -9,7 +9,7 @@ use crate::lanes::{F8, LANES, V8};
 use crate::lighting::Light;
 use crate::target::pack8;
 use crate::texture::{Filter, Mips};
-use crate::varyings::{EYE, INTENSITY, Interpolant, LanePlanes, NORMAL, Planes};
+use crate::varyings::{EYE, INTENSITY, Interpolant, NORMAL, Planes};
 
 /// The colours of eight pixels of a triangle (its `planes`), centred at (x, y). Inlined into
 /// the row loop (see `row::draw_span`).
@@ -22,11 +22,13 @@ pub(crate) trait Colour: Sync {
     fn colour<P: Interpolant>(&self, planes: &P, x: F8, y: f32, w: F8) -> V8;
 }
 
-/// A shading that colours eight pixels of different triangles at once (`LanePlanes`), as a
-/// tile does after its depth test (see `deferred`). Untextured only: texturing's level of
-/// detail takes differences across each quad of pixels of one triangle.
+/// A shading that colours eight pixels that need not be a row of one triangle: of different
+/// triangles (`LanePlanes`), as a tile does after its depth test (see `deferred`), or of one
+/// triangle's different rows (`AtPoints`), as queued pixels are (see `queue`). Untextured
+/// only: texturing's level of detail takes differences across each quad of pixels of one
+/// triangle.
 pub(crate) trait LaneShader: Sync {
-    fn shade_lanes(&self, planes: &LanePlanes, x: F8, y: f32) -> [u32; LANES];
+    fn shade_lanes<P: Interpolant>(&self, planes: &P, x: F8, y: f32) -> [u32; LANES];
 }
 
 /// What the texture does to a colour: nothing, or modulate it by the texel.
@@ -52,7 +54,7 @@ impl<C: Colour, T: Texturing> PixelShader for Shaded<C, T> {
 
 impl<C: Colour> LaneShader for Shaded<C, Untextured> {
     #[inline(always)]
-    fn shade_lanes(&self, planes: &LanePlanes, x: F8, y: f32) -> [u32; LANES] {
+    fn shade_lanes<P: Interpolant>(&self, planes: &P, x: F8, y: f32) -> [u32; LANES] {
         let w = planes.w(x, y);
         pack8(self.colour.colour(planes, x, y, w))
     }

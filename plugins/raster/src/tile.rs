@@ -6,6 +6,7 @@
 use crate::bin::{Batch, Bins};
 use crate::edge::{Cover, Edge, row_inside, row_inside_narrow};
 use crate::lanes::LANES;
+use crate::queue::Queue;
 use crate::row::{ROW, RowBuffers, Span, draw_span};
 use crate::setup::Footprint;
 use crate::shading::PixelShader;
@@ -31,14 +32,15 @@ impl TileBuffers<'_> {
 }
 
 /// Clears tile number `tile` to `background`, the far plane and no triangle, then draws the
-/// triangles binned there, batch after batch.
-pub(crate) fn draw_tile<S: PixelShader>(
+/// triangles binned there, batch after batch, partial blocks shaded through `queue`.
+pub(crate) fn draw_tile<S: PixelShader, Q: Queue<S>>(
     rect: TileRect,
     mut buffers: TileBuffers<'_>,
     background: u32,
     bins: &Bins,
     tile: usize,
     shader: &S,
+    queue: &mut Q,
 ) {
     buffers.clear(background);
     let mut rows = Rows::new(buffers.color, buffers.depth, buffers.ids);
@@ -46,7 +48,7 @@ pub(crate) fn draw_tile<S: PixelShader>(
         let planes = || batch.planes(index, bins.used);
         let set_up = batch.set_up[index];
         let footprint = &batch.footprints[index];
-        draw_rows(rect, &mut rows, set_up, footprint, planes, shader);
+        draw_rows(rect, &mut rows, set_up, footprint, planes, shader, queue);
     });
 }
 
@@ -79,15 +81,17 @@ impl<'a> Rows<'a> {
 }
 
 /// Set-up triangle `index`, drawing where `footprint` says, in the tile `rect`: each of its
-/// rows there. Its `planes` are unpacked only when it has a row to draw.
+/// rows there, its pixels all shaded (those `queue` takes too) before it returns. Its `planes`
+/// are unpacked only when it has a row to draw.
 #[inline(always)]
-pub(crate) fn draw_rows<S: PixelShader>(
+pub(crate) fn draw_rows<S: PixelShader, Q: Queue<S>>(
     rect: TileRect,
     rows: &mut Rows<'_>,
     index: u32,
     footprint: &Footprint,
     planes: impl FnOnce() -> Planes,
     shader: &S,
+    queue: &mut Q,
 ) {
     let [x0, y0, x1, y1] = footprint.bbox;
     let area = TileRect {
@@ -127,9 +131,10 @@ pub(crate) fn draw_rows<S: PixelShader>(
             if let Some(planes) = planes.take() {
                 unpacked = planes();
             }
-            draw_span(shader, &unpacked, span, buffers);
+            draw_span(shader, &unpacked, span, buffers, queue);
         }
     }
+    queue.shade(shader, &unpacked, rows.color);
 }
 
 /// The edges that cross `area` (the first `count` of them), or None when one leaves all of it

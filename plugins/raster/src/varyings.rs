@@ -321,6 +321,37 @@ impl LanePlanes {
 
 interpolant!(LanePlanes);
 
+/// One triangle's planes at eight pixel centres anywhere in a tile, lane i's at
+/// (x_i, y + dy_i): what the pixels of small spans, queued (see `queue`), are shaded from.
+/// With y = 0 a lane's value is the one [`Planes`] gives in its own row, bit for bit.
+pub(crate) struct AtPoints<'a> {
+    pub planes: &'a Planes,
+    pub dy: F8,
+}
+
+impl AtPoints<'_> {
+    /// As [`Planes`]' `lanes_at`, each lane in its own row.
+    #[inline(always)]
+    fn lanes_at(&self, plane: &Plane, x: F8, y: f32) -> F8 {
+        let [ox, oy] = self.planes.origin.map(F8::splat);
+        let y = F8::splat(y) + self.dy;
+        let row = F8::splat(plane.a) + F8::splat(plane.dady) * (y - oy);
+        (x - ox).mul_add(F8::splat(plane.dadx), row)
+    }
+}
+
+impl Interpolant for AtPoints<'_> {
+    #[inline(always)]
+    fn inv_w_at(&self, x: F8, y: f32) -> F8 {
+        self.lanes_at(&self.planes.inv_w, x, y)
+    }
+
+    #[inline(always)]
+    fn varying_at(&self, k: usize, x: F8, y: f32) -> F8 {
+        self.lanes_at(&self.planes.varyings[k], x, y)
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
