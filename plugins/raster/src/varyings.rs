@@ -112,6 +112,7 @@ impl Planes {
 
     /// The planes through three corners' window positions (x, y, depth, 1/w) and varyings:
     /// depth always, 1/w and the varyings `used` when there are any.
+    #[inline(always)]
     pub(crate) fn new(
         window: [[f32; 4]; 3],
         varyings: [&[f32; VARYINGS]; 3],
