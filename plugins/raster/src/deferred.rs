@@ -10,9 +10,8 @@
 use crate::bin::Bins;
 use crate::lanes::{F8, LANES};
 use crate::queue::Unqueued;
-use crate::row::ROW;
 use crate::shading::{LaneShader, PixelShader};
-use crate::target::{NO_TRIANGLE, TileRect};
+use crate::target::{NO_TRIANGLE, ROW, TileRect};
 use crate::tile::{Rows, TileBuffers, draw_rows, for_each_binned};
 use crate::varyings::{LanePlanes, Planes};
 

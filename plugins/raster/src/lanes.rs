@@ -6,6 +6,9 @@ use std::ops::{Add, Div, Mul, Neg, Sub};
 
 pub(crate) const LANES: usize = 8;
 
+/// Which lanes of a block pass a test: all ones where a lane passes, zero where it does not.
+pub(crate) type Mask = [u32; LANES];
+
 /// `[T; 3]::map`, which the compiler does not always inline into setup's hot loop (it then
 /// costs more than the arithmetic).
 #[inline(always)]

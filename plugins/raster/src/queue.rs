@@ -6,10 +6,9 @@
 //! (`AtPoints`). The colours are those of shading each block where it passed, bit for bit,
 //! and a triangle's pixels are all written before the next triangle's.
 
-use crate::lanes::{F8, LANES};
-use crate::row::{Mask, ROW};
+use crate::lanes::{F8, LANES, Mask};
 use crate::shading::{LaneShader, PixelShader};
-use crate::target::TileRect;
+use crate::target::{ROW, TILE_PIXELS, TileRect};
 use crate::varyings::{AtPoints, Planes};
 
 /// What a triangle's blocks that pass the depth test become: shaded where they pass
@@ -39,7 +38,7 @@ impl<S: PixelShader> Queue<S> for Unqueued {
 }
 
 /// A triangle can cover the whole tile, and `take` writes a whole block past the last pixel.
-const CAPACITY: usize = crate::target::TILE_PIXELS + LANES;
+const CAPACITY: usize = TILE_PIXELS + LANES;
 
 /// The pixels of one tile waiting to be shaded, as their index in the tile (row · 64 + column).
 pub(crate) struct Pending {

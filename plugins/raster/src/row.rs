@@ -2,16 +2,11 @@
 //! eight lanes at a time (the hierarchy is tile → rows → blocks of eight lanes), with the lanes
 //! outside the span masked off; while fates are recorded, the winner's index in the id buffer.
 
-use crate::lanes::{F8, LANES};
+use crate::lanes::{F8, LANES, Mask};
 use crate::queue::Queue;
 use crate::shading::PixelShader;
+use crate::target::ROW;
 use crate::varyings::Planes;
-
-/// Pixels in one row of a tile.
-pub(crate) const ROW: usize = crate::target::TILE as usize;
-
-/// One block's lanes that pass: all ones where a lane passes, zero where it does not.
-pub(crate) type Mask = [u32; LANES];
 
 /// Pixels lo..=hi (columns within the tile) of row y; the tile starts at column x0.
 #[derive(Clone, Copy)]

@@ -10,6 +10,8 @@ use crate::lanes::{F8, LANES, V8};
 /// Tile edge in pixels.
 pub(crate) const TILE: i32 = 64;
 pub(crate) const TILE_PIXELS: usize = (TILE * TILE) as usize;
+/// Pixels in one row of a tile.
+pub(crate) const ROW: usize = TILE as usize;
 
 /// A tile's pixel rectangle, inclusive, clipped to the viewport.
 #[derive(Clone, Copy, Debug)]

@@ -7,10 +7,10 @@ use crate::bin::{Batch, Bins};
 use crate::edge::{Cover, Edge, row_inside, row_inside_narrow};
 use crate::lanes::LANES;
 use crate::queue::Queue;
-use crate::row::{ROW, RowBuffers, Span, draw_span};
+use crate::row::{RowBuffers, Span, draw_span};
 use crate::setup::Footprint;
 use crate::shading::PixelShader;
-use crate::target::{NO_TRIANGLE, TileRect};
+use crate::target::{NO_TRIANGLE, ROW, TileRect};
 use crate::varyings::Planes;
 
 /// One tile's buffers: colour, depth, the id buffer (empty when not recorded) and the
