@@ -246,7 +246,7 @@ fn a_200_mb_model_loads_in_memory_that_follows_its_mesh() {
     let grid = close2gl_testkit::write_grid_in(&path, "grid", 800).expect("write the grid");
     assert!(grid.bytes > 190 * MIB, "{} B", grid.bytes);
     let model = model_memory(&dir, &path, grid, Stage::App);
-    // The mesh; while it loads, the loader's index of corners (about a third of the mesh); then
+    // The mesh; while it loads, the loader's index of corners (about a quarter of the mesh); then
     // the first frame's pipeline buffers for 1.28 M triangles (about twice the mesh): never the
     // file. Measured: 3.2 x the mesh, about half the file.
     assert!(model <= 4 * grid.mesh_bytes(), "{model} B");
