@@ -19,9 +19,11 @@ use crate::matrices::ClipTransform;
 use crate::stage::{CUT, Emit, RasterEmit, RasterOut, Stage, corner, process, to_window_depth};
 
 /// Vertices and triangles per parallel task: big enough to amortise scheduling, small enough to
-/// balance two cores when one side of the model is clipped away.
-const VERTEX_CHUNK: usize = 16 * 1024;
-const TRIANGLE_CHUNK: usize = 16 * 1024;
+/// balance two cores when one side of the model is clipped away, and to split a cow-sized model
+/// (8,192 triangles, 4,096 vertices) across them (measured on 2 cores, from 16 Ki each: the
+/// knot's software frame at 640×480 4 % faster, a million triangles' geometry 2 %).
+const VERTEX_CHUNK: usize = 2 * 1024;
+const TRIANGLE_CHUNK: usize = 4 * 1024;
 
 /// One task's share of the output.
 #[derive(Default)]
