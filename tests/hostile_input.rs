@@ -59,13 +59,8 @@ struct ChildLoad {
     stderr: String,
 }
 
-/// Loads `model` as the app's start-up does, in a fresh copy of this test binary.
-fn load_in_child(model: &Path) -> ChildLoad {
-    load_in_child_to(model, Stage::App)
-}
-
-/// Loads `model` up to `stage` in a fresh copy of this test binary.
-fn load_in_child_to(model: &Path, stage: Stage) -> ChildLoad {
+/// Loads `model` as the app's start-up does, up to `stage`, in a fresh copy of this test binary.
+fn load_in_child(model: &Path, stage: Stage) -> ChildLoad {
     let mut child = Command::new(std::env::current_exe().expect("this test binary"));
     child
         .args([
@@ -151,15 +146,10 @@ fn one_triangle_in(triangles: &str, materials: &str) -> Vec<u8> {
     .into_bytes()
 }
 
-/// The peak memory of loading an honest one-triangle file: what the process costs before any
-/// model does.
-fn baseline_rss(dir: &TempDir) -> u64 {
-    baseline_rss_to(dir, Stage::App)
-}
-
-/// [`baseline_rss`] up to `stage`.
-fn baseline_rss_to(dir: &TempDir, stage: Stage) -> u64 {
-    let honest = load_in_child_to(&dir.write("honest.in", &one_triangle_in("1", "1")), stage);
+/// The peak memory of loading an honest one-triangle file up to `stage`: what the process
+/// costs before any model does.
+fn baseline_rss(dir: &TempDir, stage: Stage) -> u64 {
+    let honest = load_in_child(&dir.write("honest.in", &one_triangle_in("1", "1")), stage);
     assert_eq!(honest.loaded, Ok(1));
     honest.peak_rss
 }
@@ -178,12 +168,15 @@ const NOISE: u64 = 8 * MIB;
 #[test]
 fn a_header_claiming_billions_costs_no_memory() {
     let dir = TempDir::new("lying_header");
-    let baseline = baseline_rss(&dir);
+    let baseline = baseline_rss(&dir, Stage::App);
     for claim in ["4000000000", "18446744073709551615"] {
-        let triangles = load_in_child(&dir.write("triangles.in", &one_triangle_in(claim, "1")));
+        let triangles = load_in_child(
+            &dir.write("triangles.in", &one_triangle_in(claim, "1")),
+            Stage::App,
+        );
         assert_eq!(triangles.loaded, Ok(1));
         let materials = dir.write("materials.in", &one_triangle_in("1", claim));
-        let refused = load_in_child(&materials);
+        let refused = load_in_child(&materials, Stage::App);
         assert_eq!(
             refused.loaded,
             Err(format!(
@@ -206,7 +199,7 @@ fn a_header_claiming_billions_costs_no_memory() {
 #[test]
 fn one_endless_line_is_refused_without_reading_it_whole() {
     let dir = TempDir::new("endless_line");
-    let baseline = baseline_rss(&dir);
+    let baseline = baseline_rss(&dir, Stage::App);
     let endless = dir.0.join("endless.in");
     let mut file = std::io::BufWriter::new(std::fs::File::create(&endless).expect("create"));
     let chunk = vec![b'7'; MIB as usize];
@@ -217,7 +210,7 @@ fn one_endless_line_is_refused_without_reading_it_whole() {
     let endless_obj = dir.0.join("endless.obj");
     std::os::unix::fs::symlink(&endless, &endless_obj).expect("symlink");
     for path in [endless, endless_obj] {
-        let child = load_in_child(&path);
+        let child = load_in_child(&path, Stage::App);
         let error = child.loaded.expect_err("refused");
         assert!(
             error.starts_with(&format!(
@@ -273,8 +266,8 @@ fn a_big_obj_loads_without_holding_its_text() {
 /// What loading the grid at `path` up to `stage` adds to the peak memory of a fresh process;
 /// prints it.
 fn model_memory(dir: &TempDir, path: &Path, grid: close2gl_testkit::GridFile, stage: Stage) -> u64 {
-    let baseline = baseline_rss_to(dir, stage);
-    let child = load_in_child_to(path, stage);
+    let baseline = baseline_rss(dir, stage);
+    let child = load_in_child(path, stage);
     assert_eq!(child.loaded, Ok(grid.triangles), "{}", child.stderr);
     let mesh = grid.mesh_bytes();
     let model = child.peak_rss.saturating_sub(baseline);

@@ -25,8 +25,8 @@ pub(crate) struct RowBuffers<'a> {
     pub ids: Option<(u32, &'a mut [u32; ROW])>,
 }
 
-/// The depth test and the shader over a span, or the `queue` for blocks it takes. Compiled twice: for the baseline x86-64 and,
-/// chosen at run time, for AVX2 and FMA.
+/// The depth test and the shader over a span, or the `queue` for blocks it takes. Compiled
+/// twice: for the baseline x86-64 and, chosen at run time, for AVX2 and FMA.
 #[inline(always)]
 pub(crate) fn draw_span<S: PixelShader, Q: Queue<S>>(
     shader: &S,
