@@ -26,7 +26,7 @@ use crate::target::{NO_TRIANGLE, TILE_PIXELS, Target, TileRect, pack};
 use crate::texture::{Bilinear, Filter, Mips, Nearest, Trilinear};
 use crate::tile::{TileBuffers, draw_tile};
 use crate::varyings::{Used, varyings_used};
-use crate::vertex::{Vertex, vertex_stage};
+use crate::vertex::{Vertex, farthest_from, vertex_stage};
 
 /// The rasterizer's buffers, reused from frame to frame: a steady frame allocates nothing.
 #[derive(Resource, Default)]
@@ -76,10 +76,16 @@ impl SoftwareRasterizer {
         fates: &mut Fates,
     ) {
         let light_eye = ClipTransform::new(camera).eye(lighting.light_position);
+        let light = Light::new(lighting, light_eye, settings.shading);
+        // Gouraud lights each vertex once: a pass to find the farthest would cost what it saves.
+        let light = match settings.shading {
+            Shading::Phong => light.reaching(farthest_from(light_eye, &geometry.raster.vertices)),
+            _ => light,
+        };
         let frame = Frame {
             geometry,
             shading: settings.shading,
-            light: Light::new(lighting, light_eye, settings.shading),
+            light,
             textured: settings.texture && geometry.raster.textured && self.mips.is_set(),
         };
         let size = geometry.viewport;

@@ -3,7 +3,7 @@
 //! parallel, then the vertices clipping made, blended from their triangle's corners as a GPU's
 //! clipper blends them.
 
-use close2gl_core::{RasterGeometry, Shading};
+use close2gl_core::{RasterGeometry, RasterVertex, Shading};
 use glam::Vec3;
 use rayon::prelude::*;
 
@@ -98,6 +98,17 @@ pub(crate) fn vertex_stage(
             varyings,
         };
     }
+}
+
+/// The distance from `point` to the farthest of `vertices` (eye positions): with the cuts
+/// blended from them, no point of the frame is farther.
+pub(crate) fn farthest_from(point: Vec3, vertices: &[RasterVertex]) -> f32 {
+    let farther = |d2: f32, v: &RasterVertex| d2.max(point.distance_squared(v.eye.into()));
+    vertices
+        .par_chunks(CHUNK)
+        .map(|chunk| chunk.iter().fold(0.0, farther))
+        .reduce(|| 0.0, f32::max)
+        .sqrt()
 }
 
 /// A vertex's varyings from its eye position, normal and texture coordinates.
