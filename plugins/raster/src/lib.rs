@@ -17,7 +17,8 @@
 //! varyings, lit by `lighting` for Gouraud) → `bin` (setup and binning in one parallel pass, in
 //! submission order: each primitive to triangles by `primitives` and `setup`, with `edge`'s
 //! fixed-point edge functions and `varyings`' planes, those that cover no pixel centre dropped
-//! before their planes are built, the rest listed in the 64×64 tiles they touch) → `tile` (a
+//! before their planes are built, the rest listed in the 64×64 tiles they touch) → the tiles
+//! shared out between the threads by `schedule` → `tile` (a
 //! narrow triangle's rows found pixel by pixel, a wide one's solved; or `deferred`, a tile of
 //! small Phong-shaded triangles depth-tested first and shaded once per pixel after) → `row` →
 //! `lanes`, the hierarchy tile → rows
@@ -36,6 +37,7 @@ pub mod probe;
 mod queue;
 mod rasterizer;
 mod row;
+mod schedule;
 mod setup;
 mod shading;
 mod target;

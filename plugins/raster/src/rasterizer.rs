@@ -10,8 +10,6 @@ use close2gl_core::{
     TextureFilter,
 };
 use close2gl_pipeline::matrices::ClipTransform;
-use rayon::iter::Either;
-use rayon::prelude::*;
 
 use crate::bin::{Bins, Primitives};
 use crate::deferred::draw_tile_deferred;
@@ -19,10 +17,11 @@ use crate::fates::Rasterized;
 use crate::lighting::Light;
 use crate::primitives::{SetupParams, triangles_per_primitive};
 use crate::queue::{Pending, Unqueued};
+use crate::schedule::Schedule;
 use crate::shading::{
     Colour, Flat, Gouraud, LaneShader, Phong, PixelShader, Shaded, Textured, Untextured,
 };
-use crate::target::{NO_TRIANGLE, TILE_PIXELS, Target, TileRect, pack};
+use crate::target::{NO_TRIANGLE, Target, TileRect, pack};
 use crate::texture::{Bilinear, Filter, Mips, Nearest, Trilinear};
 use crate::tile::{TileBuffers, draw_tile};
 use crate::varyings::{Used, varyings_used};
@@ -34,6 +33,7 @@ pub struct SoftwareRasterizer {
     vertices: Vec<Vertex>,
     bins: Bins,
     target: Target,
+    schedule: Schedule,
     mips: Mips,
     /// Scratch space for recording fates.
     flags: Vec<u8>,
@@ -176,6 +176,7 @@ impl SoftwareRasterizer {
     ) {
         let tiles = Tiles {
             target: &mut self.target,
+            schedule: &mut self.schedule,
             bins: &self.bins,
             background,
             defer_from: DEFER_FROM,
@@ -212,6 +213,7 @@ const DEFER_FROM: usize = 512;
 /// What every tile is drawn from, and into.
 struct Tiles<'a> {
     target: &'a mut Target,
+    schedule: &'a mut Schedule,
     bins: &'a Bins,
     background: u32,
     /// Triangles binned in a tile from which `draw_deferred` defers it ([`DEFER_FROM`]).
@@ -250,36 +252,17 @@ impl Tiles<'_> {
         );
     }
 
-    /// `draw(rect, buffers, background, bins, tile)` for every tile, in parallel. Each tile
-    /// gets its own piece of the id buffer, or an empty one when it is not recorded.
+    /// `draw(rect, buffers, background, bins, tile)` for every tile, in parallel, the most
+    /// binned first (see `schedule`). Each tile gets its own piece of the id buffer, or an
+    /// empty one when it is not recorded.
     fn each(self, draw: impl Fn(TileRect, TileBuffers<'_>, u32, &Bins, usize) + Sync) {
         let grid = self.target.grid;
         let (bins, background) = (self.bins, self.background);
-        let ids = match self.target.ids.is_empty() {
-            true => Either::Left(
-                (0..grid.tiles())
-                    .into_par_iter()
-                    .map(|_| <&mut [u32]>::default()),
-            ),
-            false => Either::Right(self.target.ids.par_chunks_mut(TILE_PIXELS)),
-        };
-        self.target
-            .color
-            .par_chunks_mut(TILE_PIXELS)
-            .zip(self.target.depth.par_chunks_mut(TILE_PIXELS))
-            .zip(self.target.visible.par_chunks_mut(TILE_PIXELS))
-            .zip(ids)
-            .enumerate()
-            .for_each(|(tile, (((color, depth), visible), ids))| {
-                let rect = grid.tile_rect(tile);
-                let buffers = TileBuffers {
-                    color,
-                    depth,
-                    ids,
-                    visible,
-                };
-                draw(rect, buffers, background, bins, tile);
-            });
+        self.schedule.run(
+            self.target,
+            |tile| bins.binned(tile),
+            |tile, buffers| draw(grid.tile_rect(tile), buffers, background, bins, tile),
+        );
     }
 }
 
@@ -389,6 +372,7 @@ mod tests {
         for way in ["deferred", "queued", "unqueued"] {
             let tiles = Tiles {
                 target: &mut rasterizer.target,
+                schedule: &mut rasterizer.schedule,
                 bins: &rasterizer.bins,
                 background,
                 defer_from: if way == "deferred" { 0 } else { usize::MAX },
