@@ -2,13 +2,12 @@
 //! orders of magnitude, and a thread left drawing a heavy tile at the end keeps the others
 //! idle: with the tile range halved between the threads (rayon's way), the knot at 640×480
 //! lost 12 % of its two cores so. Handing the tiles out one at a time, costliest first, to
-//! whichever thread is free (the greedy "longest processing time first" schedule) fixed that
-//! but made 1920×1080 5 % slower: each frame moved tiles' memory to another core's cache.
-//! So each thread owns a share of the tiles, the same from frame to frame while the costs
-//! are: a run of tiles of about equal cost. It draws its share costliest first, then takes
-//! the cheapest tiles left in the others' shares, so that the idle tail is a cheap tile.
+//! whichever thread is free fixed that but made 1920×1080 5 % slower: each frame moved tiles'
+//! memory to another core's cache. So each thread owns a run of tiles of about equal cost,
+//! the same from frame to frame while the costs are, and draws it in order (sorting a run by
+//! cost made the million-triangle grid 7 % slower); a thread done with its run takes tiles
+//! from the far end of the others'.
 
-use std::cmp::Reverse;
 use std::marker::PhantomData;
 use std::sync::atomic::{AtomicU64, Ordering};
 
@@ -17,13 +16,11 @@ use rayon::prelude::*;
 use crate::target::{TILE_PIXELS, Target};
 use crate::tile::TileBuffers;
 
-/// The order the tiles are drawn in, kept from frame to frame so that a steady frame
-/// allocates nothing.
+/// Each thread's run of tiles, kept from frame to frame so that a steady frame allocates
+/// nothing.
 #[derive(Debug, Default)]
 pub(crate) struct Schedule {
-    /// Every tile once, with its cost: the shares one after the other, each costliest first.
-    order: Vec<(Reverse<usize>, usize)>,
-    /// Each thread's share of `order`, as the places not yet taken (see [`Share`]).
+    /// The tiles of each run not yet taken (see [`Share`]).
     shares: Vec<AtomicU64>,
 }
 
@@ -38,7 +35,7 @@ impl Schedule {
     ) {
         let threads = rayon::current_num_threads();
         self.plan(target.grid.tiles(), threads, cost);
-        let handout = Handout::new(target, &self.order, &self.shares);
+        let handout = Handout::new(target, &self.shares);
         (0..threads).into_par_iter().with_max_len(1).for_each(|_| {
             let own = rayon::current_thread_index().unwrap_or(0) % threads;
             let others = (1..threads).map(|i| (own + i) % threads);
@@ -53,23 +50,19 @@ impl Schedule {
     }
 
     /// Cuts the tiles into `threads` runs of about equal cost (an empty tile still costs its
-    /// clearing), each sorted costliest first.
+    /// clearing).
     fn plan(&mut self, tiles: usize, threads: usize, cost: impl Fn(usize) -> usize) {
-        self.order.clear();
-        self.order
-            .extend((0..tiles).map(|tile| (Reverse(cost(tile) + 1), tile)));
-        let total: usize = self.order.iter().map(|(Reverse(c), _)| c).sum();
+        let total: usize = (0..tiles).map(|tile| cost(tile) + 1).sum();
         self.shares.resize_with(threads, || AtomicU64::new(0));
         let (mut start, mut sum) = (0, 0);
-        for (share, next) in self.shares.iter_mut().enumerate() {
+        for (share, run) in self.shares.iter_mut().enumerate() {
             let goal = total * (share + 1) / threads;
             let mut end = start;
             while end < tiles && (sum < goal || share + 1 == threads) {
-                sum += self.order[end].0.0;
+                sum += cost(end) + 1;
                 end += 1;
             }
-            self.order[start..end].sort_unstable();
-            *next.get_mut() = Share {
+            *run.get_mut() = Share {
                 front: start,
                 back: end,
             }
@@ -79,7 +72,7 @@ impl Schedule {
     }
 }
 
-/// The places of a share not yet taken: its thread takes from the front, the others from the
+/// The tiles of a run not yet taken: its thread takes from the front, the others from the
 /// back, both through one atomic word so that the two ends never pass each other.
 #[derive(Clone, Copy, Debug, PartialEq)]
 struct Share {
@@ -100,7 +93,7 @@ impl Share {
     }
 }
 
-/// Which end of a share to take from.
+/// Which end of a run to take from.
 #[derive(Clone, Copy, Debug)]
 enum End {
     Front,
@@ -109,7 +102,6 @@ enum End {
 
 /// Hands out each tile's piece of the target's buffers once, to one thread.
 struct Handout<'a> {
-    order: &'a [(Reverse<usize>, usize)],
     shares: &'a [AtomicU64],
     color: *mut u32,
     depth: *mut f32,
@@ -123,14 +115,10 @@ struct Handout<'a> {
 unsafe impl Sync for Handout<'_> {}
 
 impl<'a> Handout<'a> {
-    /// `order` holds every tile of `target` once, and `shares` cut it into runs that do not
-    /// overlap (`Schedule::plan` makes them so).
-    fn new(
-        target: &'a mut Target,
-        order: &'a [(Reverse<usize>, usize)],
-        shares: &'a [AtomicU64],
-    ) -> Handout<'a> {
-        let pixels = order.len() * TILE_PIXELS;
+    /// `shares` are runs of `target`'s tiles that do not overlap (`Schedule::plan` makes them
+    /// so).
+    fn new(target: &'a mut Target, shares: &'a [AtomicU64]) -> Handout<'a> {
+        let pixels = target.grid.tiles() * TILE_PIXELS;
         let buffers = [target.color.len(), target.depth.len(), target.visible.len()];
         assert!(
             buffers.iter().all(|&len| len == pixels),
@@ -138,7 +126,6 @@ impl<'a> Handout<'a> {
         );
         assert!(target.ids.is_empty() || target.ids.len() == pixels);
         Handout {
-            order,
             shares,
             color: target.color.as_mut_ptr(),
             depth: target.depth.as_mut_ptr(),
@@ -151,16 +138,16 @@ impl<'a> Handout<'a> {
         }
     }
 
-    /// The tile at one `end` of `share` and its buffers, or None when the share is all taken.
+    /// The tile at one `end` of `share` and its buffers, or None when the run is all taken.
     fn take(&self, share: usize, end: End) -> Option<(usize, TileBuffers<'a>)> {
         let word = &self.shares[share];
         let mut current = word.load(Ordering::Relaxed);
-        let place = loop {
+        let tile = loop {
             let Share { front, back } = Share::unpack(current);
             if front >= back {
                 return None;
             }
-            let (place, rest) = match end {
+            let (tile, rest) = match end {
                 End::Front => (
                     front,
                     Share {
@@ -182,15 +169,13 @@ impl<'a> Handout<'a> {
                 Ordering::Relaxed,
                 Ordering::Relaxed,
             ) {
-                Ok(_) => break place,
+                Ok(_) => break tile,
                 Err(now) => current = now,
             }
         };
-        let (_, tile) = self.order[place];
         let at = tile * TILE_PIXELS;
-        // SAFETY: a share's two ends move towards each other in one atomic word, so each place
-        // of `order` is taken once; `order` holds each tile once, so no tile's pieces are
-        // handed out twice; `new` checked that every tile lies within the buffers (the id
+        // SAFETY: a run's two ends move towards each other in one atomic word and the runs do
+        // not overlap, so no tile's pieces are handed out twice; `new` checked that every tile lies within the buffers (the id
         // buffer when it is recorded), which stay mutably borrowed for 'a.
         let buffers = unsafe {
             TileBuffers {
@@ -246,7 +231,7 @@ mod tests {
     }
 
     #[test]
-    fn shares_are_runs_of_about_equal_cost_each_costliest_first() {
+    fn shares_are_runs_of_about_equal_cost() {
         // Costs (plus 1 for clearing) 1, 1, 9, 1, 5, 1, 1, 2: a total of 21, 10.5 per share.
         let costs = [0, 0, 8, 0, 4, 0, 0, 1];
         let mut schedule = Schedule::default();
@@ -260,8 +245,6 @@ mod tests {
             shares,
             [Share { front: 0, back: 3 }, Share { front: 3, back: 8 }]
         );
-        let tiles: Vec<usize> = schedule.order.iter().map(|&(_, tile)| tile).collect();
-        assert_eq!(tiles, [2, 0, 1, 4, 7, 3, 5, 6]);
         // Three threads on one costly tile: the shares after it are empty, not missing.
         schedule.plan(2, 3, |tile| [100, 0][tile]);
         let shares: Vec<Share> = schedule
@@ -274,12 +257,12 @@ mod tests {
     }
 
     #[test]
-    fn a_share_taken_from_both_ends_gives_each_place_once() {
+    fn a_run_taken_from_both_ends_gives_each_tile_once() {
         let mut target = Target::default();
         target.resize(64 * 4, 64, false);
         let mut schedule = Schedule::default();
         schedule.plan(4, 1, |_| 0);
-        let handout = Handout::new(&mut target, &schedule.order, &schedule.shares);
+        let handout = Handout::new(&mut target, &schedule.shares);
         let mut taken = Vec::new();
         for end in [
             End::Front,
