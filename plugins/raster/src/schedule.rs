@@ -36,17 +36,21 @@ impl Schedule {
         let threads = rayon::current_num_threads();
         self.plan(target.grid.tiles(), threads, cost);
         let handout = Handout::new(target, &self.shares);
-        (0..threads).into_par_iter().with_max_len(1).for_each(|_| {
-            let own = rayon::current_thread_index().unwrap_or(0) % threads;
-            let others = (1..threads).map(|i| (own + i) % threads);
-            let take = |share, end| {
-                while let Some((tile, buffers)) = handout.take(share, end) {
-                    draw(tile, buffers);
-                }
-            };
-            take(own, End::Front);
-            others.for_each(|share| take(share, End::Back));
-        });
+        // Task k owns run k. Rayon runs the first task on the calling thread, as it runs the
+        // first half of every parallel loop, such as the copy-out's (`Target::resolve`).
+        (0..threads)
+            .into_par_iter()
+            .with_max_len(1)
+            .for_each(|own| {
+                let others = (1..threads).map(|i| (own + i) % threads);
+                let take = |share, end| {
+                    while let Some((tile, buffers)) = handout.take(share, end) {
+                        draw(tile, buffers);
+                    }
+                };
+                take(own, End::Front);
+                others.for_each(|share| take(share, End::Back));
+            });
     }
 
     /// Cuts the tiles into `threads` runs of about equal cost (an empty tile still costs its
