@@ -16,14 +16,14 @@ use crate::deferred::draw_tile_deferred;
 use crate::fates::Rasterized;
 use crate::lighting::Light;
 use crate::primitives::{SetupParams, triangles_per_primitive};
-use crate::queue::{Pending, Unqueued};
+use crate::queue::Pending;
 use crate::schedule::Schedule;
 use crate::shading::{
     Colour, Flat, Gouraud, LaneShader, Phong, PixelShader, Shaded, Textured, Untextured,
 };
 use crate::target::{NO_TRIANGLE, Target, TileRect, pack};
 use crate::texture::{Bilinear, Filter, Mips, Nearest, Trilinear};
-use crate::tile::{TileBuffers, draw_tile};
+use crate::tile::{TileBuffers, draw_tile, draw_tile_unqueued};
 use crate::varyings::{Used, varyings_used};
 use crate::vertex::{Vertex, farthest_from, vertex_stage};
 
@@ -232,7 +232,7 @@ impl Tiles<'_> {
     /// Every tile, in parallel, drawn with `shader` as each fragment passes the depth test.
     fn draw<S: PixelShader>(self, shader: &S) {
         self.each(|rect, buffers, background, bins, tile| {
-            draw_tile(rect, buffers, background, bins, tile, shader, &mut Unqueued)
+            draw_tile_unqueued(rect, buffers, background, bins, tile, shader)
         });
     }
 
