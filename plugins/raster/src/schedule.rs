@@ -56,6 +56,8 @@ impl Schedule {
     /// Cuts the tiles into `threads` runs of about equal cost (an empty tile still costs its
     /// clearing).
     fn plan(&mut self, tiles: usize, threads: usize, cost: impl Fn(usize) -> usize) {
+        // A run's ends are packed as two u32 (far beyond any viewport's tiles).
+        assert!(u32::try_from(tiles).is_ok(), "{tiles} tiles");
         let total: usize = (0..tiles).map(|tile| cost(tile) + 1).sum();
         self.shares.resize_with(threads, || AtomicU64::new(0));
         let (mut start, mut sum) = (0, 0);
