@@ -252,9 +252,9 @@ impl Tiles<'_> {
         );
     }
 
-    /// `draw(rect, buffers, background, bins, tile)` for every tile, in parallel, the most
-    /// binned first (see `schedule`). Each tile gets its own piece of the id buffer, or an
-    /// empty one when it is not recorded.
+    /// `draw(rect, buffers, background, bins, tile)` for every tile, in parallel, shared
+    /// between the threads by what is binned in each (see `schedule`). Each tile gets its own
+    /// piece of the id buffer, or an empty one when it is not recorded.
     fn each(self, draw: impl Fn(TileRect, TileBuffers<'_>, u32, &Bins, usize) + Sync) {
         let grid = self.target.grid;
         let (bins, background) = (self.bins, self.background);

@@ -101,7 +101,8 @@ pub(crate) fn vertex_stage(
 }
 
 /// The distance from `point` to the farthest of `vertices` (eye positions): with the cuts
-/// blended from them, no point of the frame is farther.
+/// blended from them, no point of the frame is farther. A NaN position is passed over: its
+/// window position is NaN too, and its triangles are not drawn.
 pub(crate) fn farthest_from(point: Vec3, vertices: &[RasterVertex]) -> f32 {
     let farther = |d2: f32, v: &RasterVertex| d2.max(point.distance_squared(v.eye.into()));
     vertices
