@@ -83,7 +83,7 @@ pub(crate) struct SetupParams {
 }
 
 pub(crate) fn triangle(v: [&Vertex; 3], params: SetupParams) -> Triangle {
-    if !v.iter().all(|v| v.in_guard_band()) {
+    if !v.iter().all(|v| v.drawable()) {
         return Triangle::EMPTY;
     }
     let corners = map3(&v, |v| v.corner());
@@ -93,7 +93,7 @@ pub(crate) fn triangle(v: [&Vertex; 3], params: SetupParams) -> Triangle {
 /// A line one pixel wide: the rectangle whose long sides lie half a pixel either side of it and
 /// whose short sides pass through its ends.
 pub(crate) fn line(a: &Vertex, b: &Vertex, params: SetupParams) -> [Triangle; 2] {
-    if !(a.in_guard_band() && b.in_guard_band()) {
+    if !(a.drawable() && b.drawable()) {
         return [Triangle::EMPTY; 2];
     }
     let (dx, dy) = (a.window[0] - b.window[0], a.window[1] - b.window[1]);
@@ -118,7 +118,7 @@ pub(crate) fn line(a: &Vertex, b: &Vertex, params: SetupParams) -> [Triangle; 2]
 
 /// A point of size 1: the square one pixel wide centred on it.
 pub(crate) fn point(v: &Vertex, params: SetupParams) -> [Triangle; 2] {
-    if !v.in_guard_band() {
+    if !v.drawable() {
         return [Triangle::EMPTY; 2];
     }
     let half = FIXED_ONE / 2;

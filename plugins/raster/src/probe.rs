@@ -198,9 +198,11 @@ fn cover(
     x: u32,
     y: u32,
 ) -> Option<(Coverage, f32)> {
-    let vertex = |i: usize| Vertex {
-        window: to_window_depth(polygon.points[i], viewport),
-        varyings: [0.0; VARYINGS],
+    let vertex = |i: usize| {
+        Vertex::new(
+            to_window_depth(polygon.points[i], viewport),
+            [0.0; VARYINGS],
+        )
     };
     let params = SetupParams {
         size: [size.width as i32, size.height as i32],

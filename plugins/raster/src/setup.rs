@@ -85,8 +85,8 @@ impl Footprint {
     }
 }
 
-/// A corner as setup sees it: fixed-point position for coverage, window x, y, depth and 1/w,
-/// and the varyings.
+/// A corner as setup sees it: fixed-point position for coverage, window x, y, depth and 1/w
+/// (all finite: it comes from a drawable vertex, see `Vertex::drawable`), and the varyings.
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct Corner<'a> {
     pub fixed: [i64; 2],
@@ -108,11 +108,7 @@ pub(crate) fn setup(
 ) -> Triangle {
     let [a, b, c] = map3(&corners, |c| c.fixed);
     let det = (a[0] - b[0]) * (c[1] - a[1]) - (a[1] - b[1]) * (c[0] - a[0]);
-    if det == 0
-        || corners
-            .iter()
-            .any(|c| !c.window.iter().all(|x| x.is_finite()))
-    {
+    if det == 0 {
         return Triangle::EMPTY;
     }
     if det < 0 {

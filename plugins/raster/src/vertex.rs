@@ -23,14 +23,35 @@ const CHUNK: usize = 2048;
 pub(crate) struct Vertex {
     /// x, y in window pixels, depth, 1/w.
     pub window: [f32; 4],
+    /// x, y snapped to fixed point once here, not once for each triangle the vertex is a corner
+    /// of (six in a closed mesh): [`UNDRAWABLE`] when setup cannot take the vertex.
+    fixed: [i32; 2],
     pub varyings: [f32; VARYINGS],
 }
+
+/// The fixed-point x of a vertex outside the guard band, or with a position, depth or 1/w that
+/// is NaN or infinite: no vertex inside snaps to it (they are within ±2^29).
+const UNDRAWABLE: i32 = i32::MIN;
 
 impl Vertex {
     const ZERO: Vertex = Vertex {
         window: [0.0; 4],
+        fixed: [UNDRAWABLE; 2],
         varyings: [0.0; VARYINGS],
     };
+
+    pub(crate) fn new(window: [f32; 4], varyings: [f32; VARYINGS]) -> Vertex {
+        let in_guard_band = window[..2].iter().all(|x| x.abs() <= GUARD_PX);
+        let fixed = match in_guard_band && window.iter().all(|x| x.is_finite()) {
+            true => [snap(window[0]) as i32, snap(window[1]) as i32],
+            false => [UNDRAWABLE; 2],
+        };
+        Vertex {
+            window,
+            fixed,
+            varyings,
+        }
+    }
 
     /// The vertex as a corner at its own position.
     pub(crate) fn corner(&self) -> Corner<'_> {
@@ -56,13 +77,14 @@ impl Vertex {
     }
 
     pub(crate) fn fixed(&self) -> [i64; 2] {
-        [snap(self.window[0]), snap(self.window[1])]
+        self.fixed.map(i64::from)
     }
 
-    /// Whether the fixed-point arithmetic can hold this vertex (see [`GUARD_PX`]); false for
-    /// NaN and infinities too. A primitive with a corner outside is not drawn.
-    pub(crate) fn in_guard_band(&self) -> bool {
-        self.window[..2].iter().all(|x| x.abs() <= GUARD_PX)
+    /// Whether the fixed-point arithmetic can hold this vertex (see [`GUARD_PX`]) and its
+    /// window position, depth and 1/w are all finite. A primitive with a corner that is not
+    /// is not drawn.
+    pub(crate) fn drawable(&self) -> bool {
+        self.fixed[0] != UNDRAWABLE
     }
 }
 
@@ -81,10 +103,7 @@ pub(crate) fn vertex_stage(
         .for_each(|(out, vertices)| {
             for (o, v) in out.iter_mut().zip(vertices) {
                 let (eye, normal) = (Vec3::from(v.eye), Vec3::from(v.normal));
-                *o = Vertex {
-                    window: v.window,
-                    varyings: vertex_varyings(shading, light, eye, normal, v.uv),
-                };
+                *o = Vertex::new(v.window, vertex_varyings(shading, light, eye, normal, v.uv));
             }
         });
     for (o, cut) in cuts.iter_mut().zip(&raster.cuts) {
@@ -95,10 +114,7 @@ pub(crate) fn vertex_stage(
                 *v += weight * f;
             }
         }
-        *o = Vertex {
-            window: cut.window,
-            varyings,
-        };
+        *o = Vertex::new(cut.window, varyings);
     }
 }
 
