@@ -82,6 +82,10 @@ pub(crate) struct SetupParams {
     pub drop_uncovered: bool,
 }
 
+/// A triangle's setup. Inlined, with `setup`, into the loop that bins what it returns: returned
+/// through memory, the binning's first read of it waited on setup's stores (AMD EPYC: a million
+/// small triangles' frame 3 % faster inlined).
+#[inline(always)]
 pub(crate) fn triangle(v: [&Vertex; 3], params: SetupParams) -> Triangle {
     if !v.iter().all(|v| v.drawable()) {
         return Triangle::EMPTY;

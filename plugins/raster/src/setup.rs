@@ -100,6 +100,7 @@ pub(crate) struct Corner<'a> {
 /// centre comes back empty, found out before its planes are built: the drawing path's early
 /// rejection, which most sub-pixel triangles of a big mesh meet (the probe keeps them, to say
 /// which centre the fill rule gave away).
+#[inline(always)]
 pub(crate) fn setup(
     mut corners: [Corner<'_>; 3],
     size: [i32; 2],
