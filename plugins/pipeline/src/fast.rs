@@ -178,22 +178,23 @@ fn join<T: Copy + Default + Send + Sync>(
     out: &mut Vec<T>,
     part: &(impl Fn(&Chunk) -> &[T] + Sync),
 ) {
-    join_mapped(chunks, 0, out, part, &|_, x| x);
+    join_mapped(chunks, 0, out, part, &|_, from, to| {
+        to.copy_from_slice(from)
+    });
 }
 
-/// Copies one part of every chunk (`part`) into `out`, in mesh order, each element through
-/// `map(cuts_before, element)`, where `cuts_before` counts the cut vertices of the chunks before
-/// its own. The work is split in halves across threads: a million triangles' primitives copied
+/// Copies one part of every chunk (`part`) into `out`, in mesh order, by `copy(cuts_before,
+/// part, out)`, where `cuts_before` counts the cut vertices of the chunks before its own. The work is split in halves across threads: a million triangles' primitives copied
 /// on one thread took a third of the frame's geometry stage.
 fn join_mapped<T: Copy + Default + Send + Sync>(
     chunks: &[Chunk],
     cuts_before: u32,
     out: &mut Vec<T>,
     part: &(impl Fn(&Chunk) -> &[T] + Sync),
-    map: &(impl Fn(u32, T) -> T + Sync),
+    copy: &(impl Fn(u32, &[T], &mut [T]) + Sync),
 ) {
     out.resize(chunks.iter().map(|c| part(c).len()).sum(), T::default());
-    join_halves(chunks, cuts_before, out, part, map);
+    join_halves(chunks, cuts_before, out, part, copy);
 }
 
 /// [`join_mapped`] into `out`, exactly as long as the chunks' parts.
@@ -202,15 +203,13 @@ fn join_halves<T: Copy + Send + Sync>(
     cuts_before: u32,
     out: &mut [T],
     part: &(impl Fn(&Chunk) -> &[T] + Sync),
-    map: &(impl Fn(u32, T) -> T + Sync),
+    copy: &(impl Fn(u32, &[T], &mut [T]) + Sync),
 ) {
     if chunks.len() <= 2 {
         let (mut at, mut cuts) = (0, cuts_before);
         for chunk in chunks {
             let part = part(chunk);
-            for (o, &x) in out[at..at + part.len()].iter_mut().zip(part) {
-                *o = map(cuts, x);
-            }
+            copy(cuts, part, &mut out[at..at + part.len()]);
             at += part.len();
             cuts += chunk.raster.cuts.len() as u32;
         }
@@ -220,8 +219,8 @@ fn join_halves<T: Copy + Send + Sync>(
     let (left_out, right_out) = out.split_at_mut(left.iter().map(|c| part(c).len()).sum());
     let right_cuts = cuts_before + left.iter().map(|c| c.raster.cuts.len() as u32).sum::<u32>();
     rayon::join(
-        || join_halves(left, cuts_before, left_out, part, map),
-        || join_halves(right, right_cuts, right_out, part, map),
+        || join_halves(left, cuts_before, left_out, part, copy),
+        || join_halves(right, right_cuts, right_out, part, copy),
     );
 }
 
@@ -312,9 +311,13 @@ fn join_raster(chunks: &[Chunk], out: &mut RasterGeometry) {
         base,
         &mut out.primitives,
         &|c| &c.raster.primitives,
-        &|cuts_before, i| match i & CUT {
-            0 => i,
-            _ => cuts_before + (i & !CUT),
+        &|cuts_before, from, to| {
+            for (o, &i) in to.iter_mut().zip(from) {
+                *o = match i & CUT {
+                    0 => i,
+                    _ => cuts_before + (i & !CUT),
+                };
+            }
         },
     );
 }
