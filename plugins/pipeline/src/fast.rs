@@ -184,8 +184,9 @@ fn join<T: Copy + Default + Send + Sync>(
 }
 
 /// Copies one part of every chunk (`part`) into `out`, in mesh order, by `copy(cuts_before,
-/// part, out)`, where `cuts_before` counts the cut vertices of the chunks before its own. The work is split in halves across threads: a million triangles' primitives copied
-/// on one thread took a third of the frame's geometry stage.
+/// part, out)`, where `cuts_before` counts the cut vertices of the chunks before its own. The
+/// work is split in halves across threads: a million triangles' primitives copied on one
+/// thread took a third of the frame's geometry stage.
 fn join_mapped<T: Copy + Default + Send + Sync>(
     chunks: &[Chunk],
     cuts_before: u32,

@@ -48,7 +48,7 @@ impl Light {
         // Written so that a NaN or infinite distance keeps the attenuation.
         let always_one = c0 + c1 * d + c2 * d * d <= 1.0;
         Light {
-            attenuated: self.attenuated && !always_one,
+            attenuated: !always_one,
             ..self
         }
     }

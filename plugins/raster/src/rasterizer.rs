@@ -25,7 +25,7 @@ use crate::target::{NO_TRIANGLE, Target, TileRect, pack};
 use crate::texture::{Bilinear, Filter, Mips, Nearest, Trilinear};
 use crate::tile::{TileBuffers, draw_tile, draw_tile_unqueued};
 use crate::varyings::{Used, varyings_used};
-use crate::vertex::{Vertex, farthest_from, vertex_stage};
+use crate::vertex::{Vertex, vertex_stage};
 
 /// The rasterizer's buffers, reused from frame to frame: a steady frame allocates nothing.
 #[derive(Resource, Default)]
@@ -77,9 +77,15 @@ impl SoftwareRasterizer {
     ) {
         let light_eye = ClipTransform::new(camera).eye(lighting.light_position);
         let light = Light::new(lighting, light_eye, settings.shading);
-        // Gouraud lights each vertex once: a pass to find the farthest would cost what it saves.
+        let farthest = vertex_stage(
+            &geometry.raster,
+            settings.shading,
+            &light,
+            &mut self.vertices,
+        );
+        // Gouraud has lit its vertices by then, in the pass that found the farthest.
         let light = match settings.shading {
-            Shading::Phong => light.reaching(farthest_from(light_eye, &geometry.raster.vertices)),
+            Shading::Phong => light.reaching(farthest),
             _ => light,
         };
         let frame = Frame {
@@ -90,12 +96,6 @@ impl SoftwareRasterizer {
         };
         let size = geometry.viewport;
         self.target.resize(size.width, size.height, fates.record);
-        vertex_stage(
-            &geometry.raster,
-            frame.shading,
-            &frame.light,
-            &mut self.vertices,
-        );
         self.setup(&frame);
         self.shade(&frame, settings);
         self.target.resolve(&mut out.image.pixels);

@@ -3,7 +3,7 @@
 //! parallel, then the vertices clipping made, blended from their triangle's corners as a GPU's
 //! clipper blends them.
 
-use close2gl_core::{RasterGeometry, RasterVertex, Shading};
+use close2gl_core::{RasterGeometry, Shading};
 use glam::Vec3;
 use rayon::prelude::*;
 
@@ -88,24 +88,33 @@ impl Vertex {
     }
 }
 
-/// Fills `vertices` with every vertex of `raster`: the mesh's, then the cuts'.
+/// Fills `vertices` with every vertex of `raster`: the mesh's, then the cuts'. Returns the
+/// distance from the light to the farthest mesh vertex (eye positions), found in the same pass
+/// (see `Light::reaching`): with the cuts blended from them, no point of the frame is farther.
+/// A NaN position is passed over: its window position is NaN too, and its triangles are not
+/// drawn.
 pub(crate) fn vertex_stage(
     raster: &RasterGeometry,
     shading: Shading,
     light: &Light,
     vertices: &mut Vec<Vertex>,
-) {
+) -> f32 {
     let mesh_vertices = raster.vertices.len();
     vertices.resize(mesh_vertices + raster.cuts.len(), Vertex::ZERO);
     let (mesh, cuts) = vertices.split_at_mut(mesh_vertices);
-    mesh.par_chunks_mut(CHUNK)
+    let farthest_squared = mesh
+        .par_chunks_mut(CHUNK)
         .zip(raster.vertices.par_chunks(CHUNK))
-        .for_each(|(out, vertices)| {
+        .map(|(out, vertices)| {
+            let mut farthest_squared = 0.0f32;
             for (o, v) in out.iter_mut().zip(vertices) {
                 let (eye, normal) = (Vec3::from(v.eye), Vec3::from(v.normal));
                 *o = Vertex::new(v.window, vertex_varyings(shading, light, eye, normal, v.uv));
+                farthest_squared = farthest_squared.max(light.position.distance_squared(eye));
             }
-        });
+            farthest_squared
+        })
+        .reduce(|| 0.0, f32::max);
     for (o, cut) in cuts.iter_mut().zip(&raster.cuts) {
         let mut varyings = [0.0; VARYINGS];
         for (corner, weight) in cut.corners.iter().zip(cut.weights) {
@@ -116,18 +125,7 @@ pub(crate) fn vertex_stage(
         }
         *o = Vertex::new(cut.window, varyings);
     }
-}
-
-/// The distance from `point` to the farthest of `vertices` (eye positions): with the cuts
-/// blended from them, no point of the frame is farther. A NaN position is passed over: its
-/// window position is NaN too, and its triangles are not drawn.
-pub(crate) fn farthest_from(point: Vec3, vertices: &[RasterVertex]) -> f32 {
-    let farther = |d2: f32, v: &RasterVertex| d2.max(point.distance_squared(v.eye.into()));
-    vertices
-        .par_chunks(CHUNK)
-        .map(|chunk| chunk.iter().fold(0.0, farther))
-        .reduce(|| 0.0, f32::max)
-        .sqrt()
+    farthest_squared.sqrt()
 }
 
 /// A vertex's varyings from its eye position, normal and texture coordinates.
