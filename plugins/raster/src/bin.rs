@@ -5,13 +5,16 @@
 //! its triangles in submission order (which the depth test's ties depend on), and no triangle
 //! is read by more tasks than the tiles it touches. A kept triangle is stored in two parts: its
 //! footprint (edges and bounds, one cache line) and only the planes the frame's shading uses.
+//! A small one (a bounding box of a few pixels, which setup has tested centre by centre) is
+//! listed as its fragments instead: each covered pixel with its depth, which the tile tests
+//! without reading the triangle (most of a big mesh's triangles cover a pixel or two).
 
 use close2gl_core::Topology;
 use rayon::prelude::*;
 
 use crate::primitives::{SetupParams, indices_per_primitive, set_up};
-use crate::setup::{Footprint, Triangle};
-use crate::target::{Grid, TILE};
+use crate::setup::{Centres, Footprint, Triangle};
+use crate::target::{Grid, ROW, TILE};
 use crate::varyings::{Planes, Used};
 use crate::vertex::Vertex;
 
@@ -27,9 +30,24 @@ pub(crate) struct Batch {
     pub planes: Vec<f32>,
     /// ...and its set-up index (what the id buffer records).
     pub set_up: Vec<u32>,
-    /// For each tile, the indices in `triangles` of those whose bounding box touches it.
-    pub tiles: Vec<Vec<u32>>,
+    /// For each tile, in order, the triangles whose bounding box touches it and the fragments
+    /// of small ones that land in it.
+    pub tiles: Vec<Vec<Binned>>,
 }
+
+/// One entry of a tile's list: triangle `index` (in its batch) drawn by rows, or one pixel of
+/// it, a fragment.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Binned {
+    pub index: u32,
+    /// The fragment's pixel in the tile (row · 64 + column), or [`ROWS`].
+    pub pixel: u32,
+    /// The fragment's depth, as the tile would compute it (`Planes::depth_in_tile`).
+    pub z: f32,
+}
+
+/// `Binned::pixel` of a triangle drawn by rows.
+pub(crate) const ROWS: u32 = u32::MAX;
 
 /// Every batch of a frame, in submission order.
 #[derive(Debug, Default)]
@@ -129,9 +147,32 @@ impl Batch {
         self.set_up.push(set_up);
         let [x0, y0, x1, y1] = t.footprint.bbox;
         let tiles_x = grid.tiles_x as usize;
-        for ty in y0 / TILE..=y1 / TILE {
-            for tx in x0 / TILE..=x1 / TILE {
-                self.tiles[ty as usize * tiles_x + tx as usize].push(index);
+        let tile = |x: i32, y: i32| (y / TILE) as usize * tiles_x + (x / TILE) as usize;
+        match t.centres {
+            Centres::Rows => {
+                let whole = Binned {
+                    index,
+                    pixel: ROWS,
+                    z: 0.0,
+                };
+                for ty in y0 / TILE..=y1 / TILE {
+                    for tx in x0 / TILE..=x1 / TILE {
+                        self.tiles[tile(tx * TILE, ty * TILE)].push(whole);
+                    }
+                }
+            }
+            Centres::Few(mask) => {
+                let mut bits = mask;
+                while bits != 0 {
+                    let (x, y) = t.footprint.centre(bits.trailing_zeros());
+                    bits &= bits - 1;
+                    let (tx0, ty0) = (x - x % TILE, y - y % TILE);
+                    self.tiles[tile(x, y)].push(Binned {
+                        index,
+                        pixel: ((y - ty0) * ROW as i32 + (x - tx0)) as u32,
+                        z: t.planes.depth_in_tile(tx0, x, y),
+                    });
+                }
             }
         }
     }

@@ -7,7 +7,7 @@
 //! once. The colours are those of shading each fragment as it passes, bit for bit: the depth
 //! test's winner is the fragment written last, and each lane's arithmetic is the same.
 
-use crate::bin::Bins;
+use crate::bin::{Bins, ROWS};
 use crate::lanes::{F8, LANES};
 use crate::queue::Unqueued;
 use crate::shading::{LaneShader, PixelShader};
@@ -28,19 +28,26 @@ pub(crate) fn draw_tile_deferred<S: PixelShader + LaneShader>(
     buffers.visible.fill(NO_TRIANGLE);
     // The visibility buffer takes the colour buffer's place: each triangle "shades" its number.
     let mut rows = Rows::new(buffers.visible, buffers.depth, buffers.ids);
-    for_each_binned(bins, tile, |number, batch, index| {
-        let planes = || batch.planes(index, bins.used);
-        let set_up = batch.set_up[index];
-        let footprint = &batch.footprints[index];
-        draw_rows(
-            rect,
-            &mut rows,
-            set_up,
-            footprint,
-            planes,
-            &Number(number),
-            &mut Unqueued,
-        );
+    for_each_binned(bins, tile, |number, batch, binned| {
+        let index = binned.index as usize;
+        let set_up = || batch.set_up[index];
+        match binned.pixel {
+            ROWS => {
+                let planes = || batch.planes(index, bins.used);
+                let footprint = &batch.footprints[index];
+                let shader = &Number(number);
+                draw_rows(
+                    rect,
+                    &mut rows,
+                    set_up(),
+                    footprint,
+                    planes,
+                    shader,
+                    &mut Unqueued,
+                );
+            }
+            _ => rows.write_fragment(set_up, binned, number),
+        }
     });
     let (color, _) = buffers.color.as_chunks_mut::<ROW>();
     let (visible, _) = buffers.visible.as_chunks::<ROW>();

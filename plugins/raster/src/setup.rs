@@ -15,16 +15,19 @@ pub(crate) enum Coverage {
     Outside,
 }
 
-/// A triangle ready to rasterize: where it draws, and its planes.
+/// A triangle ready to rasterize: where it draws, which centres when it is small, and its
+/// planes.
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct Triangle {
     pub footprint: Footprint,
+    pub centres: Centres,
     pub planes: Planes,
 }
 
 impl Triangle {
     pub(crate) const EMPTY: Triangle = Triangle {
         footprint: Footprint::EMPTY,
+        centres: Centres::Rows,
         planes: Planes::ZERO,
     };
 
@@ -124,11 +127,16 @@ pub(crate) fn setup(
         ],
         bbox: bounds(fixed, size),
     };
-    if drop_uncovered && !footprint.may_cover_a_centre() {
+    if footprint.is_empty() {
+        return Triangle::EMPTY;
+    }
+    let centres = footprint.centres();
+    if drop_uncovered && centres == Centres::Few(0) {
         return Triangle::EMPTY;
     }
     Triangle {
         footprint,
+        centres,
         planes: Planes::new(
             map3(&corners, |c| c.window),
             map3(&corners, |c| c.varyings),
@@ -140,19 +148,42 @@ pub(crate) fn setup(
 /// Bounding boxes of at most this many pixels have their centres tested one by one.
 const FEW_PIXELS: i32 = 4;
 
+/// Which pixel centres a triangle covers, as far as setup finds out.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Centres {
+    /// Its bounding box holds more than [`FEW_PIXELS`]: the rows find out.
+    Rows,
+    /// Its bounding box holds a few, each tested: bit k for the k-th, row after row of the box
+    /// (none: it covers no centre).
+    Few(u8),
+}
+
 impl Footprint {
-    /// False when the triangle surely covers no pixel centre: its snapped bounding box holds
-    /// none, or holds a few that are each tested and found outside. A larger box is taken on
-    /// trust (the rows find out).
-    fn may_cover_a_centre(&self) -> bool {
+    /// The centres of a small bounding box that the triangle covers, or `Rows` for a larger
+    /// one (not empty).
+    #[inline(always)]
+    fn centres(&self) -> Centres {
         let [x0, y0, x1, y1] = self.bbox;
-        if self.is_empty() {
-            return false;
-        }
         if (x1 - x0 + 1) * (y1 - y0 + 1) > FEW_PIXELS {
-            return true;
+            return Centres::Rows;
         }
-        (y0..=y1).any(|y| (x0..=x1).any(|x| self.edges.iter().all(|e| e.at(x, y) > 0)))
+        let mut mask = 0;
+        let mut bit = 0;
+        for y in y0..=y1 {
+            for x in x0..=x1 {
+                let inside = self.edges.iter().all(|e| e.at(x, y) > 0);
+                mask |= (inside as u8) << bit;
+                bit += 1;
+            }
+        }
+        Centres::Few(mask)
+    }
+
+    /// The pixel of the k-th centre of a small bounding box (see [`Centres::Few`]).
+    pub(crate) fn centre(&self, k: u32) -> (i32, i32) {
+        let [x0, y0, x1, _] = self.bbox;
+        let width = (x1 - x0 + 1) as u32;
+        (x0 + (k % width) as i32, y0 + (k / width) as i32)
     }
 }
 

@@ -7,7 +7,7 @@ use glam::Vec3;
 
 use crate::lanes::{F8, LANES, V8};
 use crate::lighting::Light;
-use crate::target::pack8;
+use crate::target::{pack, pack8};
 use crate::texture::{Filter, Mips};
 use crate::varyings::{EYE, INTENSITY, Interpolant, NORMAL, Planes};
 
@@ -15,11 +15,22 @@ use crate::varyings::{EYE, INTENSITY, Interpolant, NORMAL, Planes};
 /// the row loop (see `row::draw_span`).
 pub(crate) trait PixelShader: Sync {
     fn shade(&self, planes: &Planes, x: F8, y: f32) -> [u32; LANES];
+
+    /// The colour of every pixel, when it is the same everywhere: a fragment then takes it
+    /// without a block of lanes shaded for it.
+    fn uniform(&self) -> Option<u32> {
+        None
+    }
 }
 
 /// A shading's colour at eight pixels before texturing, given w there.
 pub(crate) trait Colour: Sync {
     fn colour<P: Interpolant>(&self, planes: &P, x: F8, y: f32, w: F8) -> V8;
+
+    /// The colour, when it is the same at every pixel.
+    fn uniform(&self) -> Option<Vec3> {
+        None
+    }
 }
 
 /// A shading that colours eight pixels that need not be a row of one triangle: of different
@@ -34,6 +45,9 @@ pub(crate) trait LaneShader: Sync {
 /// What the texture does to a colour: nothing, or modulate it by the texel.
 pub(crate) trait Texturing: Sync {
     fn modulate(&self, colour: V8, planes: &Planes, x: F8, y: f32, w: F8) -> V8;
+
+    /// Whether it leaves every colour as it is.
+    const NONE: bool = false;
 }
 
 /// A shading and a texturing, packed as the target stores them.
@@ -49,6 +63,13 @@ impl<C: Colour, T: Texturing> PixelShader for Shaded<C, T> {
         let w = planes.w(x, y);
         let colour = self.colour.colour(planes, x, y, w);
         pack8(self.texturing.modulate(colour, planes, x, y, w))
+    }
+
+    fn uniform(&self) -> Option<u32> {
+        match T::NONE {
+            true => self.colour.uniform().map(pack),
+            false => None,
+        }
     }
 }
 
@@ -67,6 +88,10 @@ impl Colour for Flat {
     #[inline(always)]
     fn colour<P: Interpolant>(&self, _: &P, _: F8, _: f32, _: F8) -> V8 {
         V8::splat(self.0)
+    }
+
+    fn uniform(&self) -> Option<Vec3> {
+        Some(self.0)
     }
 }
 
@@ -111,6 +136,8 @@ fn multiply(color: Vec3, light: V8) -> V8 {
 pub(crate) struct Untextured;
 
 impl Texturing for Untextured {
+    const NONE: bool = true;
+
     #[inline(always)]
     fn modulate(&self, colour: V8, _: &Planes, _: F8, _: f32, _: F8) -> V8 {
         colour

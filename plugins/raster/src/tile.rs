@@ -3,7 +3,7 @@
 //! others are left out of every row), then each row's span of covered pixels, solved exactly
 //! from those edges (no per-pixel edge test), handed to `row`.
 
-use crate::bin::{Batch, Bins};
+use crate::bin::{Batch, Binned, Bins, ROWS};
 use crate::edge::{Cover, Edge, row_inside, row_inside_narrow};
 use crate::lanes::LANES;
 use crate::queue::{Queue, Unqueued};
@@ -44,11 +44,25 @@ pub(crate) fn draw_tile<S: PixelShader, Q: Queue<S>>(
 ) {
     buffers.clear(background);
     let mut rows = Rows::new(buffers.color, buffers.depth, buffers.ids);
-    for_each_binned(bins, tile, |_, batch, index| {
+    let uniform = shader.uniform();
+    // The small triangle whose fragments in this tile its rows have drawn.
+    let mut drawn = None;
+    for_each_binned(bins, tile, |number, batch, binned| {
+        let index = binned.index as usize;
+        let set_up = || batch.set_up[index];
+        let fragment = binned.pixel != ROWS;
+        if let (true, Some(colour)) = (fragment, uniform) {
+            return rows.write_fragment(set_up, binned, colour);
+        }
+        // A shading that varies is paid per block of eight lanes, and a small triangle's
+        // fragments in one row share a block: it is drawn by rows at its first fragment.
+        if fragment && drawn == Some(number) {
+            return;
+        }
+        drawn = fragment.then_some(number);
         let planes = || batch.planes(index, bins.used);
-        let set_up = batch.set_up[index];
         let footprint = &batch.footprints[index];
-        draw_rows(rect, &mut rows, set_up, footprint, planes, shader, queue);
+        draw_rows(rect, &mut rows, set_up(), footprint, planes, shader, queue);
     });
 }
 
@@ -68,13 +82,13 @@ pub(crate) fn draw_tile_unqueued<S: PixelShader>(
     draw_tile(rect, buffers, background, bins, tile, shader, &mut Unqueued);
 }
 
-/// Each triangle binned in tile number `tile`, in submission order: `f(number, batch, index)`,
-/// `number` counting the frame's kept triangles across the batches.
+/// Each triangle or fragment binned in tile number `tile`, in submission order:
+/// `f(number, batch, binned)`, `number` counting the frame's kept triangles across the batches.
 #[inline(always)]
-pub(crate) fn for_each_binned(bins: &Bins, tile: usize, mut f: impl FnMut(u32, &Batch, usize)) {
+pub(crate) fn for_each_binned(bins: &Bins, tile: usize, mut f: impl FnMut(u32, &Batch, &Binned)) {
     for (batch, start) in bins.batches.iter().zip(&bins.starts) {
-        for &index in &batch.tiles[tile] {
-            f(start + index, batch, index as usize);
+        for binned in &batch.tiles[tile] {
+            f(start + binned.index, batch, binned);
         }
     }
 }
@@ -92,6 +106,27 @@ impl<'a> Rows<'a> {
             color: color.as_chunks_mut::<ROW>().0,
             depth: depth.as_chunks_mut::<ROW>().0,
             ids: ids.as_chunks_mut::<ROW>().0,
+        }
+    }
+
+    /// `fragment` of set-up triangle `index()` depth-tested, and where it passes, its depth
+    /// written and `value` as its colour: what the rows write for a pixel of a shading that
+    /// is the same at every pixel (the deferred first pass's triangle number). The index is
+    /// read only while the id buffer is recorded.
+    #[inline(always)]
+    pub(crate) fn write_fragment(
+        &mut self,
+        index: impl FnOnce() -> u32,
+        fragment: &Binned,
+        value: u32,
+    ) {
+        let (row, column) = (fragment.pixel as usize / ROW, fragment.pixel as usize % ROW);
+        if fragment.z < self.depth[row][column] {
+            self.depth[row][column] = fragment.z;
+            self.color[row][column] = value;
+            if let Some(ids) = self.ids.get_mut(row) {
+                ids[column] = index();
+            }
         }
     }
 }

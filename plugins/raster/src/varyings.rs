@@ -195,6 +195,15 @@ impl Planes {
         plane.a + plane.dadx * (x - self.origin[0]) + plane.dady * (y - self.origin[1])
     }
 
+    /// The depth at the centre of pixel (x, y) as a tile whose first column is x0 takes it, a
+    /// block of eight at a time (`row::draw_span`): the value at the row's first pixel, then
+    /// x's share. What a small triangle's fragment carries, bit for bit the same.
+    #[inline(always)]
+    pub(crate) fn depth_in_tile(&self, x0: i32, x: i32, y: i32) -> f32 {
+        let row = self.depth_at(x0 as f32 + 0.5, y as f32 + 0.5);
+        (x - x0) as f32 * self.depth.dadx + row
+    }
+
     /// A plane's value at eight pixel centres of one row: the row's value, then x's share.
     #[inline(always)]
     fn lanes_at(&self, plane: &Plane, x: F8, y: f32) -> F8 {
