@@ -90,6 +90,8 @@ impl Bins {
                     first,
                     primitives.vertices,
                     params,
+                    // Inlined, so that the triangle is not read back through memory.
+                    #[inline(always)]
                     |set_up, t| batch.push(grid, params.used, set_up, t),
                 );
             });
@@ -109,7 +111,9 @@ impl Bins {
     /// The packed planes of triangle `number` in the frame's numbering (see `starts`).
     #[inline(always)]
     pub(crate) fn packed(&self, number: u32) -> &[f32] {
-        let batch = self.starts.partition_point(|&s| s <= number) - 1;
+        // Counted, not searched: a few batches' starts compared at once, with no dependent
+        // loads (the shading pass asks this for most pixels of a big mesh).
+        let batch = self.starts.iter().filter(|&&s| s <= number).count() - 1;
         let index = (number - self.starts[batch]) as usize;
         let floats = self.used.packed_floats();
         &self.batches[batch].planes[index * floats..][..floats]
