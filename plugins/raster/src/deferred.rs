@@ -1,6 +1,7 @@
 //! Shading once per pixel, after the depth test, for Phong without a texture, in tiles of small
-//! triangles (the rasterizer chooses). The tile is drawn in two passes: first every triangle binned there is depth-tested, writing into
-//! the tile's visibility buffer which triangle each pixel shows (by the frame's numbering);
+//! triangles (the rasterizer chooses). The tile is drawn in two passes: first every triangle
+//! binned there is depth-tested (a small one's fragments one compare each), writing into the
+//! tile's visibility buffer which triangle each pixel shows (by the frame's numbering);
 //! then each block of eight pixels is coloured once, from one triangle's planes when all its
 //! lanes show the same one, else each lane from its own triangle's (`LanePlanes`). A one-pixel
 //! triangle then costs a lane, not a block of eight, and a pixel covered many times is shaded
