@@ -153,9 +153,10 @@ const FEW_PIXELS: i32 = 4;
 pub(crate) enum Centres {
     /// Its bounding box holds more than [`FEW_PIXELS`]: the rows find out.
     Rows,
-    /// Its bounding box holds a few, each tested: bit k for the k-th, row after row of the box
-    /// (none: it covers no centre).
-    Few(u8),
+    /// Its bounding box holds a few, each tested: bit 4·row + column for each covered one,
+    /// counted from the box's corner (none: it covers no centre). Four bits a row, so that a
+    /// bit's pixel takes no division to find.
+    Few(u16),
 }
 
 impl Footprint {
@@ -168,22 +169,19 @@ impl Footprint {
             return Centres::Rows;
         }
         let mut mask = 0;
-        let mut bit = 0;
         for y in y0..=y1 {
             for x in x0..=x1 {
                 let inside = self.edges.iter().all(|e| e.at(x, y) > 0);
-                mask |= (inside as u8) << bit;
-                bit += 1;
+                mask |= (inside as u16) << ((y - y0) * 4 + (x - x0));
             }
         }
         Centres::Few(mask)
     }
 
-    /// The pixel of the k-th centre of a small bounding box (see [`Centres::Few`]).
+    /// The pixel of bit `k` of a small bounding box's centres (see [`Centres::Few`]).
     pub(crate) fn centre(&self, k: u32) -> (i32, i32) {
-        let [x0, y0, x1, _] = self.bbox;
-        let width = (x1 - x0 + 1) as u32;
-        (x0 + (k % width) as i32, y0 + (k / width) as i32)
+        let [x0, y0, ..] = self.bbox;
+        (x0 + (k % 4) as i32, y0 + (k / 4) as i32)
     }
 }
 
