@@ -7,7 +7,9 @@
 //! footprint (edges and bounds, one cache line) and only the planes the frame's shading uses.
 //! A small one (a bounding box of a few pixels, which setup has tested centre by centre) is
 //! listed as its fragments instead: each covered pixel with its depth, which the tile tests
-//! without reading the triangle (most of a big mesh's triangles cover a pixel or two).
+//! without reading the triangle (most of a big mesh's triangles cover a pixel or two), and,
+//! for a shading done after the depth test, its values at the pixel, which the shading then
+//! reads in order from the tile's own list, not from the triangle, anywhere in memory.
 
 use close2gl_core::Topology;
 use rayon::prelude::*;
@@ -15,7 +17,7 @@ use rayon::prelude::*;
 use crate::primitives::{SetupParams, indices_per_primitive, set_up};
 use crate::setup::{Centres, Footprint, Triangle};
 use crate::target::{Grid, ROW, TILE};
-use crate::varyings::{Planes, Used};
+use crate::varyings::{AT_PIXEL, Planes, Used};
 use crate::vertex::Vertex;
 
 /// Batches per core: enough for a core done early to take another.
@@ -31,8 +33,11 @@ pub(crate) struct Batch {
     /// ...and its set-up index (what the id buffer records).
     pub set_up: Vec<u32>,
     /// For each tile, in order, the triangles whose bounding box touches it and the fragments
-    /// of small ones that land in it.
+    /// of small ones that land in it...
     pub tiles: Vec<Vec<Binned>>,
+    /// ...and, when the shading is one shaded after the depth test (`Used::at_pixel`), beside
+    /// each, a fragment's values at its pixel (zeros for a triangle drawn by rows).
+    pub values: Vec<Vec<[f32; AT_PIXEL]>>,
 }
 
 /// One entry of a tile's list: triangle `index` (in its batch) drawn by rows, or one pixel of
@@ -141,6 +146,8 @@ impl Batch {
         self.set_up.clear();
         self.tiles.resize_with(tiles, Vec::new);
         self.tiles.iter_mut().for_each(Vec::clear);
+        self.values.resize_with(tiles, Vec::new);
+        self.values.iter_mut().for_each(Vec::clear);
     }
 
     #[inline(always)]
@@ -161,7 +168,11 @@ impl Batch {
                 };
                 for ty in y0 / TILE..=y1 / TILE {
                     for tx in x0 / TILE..=x1 / TILE {
-                        self.tiles[tile(tx * TILE, ty * TILE)].push(whole);
+                        let tile = tile(tx * TILE, ty * TILE);
+                        self.tiles[tile].push(whole);
+                        if used.at_pixel() {
+                            self.values[tile].push([0.0; AT_PIXEL]);
+                        }
                     }
                 }
             }
@@ -171,11 +182,15 @@ impl Batch {
                     let (x, y) = t.footprint.centre(bits.trailing_zeros());
                     bits &= bits - 1;
                     let (tx0, ty0) = (x - x % TILE, y - y % TILE);
-                    self.tiles[tile(x, y)].push(Binned {
+                    let tile = tile(x, y);
+                    self.tiles[tile].push(Binned {
                         index,
                         pixel: ((y - ty0) * ROW as i32 + (x - tx0)) as u32,
                         z: t.planes.depth_in_tile(tx0, x, y),
                     });
+                    if used.at_pixel() {
+                        self.values[tile].push(t.planes.at_pixel(x, y));
+                    }
                 }
             }
         }

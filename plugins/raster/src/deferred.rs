@@ -1,20 +1,38 @@
 //! Shading once per pixel, after the depth test, for Phong without a texture, in tiles of small
 //! triangles (the rasterizer chooses). The tile is drawn in two passes: first every triangle
-//! binned there is depth-tested (a small one's fragments one compare each), writing into the
-//! tile's visibility buffer which triangle each pixel shows (by the frame's numbering);
-//! then each block of eight pixels is coloured once, from one triangle's planes when all its
-//! lanes show the same one, else each lane from its own triangle's (`LanePlanes`). A one-pixel
-//! triangle then costs a lane, not a block of eight, and a pixel covered many times is shaded
-//! once. The colours are those of shading each fragment as it passes, bit for bit: the depth
-//! test's winner is the fragment written last, and each lane's arithmetic is the same.
+//! binned there is depth-tested, writing into the tile's visibility buffer which triangle each
+//! pixel shows (by the frame's numbering), or, where a small triangle's fragment won (one
+//! compare each), a mark, and the fragment's values at its pixel (`Planes::at_pixel`, carried in
+//! the tile's list) into the thread's own buffer. Then each block of eight pixels is coloured
+//! once: from one triangle's planes when all its lanes show the same one, else from each lane's
+//! values (`AtPixels`), read from that buffer or worked out from the lane's triangle's planes.
+//! A one-pixel triangle then costs a lane, not a block of eight, a pixel covered many times is
+//! shaded once, and the shading reads no triangle from memory for a small triangle's pixel (on
+//! a million of them, that reading was 60 % of this pass). The colours are those of shading
+//! each fragment as it passes, bit for bit: the depth test's winner is the fragment written
+//! last, and each lane's arithmetic is the same.
+
+use std::cell::RefCell;
 
 use crate::bin::{Bins, ROWS};
 use crate::lanes::{F8, LANES};
 use crate::queue::Unqueued;
 use crate::shading::{LaneShader, PixelShader};
-use crate::target::{NO_TRIANGLE, ROW, TileRect};
+use crate::target::{NO_TRIANGLE, ROW, TILE_PIXELS, TileRect};
 use crate::tile::{Rows, TileBuffers, draw_rows, for_each_binned};
-use crate::varyings::{LanePlanes, Planes};
+use crate::varyings::{AT_PIXEL, AtPixels, Planes};
+
+/// The visibility buffer's mark where a small triangle's fragment won: its values at the pixel
+/// are in the thread's [`WON`] (triangles are numbered from 0, far below).
+const FRAGMENT: u32 = NO_TRIANGLE - 1;
+
+thread_local! {
+    /// The values of the fragments that won the depth test in the tile the thread is drawing,
+    /// value k of pixel p at k · 4096 + p: kept from tile to tile and frame to frame, so that a
+    /// steady frame allocates nothing. Read only where the tile's visibility buffer is marked,
+    /// so never cleared.
+    static WON: RefCell<Vec<f32>> = const { RefCell::new(Vec::new()) };
+}
 
 /// Draws tile number `tile` as [`crate::tile::draw_tile`] does, shading after the depth test.
 pub(crate) fn draw_tile_deferred<S: PixelShader + LaneShader>(
@@ -25,11 +43,30 @@ pub(crate) fn draw_tile_deferred<S: PixelShader + LaneShader>(
     tile: usize,
     shader: &S,
 ) {
-    buffers.clear(background);
-    buffers.visible.fill(NO_TRIANGLE);
-    // The visibility buffer takes the colour buffer's place: each triangle "shades" its number.
+    WON.with_borrow_mut(|won| {
+        won.resize(AT_PIXEL * TILE_PIXELS, 0.0);
+        let won = won.as_chunks_mut::<TILE_PIXELS>().0;
+        buffers.clear(background);
+        buffers.visible.fill(NO_TRIANGLE);
+        depth_pass(rect, &mut buffers, bins, tile, won);
+        let (color, _) = buffers.color.as_chunks_mut::<ROW>();
+        let (visible, _) = buffers.visible.as_chunks::<ROW>();
+        shade_visible(rect, color, visible, won, bins, shader);
+    });
+}
+
+/// The first pass: the visibility buffer takes the colour buffer's place, each triangle
+/// "shading" its number, each fragment its mark, with its values put in `won`.
+#[inline(always)]
+fn depth_pass(
+    rect: TileRect,
+    buffers: &mut TileBuffers<'_>,
+    bins: &Bins,
+    tile: usize,
+    won: &mut [[f32; TILE_PIXELS]],
+) {
     let mut rows = Rows::new(buffers.visible, buffers.depth, buffers.ids);
-    for_each_binned(bins, tile, |number, batch, binned| {
+    for_each_binned(bins, tile, |number, batch, binned, at| {
         let index = binned.index as usize;
         let set_up = || batch.set_up[index];
         match binned.pixel {
@@ -47,12 +84,16 @@ pub(crate) fn draw_tile_deferred<S: PixelShader + LaneShader>(
                     &mut Unqueued,
                 );
             }
-            _ => rows.write_fragment(set_up, binned, number),
+            pixel => {
+                if rows.write_fragment(set_up, binned, FRAGMENT) {
+                    let values = &batch.values[tile][at];
+                    for (won, &value) in won.iter_mut().zip(values) {
+                        won[pixel as usize] = value;
+                    }
+                }
+            }
         }
     });
-    let (color, _) = buffers.color.as_chunks_mut::<ROW>();
-    let (visible, _) = buffers.visible.as_chunks::<ROW>();
-    shade_visible(rect, color, visible, bins, shader);
 }
 
 /// A triangle's number, in every lane: what the first pass writes where it wins.
@@ -72,16 +113,17 @@ fn shade_visible<S: LaneShader + PixelShader>(
     rect: TileRect,
     color: &mut [[u32; ROW]],
     visible: &[[u32; ROW]],
+    won: &[[f32; TILE_PIXELS]],
     bins: &Bins,
     shader: &S,
 ) {
     #[cfg(target_arch = "x86_64")]
     if std::arch::is_x86_feature_detected!("avx2") && std::arch::is_x86_feature_detected!("fma") {
         // SAFETY: the CPU has the features the function is compiled for, checked just above.
-        unsafe { shade_visible_avx2(rect, color, visible, bins, shader) };
+        unsafe { shade_visible_avx2(rect, color, visible, won, bins, shader) };
         return;
     }
-    shade_visible_portable(rect, color, visible, bins, shader);
+    shade_visible_portable(rect, color, visible, won, bins, shader);
 }
 
 #[cfg(target_arch = "x86_64")]
@@ -91,10 +133,11 @@ fn shade_visible_avx2<S: LaneShader + PixelShader>(
     rect: TileRect,
     color: &mut [[u32; ROW]],
     visible: &[[u32; ROW]],
+    won: &[[f32; TILE_PIXELS]],
     bins: &Bins,
     shader: &S,
 ) {
-    shade_visible_portable(rect, color, visible, bins, shader);
+    shade_visible_portable(rect, color, visible, won, bins, shader);
 }
 
 /// Each block of eight pixels that shows a triangle, coloured once.
@@ -103,6 +146,7 @@ fn shade_visible_portable<S: LaneShader + PixelShader>(
     rect: TileRect,
     color: &mut [[u32; ROW]],
     visible: &[[u32; ROW]],
+    won: &[[f32; TILE_PIXELS]],
     bins: &Bins,
     shader: &S,
 ) {
@@ -111,7 +155,8 @@ fn shade_visible_portable<S: LaneShader + PixelShader>(
     // The planes of the triangle shown last: a large triangle's blocks follow one another.
     let mut last = (NO_TRIANGLE, Planes::ZERO);
     for (row, (color, visible)) in color.iter_mut().zip(visible).take(rows).enumerate() {
-        let fy = (rect.y0 + row as i32) as f32 + 0.5;
+        let y = rect.y0 + row as i32;
+        let fy = y as f32 + 0.5;
         let (color, _) = color.as_chunks_mut::<LANES>();
         let (visible, _) = visible.as_chunks::<LANES>();
         let blocks = color.iter_mut().zip(visible).take(blocks).enumerate();
@@ -119,15 +164,29 @@ fn shade_visible_portable<S: LaneShader + PixelShader>(
             let Some(&first) = shown.iter().find(|&&n| n != NO_TRIANGLE) else {
                 continue;
             };
-            let x = F8::ramp((rect.x0 + (block * LANES) as i32) as f32 + 0.5);
-            let shaded = match shown.iter().all(|&n| n == first || n == NO_TRIANGLE) {
+            let x0 = rect.x0 + (block * LANES) as i32;
+            let x = F8::ramp(x0 as f32 + 0.5);
+            let one = shown.iter().all(|&n| n == first || n == NO_TRIANGLE);
+            let shaded = match one && first != FRAGMENT {
                 true => {
                     if last.0 != first {
                         last = (first, Planes::unpack(bins.packed(first), bins.used));
                     }
                     shader.shade(&last.1, x, fy)
                 }
-                false => shader.shade_lanes(&lane_planes(shown, bins), x, fy),
+                false => {
+                    let at = row * ROW + block * LANES;
+                    let mut values = AtPixels::new(std::array::from_fn(|k| {
+                        won[k][at..at + LANES].as_array().expect("a block of eight")
+                    }));
+                    for (lane, &n) in shown.iter().enumerate() {
+                        if n != FRAGMENT && n != NO_TRIANGLE {
+                            let planes = Planes::unpack(bins.packed(n), bins.used);
+                            values.set_lane(lane, &planes.at_pixel(x0 + lane as i32, y));
+                        }
+                    }
+                    shader.shade_lanes(&values, x, fy)
+                }
             };
             for (c, (s, &n)) in color.iter_mut().zip(shaded.into_iter().zip(shown)) {
                 if n != NO_TRIANGLE {
@@ -136,17 +195,4 @@ fn shade_visible_portable<S: LaneShader + PixelShader>(
             }
         }
     }
-}
-
-/// The planes of the triangle each lane shows (the lanes that show none keep zeros: their
-/// colours are computed and not written).
-#[inline(always)]
-fn lane_planes(shown: &[u32; LANES], bins: &Bins) -> LanePlanes {
-    let mut planes = LanePlanes::ZERO;
-    for (lane, &number) in shown.iter().enumerate() {
-        if number != NO_TRIANGLE {
-            planes.set_lane(lane, bins.packed(number), bins.used);
-        }
-    }
-    planes
 }

@@ -34,7 +34,7 @@ pub(crate) trait Colour: Sync {
 }
 
 /// A shading that colours eight pixels that need not be a row of one triangle: of different
-/// triangles (`LanePlanes`), as a tile does after its depth test (see `deferred`), or of one
+/// triangles (`AtPixels`), as a tile does after its depth test (see `deferred`), or of one
 /// triangle's different rows (`AtPoints`), as queued pixels are (see `queue`). Untextured
 /// only: texturing's level of detail takes differences across each quad of pixels of one
 /// triangle.

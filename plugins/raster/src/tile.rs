@@ -49,12 +49,13 @@ pub(crate) fn draw_tile<S: PixelShader, Q: Queue<S>>(
     let uniform = shader.uniform();
     // The small triangle whose fragments in this tile its rows have drawn.
     let mut drawn = None;
-    for_each_binned(bins, tile, |number, batch, binned| {
+    for_each_binned(bins, tile, |number, batch, binned, _| {
         let index = binned.index as usize;
         let set_up = || batch.set_up[index];
         let fragment = binned.pixel != ROWS;
         if let (true, Some(colour)) = (fragment, uniform) {
-            return rows.write_fragment(set_up, binned, colour);
+            rows.write_fragment(set_up, binned, colour);
+            return;
         }
         // A shading that varies is paid per block of eight lanes, and a small triangle's
         // fragments in one row share a block: it is drawn by rows at its first fragment.
@@ -85,12 +86,17 @@ pub(crate) fn draw_tile_unqueued<S: PixelShader>(
 }
 
 /// Each triangle or fragment binned in tile number `tile`, in submission order:
-/// `f(number, batch, binned)`, `number` counting the frame's kept triangles across the batches.
+/// `f(number, batch, at)`, `number` counting the frame's kept triangles across the batches and
+/// `at` its place in its batch's list for the tile.
 #[inline(always)]
-pub(crate) fn for_each_binned(bins: &Bins, tile: usize, mut f: impl FnMut(u32, &Batch, &Binned)) {
+pub(crate) fn for_each_binned(
+    bins: &Bins,
+    tile: usize,
+    mut f: impl FnMut(u32, &Batch, &Binned, usize),
+) {
     for (batch, start) in bins.batches.iter().zip(&bins.starts) {
-        for binned in &batch.tiles[tile] {
-            f(start + binned.index, batch, binned);
+        for (at, binned) in batch.tiles[tile].iter().enumerate() {
+            f(start + binned.index, batch, binned, at);
         }
     }
 }
@@ -113,23 +119,25 @@ impl<'a> Rows<'a> {
 
     /// `fragment` of set-up triangle `index()` depth-tested, and where it passes, its depth
     /// written and `value` as its colour: what the rows write for a pixel of a shading that
-    /// is the same at every pixel (the deferred first pass's triangle number). The index is
-    /// read only while the id buffer is recorded.
+    /// is the same at every pixel (the deferred first pass's mark). The index is read only
+    /// while the id buffer is recorded. Whether it passed.
     #[inline(always)]
     pub(crate) fn write_fragment(
         &mut self,
         index: impl FnOnce() -> u32,
         fragment: &Binned,
         value: u32,
-    ) {
+    ) -> bool {
         let (row, column) = (fragment.pixel as usize / ROW, fragment.pixel as usize % ROW);
-        if fragment.z < self.depth[row][column] {
+        let passed = fragment.z < self.depth[row][column];
+        if passed {
             self.depth[row][column] = fragment.z;
             self.color[row][column] = value;
             if let Some(ids) = self.ids.get_mut(row) {
                 ids[column] = index();
             }
         }
+        passed
     }
 }
 

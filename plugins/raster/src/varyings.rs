@@ -20,6 +20,10 @@ pub(crate) const NORMAL: usize = 3;
 /// The texture coordinates (s, t), after the most any shading uses (Phong's six).
 pub(crate) const UV: usize = 6;
 
+/// What a pixel shaded after the depth test (Phong without a texture, see `deferred`) is shaded
+/// from: 1/w, then the eye position and normal times 1/w, at its centre.
+pub(crate) const AT_PIXEL: usize = 1 + UV;
+
 /// How many varyings, from the first, a shading uses: none (flat colour), the Gouraud
 /// intensity, or the eye position and normal (Phong). The texture coordinates come on top.
 pub(crate) fn varyings_used(shading: Shading) -> usize {
@@ -41,6 +45,13 @@ pub(crate) struct Used {
 impl Used {
     fn any(self) -> bool {
         self.shading > 0 || self.textured
+    }
+
+    /// Whether these are the planes of a shading that tiles of small triangles shade after
+    /// their depth test (Phong without a texture): a small triangle's fragments then carry their
+    /// values at their pixel ([`Planes::at_pixel`]).
+    pub(crate) fn at_pixel(self) -> bool {
+        self.shading == UV && !self.textured
     }
 
     /// Each varying whose plane is stored, `f(slot, k)`, in the order they are packed: `slot`
@@ -204,6 +215,22 @@ impl Planes {
         (x - x0) as f32 * self.depth.dadx + row
     }
 
+    /// 1/w and the eye position and normal times 1/w at the centre of pixel (x, y): what a
+    /// lane of `lanes_at` gives there, bit for bit (the same operations in the same order).
+    #[inline(always)]
+    pub(crate) fn at_pixel(&self, x: i32, y: i32) -> [f32; AT_PIXEL] {
+        let (x, y) = (x as f32 + 0.5, y as f32 + 0.5);
+        let at = |plane: &Plane| {
+            let row = plane.a + plane.dady * (y - self.origin[1]);
+            (x - self.origin[0]) * plane.dadx + row
+        };
+        let mut values = [at(&self.inv_w); AT_PIXEL];
+        for (value, plane) in values[1..].iter_mut().zip(&self.varyings) {
+            *value = at(plane);
+        }
+        values
+    }
+
     /// A plane's value at eight pixel centres of one row: the row's value, then x's share.
     #[inline(always)]
     fn lanes_at(&self, plane: &Plane, x: F8, y: f32) -> F8 {
@@ -219,8 +246,9 @@ impl Planes {
 }
 
 /// What the pixel shaders interpolate from: one triangle's planes for all eight lanes
-/// ([`Planes`]), or each lane its own triangle's ([`LanePlanes`]). Both compute a lane's value
-/// by the same operations in the same order, so a pixel's colour does not depend on which.
+/// ([`Planes`]), or each lane its own triangle's values at its pixel ([`AtPixels`]). Both give a
+/// lane the same value by the same operations in the same order, so a pixel's colour does not
+/// depend on which.
 pub(crate) trait Interpolant {
     /// 1/w at eight pixel centres of row y.
     fn inv_w_at(&self, x: F8, y: f32) -> F8;
@@ -250,86 +278,59 @@ pub(crate) trait Interpolant {
     }
 }
 
-/// Both kinds of planes interpolate through their own `lanes_at`.
-macro_rules! interpolant {
-    ($planes:ty) => {
-        impl Interpolant for $planes {
-            #[inline(always)]
-            fn inv_w_at(&self, x: F8, y: f32) -> F8 {
-                self.lanes_at(&self.inv_w, x, y)
-            }
+impl Interpolant for Planes {
+    #[inline(always)]
+    fn inv_w_at(&self, x: F8, y: f32) -> F8 {
+        self.lanes_at(&self.inv_w, x, y)
+    }
 
-            #[inline(always)]
-            fn varying_at(&self, k: usize, x: F8, y: f32) -> F8 {
-                self.lanes_at(&self.varyings[k], x, y)
-            }
-        }
-    };
+    #[inline(always)]
+    fn varying_at(&self, k: usize, x: F8, y: f32) -> F8 {
+        self.lanes_at(&self.varyings[k], x, y)
+    }
 }
 
-interpolant!(Planes);
-
-/// One plane with a value for each of eight lanes.
+/// Eight pixels' values at their centres ([`Planes::at_pixel`]), each lane its own triangle's:
+/// what a block shaded after the depth test interpolates from when its pixels show different
+/// triangles (a big mesh's small ones).
 #[derive(Clone, Copy, Debug)]
-struct LanePlane {
-    a: F8,
-    dadx: F8,
-    dady: F8,
+pub(crate) struct AtPixels {
+    inv_w: F8,
+    varyings: [F8; UV],
 }
 
-impl LanePlane {
-    const ZERO: LanePlane = LanePlane {
-        a: F8([0.0; LANES]),
-        dadx: F8([0.0; LANES]),
-        dady: F8([0.0; LANES]),
-    };
-
+impl AtPixels {
+    /// Lane by lane from `values`, `values[k][lane]` being value k ([`AT_PIXEL`]) of the lane's
+    /// pixel.
     #[inline(always)]
-    fn set(&mut self, lane: usize, packed: &[f32]) {
-        self.a.0[lane] = packed[0];
-        self.dadx.0[lane] = packed[1];
-        self.dady.0[lane] = packed[2];
-    }
-}
-
-/// Eight pixels' planes, each lane its own triangle's (1/w and the varyings; depth is done
-/// with by then): what a block shaded once after the depth test interpolates from.
-#[derive(Clone, Copy, Debug)]
-pub(crate) struct LanePlanes {
-    origin: [F8; 2],
-    inv_w: LanePlane,
-    varyings: [LanePlane; VARYINGS],
-}
-
-impl LanePlanes {
-    pub(crate) const ZERO: LanePlanes = LanePlanes {
-        origin: [F8([0.0; LANES]); 2],
-        inv_w: LanePlane::ZERO,
-        varyings: [LanePlane::ZERO; VARYINGS],
-    };
-
-    /// Lane `lane` takes the planes [`Planes::pack`] wrote into `packed` for `used`.
-    #[inline(always)]
-    pub(crate) fn set_lane(&mut self, lane: usize, packed: &[f32], used: Used) {
-        self.origin[0].0[lane] = packed[0];
-        self.origin[1].0[lane] = packed[1];
-        if !used.any() {
-            return;
+    pub(crate) fn new(values: [&[f32; LANES]; AT_PIXEL]) -> AtPixels {
+        AtPixels {
+            inv_w: F8(*values[0]),
+            varyings: std::array::from_fn(|k| F8(*values[1 + k])),
         }
-        self.inv_w.set(lane, &packed[packed_at(1)..]);
-        let varyings = &mut self.varyings;
-        used.for_each_stored(|slot, k| varyings[k].set(lane, &packed[packed_at(slot)..]));
     }
 
-    /// As [`Planes`]' `lanes_at`, lane by lane.
+    /// Lane `lane` takes `values`.
     #[inline(always)]
-    fn lanes_at(&self, plane: &LanePlane, x: F8, y: f32) -> F8 {
-        let row = plane.a + plane.dady * (F8::splat(y) - self.origin[1]);
-        (x - self.origin[0]).mul_add(plane.dadx, row)
+    pub(crate) fn set_lane(&mut self, lane: usize, values: &[f32; AT_PIXEL]) {
+        self.inv_w.0[lane] = values[0];
+        for (varying, &value) in self.varyings.iter_mut().zip(&values[1..]) {
+            varying.0[lane] = value;
+        }
     }
 }
 
-interpolant!(LanePlanes);
+impl Interpolant for AtPixels {
+    #[inline(always)]
+    fn inv_w_at(&self, _: F8, _: f32) -> F8 {
+        self.inv_w
+    }
+
+    #[inline(always)]
+    fn varying_at(&self, k: usize, _: F8, _: f32) -> F8 {
+        self.varyings[k]
+    }
+}
 
 /// One triangle's planes at eight pixel centres anywhere in a tile, lane i's at
 /// (x_i, y + dy_i): what the pixels of small spans, queued (see `queue`), are shaded from.
