@@ -9,7 +9,8 @@
 //! listed as its fragments instead: each covered pixel with its depth, which the tile tests
 //! without reading the triangle (most of a big mesh's triangles cover a pixel or two), and,
 //! for a shading done after the depth test, its values at the pixel, which the shading then
-//! reads in order from the tile's own list, not from the triangle, anywhere in memory.
+//! reads in order from the tile's own list, not from the triangle, anywhere in memory; such a
+//! triangle's planes are then not stored at all.
 
 use close2gl_core::Topology;
 use rayon::prelude::*;
@@ -28,7 +29,10 @@ const BATCHES_PER_CORE: usize = 4;
 pub(crate) struct Batch {
     /// The triangles that may cover a pixel centre, in order: where each draws...
     pub footprints: Vec<Footprint>,
-    /// ...its planes, packed ([`Planes::pack`]), `Bins::used.packed_floats()` each...
+    /// ...its place among the planes ([`NO_PLANES`] for a small one whose fragments carry
+    /// their values, see `values`)...
+    pub slots: Vec<u32>,
+    /// ...which are packed ([`Planes::pack`]), `Bins::used.packed_floats()` each...
     pub planes: Vec<f32>,
     /// ...and its set-up index (what the id buffer records).
     pub set_up: Vec<u32>,
@@ -53,6 +57,11 @@ pub(crate) struct Binned {
 
 /// `Binned::pixel` of a triangle drawn by rows.
 pub(crate) const ROWS: u32 = u32::MAX;
+
+/// `Batch::slots` of a triangle with no planes stored: a small one whose fragments carry their
+/// values, which is all that the tiles then read of it (its planes were the most the frame
+/// wrote, and read back from anywhere in memory).
+pub(crate) const NO_PLANES: u32 = u32::MAX;
 
 /// Every batch of a frame, in submission order.
 #[derive(Debug, Default)]
@@ -120,8 +129,7 @@ impl Bins {
         // loads (the shading pass asks this for most pixels of a big mesh).
         let batch = self.starts.iter().filter(|&&s| s <= number).count() - 1;
         let index = (number - self.starts[batch]) as usize;
-        let floats = self.used.packed_floats();
-        &self.batches[batch].planes[index * floats..][..floats]
+        self.batches[batch].packed(index, self.used)
     }
 
     /// Where every kept triangle draws, with its set-up index, in order.
@@ -136,12 +144,19 @@ impl Batch {
     /// Triangle `index`'s planes, unpacked.
     #[inline(always)]
     pub(crate) fn planes(&self, index: usize, used: Used) -> Planes {
+        Planes::unpack(self.packed(index, used), used)
+    }
+
+    /// Triangle `index`'s packed planes (none when [`NO_PLANES`]: nothing asks for them).
+    #[inline(always)]
+    fn packed(&self, index: usize, used: Used) -> &[f32] {
         let floats = used.packed_floats();
-        Planes::unpack(&self.planes[index * floats..][..floats], used)
+        &self.planes[self.slots[index] as usize * floats..][..floats]
     }
 
     fn clear(&mut self, tiles: usize) {
         self.footprints.clear();
+        self.slots.clear();
         self.planes.clear();
         self.set_up.clear();
         self.tiles.resize_with(tiles, Vec::new);
@@ -154,7 +169,15 @@ impl Batch {
     fn push(&mut self, grid: Grid, used: Used, set_up: u32, t: &Triangle) {
         let index = self.footprints.len() as u32;
         self.footprints.push(t.footprint);
-        t.planes.pack(used, &mut self.planes);
+        let values_only = used.at_pixel() && matches!(t.centres, Centres::Few(_));
+        match values_only {
+            true => self.slots.push(NO_PLANES),
+            false => {
+                let floats = used.packed_floats();
+                self.slots.push((self.planes.len() / floats) as u32);
+                t.planes.pack(used, &mut self.planes);
+            }
+        }
         self.set_up.push(set_up);
         let [x0, y0, x1, y1] = t.footprint.bbox;
         let tiles_x = grid.tiles_x as usize;

@@ -85,7 +85,7 @@ fn depth_pass(
                 );
             }
             pixel => {
-                if rows.write_fragment(set_up, binned, FRAGMENT) {
+                if rows.write_fragment(set_up, binned, || FRAGMENT) {
                     let values = &batch.values[tile][at];
                     for (won, &value) in won.iter_mut().zip(values) {
                         won[pixel as usize] = value;

@@ -272,6 +272,8 @@ mod tests {
     use close2gl_pipeline::FastPipeline;
     use glam::{Vec2, Vec3};
 
+    use crate::bin::{Batch, NO_PLANES};
+
     use super::*;
 
     /// A grid of small triangles with normals that vary from corner to corner, and two large
@@ -357,6 +359,9 @@ mod tests {
             .filter(|&t| rasterizer.bins.binned(t) >= DEFER_FROM)
             .count();
         assert!(deferred > 0 && deferred < rasterizer.target.grid.tiles());
+        // Small triangles whose fragments carry their values, with no planes stored.
+        let values_only = |b: &Batch| b.slots.contains(&NO_PLANES);
+        assert!(rasterizer.bins.batches.iter().any(values_only));
 
         let light_eye = ClipTransform::new(&camera).eye(lighting.light_position);
         let light = Light::new(&lighting, light_eye, Shading::Phong);

@@ -9,7 +9,7 @@ use crate::lanes::{F8, LANES, V8};
 use crate::lighting::Light;
 use crate::target::{pack, pack8};
 use crate::texture::{Filter, Mips};
-use crate::varyings::{EYE, INTENSITY, Interpolant, NORMAL, Planes};
+use crate::varyings::{AT_PIXEL, AtPixels, EYE, INTENSITY, Interpolant, NORMAL, Planes};
 
 /// The colours of eight pixels of a triangle (its `planes`), centred at (x, y). Inlined into
 /// the row loop (see `row::draw_span`).
@@ -19,6 +19,14 @@ pub(crate) trait PixelShader: Sync {
     /// The colour of every pixel, when it is the same everywhere: a fragment then takes it
     /// without a block of lanes shaded for it.
     fn uniform(&self) -> Option<u32> {
+        None
+    }
+
+    /// The colour of the pixel centred at (x, y) from its `values` (`Planes::at_pixel`), for
+    /// the shading whose fragments carry them (`Used::at_pixel`: Phong without a texture), as
+    /// its triangle's rows would colour it; None for the others.
+    fn at_pixel(&self, values: &[f32; AT_PIXEL], x: f32, y: f32) -> Option<u32> {
+        let _ = (values, x, y);
         None
     }
 }
@@ -31,6 +39,9 @@ pub(crate) trait Colour: Sync {
     fn uniform(&self) -> Option<Vec3> {
         None
     }
+
+    /// Whether it is coloured from a pixel's values alone ([`AT_PIXEL`]: Phong's).
+    const AT_PIXEL: bool = false;
 }
 
 /// A shading that colours eight pixels that need not be a row of one triangle: of different
@@ -70,6 +81,16 @@ impl<C: Colour, T: Texturing> PixelShader for Shaded<C, T> {
             true => self.colour.uniform().map(pack),
             false => None,
         }
+    }
+
+    #[inline(always)]
+    fn at_pixel(&self, values: &[f32; AT_PIXEL], x: f32, y: f32) -> Option<u32> {
+        if !(C::AT_PIXEL && T::NONE) {
+            return None;
+        }
+        let (planes, x) = (AtPixels::splat(values), F8::splat(x));
+        let w = planes.w(x, y);
+        Some(pack8(self.colour.colour(&planes, x, y, w))[0])
     }
 }
 
@@ -114,6 +135,8 @@ pub(crate) struct Phong {
 }
 
 impl Colour for Phong {
+    const AT_PIXEL: bool = true;
+
     #[inline(always)]
     fn colour<P: Interpolant>(&self, planes: &P, x: F8, y: f32, w: F8) -> V8 {
         let eye = planes.varying3(EYE, x, y, w);

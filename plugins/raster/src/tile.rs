@@ -49,13 +49,21 @@ pub(crate) fn draw_tile<S: PixelShader, Q: Queue<S>>(
     let uniform = shader.uniform();
     // The small triangle whose fragments in this tile its rows have drawn.
     let mut drawn = None;
-    for_each_binned(bins, tile, |number, batch, binned, _| {
+    for_each_binned(bins, tile, |number, batch, binned, at| {
         let index = binned.index as usize;
         let set_up = || batch.set_up[index];
         let fragment = binned.pixel != ROWS;
         if let (true, Some(colour)) = (fragment, uniform) {
-            rows.write_fragment(set_up, binned, colour);
+            rows.write_fragment(set_up, binned, || colour);
             return;
+        }
+        // A fragment that carries its values (then its triangle has no planes stored).
+        if let Some(values) = batch.values[tile].get(at).filter(|_| fragment) {
+            let (x, y) = rect.centre(binned.pixel);
+            if let Some(colour) = shader.at_pixel(values, x, y) {
+                rows.write_fragment(set_up, binned, || colour);
+                return;
+            }
         }
         // A shading that varies is paid per block of eight lanes, and a small triangle's
         // fragments in one row share a block: it is drawn by rows at its first fragment.
@@ -126,13 +134,13 @@ impl<'a> Rows<'a> {
         &mut self,
         index: impl FnOnce() -> u32,
         fragment: &Binned,
-        value: u32,
+        value: impl FnOnce() -> u32,
     ) -> bool {
         let (row, column) = (fragment.pixel as usize / ROW, fragment.pixel as usize % ROW);
         let passed = fragment.z < self.depth[row][column];
         if passed {
             self.depth[row][column] = fragment.z;
-            self.color[row][column] = value;
+            self.color[row][column] = value();
             if let Some(ids) = self.ids.get_mut(row) {
                 ids[column] = index();
             }

@@ -310,6 +310,15 @@ impl AtPixels {
         }
     }
 
+    /// Every lane the same pixel's `values`.
+    #[inline(always)]
+    pub(crate) fn splat(values: &[f32; AT_PIXEL]) -> AtPixels {
+        AtPixels {
+            inv_w: F8::splat(values[0]),
+            varyings: std::array::from_fn(|k| F8::splat(values[1 + k])),
+        }
+    }
+
     /// Lane `lane` takes `values`.
     #[inline(always)]
     pub(crate) fn set_lane(&mut self, lane: usize, values: &[f32; AT_PIXEL]) {
