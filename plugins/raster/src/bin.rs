@@ -98,16 +98,12 @@ impl Bins {
                 let last = (first + per_batch).min(count);
                 let indices = &primitives.indices[first * per_primitive..last * per_primitive];
                 batch.clear(grid.tiles());
-                set_up(
-                    primitives.topology,
-                    indices,
-                    first,
-                    primitives.vertices,
-                    params,
-                    // Inlined, so that the triangle is not read back through memory.
-                    #[inline(always)]
-                    |set_up, t| batch.push(grid, params.used, set_up, t),
-                );
+                // Compiled twice: the binning of the shading whose fragments carry their values,
+                // and of the others, which pay nothing for them.
+                match params.used.at_pixel() {
+                    true => batch.fill::<true>(grid, &primitives, indices, first, params),
+                    false => batch.fill::<false>(grid, &primitives, indices, first, params),
+                }
             });
         self.starts.clear();
         let mut start = 0;
@@ -165,11 +161,35 @@ impl Batch {
         self.values.iter_mut().for_each(Vec::clear);
     }
 
+    /// Sets up and bins `indices`, the primitives from number `first`.
     #[inline(always)]
-    fn push(&mut self, grid: Grid, used: Used, set_up: u32, t: &Triangle) {
+    fn fill<const VALUES: bool>(
+        &mut self,
+        grid: Grid,
+        primitives: &Primitives<'_>,
+        indices: &[u32],
+        first: usize,
+        params: SetupParams,
+    ) {
+        set_up(
+            primitives.topology,
+            indices,
+            first,
+            primitives.vertices,
+            params,
+            // Inlined, so that the triangle is not read back through memory.
+            #[inline(always)]
+            |set_up, t| self.push::<VALUES>(grid, params.used, set_up, t),
+        );
+    }
+
+    /// Stores triangle `t` and lists it in its tiles, with its fragments' values when
+    /// `VALUES` (`Used::at_pixel`).
+    #[inline(always)]
+    fn push<const VALUES: bool>(&mut self, grid: Grid, used: Used, set_up: u32, t: &Triangle) {
         let index = self.footprints.len() as u32;
         self.footprints.push(t.footprint);
-        let values_only = used.at_pixel() && matches!(t.centres, Centres::Few(_));
+        let values_only = VALUES && matches!(t.centres, Centres::Few(_));
         match values_only {
             true => self.slots.push(NO_PLANES),
             false => {
@@ -193,7 +213,7 @@ impl Batch {
                     for tx in x0 / TILE..=x1 / TILE {
                         let tile = tile(tx * TILE, ty * TILE);
                         self.tiles[tile].push(whole);
-                        if used.at_pixel() {
+                        if VALUES {
                             self.values[tile].push([0.0; AT_PIXEL]);
                         }
                     }
@@ -211,7 +231,7 @@ impl Batch {
                         pixel: ((y - ty0) * ROW as i32 + (x - tx0)) as u32,
                         z: t.planes.depth_in_tile(tx0, x, y),
                     });
-                    if used.at_pixel() {
+                    if VALUES {
                         self.values[tile].push(t.planes.at_pixel(x, y));
                     }
                 }
