@@ -18,7 +18,7 @@
 //! submission order: each primitive to triangles by `primitives` and `setup`, with `edge`'s
 //! fixed-point edge functions and `varyings`' planes, those that cover no pixel centre dropped
 //! before their planes are built, the rest listed in the 64×64 tiles they touch, a small one
-//! as its fragments, each pixel with its depth) → the tiles
+//! as its fragments, each pixel with its depth and, for Phong, its values there) → the tiles
 //! shared out between the threads by `schedule` → `tile` (a
 //! narrow triangle's rows found pixel by pixel, a wide one's solved; or `deferred`, a tile of
 //! small Phong-shaded triangles depth-tested first and shaded once per pixel after) → `row` →

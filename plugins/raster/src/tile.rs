@@ -3,7 +3,8 @@
 //! others are left out of every row), then each row's span of covered pixels, solved exactly
 //! from those edges (no per-pixel edge test), handed to `row`. A small triangle's fragments
 //! (see `bin`) are each depth-tested and written alone when the colour is the same at every
-//! pixel; otherwise the triangle is drawn by rows at its first fragment.
+//! pixel or the fragment carries its values (Phong); otherwise the triangle is drawn by rows
+//! at its first fragment.
 
 use crate::bin::{Batch, Binned, Bins, ROWS};
 use crate::edge::{Cover, Edge, row_inside, row_inside_narrow};
