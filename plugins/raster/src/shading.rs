@@ -40,8 +40,8 @@ pub(crate) trait Colour: Sync {
         None
     }
 
-    /// Whether it is coloured from a pixel's values alone ([`AT_PIXEL`]: Phong's).
-    const AT_PIXEL: bool = false;
+    /// Whether it is coloured from a pixel's values alone (`Planes::at_pixel`: Phong's).
+    const FROM_VALUES: bool = false;
 }
 
 /// A shading that colours eight pixels that need not be a row of one triangle: of different
@@ -85,7 +85,7 @@ impl<C: Colour, T: Texturing> PixelShader for Shaded<C, T> {
 
     #[inline(always)]
     fn at_pixel(&self, values: &[f32; AT_PIXEL], x: f32, y: f32) -> Option<u32> {
-        if !(C::AT_PIXEL && T::NONE) {
+        if !(C::FROM_VALUES && T::NONE) {
             return None;
         }
         let (planes, x) = (AtPixels::splat(values), F8::splat(x));
@@ -135,7 +135,7 @@ pub(crate) struct Phong {
 }
 
 impl Colour for Phong {
-    const AT_PIXEL: bool = true;
+    const FROM_VALUES: bool = true;
 
     #[inline(always)]
     fn colour<P: Interpolant>(&self, planes: &P, x: F8, y: f32, w: F8) -> V8 {
