@@ -22,11 +22,10 @@ pub(crate) trait PixelShader: Sync {
         None
     }
 
-    /// The colour of the pixel centred at (x, y) from its `values` (`Planes::at_pixel`), for
-    /// the shading whose fragments carry them (`Used::at_pixel`: Phong without a texture), as
-    /// its triangle's rows would colour it; None for the others.
-    fn at_pixel(&self, values: &[f32; AT_PIXEL], x: f32, y: f32) -> Option<u32> {
-        let _ = (values, x, y);
+    /// A pixel's colour from its `values` alone (`Planes::at_pixel`), for the shading whose
+    /// fragments carry them (`Used::at_pixel`: Phong without a texture), as its triangle's rows
+    /// would colour it; None for the others.
+    fn at_pixel(&self, _: &[f32; AT_PIXEL]) -> Option<u32> {
         None
     }
 }
@@ -84,11 +83,12 @@ impl<C: Colour, T: Texturing> PixelShader for Shaded<C, T> {
     }
 
     #[inline(always)]
-    fn at_pixel(&self, values: &[f32; AT_PIXEL], x: f32, y: f32) -> Option<u32> {
+    fn at_pixel(&self, values: &[f32; AT_PIXEL]) -> Option<u32> {
         if !(C::FROM_VALUES && T::NONE) {
             return None;
         }
-        let (planes, x) = (AtPixels::splat(values), F8::splat(x));
+        // The values are the pixel's own: where it is plays no part.
+        let (planes, x, y) = (AtPixels::splat(values), F8::splat(0.0), 0.0);
         let w = planes.w(x, y);
         Some(pack8(self.colour.colour(&planes, x, y, w))[0])
     }

@@ -22,17 +22,6 @@ pub(crate) struct TileRect {
     pub y1: i32,
 }
 
-impl TileRect {
-    /// The centre of the tile's pixel number `pixel` (row · 64 + column).
-    pub(crate) fn centre(&self, pixel: u32) -> (f32, f32) {
-        let (row, column) = ((pixel as usize / ROW) as i32, (pixel as usize % ROW) as i32);
-        (
-            (self.x0 + column) as f32 + 0.5,
-            (self.y0 + row) as f32 + 0.5,
-        )
-    }
-}
-
 /// The viewport cut into tiles.
 #[derive(Clone, Copy, Debug, Default)]
 pub(crate) struct Grid {

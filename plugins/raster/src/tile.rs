@@ -59,12 +59,10 @@ pub(crate) fn draw_tile<S: PixelShader, Q: Queue<S>>(
             return;
         }
         // A fragment that carries its values (then its triangle has no planes stored).
-        if let Some(values) = batch.values[tile].get(at).filter(|_| fragment) {
-            let (x, y) = rect.centre(binned.pixel);
-            if let Some(colour) = shader.at_pixel(values, x, y) {
-                rows.write_fragment(set_up, binned, || colour);
-                return;
-            }
+        let values = batch.values[tile].get(at).filter(|_| fragment);
+        if let Some(colour) = values.and_then(|values| shader.at_pixel(values)) {
+            rows.write_fragment(set_up, binned, || colour);
+            return;
         }
         // A shading that varies is paid per block of eight lanes, and a small triangle's
         // fragments in one row share a block: it is drawn by rows at its first fragment.
