@@ -3,7 +3,7 @@
 use std::process::ExitCode;
 
 use clap::{Parser, Subcommand};
-use close2gl::commands::{self, bench, inspect, render, run, stats};
+use close2gl::commands::{self, bench, check, inspect, render, run, stats};
 
 #[derive(Parser)]
 #[command(
@@ -29,6 +29,9 @@ enum Command {
     /// One triangle's journey through the pipeline (--triangle N), or who drew one pixel in
     /// each view and why the others lost (--pixel X,Y), as JSON.
     Inspect(inspect::InspectArgs),
+    /// Check a program's trace of one frame against close2gl's pipeline, stage by stage, and
+    /// name the classic mistake that reproduces it (exit 0 agree, 1 differs, 2 bad input).
+    Check(check::CheckArgs),
 }
 
 fn main() -> ExitCode {
@@ -39,6 +42,7 @@ fn main() -> ExitCode {
         Some(Command::Render(args)) => render::run(args),
         Some(Command::Bench(args)) => bench::run(args),
         Some(Command::Inspect(args)) => inspect::run(args),
+        Some(Command::Check(args)) => check::run(args),
     };
     commands::exit(result)
 }

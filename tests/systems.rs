@@ -223,6 +223,7 @@ fn cw_and_ccw_partition_a_closed_cube() {
 /// One triangle crossing the near plane: two corners in front of the camera, one behind it.
 fn triangle_through_the_near_plane(clipping: Clipping) -> Close2glFrame {
     let mesh = Mesh {
+        face_normals: Vec::new(),
         name: "one".into(),
         positions: vec![
             Vec3::new(-0.3, -0.3, -2.0),

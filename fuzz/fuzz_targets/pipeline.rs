@@ -146,6 +146,7 @@ fn mesh(input: &Input) -> Mesh {
             .collect()
     };
     Mesh {
+        face_normals: Vec::new(),
         name: "fuzz".into(),
         positions: vertices.iter().map(|v| vec3(v.position)).collect(),
         normals: vertices.iter().map(|v| vec3(v.normal)).collect(),

@@ -1,6 +1,7 @@
 //! One module per subcommand; each parses its own arguments and returns a [`CliError`].
 
 pub mod bench;
+pub mod check;
 pub mod inspect;
 pub mod render;
 pub mod run;
@@ -15,6 +16,9 @@ use std::process::ExitCode;
 pub enum CliError {
     Input(String),
     Runtime(String),
+    /// The command ran and its answer is no (`check` found a difference): exit 1, its report
+    /// already printed.
+    Verdict,
 }
 
 /// Prints the one-line error and maps it to the process exit code.
@@ -29,5 +33,6 @@ pub fn exit(result: Result<(), CliError>) -> ExitCode {
             eprintln!("close2gl: {message}");
             ExitCode::from(1)
         }
+        Err(CliError::Verdict) => ExitCode::from(1),
     }
 }

@@ -107,6 +107,8 @@ pub const KEYS: &[Key] = &[
         IfChanged(|c| name(c.render.texture_filter))),
     key!("render"."overlay", |c, v, _b| c.render.overlay = named(v)?,
         IfChanged(|c| name(c.render.overlay))),
+    key!("render"."mistake", |c, v, _b| c.render.mistake = named(v)?,
+        IfChanged(|c| name(c.render.mistake))),
     key!("lighting"."light_position", |c, v, _b| c.lighting.light_position = vec3(v)?,
         IfChanged(|c| Some(list3(c.lighting.light_position)))),
     key!("lighting"."ia", |c, v, _b| c.lighting.ia = color(v)?,

@@ -54,7 +54,7 @@ pub use outside::{OutsideOrbit, OutsideView, STAGE_NAMES};
 pub use reference_camera::camera_matrices;
 pub use schedule::{FrameSet, PostUpdate, PreUpdate, Render, Startup, Update, frame_schedules};
 pub use settings::{
-    Clipping, FrontFace, Lighting, Overlay, Rasterizer, RenderMode, RenderSettings, Shading,
+    Clipping, FrontFace, Lighting, Mistake, Overlay, Rasterizer, RenderMode, RenderSettings, Shading,
     TextureFilter,
 };
 pub use settings_plugin::SettingsPlugin;

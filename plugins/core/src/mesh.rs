@@ -13,6 +13,9 @@ pub struct Mesh {
     /// upwards in the image, as in OpenGL: (0, 0) is the image's bottom-left corner.
     pub uvs: Vec<Vec2>,
     pub triangles: Vec<[u32; 3]>,
+    /// The file's face normal of each triangle, as written (a `.in` file gives them), or none.
+    /// Only the mistake `culling_by_file_normals` reads them: the pipeline culls by winding.
+    pub face_normals: Vec<Vec3>,
 }
 
 impl Mesh {
@@ -40,6 +43,13 @@ impl Mesh {
                 "{} texture coordinates for {} positions",
                 self.uvs.len(),
                 self.positions.len()
+            ));
+        }
+        if !self.face_normals.is_empty() && self.face_normals.len() != self.triangles.len() {
+            return Err(format!(
+                "{} face normals for {} triangles",
+                self.face_normals.len(),
+                self.triangles.len()
             ));
         }
         if let Some(p) = self.uvs.iter().position(|uv| !uv.is_finite()) {

@@ -64,6 +64,31 @@ named_enum!(
     }
 );
 
+named_enum!(
+    /// A classic mistake of the assignment, injected into Close2GL so that its symptom shows
+    /// beside the reference (the pipeline's `mistakes` module says what each one does).
+    Mistake {
+        None = "none",
+        FovNotHalved = "fov_not_halved",
+        FovInDegrees = "fov_in_degrees",
+        FovsSwapped = "fovs_swapped",
+        AspectFromAngles = "aspect_from_angles",
+        ModelviewTransposed = "modelview_transposed",
+        TranslationUnrotated = "translation_unrotated",
+        TranslationSign = "translation_sign",
+        LeftHanded = "left_handed",
+        ProductOrder = "product_order",
+        DivideBeforeClip = "divide_before_clip",
+        NoClipping = "no_clipping",
+        DepthRowSign = "depth_row_sign",
+        ViewportYFlipped = "viewport_y_flipped",
+        ViewportFullScale = "viewport_full_scale",
+        CullingInverted = "culling_inverted",
+        CullingByFileNormals = "culling_by_file_normals",
+        CullingByViewAxis = "culling_by_view_axis"
+    }
+);
+
 /// One set of switches for both views.
 #[derive(Resource, Clone, Copy, Debug, PartialEq)]
 pub struct RenderSettings {
@@ -84,6 +109,8 @@ pub struct RenderSettings {
     pub texture_filter: TextureFilter,
     /// The inspector's display over both views.
     pub overlay: Overlay,
+    /// A classic mistake Close2GL makes on purpose (`none`: the right pipeline).
+    pub mistake: Mistake,
 }
 
 impl Default for RenderSettings {
@@ -100,6 +127,7 @@ impl Default for RenderSettings {
             texture: true,
             texture_filter: TextureFilter::Trilinear,
             overlay: Overlay::Off,
+            mistake: Mistake::None,
         }
     }
 }

@@ -465,6 +465,7 @@ mod tests {
     /// Close2GL's verdict on the triangle: drawn (it has a facing) or culled (it has none).
     fn close2gl_draws(corners: [Vec3; 3]) -> bool {
         let mesh = Mesh {
+            face_normals: Vec::new(),
             name: "sliver".into(),
             positions: corners.to_vec(),
             normals: vec![Vec3::Z; 3],

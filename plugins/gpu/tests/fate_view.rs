@@ -27,6 +27,7 @@ fn scene() -> Mesh {
         Vec3::new(0.0, 3.0, -10.0),
     ];
     Mesh {
+        face_normals: Vec::new(),
         name: "fates".into(),
         normals: vec![Vec3::Z; positions.len()],
         positions,

@@ -23,6 +23,7 @@ fn two_squares(near_is_back: bool) -> Mesh {
         [[4, 5, 6], [4, 6, 7]]
     };
     Mesh {
+        face_normals: Vec::new(),
         name: "two squares".into(),
         normals: vec![Vec3::Z; positions.len()],
         positions,

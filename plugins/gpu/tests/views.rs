@@ -313,6 +313,7 @@ fn quad(corners: [Vec3; 4], repeat: f32) -> Mesh {
         .cross(corners[2] - corners[0])
         .normalize();
     Mesh {
+        face_normals: Vec::new(),
         name: "quad".into(),
         positions: corners.to_vec(),
         normals: vec![normal; 4],

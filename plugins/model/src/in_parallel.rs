@@ -13,6 +13,7 @@ use close2gl_core::limits::MAX_LINE_BYTES;
 use crate::decimal::parse_f32;
 use crate::in_triangles::{Body, FileTriangle, Orientation, VERTEX_TAGS, VertexLayout};
 use crate::mesh_builder::Corner;
+use glam::Vec3;
 use crate::words::{Words, is_space, trim};
 
 /// Bytes read at a time for each core: large enough that the cores' start and join are nothing
@@ -149,7 +150,8 @@ fn starts_v0(text: &[u8]) -> bool {
 
 /// The triangles of one piece, oriented and made corners, and what orienting them corrected.
 struct Piece {
-    triangles: Vec<[Corner; 3]>,
+    /// Each triangle's corners and the file's face normal.
+    triangles: Vec<([Corner; 3], Vec3)>,
     orientation: Orientation,
 }
 
@@ -160,8 +162,8 @@ fn join(body: &mut Body, pieces: Vec<Option<Piece>>) -> Result<bool, String> {
             return Ok(false);
         };
         body.orientation.absorb(&piece.orientation);
-        for corners in &piece.triangles {
-            body.add_corners(corners)?;
+        for (corners, face_normal) in &piece.triangles {
+            body.add_corners(corners, *face_normal)?;
         }
     }
     Ok(true)
@@ -191,9 +193,10 @@ fn parse_piece(text: &[u8], layout: &VertexLayout) -> Option<Piece> {
         }
         let face = read_numbers(records.next()??, &["face", "normal"], &[3], &mut numbers)?;
         triangle.set_face_normal(face);
+        let face_normal = triangle.face_normal();
         piece
             .triangles
-            .push(piece.orientation.orient(triangle).corners());
+            .push((piece.orientation.orient(triangle).corners(), face_normal));
     }
     Some(piece)
 }

@@ -27,18 +27,24 @@ impl Body {
 
     /// Adds a triangle as the file gives it.
     pub(crate) fn add(&mut self, triangle: FileTriangle) -> Result<(), String> {
+        let face_normal = triangle.face_normal();
         let corners = self.orientation.orient(triangle).corners();
-        self.add_corners(&corners)
+        self.add_corners(&corners, face_normal)
     }
 
     /// Adds the corners of a triangle [`Orientation::orient`] has seen (whose counts the caller
-    /// keeps).
-    pub(crate) fn add_corners(&mut self, corners: &[Corner; 3]) -> Result<(), String> {
+    /// keeps), with the file's face normal.
+    pub(crate) fn add_corners(
+        &mut self,
+        corners: &[Corner; 3],
+        face_normal: Vec3,
+    ) -> Result<(), String> {
         let mut indices = [0; 3];
         for (index, corner) in indices.iter_mut().zip(corners) {
             *index = self.builder.corner(corner)?;
         }
         self.builder.triangle(indices);
+        self.builder.face_normal(face_normal);
         self.triangles += 1;
         Ok(())
     }
@@ -96,6 +102,11 @@ impl FileTriangle {
 
     pub(crate) fn set_face_normal(&mut self, n: &[f32]) {
         self.face_normal = Vec3::new(n[0], n[1], n[2]);
+    }
+
+    /// The face normal as the file gives it.
+    pub(crate) fn face_normal(&self) -> Vec3 {
+        self.face_normal
     }
 
     /// The corners as the mesh builder takes them.

@@ -84,6 +84,12 @@ impl MeshBuilder {
         self.mesh.triangles.push(corners);
     }
 
+    /// The face normal the file gives the triangle just added (a `.in` file does; an `.obj`
+    /// does not, and its mesh has none).
+    pub(crate) fn face_normal(&mut self, normal: Vec3) {
+        self.mesh.face_normals.push(normal);
+    }
+
     /// The mesh; without texture coordinates when no corner had one.
     pub(crate) fn finish(self) -> Mesh {
         self.mesh

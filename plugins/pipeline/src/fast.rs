@@ -276,6 +276,13 @@ impl Corners<'_> {
 /// Each mesh vertex as the rasterizer needs it: window position, depth and 1/w (for vertices
 /// inside the view volume; the others are only reached through clipping), eye-space position
 /// and normal, texture coordinates.
+/// The mesh's vertices as the software rasterizer takes them, for this camera and stage.
+pub(crate) fn raster_vertices_of(mesh: &Mesh, camera: &Camera, stage: &Stage) -> Vec<RasterVertex> {
+    let mut out = Vec::new();
+    raster_vertices(mesh, &ClipTransform::new(camera), stage, &mut out);
+    out
+}
+
 fn raster_vertices(
     mesh: &Mesh,
     transform: &ClipTransform,

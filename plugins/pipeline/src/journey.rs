@@ -164,6 +164,7 @@ mod tests {
         for i in 0..3000 {
             let mut point = || Vec3::new(r() - 0.5, r() - 0.5, r() - 0.5) * 24.0;
             let mesh = Mesh {
+                face_normals: Vec::new(),
                 name: "one".into(),
                 positions: vec![point(), point(), point()],
                 normals: vec![Vec3::Z; 3],

@@ -16,6 +16,7 @@ pub mod fast;
 pub mod frustum;
 pub mod journey;
 pub mod matrices;
+pub mod mistakes;
 pub mod morph;
 pub mod stage;
 pub mod textbook;
@@ -25,7 +26,8 @@ use std::time::Instant;
 use bevy_ecs::prelude::*;
 use close2gl_core::Owner;
 use close2gl_core::{
-    App, Camera, Close2glFrame, FateCounts, FateKind, Fates, FrameSet, Mesh, Plugin, PostUpdate,
+    App, Camera, Close2glFrame, FateCounts, FateKind, Fates, FrameSet, Mesh, Mistake, Plugin,
+    PostUpdate,
     RenderSettings, StageCounts, Viewport,
 };
 
@@ -69,7 +71,22 @@ pub fn close2gl_system(
         return;
     }
     let start = Instant::now();
-    pipeline.run(&mesh, &camera, &settings, *viewport, &mut frame, &mut fates);
+    if settings.mistake != Mistake::None {
+        let mistakes = mistakes::Mistakes::one(settings.mistake);
+        let (mistaken, all) =
+            textbook::run_mistaken(&mesh, &camera, &settings, *viewport, mistakes);
+        *frame = mistaken;
+        let record = fates.record;
+        *fates = all;
+        fates.record = record;
+        if !record {
+            // The rasterizer adds its fates only to a recorded frame.
+            fates.triangles.clear();
+            frame.raster.triangles.clear();
+        }
+    } else {
+        pipeline.run(&mesh, &camera, &settings, *viewport, &mut frame, &mut fates);
+    }
     frame.stage_ms = start.elapsed().as_secs_f64() * 1e3;
 }
 

@@ -32,6 +32,15 @@ impl Stage {
         }
     }
 
+    /// How many vertices each primitive of [`Stage::topology`] has.
+    pub fn topology_vertices(&self) -> usize {
+        match self.mode {
+            RenderMode::Points => 1,
+            RenderMode::Wireframe => 2,
+            RenderMode::Solid => 3,
+        }
+    }
+
     pub fn topology(&self) -> Topology {
         match self.mode {
             RenderMode::Points => Topology::Points,

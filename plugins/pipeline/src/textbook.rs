@@ -2,11 +2,15 @@
 //! send it down the stage. Slow (shared vertices are transformed once per triangle) and easy to
 //! check; the fast path must produce exactly its output.
 
-use close2gl_core::{Camera, Close2glFrame, Fates, Mesh, RenderSettings, Viewport};
+use close2gl_core::{
+    Camera, Clipping, Close2glFrame, CutVertex, Fates, Mesh, Rasterizer, RenderMode,
+    RenderSettings, Viewport,
+};
 
 use crate::Tally;
 use crate::matrices::ClipTransform;
-use crate::stage::{Stage, corner, process};
+use crate::mistakes::{ClipRule, Declared, Mistakes, Outcome, Program, ProgramCamera, System2d};
+use crate::stage::{Fate, Stage, corner, process};
 
 /// The 2D buffer and counts for this camera, mesh, settings and viewport, in a new frame (the
 /// fast path reuses one instead).
@@ -57,4 +61,95 @@ pub fn run_recording(
     frame.counts = counts.stage_counts();
     fates.counts = counts.fate_counts();
     (frame, fates)
+}
+
+/// [`run_recording`] for a Close2GL that makes `mistakes` (see [`crate::mistakes`]): the
+/// frame a student's program with them would draw in this window, each triangle sent down the
+/// textbook's stages with the mistaken choices. With the software rasterizer, every vertex it
+/// draws is a cut vertex: where it lies in its triangle says what its corners carry.
+pub fn run_mistaken(
+    mesh: &Mesh,
+    camera: &Camera,
+    settings: &RenderSettings,
+    viewport: Viewport,
+    mistakes: Mistakes,
+) -> (Close2glFrame, Fates) {
+    let declared = Declared {
+        window: (viewport.width, viewport.height),
+        system: System2d::pixels(viewport.width, viewport.height),
+        culling: settings.backface_culling.then_some(settings.front_face),
+        clip: match settings.clipping {
+            Clipping::Simple => ClipRule::Simple,
+            Clipping::Full => ClipRule::Full,
+        },
+        mode: settings.mode,
+    };
+    let program = Program::new(&ProgramCamera::from(camera), declared, mistakes);
+    let stage = Stage::new(settings, viewport);
+    let raster = settings.close2gl_raster == Rasterizer::Software;
+    let mut frame = Close2glFrame {
+        topology: stage.topology(),
+        viewport,
+        ..Close2glFrame::default()
+    };
+    if raster {
+        frame.raster.vertices = crate::fast::raster_vertices_of(mesh, camera, &stage);
+        frame.raster.textured = !mesh.uvs.is_empty();
+    }
+    let mut fates = Fates {
+        record: true,
+        ..Fates::default()
+    };
+    let mut counts = Tally::default();
+    for (index, outcome) in program.frame(mesh).iter().enumerate() {
+        let corners = mesh.triangles[index];
+        let before = frame.vertices.len();
+        for i in emitted(outcome, settings.mode) {
+            let p = outcome.polygon[i];
+            frame.vertices.push([p.x as f32, p.y as f32]);
+            if raster {
+                let cut = frame.raster.cuts.len() as u32;
+                frame.raster.primitives.push(frame.raster.vertices.len() as u32 + cut);
+                frame.raster.cuts.push(CutVertex {
+                    window: [
+                        p.x as f32,
+                        p.y as f32,
+                        (outcome.depths[i] * 0.5 + 0.5) as f32,
+                        outcome.inv_w[i] as f32,
+                    ],
+                    corners,
+                    weights: outcome.weights[i],
+                });
+                frame.raster.triangles.push(index as u32);
+            }
+        }
+        let primitives = (frame.vertices.len() - before) / stage.topology_vertices();
+        counts.add(&Fate {
+            fate: outcome.fate,
+            primitives,
+        });
+        fates.triangles.push(outcome.fate);
+    }
+    if raster {
+        // One triangle index per primitive, not per vertex.
+        let step = stage.topology_vertices();
+        frame.raster.triangles = frame.raster.triangles.iter().step_by(step).copied().collect();
+    }
+    frame.counts = counts.stage_counts();
+    fates.counts = counts.fate_counts();
+    (frame, fates)
+}
+
+/// Which vertices of a drawn polygon the mode emits, in order: a fan of triangles, the
+/// triangle's own edges as lines, or its corners as points.
+fn emitted(outcome: &Outcome, mode: RenderMode) -> Vec<usize> {
+    let n = outcome.polygon.len();
+    match mode {
+        RenderMode::Solid => (1..n.saturating_sub(1)).flat_map(|i| [0, i, i + 1]).collect(),
+        RenderMode::Wireframe => (0..n)
+            .filter(|&i| outcome.edges[i])
+            .flat_map(|i| [i, (i + 1) % n])
+            .collect(),
+        RenderMode::Points => (0..n).collect(),
+    }
 }

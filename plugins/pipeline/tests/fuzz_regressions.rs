@@ -18,6 +18,7 @@ fn a_triangle_near_f32_limits_clips_without_overrunning_the_polygon() {
         .looking_at(Vec3::new(0.3, 0.2, 2.0), Vec3::ZERO, Vec3::Y)
         .expect("a valid pose");
     let mesh = Mesh {
+        face_normals: Vec::new(),
         name: "fuzz".into(),
         positions: vec![
             Vec3::new(-1e20, -1e30, 1.0),

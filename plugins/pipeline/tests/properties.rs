@@ -26,6 +26,7 @@ fn mesh(max_triangles: usize) -> impl Strategy<Value = Mesh> {
             ),
         )
             .prop_map(|(positions, triangles)| Mesh {
+                face_normals: Vec::new(),
                 name: "random".into(),
                 normals: vec![Vec3::Z; positions.len()],
                 positions,

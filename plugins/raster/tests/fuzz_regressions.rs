@@ -45,6 +45,7 @@ fn draw_every_mode(mesh: &Mesh, camera: &Camera, viewport: Viewport) {
 
 fn mesh(positions: [Vec3; 3], triangles: Vec<[u32; 3]>) -> Mesh {
     Mesh {
+        face_normals: Vec::new(),
         name: "fuzz".into(),
         positions: positions.to_vec(),
         normals: vec![Vec3::Z; 3],

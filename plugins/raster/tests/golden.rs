@@ -38,6 +38,7 @@ impl Fnv {
 /// part is minified), and a sphere standing on it (so the depth test has work).
 fn scene_mesh() -> Mesh {
     let mut mesh = Mesh {
+        face_normals: Vec::new(),
         name: "golden".into(),
         positions: Vec::new(),
         normals: Vec::new(),

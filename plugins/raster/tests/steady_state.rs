@@ -74,6 +74,7 @@ fn grid(n: u32) -> Mesh {
         })
         .collect();
     Mesh {
+        face_normals: Vec::new(),
         name: "grid".into(),
         normals: vec![Vec3::Y; positions.len()],
         positions,

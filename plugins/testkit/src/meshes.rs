@@ -29,6 +29,7 @@ pub fn cube() -> Mesh {
         .flat_map(|[a, b, c, d]| [[*a, *b, *c], [*a, *c, *d]])
         .collect();
     Mesh {
+        face_normals: Vec::new(),
         name: "cube".into(),
         normals: positions.clone(),
         positions,

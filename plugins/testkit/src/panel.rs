@@ -44,6 +44,7 @@ impl Harness {
             });
         app.world_mut().spawn(Camera::default());
         app.world_mut().spawn(Mesh {
+            face_normals: Vec::new(),
             name: "tri".into(),
             positions: vec![
                 Vec3::new(-1.0, -1.0, -5.0),

@@ -1,0 +1,523 @@
+//! One program's frame (close2gl's, or close2gl's with mistakes) against a trace, stage by stage
+//! in the pipeline's order. What the trace leaves out is not checked; what it gives is checked
+//! within tolerances a float32 program meets (docs/checking.md, "Tolerances").
+
+use close2gl_core::{FateKind, Mesh, Mistake};
+use close2gl_pipeline::mistakes::{Outcome, Program};
+use glam::{DMat4, DVec2, DVec4};
+
+use super::region::{self, Tolerance};
+use crate::format::Trace;
+
+/// The stages, in the pipeline's order, by the names scripts read.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub enum Stage {
+    Camera,
+    M,
+    P,
+    V,
+    Clip,
+    Clipping,
+    Culling,
+    Window,
+    Depth,
+}
+
+impl Stage {
+    pub const ALL: [Stage; 9] = [
+        Stage::Camera,
+        Stage::M,
+        Stage::P,
+        Stage::V,
+        Stage::Clip,
+        Stage::Clipping,
+        Stage::Culling,
+        Stage::Window,
+        Stage::Depth,
+    ];
+
+    pub fn name(self) -> &'static str {
+        match self {
+            Stage::Camera => "camera",
+            Stage::M => "M",
+            Stage::P => "P",
+            Stage::V => "V",
+            Stage::Clip => "clip",
+            Stage::Clipping => "clipping",
+            Stage::Culling => "culling",
+            Stage::Window => "window",
+            Stage::Depth => "depth",
+        }
+    }
+}
+
+/// A way one mesh triangle can disagree, each belonging to one stage.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub enum Kind {
+    /// Its clip coordinates differ.
+    ClipCoordinates,
+    /// close2gl removed it whole and a corner is at or behind the eye; the trace drew it.
+    DrawnBehindEye,
+    /// close2gl removed it whole (outside the volume); the trace drew it.
+    DrawnOutside,
+    /// close2gl drew it (cut or whole, culling off or front-facing); the trace drew nothing.
+    NotDrawn,
+    /// Inside the volume and front-facing; the trace drew nothing.
+    FrontCulled,
+    /// Inside the volume and back-facing (culled by close2gl); the trace drew it.
+    BackDrawn,
+    /// Both drew it, in different places or shapes.
+    Moved,
+    /// Both drew it in the same place, at different depths.
+    Depth,
+}
+
+impl Kind {
+    pub fn name(self) -> &'static str {
+        match self {
+            Kind::ClipCoordinates => "clip_coordinates",
+            Kind::DrawnBehindEye => "drawn_behind_eye",
+            Kind::DrawnOutside => "drawn_outside",
+            Kind::NotDrawn => "not_drawn",
+            Kind::FrontCulled => "front_culled",
+            Kind::BackDrawn => "back_drawn",
+            Kind::Moved => "moved",
+            Kind::Depth => "depth",
+        }
+    }
+
+    pub fn stage(self) -> Stage {
+        match self {
+            Kind::ClipCoordinates => Stage::Clip,
+            Kind::DrawnBehindEye | Kind::DrawnOutside | Kind::NotDrawn => Stage::Clipping,
+            Kind::FrontCulled | Kind::BackDrawn => Stage::Culling,
+            Kind::Moved => Stage::Window,
+            Kind::Depth => Stage::Depth,
+        }
+    }
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Status {
+    Agree,
+    Differs,
+    NotChecked,
+}
+
+impl Status {
+    pub fn name(self) -> &'static str {
+        match self {
+            Status::Agree => "agree",
+            Status::Differs => "differs",
+            Status::NotChecked => "not_checked",
+        }
+    }
+}
+
+/// One stage's verdict: how many items it checked, how many differ, and the first differences
+/// in words.
+#[derive(Clone, Debug, PartialEq)]
+pub struct StageResult {
+    pub stage: Stage,
+    pub status: Status,
+    pub checked: usize,
+    pub differing: usize,
+    /// Up to [`MAX_DETAILS`] lines, in order.
+    pub details: Vec<String>,
+    /// Why it was not checked, when it was not.
+    pub note: Option<String>,
+}
+
+/// The most lines of detail a stage keeps.
+pub const MAX_DETAILS: usize = 20;
+
+impl StageResult {
+    fn new(stage: Stage) -> Self {
+        Self {
+            stage,
+            status: Status::NotChecked,
+            checked: 0,
+            differing: 0,
+            details: Vec::new(),
+            note: None,
+        }
+    }
+
+    fn not_checked(stage: Stage, note: &str) -> Self {
+        Self {
+            note: Some(note.into()),
+            ..Self::new(stage)
+        }
+    }
+
+    fn differ(&mut self, detail: impl FnOnce() -> String) {
+        self.differing += 1;
+        if self.details.len() < MAX_DETAILS {
+            self.details.push(detail());
+        }
+    }
+
+    fn finish(mut self) -> Self {
+        self.status = match self.differing {
+            0 => Status::Agree,
+            _ => Status::Differs,
+        };
+        self
+    }
+}
+
+/// Every stage's verdict, and the triangles that disagree by kind (all of them, in order).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Comparison {
+    pub stages: Vec<StageResult>,
+    pub triangles: Vec<(Kind, Vec<usize>)>,
+}
+
+impl Comparison {
+    /// Whether everything the trace gives agrees.
+    pub fn agrees(&self) -> bool {
+        self.stages.iter().all(|s| s.status != Status::Differs)
+    }
+
+    /// The first stage that differs.
+    pub fn first_difference(&self) -> Option<&StageResult> {
+        self.stages.iter().find(|s| s.status == Status::Differs)
+    }
+
+    pub fn stage(&self, stage: Stage) -> &StageResult {
+        &self.stages[stage as usize]
+    }
+
+    /// The triangles that disagree in `kind`.
+    pub fn of_kind(&self, kind: Kind) -> &[usize] {
+        self.triangles
+            .iter()
+            .find(|(k, _)| *k == kind)
+            .map_or(&[], |(_, t)| t)
+    }
+}
+
+/// How far apart unit axes may be from unit length or square to each other.
+const AXES: f64 = 1e-3;
+
+/// The tolerances of the window stage: a fraction of the 2D system's larger side, and of each
+/// number's size.
+pub const WINDOW_ABSOLUTE: f64 = 2e-4;
+pub const RELATIVE: f64 = 1e-5;
+/// Matrix entries and clip coordinates: a fraction of each dot product's terms.
+pub const TERMS: f64 = 1e-4;
+/// NDC depth, absolute.
+pub const DEPTH: f64 = 1e-3;
+
+/// Compares `trace` with what `program` computes for `mesh` (`expected`: its frame).
+/// The trace's triangle indices must be the mesh's (checked when the trace was read).
+pub fn compare(program: &Program, mesh: &Mesh, trace: &Trace, expected: &[Outcome]) -> Comparison {
+    let mut triangles: Vec<(Kind, Vec<usize>)> = Vec::new();
+    let mut mark = |kind: Kind, t: usize| match triangles.iter_mut().find(|(k, _)| *k == kind) {
+        Some((_, list)) => list.push(t),
+        None => triangles.push((kind, vec![t])),
+    };
+    let mut stages = vec![camera(program, trace)];
+    stages.push(matrix(Stage::M, program.m, trace.m, &[0, 1, 2, 3]));
+    stages.push(matrix(Stage::P, program.p, trace.p, &[0, 1, 2, 3]));
+    stages.push(matrix(Stage::V, program.v, trace.v, &[0, 1, 3]));
+    stages.push(clip(program, mesh, trace, expected, &mut mark));
+    stages.extend(drawn(program, trace, expected, &mut mark));
+    triangles.sort_by_key(|(kind, _)| *kind);
+    Comparison { stages, triangles }
+}
+
+fn camera(program: &Program, trace: &Trace) -> StageResult {
+    let mut result = StageResult::new(Stage::Camera);
+    result.checked = 1;
+    let c = &trace.camera;
+    for (name, axis) in [("u", c.u), ("v", c.v), ("n", c.n)] {
+        let length = axis.length();
+        if (length - 1.0).abs() > AXES {
+            result.differ(|| format!("{name} is not unit length: |{name}| = {length:.6}"));
+        }
+    }
+    for (name, a, b) in [("u·v", c.u, c.v), ("u·n", c.u, c.n), ("v·n", c.v, c.n)] {
+        let dot = a.dot(b) / (a.length() * b.length());
+        if dot.abs() > AXES {
+            result.differ(|| format!("the axes are not square to each other: {name} = {dot:.6}"));
+        }
+    }
+    let handedness = c.u.cross(c.v).dot(c.n);
+    let left_expected = program.mistakes.has(Mistake::LeftHanded);
+    if (handedness < 0.0) != left_expected {
+        result.differ(|| match left_expected {
+            true => format!("the axes are right-handed: (u × v)·n = {handedness:.6}"),
+            false => format!(
+                "the axes are left-handed: (u × v)·n = {handedness:.6} (u points to the \
+                 camera's left: u = n × v instead of v × n)"
+            ),
+        });
+    }
+    result.finish()
+}
+
+/// A matrix stage: entries of the given rows, each within [`TERMS`] of its size and of the
+/// matrix's (rounding in float32 scales with both).
+fn matrix(stage: Stage, expected: DMat4, found: Option<DMat4>, rows: &[usize]) -> StageResult {
+    let Some(found) = found else {
+        let note = format!("the trace has no 'matrix {}' line", stage.name());
+        return StageResult::not_checked(stage, &note);
+    };
+    let mut result = StageResult::new(stage);
+    let largest = expected.to_cols_array().iter().fold(0.0f64, |a, b| a.max(b.abs()));
+    for &row in rows {
+        for column in 0..4 {
+            let (e, f) = (expected.col(column)[row], found.col(column)[row]);
+            result.checked += 1;
+            let tolerance = TERMS * e.abs() + 1e-6 * largest + 1e-9;
+            if !((e - f).abs() <= tolerance) {
+                result.differ(|| {
+                    format!(
+                        "{}[{}][{}] (row {}, column {}): expected {}, found {}",
+                        stage.name(),
+                        row,
+                        column,
+                        row + 1,
+                        column + 1,
+                        number(e),
+                        number(f)
+                    )
+                });
+            }
+        }
+    }
+    result.finish()
+}
+
+fn clip(
+    program: &Program,
+    mesh: &Mesh,
+    trace: &Trace,
+    expected: &[Outcome],
+    mark: &mut impl FnMut(Kind, usize),
+) -> StageResult {
+    if trace.clip.is_empty() {
+        return StageResult::not_checked(Stage::Clip, "the trace has no 'clip' lines");
+    }
+    let mut result = StageResult::new(Stage::Clip);
+    let a = program.clip_matrix;
+    for line in &trace.clip {
+        result.checked += 1;
+        let t = line.triangle;
+        let corners = mesh.triangles[t].map(|i| mesh.positions[i as usize].as_dvec3().extend(1.0));
+        for (k, (&found, &want)) in line.corners.iter().zip(&expected[t].clip).enumerate() {
+            let terms = terms(a, corners[k]);
+            let off = (found - want).abs();
+            if (0..4).any(|i| !(off[i] <= TERMS * terms + 1e-9)) {
+                mark(Kind::ClipCoordinates, t);
+                result.differ(|| {
+                    format!(
+                        "triangle {t}, corner {k} (line {}): expected {}, found {}",
+                        line.line,
+                        vec4(want),
+                        vec4(found)
+                    )
+                });
+                break;
+            }
+        }
+    }
+    result.finish()
+}
+
+/// The largest sum of |a_ij·p_j| over the rows: what rounding in a product scales with.
+fn terms(a: DMat4, p: DVec4) -> f64 {
+    (0..4)
+        .map(|row| (0..4).map(|j| (a.col(j)[row] * p[j]).abs()).sum::<f64>())
+        .fold(0.0, f64::max)
+}
+
+/// The clipping, culling, window and depth stages, from what each side drew per triangle.
+fn drawn(
+    program: &Program,
+    trace: &Trace,
+    expected: &[Outcome],
+    mark: &mut impl FnMut(Kind, usize),
+) -> [StageResult; 4] {
+    if trace.pieces.is_empty() {
+        let note = "the trace has no 'tri' or 'poly' lines";
+        return [Stage::Clipping, Stage::Culling, Stage::Window, Stage::Depth]
+            .map(|s| StageResult::not_checked(s, note));
+    }
+    let mut pieces: Vec<Vec<usize>> = vec![Vec::new(); expected.len()];
+    for (i, piece) in trace.pieces.iter().enumerate() {
+        pieces[piece.triangle].push(i);
+    }
+    let system = program.declared.system;
+    let side = (system.right - system.left)
+        .abs()
+        .max((system.top - system.bottom).abs());
+    let tolerance = Tolerance {
+        absolute: WINDOW_ABSOLUTE * side,
+        relative: RELATIVE,
+    };
+    let culling_on = program.declared.culling.is_some();
+    let [mut clipping, mut culling, mut window, mut depth] =
+        [Stage::Clipping, Stage::Culling, Stage::Window, Stage::Depth].map(StageResult::new);
+    clipping.checked = expected.len();
+    culling.checked = expected.len();
+    for (t, ours) in expected.iter().enumerate() {
+        let theirs: Vec<&[DVec2]> = pieces[t]
+            .iter()
+            .map(|&i| trace.pieces[i].corners.as_slice())
+            .collect();
+        let ours_visible = ours.drawn() && !region::negligible(&ours.polygon, tolerance);
+        let theirs_visible = theirs.iter().any(|q| !region::negligible(q, tolerance));
+        match (ours.drawn(), !theirs.is_empty()) {
+            (true, true) => {
+                window.checked += 1;
+                if let Some(d) = region::compare(&ours.polygon, &theirs, tolerance) {
+                    mark(Kind::Moved, t);
+                    window.differ(|| moved(t, &d, &pieces[t], trace));
+                    continue;
+                }
+                if let Some((found, want, line)) = depths(ours, &pieces[t], trace, tolerance, &mut depth) {
+                    mark(Kind::Depth, t);
+                    depth.differ(|| {
+                        format!("triangle {t} (line {line}): depth expected {}, found {}", number(want), number(found))
+                    });
+                }
+            }
+            (true, false) if ours_visible && !ours.near_a_plane => {
+                let inside = ours.fate.kind == FateKind::Drawn;
+                if inside && culling_on && !ours.near_edge_on {
+                    mark(Kind::FrontCulled, t);
+                    culling.differ(|| {
+                        format!("triangle {t}: close2gl drew it (front-facing, inside the view volume); the trace drew nothing")
+                    });
+                } else if !(inside && ours.near_edge_on) {
+                    mark(Kind::NotDrawn, t);
+                    clipping.differ(|| {
+                        format!("triangle {t}: close2gl {} it; the trace drew nothing", fate_words(ours))
+                    });
+                }
+            }
+            (false, true) if theirs_visible => match ours.fate.kind {
+                FateKind::Clipped if !ours.near_a_plane => {
+                    let behind = ours.clip.iter().any(|c| c.w <= 0.0);
+                    let kind = match behind {
+                        true => Kind::DrawnBehindEye,
+                        false => Kind::DrawnOutside,
+                    };
+                    mark(kind, t);
+                    clipping.differ(|| {
+                        format!("triangle {t}: close2gl {} it; the trace drew it (line {})", fate_words(ours), trace.pieces[pieces[t][0]].line)
+                    });
+                }
+                FateKind::Culled | FateKind::ZeroArea if !ours.near_edge_on => {
+                    mark(Kind::BackDrawn, t);
+                    culling.differ(|| {
+                        format!("triangle {t}: close2gl culled it as a back face; the trace drew it (line {})", trace.pieces[pieces[t][0]].line)
+                    });
+                }
+                _ => {}
+            },
+            _ => {}
+        }
+    }
+    if depth.checked == 0 {
+        depth.note = Some(match trace.pieces.iter().any(|p| p.depths.is_some()) {
+            true => "no triangle with depths was drawn where close2gl draws it".into(),
+            false => "the trace's 'tri' and 'poly' lines give no depth".into(),
+        });
+        return [clipping.finish(), culling.finish(), window.finish(), depth];
+    }
+    [clipping.finish(), culling.finish(), window.finish(), depth.finish()]
+}
+
+/// The first depth the trace gives for a corner of this triangle that is off, with close2gl's
+/// depth at that corner and the trace's line; counts the corners it checked in `stage`.
+fn depths(
+    ours: &Outcome,
+    pieces: &[usize],
+    trace: &Trace,
+    tolerance: Tolerance,
+    stage: &mut StageResult,
+) -> Option<(f64, f64, usize)> {
+    let mut first = None;
+    for &i in pieces {
+        let piece = &trace.pieces[i];
+        let Some(found) = &piece.depths else {
+            continue;
+        };
+        stage.checked += 1;
+        for (q, &z) in piece.corners.iter().zip(found) {
+            let nearest = ours
+                .polygon
+                .iter()
+                .zip(&ours.depths)
+                .min_by(|a, b| a.0.distance(*q).total_cmp(&b.0.distance(*q)));
+            if let Some((p, &want)) = nearest
+                && p.distance(*q) <= tolerance.absolute + tolerance.relative * p.length()
+                && !((z - want).abs() <= DEPTH + RELATIVE * want.abs())
+                && first.is_none()
+            {
+                first = Some((z, want, piece.line));
+            }
+        }
+    }
+    first
+}
+
+fn moved(t: usize, d: &region::RegionDifference, pieces: &[usize], trace: &Trace) -> String {
+    let line = trace.pieces[pieces[0]].line;
+    match d.corner {
+        (Some(want), Some(found)) => format!(
+            "triangle {t} (line {line}): a corner expected at {}, the nearest drawn is {}",
+            vec2(want),
+            vec2(found)
+        ),
+        (Some(want), None) => format!("triangle {t} (line {line}): no corner drawn near {}", vec2(want)),
+        (None, Some(found)) => format!(
+            "triangle {t} (line {line}): a corner drawn at {}, outside close2gl's polygon",
+            vec2(found)
+        ),
+        (None, None) => format!(
+            "triangle {t} (line {line}): covers {} square units, close2gl's polygon {}",
+            number(d.found_area),
+            number(d.expected_area)
+        ),
+    }
+}
+
+/// What close2gl did with a triangle, in words.
+pub fn fate_words(outcome: &Outcome) -> String {
+    let planes: Vec<&str> = close2gl_core::ClipPlane::in_outcode(outcome.fate.planes)
+        .map(|p| p.name())
+        .collect();
+    let behind = outcome.clip.iter().filter(|c| c.w <= 0.0).count();
+    match outcome.fate.kind {
+        FateKind::Drawn => "drew".into(),
+        FateKind::Cut => format!("cut (by {}) and drew", planes.join(", ")),
+        FateKind::Clipped if behind > 0 => format!(
+            "clipped ({}; {behind} corner{} behind the eye)",
+            planes.join(", "),
+            if behind == 1 { "" } else { "s" }
+        ),
+        FateKind::Clipped => format!("clipped (outside {})", planes.join(", ")),
+        FateKind::Culled => "culled as a back face".into(),
+        FateKind::ZeroArea => "culled (no area)".into(),
+        FateKind::NoPixels | FateKind::Hidden => "drew".into(),
+    }
+}
+
+pub fn number(x: f64) -> String {
+    match x.abs() {
+        a if a != 0.0 && !(1e-3..1e6).contains(&a) => format!("{x:.4e}"),
+        _ => format!("{x:.4}"),
+    }
+}
+
+fn vec2(p: DVec2) -> String {
+    format!("({}, {})", number(p.x), number(p.y))
+}
+
+fn vec4(p: DVec4) -> String {
+    format!("({}, {}, {}, {})", number(p.x), number(p.y), number(p.z), number(p.w))
+}

@@ -1,0 +1,95 @@
+//! Naming the mistake: run close2gl's pipeline with every catalogue mistake, and every pair of
+//! them, from the trace's camera, and keep those that reproduce the trace within tolerance. A
+//! mistake is named only when it reproduces the trace; when none does, the first difference is
+//! stated as precisely as the data allows.
+
+use close2gl_core::Mesh;
+use close2gl_pipeline::mistakes::{Mistakes, Outcome, Program};
+use rayon::prelude::*;
+
+use super::compare::{self, Comparison, Kind, Stage, number};
+use super::program_for;
+use crate::format::Trace;
+
+/// The sets of mistakes that reproduce `trace`: single mistakes first; a pair only when neither
+/// of its mistakes alone does (the other one would change nothing the trace shows).
+pub fn diagnose(mesh: &Mesh, trace: &Trace) -> Vec<Mistakes> {
+    let reproduces = |set: &Mistakes| {
+        let program = program_for(trace, *set);
+        let frame = program.frame(mesh);
+        compare::compare(&program, mesh, trace, &frame).agrees()
+    };
+    let candidates = Mistakes::singles_and_pairs();
+    let (singles, pairs): (Vec<Mistakes>, Vec<Mistakes>) =
+        candidates.into_iter().partition(|s| s.iter().count() == 1);
+    let found: Vec<Mistakes> = singles.into_par_iter().filter(reproduces).collect();
+    if !found.is_empty() {
+        return found;
+    }
+    pairs.into_par_iter().filter(reproduces).collect()
+}
+
+/// The first difference, in words a student can act on, for a trace no mistake explains.
+pub fn unexplained(
+    program: &Program,
+    mesh: &Mesh,
+    comparison: &Comparison,
+    expected: &[Outcome],
+) -> String {
+    let Some(first) = comparison.first_difference() else {
+        return "the trace agrees".into();
+    };
+    let of_stage: Vec<(Kind, &[usize])> = comparison
+        .triangles
+        .iter()
+        .filter(|(k, _)| k.stage() == first.stage)
+        .map(|(k, t)| (*k, t.as_slice()))
+        .collect();
+    let Some(&(kind, triangles)) = of_stage.first() else {
+        let what = match first.stage {
+            Stage::Camera => "the camera's axes",
+            Stage::M | Stage::P | Stage::V => "the matrix",
+            _ => "the stage",
+        };
+        return format!(
+            "no catalogue mistake explains it: {what} differs in {} of {} checked ({})",
+            first.differing,
+            first.checked,
+            first.details.first().map_or("", String::as_str)
+        );
+    };
+    let n = triangles.len();
+    let what = match kind {
+        Kind::ClipCoordinates => "triangles have other clip coordinates",
+        Kind::DrawnBehindEye => "triangles with a corner behind the eye were drawn",
+        Kind::DrawnOutside => "triangles outside the view volume were drawn",
+        Kind::NotDrawn => "triangles close2gl draws (at the volume's border) were not drawn",
+        Kind::FrontCulled => "front-facing triangles inside the view volume were not drawn",
+        Kind::BackDrawn => "back-facing triangles inside the view volume were drawn",
+        Kind::Moved => "triangles were drawn elsewhere or in another shape",
+        Kind::Depth => "triangles were drawn at other depths",
+    };
+    format!(
+        "no catalogue mistake explains it: {n} {what}; {}",
+        whereabouts(program, mesh, triangles, expected)
+    )
+}
+
+/// Where some triangles lie: their distances in front of the eye, in multiples of near.
+fn whereabouts(program: &Program, mesh: &Mesh, triangles: &[usize], expected: &[Outcome]) -> String {
+    let near = program.camera.near;
+    let distances = triangles.iter().flat_map(|&t| {
+        mesh.triangles[t].map(|i| -(program.m * mesh.positions[i as usize].as_dvec3().extend(1.0)).z)
+    });
+    let (low, high) = distances.fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), d| (l.min(d), h.max(d)));
+    let cut = triangles
+        .iter()
+        .filter(|&&t| expected[t].fate.planes != 0)
+        .count();
+    format!(
+        "all lie between {}·near and {}·near in front of the eye (near = {}); {cut} of them touch the view volume's border",
+        number(low / near),
+        number(high / near),
+        number(near)
+    )
+}

@@ -1,0 +1,139 @@
+//! `close2gl check`: a program's trace against close2gl's pipeline, stage by stage
+//! ([`compare`]), and, when it differs, the catalogue mistakes that reproduce it
+//! ([`diagnose`]).
+
+pub mod compare;
+pub mod diagnose;
+pub mod picture;
+pub mod region;
+pub mod report;
+
+use close2gl_core::{FrontFace, Mesh, RenderMode};
+use close2gl_pipeline::mistakes::{
+    ClipRule, Declared, Mistakes, Outcome, Program, ProgramCamera, System2d,
+};
+
+use crate::format::{Culling, FormatError, Trace, TraceClipping};
+pub use compare::{Comparison, Kind, Stage, StageResult, Status};
+
+/// What check found: the comparison with close2gl, close2gl's own frame, and the mistakes that
+/// reproduce the trace (each set on its own; empty when it agrees, or when none does).
+#[derive(Clone, Debug)]
+pub struct Report {
+    pub comparison: Comparison,
+    pub expected: Vec<Outcome>,
+    pub diagnoses: Vec<Mistakes>,
+    /// When the trace differs and no mistake reproduces it: the first difference, as precisely
+    /// as the data allows.
+    pub unexplained: Option<String>,
+}
+
+impl Report {
+    pub fn agrees(&self) -> bool {
+        self.comparison.agrees()
+    }
+
+    /// The catalogue ids named, each once, in the catalogue's order.
+    pub fn mistakes(&self) -> Vec<&'static str> {
+        let all = self
+            .diagnoses
+            .iter()
+            .fold(Mistakes::NONE, |all, set| set.iter().fold(all, |a, m| a.with(m)));
+        all.iter().map(|m| m.name()).collect()
+    }
+}
+
+/// The program close2gl runs for this trace: its camera, window, 2D system and settings, with
+/// `mistakes`.
+pub fn program_for(trace: &Trace, mistakes: Mistakes) -> Program {
+    let c = &trace.camera;
+    let camera = ProgramCamera {
+        position: c.position,
+        u: c.u,
+        v: c.v,
+        n: c.n,
+        hfov: c.hfov,
+        vfov: c.vfov,
+        near: c.near,
+        far: c.far,
+    };
+    let o = trace.ortho2d;
+    let declared = Declared {
+        window: trace.window,
+        system: System2d {
+            left: o.left,
+            right: o.right,
+            bottom: o.bottom,
+            top: o.top,
+        },
+        culling: match trace.culling {
+            Culling::Off => None,
+            Culling::Ccw => Some(FrontFace::Ccw),
+            Culling::Cw => Some(FrontFace::Cw),
+        },
+        clip: match trace.clipping {
+            TraceClipping::Simple => ClipRule::Simple,
+            TraceClipping::Full => ClipRule::Full,
+            TraceClipping::None => ClipRule::Nothing,
+        },
+        mode: trace.mode.unwrap_or(RenderMode::Solid),
+    };
+    Program::new(&camera, declared, mistakes)
+}
+
+/// What a trace says about a model that is not a matter of its numbers: its triangle count and
+/// every triangle index it uses must be the model's. An error names the trace's line.
+pub fn fits(trace: &Trace, mesh: &Mesh) -> Result<(), FormatError> {
+    let count = mesh.triangles.len();
+    let error = |line: usize, message: String| FormatError {
+        file: trace.file.clone(),
+        line,
+        message,
+    };
+    if let Some((n, line)) = trace.triangles
+        && n != count
+    {
+        return Err(error(
+            line,
+            format!("expected 'triangles {count}' (the model has {count}), found 'triangles {n}'"),
+        ));
+    }
+    let lines = trace
+        .clip
+        .iter()
+        .map(|c| (c.triangle, c.line))
+        .chain(trace.pieces.iter().map(|p| (p.triangle, p.line)));
+    for (t, line) in lines {
+        if t >= count {
+            return Err(error(
+                line,
+                format!("expected a triangle index below {count} (the model's count), found {t}"),
+            ));
+        }
+    }
+    Ok(())
+}
+
+/// Checks `trace` against close2gl's pipeline on `mesh`, and diagnoses it when it differs.
+pub fn check(mesh: &Mesh, trace: &Trace) -> Result<Report, FormatError> {
+    fits(trace, mesh)?;
+    let program = program_for(trace, Mistakes::NONE);
+    let expected = program.frame(mesh);
+    let comparison = compare::compare(&program, mesh, trace, &expected);
+    let (diagnoses, unexplained) = match comparison.agrees() {
+        true => (Vec::new(), None),
+        false => {
+            let diagnoses = diagnose::diagnose(mesh, trace);
+            let unexplained = diagnoses
+                .is_empty()
+                .then(|| diagnose::unexplained(&program, mesh, &comparison, &expected));
+            (diagnoses, unexplained)
+        }
+    };
+    Ok(Report {
+        comparison,
+        expected,
+        diagnoses,
+        unexplained,
+    })
+}

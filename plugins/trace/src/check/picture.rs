@@ -1,0 +1,99 @@
+//! check's pictures: close2gl's 2D output, the trace's, and where they differ coloured by the
+//! kind of disagreement, each filled into the trace's window as it shows on screen.
+
+use close2gl_core::Image;
+use glam::DVec2;
+use close2gl_pipeline::mistakes::System2d;
+
+use super::Report;
+use super::compare::Kind;
+use crate::format::Trace;
+
+const BACKGROUND: [u8; 4] = [20, 20, 26, 255];
+const OURS: [u8; 4] = [217, 166, 64, 255];
+const THEIRS: [u8; 4] = [90, 150, 230, 255];
+const AGREE: [u8; 4] = [90, 90, 96, 255];
+
+/// The colour of a kind of disagreement in the difference picture.
+pub fn kind_color(kind: Kind) -> [u8; 4] {
+    match kind {
+        Kind::ClipCoordinates => [200, 200, 200, 255],
+        Kind::DrawnBehindEye => [255, 40, 200, 255],
+        Kind::DrawnOutside => [230, 70, 60, 255],
+        Kind::NotDrawn => [240, 200, 40, 255],
+        Kind::FrontCulled => [80, 130, 240, 255],
+        Kind::BackDrawn => [60, 210, 220, 255],
+        Kind::Moved => [240, 120, 30, 255],
+        Kind::Depth => [150, 90, 220, 255],
+    }
+}
+
+/// The three pictures: close2gl's, the trace's, the difference.
+pub fn pictures(report: &Report, trace: &Trace) -> [Image; 3] {
+    let (w, h) = trace.window;
+    let o = trace.ortho2d;
+    let system = System2d {
+        left: o.left,
+        right: o.right,
+        bottom: o.bottom,
+        top: o.top,
+    };
+    let to_pixels = |polygon: &[DVec2]| -> Vec<DVec2> {
+        polygon.iter().map(|&p| system.to_pixels(p, w, h)).collect()
+    };
+    let mut ours = Image::filled(w, h, BACKGROUND);
+    let mut theirs = Image::filled(w, h, BACKGROUND);
+    let mut difference = Image::filled(w, h, BACKGROUND);
+    for outcome in report.expected.iter().filter(|o| o.drawn()) {
+        fill(&mut ours, &to_pixels(&outcome.polygon), OURS);
+        fill(&mut difference, &to_pixels(&outcome.polygon), AGREE);
+    }
+    for piece in &trace.pieces {
+        fill(&mut theirs, &to_pixels(&piece.corners), THEIRS);
+    }
+    for (kind, triangles) in &report.comparison.triangles {
+        for &t in triangles {
+            let color = kind_color(*kind);
+            let expected = &report.expected[t];
+            if expected.drawn() {
+                fill(&mut difference, &to_pixels(&expected.polygon), color);
+            }
+            for piece in trace.pieces.iter().filter(|p| p.triangle == t) {
+                fill(&mut difference, &to_pixels(&piece.corners), color);
+            }
+        }
+    }
+    [ours, theirs, difference]
+}
+
+/// Fills a polygon (any winding, convex) given in window pixels: the pixels whose centres it
+/// covers, clipped to the image.
+fn fill(image: &mut Image, polygon: &[DVec2], color: [u8; 4]) {
+    if polygon.len() < 3 || polygon.iter().any(|p| !p.is_finite()) {
+        return;
+    }
+    let (w, h) = (f64::from(image.width), f64::from(image.height));
+    let min = polygon.iter().fold(DVec2::splat(f64::INFINITY), |a, &p| a.min(p));
+    let max = polygon.iter().fold(DVec2::splat(f64::NEG_INFINITY), |a, &p| a.max(p));
+    let x0 = (min.x - 0.5).ceil().clamp(0.0, w) as u32;
+    let x1 = (max.x - 0.5).floor().clamp(-1.0, w - 1.0);
+    let y0 = (min.y - 0.5).ceil().clamp(0.0, h) as u32;
+    let y1 = (max.y - 0.5).floor().clamp(-1.0, h - 1.0);
+    if x1 < 0.0 || y1 < 0.0 {
+        return;
+    }
+    let n = polygon.len();
+    let area: f64 = (0..n).map(|i| polygon[i].perp_dot(polygon[(i + 1) % n])).sum();
+    for y in y0..=y1 as u32 {
+        for x in x0..=x1 as u32 {
+            let c = DVec2::new(f64::from(x) + 0.5, f64::from(y) + 0.5);
+            let inside = (0..n).all(|i| {
+                let (a, b) = (polygon[i], polygon[(i + 1) % n]);
+                (b - a).perp_dot(c - a) * area >= 0.0
+            });
+            if inside {
+                image.pixels[(y * image.width + x) as usize] = color;
+            }
+        }
+    }
+}

@@ -1,0 +1,122 @@
+//! check's report, for a person (text) and for a script (one JSON object, whose keys are
+//! binding: `agree`, `first_difference`, `mistakes`, `stages`, `triangles`).
+
+use serde_json::{Value, json};
+
+use super::Report;
+use super::compare::{Kind, Stage, Status};
+
+/// The most triangle indices listed per kind of disagreement in the JSON (the totals are all).
+pub const MAX_LISTED: usize = 100;
+
+/// The report as text: each stage in order, the first difference in full, the mistakes named.
+pub fn text(report: &Report, trace_name: &str) -> String {
+    let c = &report.comparison;
+    let mut out = String::new();
+    let verdict = match report.agrees() {
+        true => "agrees with close2gl's pipeline",
+        false => "differs from close2gl's pipeline",
+    };
+    out.push_str(&format!("{trace_name}: {verdict}\n"));
+    let first = c.first_difference().map(|s| s.stage);
+    for s in &c.stages {
+        let counts = match s.status {
+            Status::NotChecked => s.note.clone().unwrap_or_default(),
+            _ => format!("{} checked, {} differ", s.checked, s.differing),
+        };
+        out.push_str(&format!("  {:<9} {:<12} {counts}\n", s.stage.name(), s.status.name()));
+        if Some(s.stage) == first {
+            for d in &s.details {
+                out.push_str(&format!("      {d}\n"));
+            }
+            if s.differing > s.details.len() {
+                out.push_str(&format!("      ... and {} more\n", s.differing - s.details.len()));
+            }
+            for (kind, triangles) in c.triangles.iter().filter(|(k, _)| k.stage() == s.stage) {
+                out.push_str(&format!("      {}: {} triangles\n", kind.name(), triangles.len()));
+            }
+        }
+    }
+    if !report.agrees() {
+        match report.diagnoses.as_slice() {
+            [] => {}
+            [one] => out.push_str(&format!("mistake: {}\n", one.names())),
+            many => {
+                let names: Vec<String> = many.iter().map(|m| m.names()).collect();
+                out.push_str(&format!(
+                    "mistakes (the trace cannot tell them apart): {}\n",
+                    names.join(", ")
+                ));
+            }
+        }
+        if let Some(unexplained) = &report.unexplained {
+            out.push_str(&format!("{unexplained}\n"));
+        }
+    }
+    out
+}
+
+/// The report as one JSON object.
+pub fn json(report: &Report) -> Value {
+    let c = &report.comparison;
+    let first_difference = c.first_difference().map(|s| {
+        json!({
+            "stage": s.stage.name(),
+            "detail": s.details.first().cloned().unwrap_or_default(),
+            "details": s.details,
+        })
+    });
+    let stages: serde_json::Map<String, Value> = c
+        .stages
+        .iter()
+        .map(|s| {
+            let mut stage = json!({
+                "status": s.status.name(),
+                "checked": s.checked,
+                "differing": s.differing,
+            });
+            if let Some(note) = &s.note {
+                stage["note"] = json!(note);
+            }
+            (s.stage.name().to_string(), stage)
+        })
+        .collect();
+    let triangles: serde_json::Map<String, Value> = c
+        .triangles
+        .iter()
+        .map(|(kind, list)| {
+            let listed: Vec<usize> = list.iter().take(MAX_LISTED).copied().collect();
+            (
+                kind.name().to_string(),
+                json!({"stage": kind.stage().name(), "total": list.len(), "indices": listed}),
+            )
+        })
+        .collect();
+    let diagnoses: Vec<Vec<&str>> = report
+        .diagnoses
+        .iter()
+        .map(|set| set.iter().map(|m| m.name()).collect())
+        .collect();
+    json!({
+        "agree": report.agrees(),
+        "first_difference": first_difference,
+        "mistakes": report.mistakes(),
+        "diagnoses": diagnoses,
+        "unexplained": report.unexplained,
+        "stages": stages,
+        "triangles": triangles,
+    })
+}
+
+/// One line about a stage, for a summary after the first difference.
+pub fn stage_line(report: &Report, stage: Stage) -> String {
+    let s = report.comparison.stage(stage);
+    let kinds: Vec<String> = report
+        .comparison
+        .triangles
+        .iter()
+        .filter(|(k, _)| k.stage() == stage)
+        .map(|(k, t): &(Kind, Vec<usize>)| format!("{} {}", t.len(), k.name()))
+        .collect();
+    format!("{}: {} ({})", stage.name(), s.status.name(), kinds.join(", "))
+}
