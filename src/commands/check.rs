@@ -47,8 +47,8 @@ pub fn run(args: CheckArgs) -> Result<(), CliError> {
 /// The model as the pipeline sees it; an error names the file and line.
 pub fn load_model(model: &str) -> Result<Mesh, CliError> {
     let source = ModelSource::parse(model);
-    let loaded = close2gl_model::load(&source, &PrimitiveParams::default())
-        .map_err(CliError::Input)?;
+    let loaded =
+        close2gl_model::load(&source, &PrimitiveParams::default()).map_err(CliError::Input)?;
     Ok(loaded.mesh)
 }
 
@@ -59,11 +59,18 @@ fn write_out(
     text: &str,
     json: &serde_json::Value,
 ) -> Result<(), CliError> {
-    let fail = |e: std::io::Error| CliError::Runtime(format!("{}: cannot write: {e}", dir.display()));
+    let fail =
+        |e: std::io::Error| CliError::Runtime(format!("{}: cannot write: {e}", dir.display()));
     std::fs::create_dir_all(dir).map_err(fail)?;
     let [ours, theirs, difference] = picture::pictures(report, trace);
-    for (image, name) in [(ours, "close2gl.png"), (theirs, "trace.png"), (difference, "difference.png")] {
-        image.write_png(&dir.join(name)).map_err(CliError::Runtime)?;
+    for (image, name) in [
+        (ours, "close2gl.png"),
+        (theirs, "trace.png"),
+        (difference, "difference.png"),
+    ] {
+        image
+            .write_png(&dir.join(name))
+            .map_err(CliError::Runtime)?;
     }
     std::fs::write(dir.join("report.txt"), text).map_err(fail)?;
     std::fs::write(dir.join("report.json"), format!("{json:#}\n")).map_err(fail)

@@ -54,8 +54,8 @@ pub use outside::{OutsideOrbit, OutsideView, STAGE_NAMES};
 pub use reference_camera::camera_matrices;
 pub use schedule::{FrameSet, PostUpdate, PreUpdate, Render, Startup, Update, frame_schedules};
 pub use settings::{
-    Clipping, FrontFace, Lighting, Mistake, Overlay, Rasterizer, RenderMode, RenderSettings, Shading,
-    TextureFilter,
+    Clipping, FrontFace, Lighting, Mistake, Overlay, Rasterizer, RenderMode, RenderSettings,
+    Shading, TextureFilter,
 };
 pub use settings_plugin::SettingsPlugin;
 pub use texture::{Texture, checkerboard};

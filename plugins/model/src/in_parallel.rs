@@ -13,8 +13,8 @@ use close2gl_core::limits::MAX_LINE_BYTES;
 use crate::decimal::parse_f32;
 use crate::in_triangles::{Body, FileTriangle, Orientation, VERTEX_TAGS, VertexLayout};
 use crate::mesh_builder::Corner;
-use glam::Vec3;
 use crate::words::{Words, is_space, trim};
+use glam::Vec3;
 
 /// Bytes read at a time for each core: large enough that the cores' start and join are nothing
 /// beside the parse, small enough that the text held stays small beside the mesh.

@@ -27,8 +27,7 @@ use bevy_ecs::prelude::*;
 use close2gl_core::Owner;
 use close2gl_core::{
     App, Camera, Close2glFrame, FateCounts, FateKind, Fates, FrameSet, Mesh, Mistake, Plugin,
-    PostUpdate,
-    RenderSettings, StageCounts, Viewport,
+    PostUpdate, RenderSettings, StageCounts, Viewport,
 };
 
 pub use fast::FastPipeline;

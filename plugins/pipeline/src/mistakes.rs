@@ -214,8 +214,8 @@ pub fn from_rows(rows: [[f64; 4]; 4]) -> DMat4 {
 impl Program {
     pub fn new(camera: &ProgramCamera, declared: Declared, mistakes: Mistakes) -> Self {
         use Mistake::{
-            CullingByFileNormals, CullingByViewAxis, CullingInverted, DivideBeforeClip,
-            LeftHanded, NoClipping, ProductOrder,
+            CullingByFileNormals, CullingByViewAxis, CullingInverted, DivideBeforeClip, LeftHanded,
+            NoClipping, ProductOrder,
         };
         let mut camera = *camera;
         if mistakes.has(LeftHanded) {
@@ -266,6 +266,12 @@ impl Program {
         let corners = *mesh.triangles.get(index)?;
         let world = corners.map(|i| mesh.positions[i as usize].as_dvec3());
         let clip = world.map(|p| self.clip_matrix * p.extend(1.0));
+        let w_row = self.clip_matrix.row(3).abs();
+        let conditioning = world
+            .iter()
+            .zip(&clip)
+            .map(|(p, c)| w_row.dot(p.extend(1.0).abs()) / c.w.abs())
+            .fold(1.0, f64::max);
         let mut outcome = Outcome {
             clip,
             fate: TriangleFate::default(),
@@ -275,6 +281,7 @@ impl Program {
             weights: Vec::new(),
             inv_w: Vec::new(),
             near_a_plane: near_a_plane(&clip),
+            conditioning,
             near_edge_on: false,
         };
         let Some(piece) = self.clipped(&clip, &mut outcome) else {
@@ -326,7 +333,10 @@ impl Program {
     fn clipped(&self, clip: &[DVec4; 3], outcome: &mut Outcome) -> Option<Vec<DVec4>> {
         let single = clip.map(|c| c.as_vec4());
         let codes = single.map(outcode);
-        let (any, all) = (codes[0] | codes[1] | codes[2], codes[0] & codes[1] & codes[2]);
+        let (any, all) = (
+            codes[0] | codes[1] | codes[2],
+            codes[0] & codes[1] & codes[2],
+        );
         let whole = |outcome: &mut Outcome| {
             outcome.edges = vec![true; 3];
             outcome.weights = vec![[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
@@ -342,7 +352,8 @@ impl Program {
             ClipRule::Nothing if clip.iter().any(|c| c.w == 0.0) => removed(outcome, NEAR),
             ClipRule::Nothing => whole(outcome),
             ClipRule::DivideFirst => {
-                let outside = |c: &DVec4| c.w == 0.0 || (c.x / c.w).abs() > 1.0 || (c.y / c.w).abs() > 1.0;
+                let outside =
+                    |c: &DVec4| c.w == 0.0 || (c.x / c.w).abs() > 1.0 || (c.y / c.w).abs() > 1.0;
                 match clip.iter().any(outside) {
                     true => removed(outcome, any),
                     false => whole(outcome),
@@ -358,7 +369,10 @@ impl Program {
                 }
                 outcome.fate.planes = any;
                 outcome.edges = piece.original[..piece.len].to_vec();
-                outcome.weights = piece.weights[..piece.len].iter().map(|w| w.to_array()).collect();
+                outcome.weights = piece.weights[..piece.len]
+                    .iter()
+                    .map(|w| w.to_array())
+                    .collect();
                 Some(piece.vertices().iter().map(|p| p.as_dvec4()).collect())
             }
         }
@@ -374,10 +388,13 @@ impl Program {
         pixels: &[[f32; 2]],
         outcome: &mut Outcome,
     ) -> (f32, Option<FateKind>) {
-        let (area, winding) = face::<true>(pixels, match self.cull {
-            CullRule::Winding(front) => Some(front),
-            _ => None,
-        });
+        let (area, winding) = face::<true>(
+            pixels,
+            match self.cull {
+                CullRule::Winding(front) => Some(front),
+                _ => None,
+            },
+        );
         let longest = longest_edge_squared(pixels);
         outcome.near_edge_on = f64::from(area.abs()) <= EDGE_ON * f64::from(longest);
         let mut side = |normal: DVec3, towards: DVec3, front: FrontFace| {
@@ -438,6 +455,10 @@ pub struct Outcome {
     pub near_a_plane: bool,
     /// The facing test's value is rounding (seen edge-on): either culling decision is right.
     pub near_edge_on: bool,
+    /// How much the division magnifies rounding in w: the largest, over the corners, of the
+    /// sum of w's terms over w (1 for w computed without cancellation; large for a corner near
+    /// the eye's plane, whose window position a float32 program knows only roughly).
+    pub conditioning: f64,
 }
 
 impl Outcome {
@@ -450,7 +471,15 @@ impl Outcome {
 fn near_a_plane(clip: &[DVec4; 3]) -> bool {
     clip.iter().any(|c| {
         let size = c.abs().element_sum();
-        let distances = [c.w + c.x, c.w - c.x, c.w + c.y, c.w - c.y, c.w + c.z, c.w - c.z, c.w];
+        let distances = [
+            c.w + c.x,
+            c.w - c.x,
+            c.w + c.y,
+            c.w - c.y,
+            c.w + c.z,
+            c.w - c.z,
+            c.w,
+        ];
         distances.iter().any(|d| d.abs() <= ON_A_PLANE * size)
     })
 }
@@ -469,11 +498,13 @@ fn longest_edge_squared(polygon: &[[f32; 2]]) -> f32 {
 fn file_normal(mesh: &Mesh, index: usize) -> DVec3 {
     match mesh.face_normals.get(index) {
         Some(normal) => normal.as_dvec3(),
-        None => mesh.triangles[index]
-            .iter()
-            .map(|&i| mesh.normals[i as usize].as_dvec3())
-            .sum::<DVec3>()
-            / 3.0,
+        None => {
+            mesh.triangles[index]
+                .iter()
+                .map(|&i| mesh.normals[i as usize].as_dvec3())
+                .sum::<DVec3>()
+                / 3.0
+        }
     }
 }
 

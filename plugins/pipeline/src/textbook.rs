@@ -109,7 +109,10 @@ pub fn run_mistaken(
             frame.vertices.push([p.x as f32, p.y as f32]);
             if raster {
                 let cut = frame.raster.cuts.len() as u32;
-                frame.raster.primitives.push(frame.raster.vertices.len() as u32 + cut);
+                frame
+                    .raster
+                    .primitives
+                    .push(frame.raster.vertices.len() as u32 + cut);
                 frame.raster.cuts.push(CutVertex {
                     window: [
                         p.x as f32,
@@ -133,7 +136,13 @@ pub fn run_mistaken(
     if raster {
         // One triangle index per primitive, not per vertex.
         let step = stage.topology_vertices();
-        frame.raster.triangles = frame.raster.triangles.iter().step_by(step).copied().collect();
+        frame.raster.triangles = frame
+            .raster
+            .triangles
+            .iter()
+            .step_by(step)
+            .copied()
+            .collect();
     }
     frame.counts = counts.stage_counts();
     fates.counts = counts.fate_counts();
@@ -145,7 +154,9 @@ pub fn run_mistaken(
 fn emitted(outcome: &Outcome, mode: RenderMode) -> Vec<usize> {
     let n = outcome.polygon.len();
     match mode {
-        RenderMode::Solid => (1..n.saturating_sub(1)).flat_map(|i| [0, i, i + 1]).collect(),
+        RenderMode::Solid => (1..n.saturating_sub(1))
+            .flat_map(|i| [0, i, i + 1])
+            .collect(),
         RenderMode::Wireframe => (0..n)
             .filter(|&i| outcome.edges[i])
             .flat_map(|i| [i, (i + 1) % n])

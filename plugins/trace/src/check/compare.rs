@@ -218,16 +218,23 @@ pub fn compare(program: &Program, mesh: &Mesh, trace: &Trace, expected: &[Outcom
         None => triangles.push((kind, vec![t])),
     };
     let mut stages = vec![camera(program, trace)];
-    stages.push(matrix(Stage::M, program.m, trace.m, &[0, 1, 2, 3]));
-    stages.push(matrix(Stage::P, program.p, trace.p, &[0, 1, 2, 3]));
-    stages.push(matrix(Stage::V, program.v, trace.v, &[0, 1, 3]));
-    stages.push(clip(program, mesh, trace, expected, &mut mark));
+    stages.extend(matrices(program, trace));
+    stages.push(clip(program, mesh, trace, &mut mark));
     stages.extend(drawn(program, trace, expected, &mut mark));
     triangles.sort_by_key(|(kind, _)| *kind);
     Comparison { stages, triangles }
 }
 
-fn camera(program: &Program, trace: &Trace) -> StageResult {
+/// The M, P and V stages (V's depth row is not compared: the format leaves it to the program).
+pub(super) fn matrices(program: &Program, trace: &Trace) -> [StageResult; 3] {
+    [
+        matrix(Stage::M, program.m, trace.m, &[0, 1, 2, 3]),
+        matrix(Stage::P, program.p, trace.p, &[0, 1, 2, 3]),
+        matrix(Stage::V, program.v, trace.v, &[0, 1, 3]),
+    ]
+}
+
+pub(super) fn camera(program: &Program, trace: &Trace) -> StageResult {
     let mut result = StageResult::new(Stage::Camera);
     result.checked = 1;
     let c = &trace.camera;
@@ -259,13 +266,21 @@ fn camera(program: &Program, trace: &Trace) -> StageResult {
 
 /// A matrix stage: entries of the given rows, each within [`TERMS`] of its size and of the
 /// matrix's (rounding in float32 scales with both).
-fn matrix(stage: Stage, expected: DMat4, found: Option<DMat4>, rows: &[usize]) -> StageResult {
+pub(super) fn matrix(
+    stage: Stage,
+    expected: DMat4,
+    found: Option<DMat4>,
+    rows: &[usize],
+) -> StageResult {
     let Some(found) = found else {
         let note = format!("the trace has no 'matrix {}' line", stage.name());
         return StageResult::not_checked(stage, &note);
     };
     let mut result = StageResult::new(stage);
-    let largest = expected.to_cols_array().iter().fold(0.0f64, |a, b| a.max(b.abs()));
+    let largest = expected
+        .to_cols_array()
+        .iter()
+        .fold(0.0f64, |a, b| a.max(b.abs()));
     for &row in rows {
         for column in 0..4 {
             let (e, f) = (expected.col(column)[row], found.col(column)[row]);
@@ -290,11 +305,10 @@ fn matrix(stage: Stage, expected: DMat4, found: Option<DMat4>, rows: &[usize]) -
     result.finish()
 }
 
-fn clip(
+pub(super) fn clip(
     program: &Program,
     mesh: &Mesh,
     trace: &Trace,
-    expected: &[Outcome],
     mark: &mut impl FnMut(Kind, usize),
 ) -> StageResult {
     if trace.clip.is_empty() {
@@ -306,8 +320,9 @@ fn clip(
         result.checked += 1;
         let t = line.triangle;
         let corners = mesh.triangles[t].map(|i| mesh.positions[i as usize].as_dvec3().extend(1.0));
-        for (k, (&found, &want)) in line.corners.iter().zip(&expected[t].clip).enumerate() {
-            let terms = terms(a, corners[k]);
+        for (k, (&found, &corner)) in line.corners.iter().zip(&corners).enumerate() {
+            let want = a * corner;
+            let terms = terms(a, corner);
             let off = (found - want).abs();
             if (0..4).any(|i| !(off[i] <= TERMS * terms + 1e-9)) {
                 mark(Kind::ClipCoordinates, t);
@@ -333,6 +348,139 @@ fn terms(a: DMat4, p: DVec4) -> f64 {
         .fold(0.0, f64::max)
 }
 
+/// What the trace drew, by mesh triangle (indices into `trace.pieces`).
+pub fn pieces_by_triangle(trace: &Trace, triangles: usize) -> Vec<Vec<usize>> {
+    let mut pieces: Vec<Vec<usize>> = vec![Vec::new(); triangles];
+    for (i, piece) in trace.pieces.iter().enumerate() {
+        pieces[piece.triangle].push(i);
+    }
+    pieces
+}
+
+/// The window stage's tolerance for a program's 2D system.
+pub fn window_tolerance(program: &Program) -> Tolerance {
+    let system = program.declared.system;
+    let side = (system.right - system.left)
+        .abs()
+        .max((system.top - system.bottom).abs());
+    Tolerance {
+        absolute: WINDOW_ABSOLUTE * side,
+        relative: RELATIVE,
+    }
+}
+
+/// What one mesh triangle's comparison found.
+pub enum Verdict {
+    /// Both agree; `window`: both drew it (the window stage checked it), `depths`: how many of
+    /// the trace's pieces gave depths that were checked.
+    Agree { window: bool, depths: usize },
+    Differs {
+        kind: Kind,
+        detail: String,
+        window: bool,
+        depths: usize,
+    },
+}
+
+/// Judges mesh triangle `t`: close2gl's outcome `ours` against the trace's pieces for it.
+pub fn judge(
+    program: &Program,
+    trace: &Trace,
+    t: usize,
+    ours: &Outcome,
+    pieces: &[usize],
+    tolerance: Tolerance,
+) -> Verdict {
+    let theirs: Vec<&[DVec2]> = pieces
+        .iter()
+        .map(|&i| trace.pieces[i].corners.as_slice())
+        .collect();
+    let tolerance = Tolerance {
+        relative: tolerance.relative * ours.conditioning,
+        ..tolerance
+    };
+    let differs = |kind, detail, window, depths| Verdict::Differs {
+        kind,
+        detail,
+        window,
+        depths,
+    };
+    let ours_visible = ours.drawn() && !region::negligible(&ours.polygon, tolerance);
+    let theirs_visible = theirs.iter().any(|q| !region::negligible(q, tolerance));
+    let line = || pieces.first().map_or(0, |&i| trace.pieces[i].line);
+    match (ours.drawn(), !theirs.is_empty()) {
+        (true, true) => {
+            if let Some(d) = region::compare(&ours.polygon, &theirs, tolerance) {
+                return differs(Kind::Moved, moved(t, &d, line()), true, 0);
+            }
+            let (checked, off) = depths(ours, pieces, trace, tolerance);
+            match off {
+                Some((found, want, line)) => differs(
+                    Kind::Depth,
+                    format!(
+                        "triangle {t} (line {line}): depth expected {}, found {}",
+                        number(want),
+                        number(found)
+                    ),
+                    true,
+                    checked,
+                ),
+                None => Verdict::Agree {
+                    window: true,
+                    depths: checked,
+                },
+            }
+        }
+        (true, false) if ours_visible && !ours.near_a_plane => {
+            let inside = ours.fate.kind == FateKind::Drawn;
+            let culling_on = program.declared.culling.is_some();
+            if inside && culling_on && !ours.near_edge_on {
+                let detail = format!(
+                    "triangle {t}: close2gl drew it (front-facing, inside the view volume); \
+                     the trace drew nothing"
+                );
+                differs(Kind::FrontCulled, detail, false, 0)
+            } else if !(inside && ours.near_edge_on) {
+                let detail = format!(
+                    "triangle {t}: close2gl {} it; the trace drew nothing",
+                    fate_words(ours)
+                );
+                differs(Kind::NotDrawn, detail, false, 0)
+            } else {
+                AGREE
+            }
+        }
+        (false, true) if theirs_visible => match ours.fate.kind {
+            FateKind::Clipped if !ours.near_a_plane => {
+                let kind = match ours.clip.iter().any(|c| c.w <= 0.0) {
+                    true => Kind::DrawnBehindEye,
+                    false => Kind::DrawnOutside,
+                };
+                let detail = format!(
+                    "triangle {t}: close2gl {} it; the trace drew it (line {})",
+                    fate_words(ours),
+                    line()
+                );
+                differs(kind, detail, false, 0)
+            }
+            FateKind::Culled | FateKind::ZeroArea if !ours.near_edge_on => {
+                let detail = format!(
+                    "triangle {t}: close2gl culled it as a back face; the trace drew it (line {})",
+                    line()
+                );
+                differs(Kind::BackDrawn, detail, false, 0)
+            }
+            _ => AGREE,
+        },
+        _ => AGREE,
+    }
+}
+
+const AGREE: Verdict = Verdict::Agree {
+    window: false,
+    depths: 0,
+};
+
 /// The clipping, culling, window and depth stages, from what each side drew per triangle.
 fn drawn(
     program: &Program,
@@ -345,82 +493,30 @@ fn drawn(
         return [Stage::Clipping, Stage::Culling, Stage::Window, Stage::Depth]
             .map(|s| StageResult::not_checked(s, note));
     }
-    let mut pieces: Vec<Vec<usize>> = vec![Vec::new(); expected.len()];
-    for (i, piece) in trace.pieces.iter().enumerate() {
-        pieces[piece.triangle].push(i);
-    }
-    let system = program.declared.system;
-    let side = (system.right - system.left)
-        .abs()
-        .max((system.top - system.bottom).abs());
-    let tolerance = Tolerance {
-        absolute: WINDOW_ABSOLUTE * side,
-        relative: RELATIVE,
-    };
-    let culling_on = program.declared.culling.is_some();
-    let [mut clipping, mut culling, mut window, mut depth] =
+    let pieces = pieces_by_triangle(trace, expected.len());
+    let tolerance = window_tolerance(program);
+    let mut stages =
         [Stage::Clipping, Stage::Culling, Stage::Window, Stage::Depth].map(StageResult::new);
-    clipping.checked = expected.len();
-    culling.checked = expected.len();
+    stages[0].checked = expected.len();
+    stages[1].checked = expected.len();
     for (t, ours) in expected.iter().enumerate() {
-        let theirs: Vec<&[DVec2]> = pieces[t]
-            .iter()
-            .map(|&i| trace.pieces[i].corners.as_slice())
-            .collect();
-        let ours_visible = ours.drawn() && !region::negligible(&ours.polygon, tolerance);
-        let theirs_visible = theirs.iter().any(|q| !region::negligible(q, tolerance));
-        match (ours.drawn(), !theirs.is_empty()) {
-            (true, true) => {
-                window.checked += 1;
-                if let Some(d) = region::compare(&ours.polygon, &theirs, tolerance) {
-                    mark(Kind::Moved, t);
-                    window.differ(|| moved(t, &d, &pieces[t], trace));
-                    continue;
-                }
-                if let Some((found, want, line)) = depths(ours, &pieces[t], trace, tolerance, &mut depth) {
-                    mark(Kind::Depth, t);
-                    depth.differ(|| {
-                        format!("triangle {t} (line {line}): depth expected {}, found {}", number(want), number(found))
-                    });
-                }
+        let (window, depths) = match judge(program, trace, t, ours, &pieces[t], tolerance) {
+            Verdict::Agree { window, depths } => (window, depths),
+            Verdict::Differs {
+                kind,
+                detail,
+                window,
+                depths,
+            } => {
+                mark(kind, t);
+                stages[kind.stage() as usize - Stage::Clipping as usize].differ(|| detail);
+                (window, depths)
             }
-            (true, false) if ours_visible && !ours.near_a_plane => {
-                let inside = ours.fate.kind == FateKind::Drawn;
-                if inside && culling_on && !ours.near_edge_on {
-                    mark(Kind::FrontCulled, t);
-                    culling.differ(|| {
-                        format!("triangle {t}: close2gl drew it (front-facing, inside the view volume); the trace drew nothing")
-                    });
-                } else if !(inside && ours.near_edge_on) {
-                    mark(Kind::NotDrawn, t);
-                    clipping.differ(|| {
-                        format!("triangle {t}: close2gl {} it; the trace drew nothing", fate_words(ours))
-                    });
-                }
-            }
-            (false, true) if theirs_visible => match ours.fate.kind {
-                FateKind::Clipped if !ours.near_a_plane => {
-                    let behind = ours.clip.iter().any(|c| c.w <= 0.0);
-                    let kind = match behind {
-                        true => Kind::DrawnBehindEye,
-                        false => Kind::DrawnOutside,
-                    };
-                    mark(kind, t);
-                    clipping.differ(|| {
-                        format!("triangle {t}: close2gl {} it; the trace drew it (line {})", fate_words(ours), trace.pieces[pieces[t][0]].line)
-                    });
-                }
-                FateKind::Culled | FateKind::ZeroArea if !ours.near_edge_on => {
-                    mark(Kind::BackDrawn, t);
-                    culling.differ(|| {
-                        format!("triangle {t}: close2gl culled it as a back face; the trace drew it (line {})", trace.pieces[pieces[t][0]].line)
-                    });
-                }
-                _ => {}
-            },
-            _ => {}
-        }
+        };
+        stages[2].checked += usize::from(window);
+        stages[3].checked += depths;
     }
+    let [clipping, culling, window, mut depth] = stages;
     if depth.checked == 0 {
         depth.note = Some(match trace.pieces.iter().any(|p| p.depths.is_some()) {
             true => "no triangle with depths was drawn where close2gl draws it".into(),
@@ -428,25 +524,29 @@ fn drawn(
         });
         return [clipping.finish(), culling.finish(), window.finish(), depth];
     }
-    [clipping.finish(), culling.finish(), window.finish(), depth.finish()]
+    [
+        clipping.finish(),
+        culling.finish(),
+        window.finish(),
+        depth.finish(),
+    ]
 }
 
-/// The first depth the trace gives for a corner of this triangle that is off, with close2gl's
-/// depth at that corner and the trace's line; counts the corners it checked in `stage`.
+/// How many of the trace's pieces for this triangle give depths, and the first depth that is
+/// off, with close2gl's depth at that corner and the trace's line.
 fn depths(
     ours: &Outcome,
     pieces: &[usize],
     trace: &Trace,
     tolerance: Tolerance,
-    stage: &mut StageResult,
-) -> Option<(f64, f64, usize)> {
-    let mut first = None;
+) -> (usize, Option<(f64, f64, usize)>) {
+    let (mut checked, mut first) = (0, None);
     for &i in pieces {
         let piece = &trace.pieces[i];
         let Some(found) = &piece.depths else {
             continue;
         };
-        stage.checked += 1;
+        checked += 1;
         for (q, &z) in piece.corners.iter().zip(found) {
             let nearest = ours
                 .polygon
@@ -455,25 +555,27 @@ fn depths(
                 .min_by(|a, b| a.0.distance(*q).total_cmp(&b.0.distance(*q)));
             if let Some((p, &want)) = nearest
                 && p.distance(*q) <= tolerance.absolute + tolerance.relative * p.length()
-                && !((z - want).abs() <= DEPTH + RELATIVE * want.abs())
+                && !((z - want).abs() <= DEPTH + tolerance.relative * want.abs())
                 && first.is_none()
             {
                 first = Some((z, want, piece.line));
             }
         }
     }
-    first
+    (checked, first)
 }
 
-fn moved(t: usize, d: &region::RegionDifference, pieces: &[usize], trace: &Trace) -> String {
-    let line = trace.pieces[pieces[0]].line;
+fn moved(t: usize, d: &region::RegionDifference, line: usize) -> String {
     match d.corner {
         (Some(want), Some(found)) => format!(
             "triangle {t} (line {line}): a corner expected at {}, the nearest drawn is {}",
             vec2(want),
             vec2(found)
         ),
-        (Some(want), None) => format!("triangle {t} (line {line}): no corner drawn near {}", vec2(want)),
+        (Some(want), None) => format!(
+            "triangle {t} (line {line}): no corner drawn near {}",
+            vec2(want)
+        ),
         (None, Some(found)) => format!(
             "triangle {t} (line {line}): a corner drawn at {}, outside close2gl's polygon",
             vec2(found)
@@ -519,5 +621,11 @@ fn vec2(p: DVec2) -> String {
 }
 
 fn vec4(p: DVec4) -> String {
-    format!("({}, {}, {}, {})", number(p.x), number(p.y), number(p.z), number(p.w))
+    format!(
+        "({}, {}, {}, {})",
+        number(p.x),
+        number(p.y),
+        number(p.z),
+        number(p.w)
+    )
 }

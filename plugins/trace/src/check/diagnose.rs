@@ -14,11 +14,8 @@ use crate::format::Trace;
 /// The sets of mistakes that reproduce `trace`: single mistakes first; a pair only when neither
 /// of its mistakes alone does (the other one would change nothing the trace shows).
 pub fn diagnose(mesh: &Mesh, trace: &Trace) -> Vec<Mistakes> {
-    let reproduces = |set: &Mistakes| {
-        let program = program_for(trace, *set);
-        let frame = program.frame(mesh);
-        compare::compare(&program, mesh, trace, &frame).agrees()
-    };
+    let pieces = compare::pieces_by_triangle(trace, mesh.triangles.len());
+    let reproduces = |set: &Mistakes| reproduces(&program_for(trace, *set), mesh, trace, &pieces);
     let candidates = Mistakes::singles_and_pairs();
     let (singles, pairs): (Vec<Mistakes>, Vec<Mistakes>) =
         candidates.into_iter().partition(|s| s.iter().count() == 1);
@@ -27,6 +24,31 @@ pub fn diagnose(mesh: &Mesh, trace: &Trace) -> Vec<Mistakes> {
         return found;
     }
     pairs.into_par_iter().filter(reproduces).collect()
+}
+
+/// Whether `program` reproduces the trace: what [`compare::compare`] would say agrees, found
+/// stage by stage from the cheapest, stopping at the first difference (most mistakes show in a
+/// matrix, before any triangle is sent down the pipeline).
+fn reproduces(program: &Program, mesh: &Mesh, trace: &Trace, pieces: &[Vec<usize>]) -> bool {
+    let agrees = |s: &compare::StageResult| s.status != compare::Status::Differs;
+    if !agrees(&compare::camera(program, trace))
+        || !compare::matrices(program, trace).iter().all(agrees)
+        || !agrees(&compare::clip(program, mesh, trace, &mut |_, _| {}))
+    {
+        return false;
+    }
+    if trace.pieces.is_empty() {
+        return true;
+    }
+    let tolerance = compare::window_tolerance(program);
+    (0..mesh.triangles.len()).all(|t| {
+        program.triangle(mesh, t).is_some_and(|ours| {
+            matches!(
+                compare::judge(program, trace, t, &ours, &pieces[t], tolerance),
+                compare::Verdict::Agree { .. }
+            )
+        })
+    })
 }
 
 /// The first difference, in words a student can act on, for a trace no mistake explains.
@@ -76,12 +98,20 @@ pub fn unexplained(
 }
 
 /// Where some triangles lie: their distances in front of the eye, in multiples of near.
-fn whereabouts(program: &Program, mesh: &Mesh, triangles: &[usize], expected: &[Outcome]) -> String {
+fn whereabouts(
+    program: &Program,
+    mesh: &Mesh,
+    triangles: &[usize],
+    expected: &[Outcome],
+) -> String {
     let near = program.camera.near;
     let distances = triangles.iter().flat_map(|&t| {
-        mesh.triangles[t].map(|i| -(program.m * mesh.positions[i as usize].as_dvec3().extend(1.0)).z)
+        mesh.triangles[t]
+            .map(|i| -(program.m * mesh.positions[i as usize].as_dvec3().extend(1.0)).z)
     });
-    let (low, high) = distances.fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), d| (l.min(d), h.max(d)));
+    let (low, high) = distances.fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), d| {
+        (l.min(d), h.max(d))
+    });
     let cut = triangles
         .iter()
         .filter(|&&t| expected[t].fate.planes != 0)

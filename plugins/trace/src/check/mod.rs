@@ -35,10 +35,9 @@ impl Report {
 
     /// The catalogue ids named, each once, in the catalogue's order.
     pub fn mistakes(&self) -> Vec<&'static str> {
-        let all = self
-            .diagnoses
-            .iter()
-            .fold(Mistakes::NONE, |all, set| set.iter().fold(all, |a, m| a.with(m)));
+        let all = self.diagnoses.iter().fold(Mistakes::NONE, |all, set| {
+            set.iter().fold(all, |a, m| a.with(m))
+        });
         all.iter().map(|m| m.name()).collect()
     }
 }

@@ -2,8 +2,8 @@
 //! kind of disagreement, each filled into the trace's window as it shows on screen.
 
 use close2gl_core::Image;
-use glam::DVec2;
 use close2gl_pipeline::mistakes::System2d;
+use glam::DVec2;
 
 use super::Report;
 use super::compare::Kind;
@@ -73,8 +73,12 @@ fn fill(image: &mut Image, polygon: &[DVec2], color: [u8; 4]) {
         return;
     }
     let (w, h) = (f64::from(image.width), f64::from(image.height));
-    let min = polygon.iter().fold(DVec2::splat(f64::INFINITY), |a, &p| a.min(p));
-    let max = polygon.iter().fold(DVec2::splat(f64::NEG_INFINITY), |a, &p| a.max(p));
+    let min = polygon
+        .iter()
+        .fold(DVec2::splat(f64::INFINITY), |a, &p| a.min(p));
+    let max = polygon
+        .iter()
+        .fold(DVec2::splat(f64::NEG_INFINITY), |a, &p| a.max(p));
     let x0 = (min.x - 0.5).ceil().clamp(0.0, w) as u32;
     let x1 = (max.x - 0.5).floor().clamp(-1.0, w - 1.0);
     let y0 = (min.y - 0.5).ceil().clamp(0.0, h) as u32;
@@ -83,7 +87,9 @@ fn fill(image: &mut Image, polygon: &[DVec2], color: [u8; 4]) {
         return;
     }
     let n = polygon.len();
-    let area: f64 = (0..n).map(|i| polygon[i].perp_dot(polygon[(i + 1) % n])).sum();
+    let area: f64 = (0..n)
+        .map(|i| polygon[i].perp_dot(polygon[(i + 1) % n]))
+        .sum();
     for y in y0..=y1 as u32 {
         for x in x0..=x1 as u32 {
             let c = DVec2::new(f64::from(x) + 0.5, f64::from(y) + 0.5);

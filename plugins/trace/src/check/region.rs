@@ -139,7 +139,10 @@ mod tests {
         let s = square();
         let fan = [[s[0], s[1], s[2]], [s[0], s[2], s[3]]];
         assert!(compare(&s, &[&fan[0]], TIGHT).is_some(), "half of it");
-        assert!(compare(&s, &[&fan[0], &fan[1], &fan[1]], TIGHT).is_some(), "a piece twice");
+        assert!(
+            compare(&s, &[&fan[0], &fan[1], &fan[1]], TIGHT).is_some(),
+            "a piece twice"
+        );
         let mut moved = s.clone();
         moved[2] = DVec2::new(4.5, 4.0);
         let d = compare(&s, &[&moved], TIGHT).expect("moved");
@@ -148,7 +151,11 @@ mod tests {
 
     #[test]
     fn a_whole_triangle_is_not_its_clipped_piece() {
-        let triangle = [DVec2::new(0.0, 0.0), DVec2::new(8.0, 0.0), DVec2::new(0.0, 8.0)];
+        let triangle = [
+            DVec2::new(0.0, 0.0),
+            DVec2::new(8.0, 0.0),
+            DVec2::new(0.0, 8.0),
+        ];
         let clipped = [
             DVec2::new(0.0, 0.0),
             DVec2::new(4.0, 0.0),

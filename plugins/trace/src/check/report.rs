@@ -24,16 +24,27 @@ pub fn text(report: &Report, trace_name: &str) -> String {
             Status::NotChecked => s.note.clone().unwrap_or_default(),
             _ => format!("{} checked, {} differ", s.checked, s.differing),
         };
-        out.push_str(&format!("  {:<9} {:<12} {counts}\n", s.stage.name(), s.status.name()));
+        out.push_str(&format!(
+            "  {:<9} {:<12} {counts}\n",
+            s.stage.name(),
+            s.status.name()
+        ));
         if Some(s.stage) == first {
             for d in &s.details {
                 out.push_str(&format!("      {d}\n"));
             }
             if s.differing > s.details.len() {
-                out.push_str(&format!("      ... and {} more\n", s.differing - s.details.len()));
+                out.push_str(&format!(
+                    "      ... and {} more\n",
+                    s.differing - s.details.len()
+                ));
             }
             for (kind, triangles) in c.triangles.iter().filter(|(k, _)| k.stage() == s.stage) {
-                out.push_str(&format!("      {}: {} triangles\n", kind.name(), triangles.len()));
+                out.push_str(&format!(
+                    "      {}: {} triangles\n",
+                    kind.name(),
+                    triangles.len()
+                ));
             }
         }
     }
@@ -118,5 +129,10 @@ pub fn stage_line(report: &Report, stage: Stage) -> String {
         .filter(|(k, _)| k.stage() == stage)
         .map(|(k, t): &(Kind, Vec<usize>)| format!("{} {}", t.len(), k.name()))
         .collect();
-    format!("{}: {} ({})", stage.name(), s.status.name(), kinds.join(", "))
+    format!(
+        "{}: {} ({})",
+        stage.name(),
+        s.status.name(),
+        kinds.join(", ")
+    )
 }

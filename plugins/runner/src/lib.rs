@@ -1,0 +1,44 @@
+//! Runs a program the user did not write (a student's pipeline, for `close2gl grade`) under
+//! limits, and leaves nothing behind. The command line is split into words as a POSIX shell would
+//! ([`split_words`]) but never run through a shell; [`substitute`] fills in `{scene}`-style
+//! placeholders. Each run happens in a fresh [`Workspace`] (a temporary directory, removed on
+//! drop and after an interrupt) with a wall-clock time limit, an address-space limit, a per-file
+//! size limit, a limit on what the whole directory holds, stdin closed, only the last bytes of
+//! stdout and stderr kept, and an environment of `PATH`, `HOME` and `LANG` only. When [`run()`]
+//! returns, the program and every process it started are gone (including those that left its
+//! session), and its [`Outcome`] says how it ended in words a report can show. Ctrl+C
+//! ([`install_interrupt_handler`]) stops every running program and lets the caller clean up.
+//!
+//! This is **not a sandbox**: the program runs as the user, and can read and write anything the
+//! user can (outside its directory too), open network connections, or ask another daemon to
+//! start processes for it. The limits stop mistakes and runaway programs (a crash, a hang, an
+//! endless loop writing a file, a fork that outlives its parent), not an attacker. Linux only.
+//!
+//! The files follow one run: `words` (the command line) → `workspace` (the directory, with
+//! `disk` measuring it) → `spawn` (the child's limits, session and environment, set between fork
+//! and exec) → `run` (watching it: exit, time, disk, interrupt, with `output` keeping the tails)
+//! → `reap` (killing the program's whole tree, found through `proc_table`) → `outcome` (how it
+//! ended, with `signals`' names). `interrupt` is the Ctrl+C flag every run watches.
+
+#![cfg(target_os = "linux")]
+
+mod disk;
+mod interrupt;
+mod limits;
+mod outcome;
+mod output;
+mod proc_table;
+mod reap;
+mod run;
+mod signals;
+mod spawn;
+mod words;
+mod workspace;
+
+pub use interrupt::{install_interrupt_handler, interrupted, request_interrupt};
+pub use limits::Limits;
+pub use outcome::{Ending, Outcome};
+pub use reap::reap_everything;
+pub use run::run;
+pub use words::{split_words, substitute};
+pub use workspace::Workspace;

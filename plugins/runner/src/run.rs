@@ -1,0 +1,120 @@
+//! One run of one program: start it, watch it, stop it, clean up after it. The watcher is the
+//! calling thread itself, ticking every [`TICK`]: it reads the output, and checks for the
+//! program's exit, the time limit, the disk limit and an interrupt. Runs on several threads at
+//! once share nothing but the reaper's list of running programs.
+
+use std::os::unix::process::ExitStatusExt;
+use std::path::Path;
+use std::process::{Child, ExitStatus};
+use std::time::{Duration, Instant};
+
+use crate::interrupt::interrupted;
+use crate::limits::Limits;
+use crate::outcome::{Ending, Outcome};
+use crate::output::Output;
+use crate::reap::Registration;
+use crate::signals::signal_name;
+use crate::{disk, spawn};
+
+/// How often the watcher checks: small next to any time limit, rare enough to cost nothing.
+const TICK: Duration = Duration::from_millis(20);
+
+/// Runs `words` (a program and its arguments) in `dir` under `limits`, and returns once it has
+/// ended and every process it started is dead and reaped. Nothing is started once grading was
+/// interrupted. Safe to call from several threads at once.
+pub fn run(words: &[String], dir: &Path, limits: &Limits) -> Outcome {
+    let not_run = |ended| Outcome {
+        ended,
+        elapsed: Duration::ZERO,
+        stdout_tail: Vec::new(),
+        stderr_tail: Vec::new(),
+    };
+    if interrupted() {
+        return not_run(Ending::Interrupted);
+    }
+    let started = Instant::now();
+    let (mut child, registration) = match spawn::start(words, dir, limits) {
+        Ok(running) => running,
+        Err(e) => return not_run(Ending::CouldNotStart(start_error(words, dir, &e))),
+    };
+    let mut output = Output::new(child.stdout.take(), child.stderr.take(), limits.output);
+    let (ended, elapsed) = watch(&mut child, &registration, &mut output, dir, limits, started);
+    // Only once the program is reaped may the reaper take the orphans it left.
+    drop(registration);
+    let (stdout_tail, stderr_tail) = output.finish();
+    Outcome {
+        ended,
+        elapsed,
+        stdout_tail,
+        stderr_tail,
+    }
+}
+
+/// Ticks until the program exits or must be stopped; returns how it ended and when. On return
+/// the program is reaped.
+fn watch(
+    child: &mut Child,
+    registration: &Registration,
+    output: &mut Output,
+    dir: &Path,
+    limits: &Limits,
+    started: Instant,
+) -> (Ending, Duration) {
+    let mut disk_checked = Instant::now();
+    let mut disk_full = || {
+        // A chatty program wakes the watcher often: the directory is walked once a tick.
+        let due = disk_checked.elapsed() >= TICK;
+        if due {
+            disk_checked = Instant::now();
+        }
+        due && disk::exceeds(dir, limits.disk)
+    };
+    loop {
+        output.pump(TICK);
+        let elapsed = started.elapsed();
+        let stop = match child.try_wait() {
+            Ok(Some(status)) => {
+                // A program that filled its directory and exited before the check still did.
+                let ended = if disk::exceeds(dir, limits.disk) {
+                    Ending::TooMuchDisk
+                } else {
+                    ending(status)
+                };
+                return (ended, elapsed);
+            }
+            Ok(None) if interrupted() => Ending::Interrupted,
+            Ok(None) if elapsed >= limits.time => Ending::TimedOut,
+            Ok(None) if disk_full() => Ending::TooMuchDisk,
+            Ok(None) => continue,
+            Err(e) => Ending::CouldNotStart(format!("could not wait for it: {e}")),
+        };
+        registration.kill_tree();
+        // After SIGKILL this returns at once; its status says nothing more than `stop` does.
+        let _ = child.wait();
+        return (stop, elapsed);
+    }
+}
+
+fn ending(status: ExitStatus) -> Ending {
+    match (status.code(), status.signal()) {
+        (Some(code), _) => Ending::Exited(code),
+        (None, Some(signal)) => Ending::Signalled {
+            signal,
+            name: signal_name(signal),
+        },
+        (None, None) => Ending::CouldNotStart(format!("it ended in an unknown way: {status}")),
+    }
+}
+
+/// "no such program `stundent`" reads better than "No such file or directory (os error 2)".
+fn start_error(words: &[String], dir: &Path, error: &std::io::Error) -> String {
+    let program = words.first().map_or("", String::as_str);
+    if !dir.is_dir() {
+        return format!("its directory {} does not exist", dir.display());
+    }
+    match error.kind() {
+        std::io::ErrorKind::NotFound => format!("no such program `{program}`"),
+        std::io::ErrorKind::PermissionDenied => format!("`{program}` is not executable"),
+        _ => format!("`{program}`: {error}"),
+    }
+}

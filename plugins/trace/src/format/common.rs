@@ -1,0 +1,118 @@
+//! The lines both formats share (`model`, `window`, the camera, `culling`, `clipping`, `mode`,
+//! `end`), and the rules every key follows: given once, nothing after `end`, the required ones
+//! present.
+
+use close2gl_core::limits::MAX_PIXELS;
+use close2gl_core::{NamedEnum, RenderMode};
+
+use super::camera::CameraSlots;
+use super::lines::{FormatError, Line};
+use super::magic::Format;
+use super::names::choices;
+use super::{Culling, TraceClipping};
+
+/// A value and the line that gave it, so that a second line for its key can name the first.
+pub(crate) type Slot<T> = Option<(T, usize)>;
+
+/// Fills `slot` from `line`; a key given twice is an error at the second line.
+pub(crate) fn set_once<T>(
+    slot: &mut Slot<T>,
+    value: T,
+    line: &Line,
+    key: &str,
+) -> Result<(), FormatError> {
+    if let Some((_, first)) = slot {
+        return Err(line.expected(&format!("one '{key}' line (the first is line {first})")));
+    }
+    *slot = Some((value, line.number));
+    Ok(())
+}
+
+/// What both formats read alike, as the lines come.
+#[derive(Default)]
+pub(crate) struct Common {
+    pub(crate) model: Slot<String>,
+    pub(crate) window: Slot<(u32, u32)>,
+    pub(crate) camera: CameraSlots,
+    pub(crate) culling: Slot<Culling>,
+    pub(crate) clipping: Slot<TraceClipping>,
+    pub(crate) mode: Slot<RenderMode>,
+    /// The `end` line's number: nothing but comments may follow it.
+    pub(crate) end: Option<usize>,
+}
+
+impl Common {
+    /// Reads `line` when its key is one both formats have; `Ok(false)` leaves it to the
+    /// format's own keys. `model_shape` is how the format names its `model` line.
+    pub(crate) fn read(&mut self, line: &Line, model_shape: &str) -> Result<bool, FormatError> {
+        self.check_open(line)?;
+        match line.key() {
+            "model" => {
+                // One field, as the C writer makes it: a name with blanks would be extra fields.
+                line.expect_fields(2, model_shape)?;
+                set_once(&mut self.model, line.fields[1].to_string(), line, "model")?;
+            }
+            "window" => set_once(&mut self.window, window(line)?, line, "window")?,
+            "camera" => self.camera.read(line)?,
+            "culling" => set_once(&mut self.culling, named(line)?, line, "culling")?,
+            "clipping" => set_once(&mut self.clipping, named(line)?, line, "clipping")?,
+            "mode" => set_once(&mut self.mode, named(line)?, line, "mode")?,
+            "end" => {
+                line.expect_fields(1, "end")?;
+                self.end = Some(line.number);
+            }
+            _ => return Ok(false),
+        }
+        Ok(true)
+    }
+
+    /// Refuses any line after `end`.
+    pub(crate) fn check_open(&self, line: &Line) -> Result<(), FormatError> {
+        match self.end {
+            Some(end) => Err(line.expected(&format!("nothing after 'end' (line {end})"))),
+            None => Ok(()),
+        }
+    }
+
+    pub(crate) fn window(&self, ends: &Ends) -> Result<(u32, u32), FormatError> {
+        self.window
+            .map(|(size, _)| size)
+            .ok_or_else(|| ends.without("'window W H'"))
+    }
+}
+
+/// `window W H`, each in 1..=16384 (the largest texture common adapters allow).
+fn window(line: &Line) -> Result<(u32, u32), FormatError> {
+    const SHAPE: &str = "window W H";
+    line.expect_fields(3, SHAPE)?;
+    let size = |i, name| {
+        let x = line.integer(i, name, SHAPE)?;
+        u32::try_from(x)
+            .ok()
+            .filter(|x| (1..=MAX_PIXELS).contains(x))
+            .ok_or_else(|| line.expected(&format!("'{SHAPE}' with W and H in 1..={MAX_PIXELS}")))
+    };
+    Ok((size(1, "W")?, size(2, "H")?))
+}
+
+/// `KEY NAME` with NAME one of `T`'s names.
+pub(crate) fn named<T: NamedEnum>(line: &Line) -> Result<T, FormatError> {
+    let shape = format!("{} {}", line.key(), choices::<T>());
+    line.expect_fields(2, &shape)?;
+    T::from_name(line.fields[1]).ok_or_else(|| line.wrong_shape(&shape))
+}
+
+/// Where a file that lacks a required line is reported: its last line.
+pub(crate) struct Ends<'a> {
+    pub(crate) format: Format,
+    pub(crate) file: &'a str,
+    pub(crate) last_line: usize,
+}
+
+impl Ends<'_> {
+    /// `the trace ends without <what>`.
+    pub(crate) fn without(&self, what: &str) -> FormatError {
+        let message = format!("the {} ends without {what}", self.format.noun());
+        FormatError::new(self.file, self.last_line, message)
+    }
+}

@@ -1,0 +1,226 @@
+//! A trace (`close2gl-trace 1`): what a program wrote about one frame of its own Close2GL, its
+//! camera, its matrices and the 2D triangles it drew.
+
+use std::collections::HashMap;
+use std::path::Path;
+
+use close2gl_core::RenderMode;
+use glam::{DMat4, DVec2, DVec4};
+
+use super::camera::shape;
+use super::common::{Common, Ends, Slot, set_once};
+use super::lines::{FormatError, Line, last_line, records};
+use super::magic::{Format, check_magic};
+use super::output::{self, MATRIX_NAMES};
+use super::{CameraLines, Culling, MAX_RECORDS, Ortho2d, TraceClipping, read};
+
+/// `clip T`: mesh triangle T's corners in clip coordinates, before clipping.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ClipLine {
+    pub triangle: usize,
+    pub corners: [DVec4; 3],
+    /// Where it was written, for a checker's messages.
+    pub line: usize,
+}
+
+/// A `tri` (3 corners) or `poly` (K corners) line: a 2D polygon drawn for mesh triangle T, in
+/// the `ortho2d` system, with each corner's NDC depth when the program gave them.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Piece {
+    pub triangle: usize,
+    pub corners: Vec<DVec2>,
+    /// One per corner, or none.
+    pub depths: Option<Vec<f64>>,
+    pub line: usize,
+}
+
+/// One trace file. What the file leaves out is `None` (or empty), so that a checker can say
+/// what it did not check.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Trace {
+    /// The label errors and messages name the file by.
+    pub file: String,
+    pub model: Option<String>,
+    /// The `triangles N` count and its line.
+    pub triangles: Option<(usize, usize)>,
+    pub window: (u32, u32),
+    /// `0 W 0 H` when not given.
+    pub ortho2d: Ortho2d,
+    pub camera: CameraLines,
+    pub culling: Culling,
+    pub clipping: TraceClipping,
+    pub mode: Option<RenderMode>,
+    pub m: Option<DMat4>,
+    pub p: Option<DMat4>,
+    pub v: Option<DMat4>,
+    pub clip: Vec<ClipLine>,
+    /// The `tri` and `poly` lines, in file order.
+    pub pieces: Vec<Piece>,
+    /// Whether an `end` line said the trace is complete.
+    pub ended: bool,
+}
+
+/// Reads a trace from `text`; `file` labels its errors.
+pub fn parse_trace(text: &str, file: &str) -> Result<Trace, FormatError> {
+    parse_limited(text, file, MAX_RECORDS)
+}
+
+/// Reads the trace file at `path`, labelled as the path is given.
+pub fn read_trace(path: &Path) -> Result<Trace, FormatError> {
+    let (text, file) = read::text(path)?;
+    parse_trace(&text, &file)
+}
+
+/// [`parse_trace`] with `limit` in place of [`MAX_RECORDS`], so that a test can reach it.
+pub(crate) fn parse_limited(text: &str, file: &str, limit: usize) -> Result<Trace, FormatError> {
+    let mut lines = records(text, file);
+    let ends = Ends {
+        format: Format::Trace,
+        file,
+        last_line: last_line(text),
+    };
+    check_magic(lines.next().as_ref(), Format::Trace, file, ends.last_line)?;
+    let mut reader = Reader {
+        limit,
+        ..Reader::default()
+    };
+    for line in lines {
+        reader.read(&line)?;
+    }
+    reader.finish(&ends)
+}
+
+/// The trace read so far.
+#[derive(Default)]
+struct Reader {
+    common: Common,
+    triangles: Slot<usize>,
+    ortho2d: Slot<Ortho2d>,
+    matrices: [Slot<DMat4>; 3],
+    clip: Vec<ClipLine>,
+    /// The line of each triangle's `clip`, to refuse a second.
+    clip_lines: HashMap<usize, usize>,
+    pieces: Vec<Piece>,
+    limit: usize,
+}
+
+impl Reader {
+    fn read(&mut self, line: &Line) -> Result<(), FormatError> {
+        if self.common.read(line, "model NAME")? {
+            return Ok(());
+        }
+        match line.key() {
+            "triangles" => {
+                line.expect_fields(2, "triangles N")?;
+                let n = line.integer(1, "N", "triangles N")?;
+                set_once(&mut self.triangles, n, line, "triangles")
+            }
+            "ortho2d" => set_once(&mut self.ortho2d, ortho2d(line)?, line, "ortho2d"),
+            "matrix" => {
+                let (i, m) = output::matrix(line)?;
+                let key = format!("matrix {}", MATRIX_NAMES[i]);
+                set_once(&mut self.matrices[i], m, line, &key)
+            }
+            "clip" | "tri" | "poly" => self.read_output(line),
+            _ => Err(line.expected(
+                "a trace line (model, triangles, window, ortho2d, camera, culling, clipping, \
+                 mode, matrix, clip, tri, poly or end)",
+            )),
+        }
+    }
+
+    /// A `clip`, `tri` or `poly` line, of which there may be millions, up to the limit.
+    fn read_output(&mut self, line: &Line) -> Result<(), FormatError> {
+        if self.clip.len() + self.pieces.len() >= self.limit {
+            let limit = self.limit;
+            let what = format!("at most {limit} 'clip', 'tri' and 'poly' lines in all");
+            return Err(line.expected(&what));
+        }
+        match line.key() {
+            "clip" => {
+                let clip = output::clip(line)?;
+                if let Some(first) = self.clip_lines.insert(clip.triangle, line.number) {
+                    let t = clip.triangle;
+                    return Err(
+                        line.expected(&format!("one 'clip {t}' line (the first is line {first})"))
+                    );
+                }
+                self.clip.push(clip);
+            }
+            "tri" => self.pieces.push(output::tri(line)?),
+            _ => self.pieces.push(output::poly(line)?),
+        }
+        Ok(())
+    }
+
+    fn finish(self, ends: &Ends) -> Result<Trace, FormatError> {
+        let common = self.common;
+        let window = common.window(ends)?;
+        let camera =
+            (common.camera.lines()).map_err(|i| ends.without(&format!("'{}'", shape(i))))?;
+        let [m, p, v] = self.matrices.map(|slot| slot.map(|(m, _)| m));
+        Ok(Trace {
+            file: ends.file.to_string(),
+            model: common.model.map(|(name, _)| name),
+            triangles: self.triangles,
+            window,
+            ortho2d: self.ortho2d.map_or(
+                Ortho2d {
+                    left: 0.0,
+                    right: f64::from(window.0),
+                    bottom: 0.0,
+                    top: f64::from(window.1),
+                },
+                |(o, _)| o,
+            ),
+            camera,
+            culling: common.culling.map(|(c, _)| c).unwrap_or_default(),
+            clipping: common.clipping.map(|(c, _)| c).unwrap_or_default(),
+            mode: common.mode.map(|(m, _)| m),
+            m,
+            p,
+            v,
+            clip: self.clip,
+            pieces: self.pieces,
+            ended: common.end.is_some(),
+        })
+    }
+}
+
+/// `ortho2d L R B T`, a system of some width and height (`gluOrtho2D` divides by both).
+fn ortho2d(line: &Line) -> Result<Ortho2d, FormatError> {
+    const SHAPE: &str = "ortho2d L R B T";
+    line.expect_fields(5, SHAPE)?;
+    let x = line.numbers(1, SHAPE, |k| ["L", "R", "B", "T"][k].to_string())?;
+    if x[0] == x[1] || x[2] == x[3] {
+        return Err(line.expected(&format!("'{SHAPE}' with L != R and B != T")));
+    }
+    Ok(Ortho2d {
+        left: x[0],
+        right: x[1],
+        bottom: x[2],
+        top: x[3],
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const HEAD: &str = "close2gl-trace 1\nwindow 4 4\ncamera position 0 0 5\ncamera u 1 0 0\n\
+                        camera v 0 1 0\ncamera n 0 0 1\ncamera hfov 60\ncamera vfov 60\n\
+                        camera near 1\ncamera far 10\n";
+
+    #[test]
+    fn past_the_limit_of_output_lines_is_an_error_at_the_line_past_it() {
+        let text = format!("{HEAD}tri 0 0 0 1 0 0 1\nclip 0 0 0 0 1 0 0 0 1 0 0 0 1\n");
+        assert_eq!(parse_limited(&text, "t", 2).unwrap().pieces.len(), 1);
+        let text = format!("{text}poly 1 3 0 0 1 0 0 1\n");
+        let error = parse_limited(&text, "t", 2).unwrap_err();
+        assert_eq!(
+            error.to_string(),
+            "t:13: expected at most 2 'clip', 'tri' and 'poly' lines in all, \
+             found 'poly 1 3 0 0 1 0 0 1'"
+        );
+    }
+}
