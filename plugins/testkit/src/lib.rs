@@ -2,13 +2,15 @@
 //! hand ([`cube`], [`sphere`]), big model files written on the spot ([`write_grid_in`],
 //! [`write_grid_obj`]), the world a test starts from ([`world_with`], [`camera`],
 //! [`mesh`]), with feature `gpu` the one headless GPU adapter a test binary uses ([`gpu`]), and
-//! with feature `panel` the egui control panel driven headless ([`panel::Harness`]). Used as a
+//! with feature `panel` the egui control panel driven headless ([`panel::Harness`]), and the
+//! student program of `examples/trace/` compiled with the C compiler ([`student`]). Used as a
 //! dev-dependency only.
 
 mod big_model;
 mod meshes;
 #[cfg(feature = "panel")]
 pub mod panel;
+pub mod student;
 mod temp_dir;
 
 use close2gl_core::{App, Camera, Lighting, Mesh, RenderSettings, SelectedTriangle, Viewport};

@@ -1,0 +1,44 @@
+//! The student program of `examples/trace/` (`pipeline.c`: the assignment's pipeline writing a
+//! close2gl trace), compiled with the system's C compiler as a test needs it: correct, or with
+//! catalogue mistakes and variants switched on.
+
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+/// The repository's root.
+pub fn repository() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("../..")
+}
+
+/// A bundled model's path (`cube.in`, `knot.obj`, ...).
+pub fn asset(name: &str) -> PathBuf {
+    repository().join("assets").join(name)
+}
+
+/// The `-D` flag that switches on catalogue mistake `id` (`fov_not_halved` →
+/// `-DMISTAKE_FOV_NOT_HALVED`).
+pub fn mistake_flag(id: &str) -> String {
+    format!("-DMISTAKE_{}", id.to_ascii_uppercase())
+}
+
+/// Compiles `pipeline.c` with `flags` into `dir/name`; panics with the compiler's output when it
+/// fails (CI installs a C compiler: a test without one is a broken machine, not a skip).
+pub fn compile_pipeline(dir: &Path, name: &str, flags: &[&str]) -> PathBuf {
+    let source = repository().join("examples/trace/pipeline.c");
+    let out = dir.join(name);
+    let compiled = Command::new("cc")
+        .args(["-std=c99", "-O2", "-Wall", "-Wextra", "-Werror"])
+        .args(flags)
+        .arg("-o")
+        .arg(&out)
+        .arg(&source)
+        .arg("-lm")
+        .output()
+        .expect("a C compiler (cc) on PATH");
+    assert!(
+        compiled.status.success(),
+        "cc {flags:?} pipeline.c failed:\n{}",
+        String::from_utf8_lossy(&compiled.stderr)
+    );
+    out
+}
