@@ -45,7 +45,7 @@ use close2gl_core::{
 use config::Config;
 
 /// Everything headless: the shared settings, model loading, the camera, input mapping, the
-/// Close2GL pipeline and its software rasterizer. The GPU renderers and the windows are added on
+/// Close2GL pipeline and its software rasterizer, and a program's trace shown in its place. The GPU renderers and the windows are added on
 /// top by the commands that need them. A plugin already in the app is not added again, so an app
 /// may add one of these by hand first.
 pub struct DefaultPlugins;
@@ -57,7 +57,8 @@ impl Plugin for DefaultPlugins {
             .add_plugin_once(close2gl_camera::CameraPlugin)
             .add_plugin_once(close2gl_input::InputPlugin)
             .add_plugin_once(close2gl_pipeline::Close2glPlugin)
-            .add_plugin_once(close2gl_raster::RasterPlugin);
+            .add_plugin_once(close2gl_raster::RasterPlugin)
+            .add_plugin_once(close2gl_trace::view::TracePlugin);
     }
 }
 

@@ -1,5 +1,5 @@
-//! `--watch`: the model, its texture image and the config file are reloaded when they change on
-//! disk, and the camera stays where it is. A thread polls the files' modification times (no
+//! `--watch`: the model, its texture image, the config file and a shown trace are reloaded when
+//! they change on disk, and the camera stays where it is. A thread polls the files' modification times (no
 //! event loop wakes for a file, and polling a handful of files four times a second costs
 //! nothing) and wakes the viewer when one has changed and then stayed unchanged for one poll, so
 //! that an editor's save half-written is not read. A save that does not load shows its error
@@ -16,6 +16,8 @@ use close2gl_core::{
     App, Camera, CameraSpeeds, FrameSet, KeepPose, ModelRequest, ModelSource, ModelStatus, Plugin,
     Texture, TextureRequest, Update, Wake,
 };
+
+use close2gl_trace::view::{TraceRequest, TraceView};
 
 use crate::config::Config;
 
@@ -151,12 +153,20 @@ pub fn reload_changed_files(world: &mut World) {
     let texture = world
         .get_resource::<Texture>()
         .and_then(|t| t.source.clone());
+    let trace = world
+        .get_resource::<TraceView>()
+        .and_then(|view| view.path.clone());
     finish_model_reload(world);
     let watch = world.resource::<Watch>();
-    let paths: BTreeSet<PathBuf> = [model.clone(), texture.clone(), watch.config_file.clone()]
-        .into_iter()
-        .flatten()
-        .collect();
+    let paths: BTreeSet<PathBuf> = [
+        model.clone(),
+        texture.clone(),
+        trace.clone(),
+        watch.config_file.clone(),
+    ]
+    .into_iter()
+    .flatten()
+    .collect();
     let settled = match watch.files.lock() {
         Ok(mut files) => {
             files.set(paths);
@@ -176,6 +186,9 @@ pub fn reload_changed_files(world: &mut World) {
     }
     if let Some(texture) = texture.filter(|t| settled.contains(t)) {
         world.resource_mut::<TextureRequest>().0 = Some(texture);
+    }
+    if let Some(trace) = trace.filter(|t| settled.contains(t)) {
+        world.resource_mut::<TraceRequest>().0 = Some(trace);
     }
 }
 

@@ -3,6 +3,7 @@
 use std::path::PathBuf;
 use std::sync::Arc;
 
+use close2gl_trace::view::{TraceRequest, TraceView};
 use close2gl_viewer::{Recording, ViewerOptions, ViewerPlugin};
 
 use super::CliError;
@@ -42,6 +43,11 @@ pub struct RunArgs {
     /// the recorded size; live input is ignored meanwhile), then exit (see --keep-open).
     #[arg(long, value_name = "FILE", conflicts_with = "size")]
     pub replay: Option<PathBuf>,
+    /// Show a program's trace (close2gl-trace 1) as the Close2GL view, with its camera and
+    /// settings, beside the reference, and check's report on it in the panel (docs/checking.md).
+    /// With --watch, the trace is read again when the program writes it again.
+    #[arg(long, value_name = "FILE")]
+    pub trace: Option<PathBuf>,
     /// After --replay, stay open for live input instead of exiting.
     #[arg(long, requires = "replay", conflicts_with = "exit_after_frames")]
     pub keep_open: bool,
@@ -58,6 +64,9 @@ pub fn run(args: RunArgs) -> Result<(), CliError> {
     // The first frame's layout replaces this with the views' real size.
     let mut app = crate::build_app(&config, size).map_err(CliError::Input)?;
     print_warnings(&app);
+    if let Some(path) = &args.trace {
+        show_trace(&mut app, path)?;
+    }
     let (exit_after_frames, screenshot_frame) = last_frames(&args, replay.as_ref());
     if args.watch {
         app.add_plugins(watch(scene.clone()));
@@ -76,6 +85,17 @@ pub fn run(args: RunArgs) -> Result<(), CliError> {
         replay,
     }));
     app.run().map_err(CliError::Runtime)
+}
+
+/// Shows the trace at `path` from the first frame on; a trace that does not read or does not
+/// fit the model is an error here, before anything is shown.
+fn show_trace(app: &mut close2gl_core::App, path: &std::path::Path) -> Result<(), CliError> {
+    app.world_mut().resource_mut::<TraceRequest>().0 = Some(path.to_path_buf());
+    app.update();
+    match &app.world().resource::<TraceView>().error {
+        Some(error) => Err(CliError::Input(error.clone())),
+        None => Ok(()),
+    }
 }
 
 /// The scene (a replay given none shows the one it was recorded on), its configuration, and

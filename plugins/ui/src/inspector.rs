@@ -26,6 +26,9 @@ pub struct ProbeAnswer {
     pub reference: Result<Option<(u32, f32)>, String>,
     /// Close2GL's winner, depth and every candidate with why it lost.
     pub close2gl: PixelProbe,
+    /// While the Close2GL view shows a trace: what the trace drew there and what check says of
+    /// it, in lines.
+    pub trace: Option<Vec<String>>,
 }
 
 impl ProbeAnswer {
@@ -369,7 +372,13 @@ fn probe_answer(ui: &mut egui::Ui, world: &mut World) {
             candidate.depth
         ));
     }
-    if answer.reference.is_ok() && answer.reference_triangle() != probe.triangle {
+    for line in answer.trace.iter().flatten() {
+        ui.label(line);
+    }
+    if answer.trace.is_none()
+        && answer.reference.is_ok()
+        && answer.reference_triangle() != probe.triangle
+    {
         ui.colored_label(
             ui.visuals().warn_fg_color,
             "The two views' winners differ here.",

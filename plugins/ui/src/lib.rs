@@ -23,6 +23,7 @@ mod stats;
 mod system;
 mod texture;
 mod tools;
+mod trace;
 
 use bevy_ecs::prelude::*;
 use close2gl_core::{
@@ -130,6 +131,11 @@ fn sections(ui: &mut egui::Ui, world: &mut World) {
     egui::CollapsingHeader::new("Model")
         .default_open(true)
         .show(ui, |ui| model::section(ui, world));
+    if trace::shown(world) {
+        egui::CollapsingHeader::new("Trace")
+            .default_open(true)
+            .show(ui, |ui| trace::section(ui, world));
+    }
     egui::CollapsingHeader::new("Render")
         .default_open(true)
         .show(ui, |ui| render::section(ui, world));

@@ -1,6 +1,8 @@
 use bevy_ecs::prelude::*;
 use close2gl_core::glam::Vec3;
-use close2gl_core::{Clipping, FrontFace, Rasterizer, RenderMode, RenderSettings, Shading};
+use close2gl_core::{
+    Clipping, FrontFace, Mistake, Rasterizer, RenderMode, RenderSettings, Shading,
+};
 
 /// Mode, front face, culling, clipping, shading, who rasterizes Close2GL and the model's colour:
 /// one `RenderSettings` for both views.
@@ -26,6 +28,7 @@ pub fn section(ui: &mut egui::Ui, world: &mut World) {
         ui.label("Clipping");
         choice(ui, &mut settings.clipping, Clipping::ALL, Clipping::name);
     });
+    mistake(ui, &mut settings.mistake);
     shading(ui, &mut settings.shading);
     rasterizer(ui, &mut settings.close2gl_raster);
     ui.horizontal(|ui| {
@@ -35,6 +38,25 @@ pub fn section(ui: &mut egui::Ui, world: &mut World) {
         color(ui, &mut settings.background);
     });
     crate::write_if_changed(world, &settings);
+}
+
+/// A classic mistake for Close2GL to make, from a list: its symptom shows beside the reference.
+fn mistake(ui: &mut egui::Ui, mistake: &mut Mistake) {
+    ui.horizontal(|ui| {
+        ui.label("Mistake");
+        egui::ComboBox::from_id_salt("mistake")
+            .selected_text(mistake.name())
+            .show_ui(ui, |ui| {
+                for &option in Mistake::ALL {
+                    ui.selectable_value(mistake, option, option.name());
+                }
+            })
+            .response
+            .on_hover_text(
+                "Close2GL makes a classic mistake of the assignment on purpose, so that its \
+                 symptom shows beside the reference (docs/checking.md).",
+            );
+    });
 }
 
 /// The shading, from a list: it names what the two views' lighting is.

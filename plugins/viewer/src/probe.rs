@@ -1,12 +1,16 @@
 //! The pixel probe a Ctrl+click asks for (`InputState::probe`): which view was clicked (from the
 //! layout), the pixel in that view's coordinates, and both answers for it: the reference's from
 //! the GPU's ID pass, Close2GL's (winner and every candidate) from the raster crate's probe.
-//! The answer goes to the panel ([`ProbeAnswer`]), and its winner becomes the selected triangle.
+//! While the Close2GL view shows a program's trace, the answer also says what the trace drew
+//! there and what check found of it. The answer goes to the panel ([`ProbeAnswer`]), and its
+//! winner becomes the selected triangle.
 
 use bevy_ecs::prelude::*;
 use close2gl_core::{Camera, Fates, InputState, Mesh, RenderSettings, Scene, SelectedTriangle};
 use close2gl_gpu::{Gpu, probe_reference};
 use close2gl_raster::probe::{Drawn, probe};
+use close2gl_trace::view::TraceView;
+use close2gl_trace::view::probe::probe as trace_probe;
 use close2gl_ui::ProbeAnswer;
 
 use crate::layout::{Placed, Placement, View};
@@ -44,6 +48,9 @@ pub fn answer(world: &mut World, gpu: &Gpu, placement: &Placement) {
     let reference = probe_reference(gpu, scene, pixel);
     let drawn = Drawn::last_frame(world, &settings);
     let close2gl = probe(scene, world.resource::<Fates>(), pixel, drawn);
+    let trace = world
+        .get_resource::<TraceView>()
+        .and_then(|view| trace_probe(view, pixel, viewport));
     let answer = ProbeAnswer {
         view: match placed.view {
             View::Reference => "reference",
@@ -51,6 +58,7 @@ pub fn answer(world: &mut World, gpu: &Gpu, placement: &Placement) {
         },
         reference: reference.map(|hit| hit.map(|h| (h.triangle, h.depth))),
         close2gl,
+        trace,
     };
     if let Some(triangle) = answer.close2gl.triangle.or(answer.reference_triangle()) {
         world.resource_mut::<SelectedTriangle>().0 = Some(triangle);

@@ -2,6 +2,7 @@
 
 use bevy_ecs::world::World;
 use close2gl_core::{InputState, ModelRequest, ModelSource, TextureRequest};
+use close2gl_trace::view::TraceRequest;
 use winit::event::{ElementState, MouseButton, WindowEvent};
 use winit::window::{Window, WindowId};
 
@@ -92,8 +93,8 @@ pub fn apply_input(
     true
 }
 
-/// A dropped image becomes the texture; anything else is taken for a model (whose loader names
-/// what it expected when it is not one).
+/// A dropped image becomes the texture, a `.trace` file the trace the Close2GL view shows;
+/// anything else is taken for a model (whose loader names what it expected when it is not one).
 pub fn drop_file(world: &mut World, path: std::path::PathBuf) {
     let extension = path
         .extension()
@@ -101,6 +102,8 @@ pub fn drop_file(world: &mut World, path: std::path::PathBuf) {
         .map(str::to_ascii_lowercase);
     if matches!(extension.as_deref(), Some("png" | "jpg" | "jpeg")) {
         world.insert_resource(TextureRequest(Some(path)));
+    } else if extension.as_deref() == Some("trace") {
+        world.insert_resource(TraceRequest(Some(path)));
     } else {
         world.insert_resource(ModelRequest(Some(ModelSource::File(path))));
     }

@@ -1,0 +1,68 @@
+//! A trace in the viewer: `close2gl MODEL --trace FILE`, a trace file dropped on the window, and
+//! with `--watch` the same file written again. [`TracePlugin`] reads the requested trace, checks
+//! it against the shown mesh, takes its camera and settings (so that the reference shows the
+//! frame the program drew), and puts the trace's own 2D output in the Close2GL view in place of
+//! close2gl's, for the GPU to draw as the assignment's 2D output is drawn. The live difference
+//! and the probe then work on it; [`probe`] answers a probe from the trace's side.
+
+mod load;
+pub mod probe;
+mod show;
+
+use std::path::PathBuf;
+
+use bevy_ecs::prelude::*;
+use close2gl_core::{App, FrameSet, Owner, Plugin, PostUpdate, RenderSettings, Viewport};
+
+use crate::check::Report;
+use crate::format::Trace;
+
+pub use load::load_requested_trace;
+pub use show::show_trace;
+
+/// A trace file to read (replacing the one shown), set by the command line, a dropped file or
+/// the watch; taken by [`load_requested_trace`].
+#[derive(Resource, Clone, Debug, Default, PartialEq)]
+pub struct TraceRequest(pub Option<PathBuf>);
+
+/// The trace shown, if any, with check's report on it; or why the last request was refused
+/// (the trace shown before stays).
+#[derive(Resource, Debug, Default)]
+pub struct TraceView {
+    pub path: Option<PathBuf>,
+    pub shown: Option<Shown>,
+    pub error: Option<String>,
+    /// Bumped on every trace taken, so that what draws it knows to redraw.
+    pub generation: u64,
+}
+
+/// A trace that was read and checked.
+#[derive(Debug)]
+pub struct Shown {
+    pub trace: Trace,
+    pub report: Report,
+}
+
+/// Reads requested traces (in `PostUpdate`, `FrameSet::Camera`: after the framing of a new
+/// model, whose camera the trace's replaces) and shows the current one's 2D output
+/// (`FrameSet::Close2gl`, after the pipeline's own frame). Owns `TraceRequest` and `TraceView`;
+/// reads the mesh and `Viewport`, writes the `Camera`, `RenderSettings` and `Close2glFrame`.
+pub struct TracePlugin;
+
+impl Plugin for TracePlugin {
+    fn build(&self, app: &mut App) {
+        app.init_resource::<TraceRequest>()
+            .init_resource::<TraceView>()
+            .requires::<RenderSettings>(Owner::Settings)
+            .requires::<Viewport>(Owner::Settings)
+            .add_systems(
+                PostUpdate,
+                (
+                    load_requested_trace.in_set(FrameSet::Camera),
+                    show_trace
+                        .in_set(FrameSet::Close2gl)
+                        .after(close2gl_pipeline::close2gl_system),
+                ),
+            );
+    }
+}
