@@ -7,6 +7,7 @@
 
 pub mod check;
 pub mod format;
+pub mod view;
 
 pub use format::{
     Axis, CameraLines, ClipLine, Culling, FormatError, Motion, Ortho2d, Piece, Scene, SceneCamera,

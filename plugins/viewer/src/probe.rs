@@ -48,9 +48,14 @@ pub fn answer(world: &mut World, gpu: &Gpu, placement: &Placement) {
     let reference = probe_reference(gpu, scene, pixel);
     let drawn = Drawn::last_frame(world, &settings);
     let close2gl = probe(scene, world.resource::<Fates>(), pixel, drawn);
-    let trace = world
-        .get_resource::<TraceView>()
-        .and_then(|view| trace_probe(view, pixel, viewport));
+    let trace = match placed.view {
+        View::Close2gl => world
+            .get_resource::<TraceView>()
+            .and_then(|view| trace_probe(view, pixel, viewport)),
+        _ => None,
+    };
+    // In a trace's view, the triangle under the click is the one the trace drew there.
+    let trace_triangle = trace.as_ref().and_then(|t| t.triangle).map(|t| t as u32);
     let answer = ProbeAnswer {
         view: match placed.view {
             View::Reference => "reference",
@@ -58,9 +63,10 @@ pub fn answer(world: &mut World, gpu: &Gpu, placement: &Placement) {
         },
         reference: reference.map(|hit| hit.map(|h| (h.triangle, h.depth))),
         close2gl,
-        trace,
+        trace: trace.map(|t| t.lines),
     };
-    if let Some(triangle) = answer.close2gl.triangle.or(answer.reference_triangle()) {
+    let close2gl = trace_triangle.or(answer.close2gl.triangle);
+    if let Some(triangle) = close2gl.or(answer.reference_triangle()) {
         world.resource_mut::<SelectedTriangle>().0 = Some(triangle);
     }
     world.insert_resource(answer);

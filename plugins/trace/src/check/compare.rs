@@ -286,7 +286,7 @@ pub(super) fn matrix(
             let (e, f) = (expected.col(column)[row], found.col(column)[row]);
             result.checked += 1;
             let tolerance = TERMS * e.abs() + 1e-6 * largest + 1e-9;
-            if !((e - f).abs() <= tolerance) {
+            if !within((e - f).abs(), tolerance) {
                 result.differ(|| {
                     format!(
                         "{}[{}][{}] (row {}, column {}): expected {}, found {}",
@@ -324,7 +324,7 @@ pub(super) fn clip(
             let want = a * corner;
             let terms = terms(a, corner);
             let off = (found - want).abs();
-            if (0..4).any(|i| !(off[i] <= TERMS * terms + 1e-9)) {
+            if (0..4).any(|i| !within(off[i], TERMS * terms + 1e-9)) {
                 mark(Kind::ClipCoordinates, t);
                 result.differ(|| {
                     format!(
@@ -555,7 +555,7 @@ fn depths(
                 .min_by(|a, b| a.0.distance(*q).total_cmp(&b.0.distance(*q)));
             if let Some((p, &want)) = nearest
                 && p.distance(*q) <= tolerance.absolute + tolerance.relative * p.length()
-                && !((z - want).abs() <= DEPTH + tolerance.relative * want.abs())
+                && !within((z - want).abs(), DEPTH + tolerance.relative * want.abs())
                 && first.is_none()
             {
                 first = Some((z, want, piece.line));
@@ -607,6 +607,12 @@ pub fn fate_words(outcome: &Outcome) -> String {
         FateKind::ZeroArea => "culled (no area)".into(),
         FateKind::NoPixels | FateKind::Hidden => "drew".into(),
     }
+}
+
+/// Whether a difference is within its tolerance; a NaN never is (a `nan` the reader let through
+/// would otherwise agree with everything).
+fn within(difference: f64, tolerance: f64) -> bool {
+    difference <= tolerance
 }
 
 pub fn number(x: f64) -> String {

@@ -68,12 +68,11 @@ pub(crate) struct Line<'a> {
     pub(crate) fields: Vec<&'a str>,
 }
 
-/// The records of `text`, numbered as an editor numbers its lines. A leading byte-order mark
-/// (Windows editors write one) is skipped.
+/// The records of `text`, numbered as an editor numbers its lines (`\n` ends a line; the `\r` of
+/// `\r\n` is a blank). A leading byte-order mark (Windows editors write one) is skipped.
 pub(crate) fn records<'a>(text: &'a str, file: &'a str) -> impl Iterator<Item = Line<'a>> {
     let text = text.strip_prefix('\u{feff}').unwrap_or(text);
     text.split('\n').enumerate().filter_map(move |(i, raw)| {
-        let raw = raw.strip_suffix('\r').unwrap_or(raw);
         let content = raw.split_once('#').map_or(raw, |(before, _)| before);
         let text = content.trim_matches(is_blank);
         let fields: Vec<&str> = text
@@ -95,8 +94,11 @@ pub(crate) fn last_line(text: &str) -> usize {
     text.lines().count().max(1)
 }
 
+/// Spaces and tabs separate fields; so does a `\r`, as in the C reader (`c2g_split`): it ends a
+/// `\r\n` line, and a stray one inside a line must not become part of a field, where a model
+/// name ending in it would not survive being written out and read back.
 fn is_blank(c: char) -> bool {
-    c == ' ' || c == '\t'
+    c == ' ' || c == '\t' || c == '\r'
 }
 
 impl Line<'_> {

@@ -156,8 +156,10 @@ impl Reader {
     fn finish(self, ends: &Ends) -> Result<Trace, FormatError> {
         let common = self.common;
         let window = common.window(ends)?;
-        let camera =
-            (common.camera.lines()).map_err(|i| ends.without(&format!("'{}'", shape(i))))?;
+        let camera = common
+            .camera
+            .lines()
+            .map_err(|i| ends.without(&format!("'{}'", shape(i))))?;
         let [m, p, v] = self.matrices.map(|slot| slot.map(|(m, _)| m));
         Ok(Trace {
             file: ends.file.to_string(),

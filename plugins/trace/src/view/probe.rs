@@ -9,8 +9,17 @@ use super::TraceView;
 use super::show::system;
 use crate::check::compare::fate_words;
 
-/// The answer in lines, or None when no trace is shown.
-pub fn probe(view: &TraceView, pixel: (u32, u32), viewport: Viewport) -> Option<Vec<String>> {
+/// The trace's side of a probe.
+#[derive(Clone, Debug, PartialEq)]
+pub struct TraceProbe {
+    /// The answer, in lines.
+    pub lines: Vec<String>,
+    /// The mesh triangle the trace drew at the pixel (the first listed, when several).
+    pub triangle: Option<usize>,
+}
+
+/// The answer, or None when no trace is shown.
+pub fn probe(view: &TraceView, pixel: (u32, u32), viewport: Viewport) -> Option<TraceProbe> {
     let shown = view.shown.as_ref()?;
     let system = system(&shown.trace);
     let centre = DVec2::new(f64::from(pixel.0) + 0.5, f64::from(pixel.1) + 0.5);
@@ -50,6 +59,7 @@ pub fn probe(view: &TraceView, pixel: (u32, u32), viewport: Viewport) -> Option<
             lines.push(format!("close2gl draws triangle {} here.", list.join(", ")));
         }
     }
+    let triangle = drawn.first().map(|(t, _)| *t);
     let mut triangles: Vec<usize> = drawn.iter().map(|(t, _)| *t).chain(expected).collect();
     triangles.sort_unstable();
     triangles.dedup();
@@ -69,7 +79,7 @@ pub fn probe(view: &TraceView, pixel: (u32, u32), viewport: Viewport) -> Option<
             fate_words(outcome)
         ));
     }
-    Some(lines)
+    Some(TraceProbe { lines, triangle })
 }
 
 /// Whether `p` is inside the convex polygon (either winding).
