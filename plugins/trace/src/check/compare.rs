@@ -266,12 +266,7 @@ pub(super) fn camera(program: &Program, trace: &Trace) -> StageResult {
 
 /// A matrix stage: entries of the given rows, each within [`TERMS`] of its size and of the
 /// matrix's (rounding in float32 scales with both).
-pub(super) fn matrix(
-    stage: Stage,
-    expected: DMat4,
-    found: Option<DMat4>,
-    rows: &[usize],
-) -> StageResult {
+pub fn matrix(stage: Stage, expected: DMat4, found: Option<DMat4>, rows: &[usize]) -> StageResult {
     let Some(found) = found else {
         let note = format!("the trace has no 'matrix {}' line", stage.name());
         return StageResult::not_checked(stage, &note);

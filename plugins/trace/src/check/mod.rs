@@ -115,24 +115,40 @@ pub fn fits(trace: &Trace, mesh: &Mesh) -> Result<(), FormatError> {
 
 /// Checks `trace` against close2gl's pipeline on `mesh`, and diagnoses it when it differs.
 pub fn check(mesh: &Mesh, trace: &Trace) -> Result<Report, FormatError> {
+    let mut report = compare_only(mesh, trace)?;
+    explain(&mut report, mesh, trace);
+    Ok(report)
+}
+
+/// The comparison alone, no mistake named yet: a grader compares every scene but diagnoses
+/// only those it reports, which is where the time goes on a big model.
+pub fn compare_only(mesh: &Mesh, trace: &Trace) -> Result<Report, FormatError> {
     fits(trace, mesh)?;
     let program = program_for(trace, Mistakes::NONE);
     let expected = program.frame(mesh);
     let comparison = compare::compare(&program, mesh, trace, &expected);
-    let (diagnoses, unexplained) = match comparison.agrees() {
-        true => (Vec::new(), None),
-        false => {
-            let diagnoses = diagnose::diagnose(mesh, trace);
-            let unexplained = diagnoses
-                .is_empty()
-                .then(|| diagnose::unexplained(&program, mesh, &comparison, &expected));
-            (diagnoses, unexplained)
-        }
-    };
     Ok(Report {
         comparison,
         expected,
-        diagnoses,
-        unexplained,
+        diagnoses: Vec::new(),
+        unexplained: None,
     })
+}
+
+/// Names the mistakes that reproduce a trace that differs, or states its first difference
+/// when none does; nothing for a trace that agrees.
+pub fn explain(report: &mut Report, mesh: &Mesh, trace: &Trace) {
+    if report.agrees() {
+        return;
+    }
+    report.diagnoses = diagnose::diagnose(mesh, trace);
+    if report.diagnoses.is_empty() {
+        let program = program_for(trace, Mistakes::NONE);
+        report.unexplained = Some(diagnose::unexplained(
+            &program,
+            mesh,
+            &report.comparison,
+            &report.expected,
+        ));
+    }
 }

@@ -17,7 +17,7 @@ use close2gl_core::{App, FrameSet, Owner, Plugin, PostUpdate, RenderSettings, Vi
 use crate::check::Report;
 use crate::format::Trace;
 
-pub use load::load_requested_trace;
+pub use load::{load_requested_trace, trace_camera, trace_settings};
 pub use show::show_trace;
 
 /// A trace file to read (replacing the one shown), set by the command line, a dropped file or
