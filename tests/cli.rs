@@ -347,3 +347,42 @@ fn render_view_outside_writes_the_picture_and_the_volumes_corners() {
         "far at z = -4"
     );
 }
+
+/// `render.mistake` makes Close2GL's stage make a classic mistake: inverted culling keeps the
+/// back faces, a field of view not halved draws the model three times smaller, and every
+/// mistake of the catalogue runs (and keeps the triangle count).
+#[test]
+fn stats_with_a_mistake_shows_its_symptom() {
+    let args = [
+        "box",
+        "--size",
+        "400x300",
+        "--set",
+        "camera.position=[3, 2, 4]",
+    ];
+    let with = |mistake: &str| {
+        let set = format!("render.mistake={mistake}");
+        stats(&[&args[..], &["--set", &set]].concat())
+    };
+    let right = stats(&args);
+    let inverted = with("culling_inverted");
+    assert_eq!(
+        (inverted["culled"].clone(), inverted["drawn"].clone()),
+        (right["drawn"].clone(), right["culled"].clone())
+    );
+    let width =
+        |s: &Value| s["bounds_px"][2].as_f64().unwrap() - s["bounds_px"][0].as_f64().unwrap();
+    let ratio = width(&right) / width(&with("fov_not_halved"));
+    assert!(
+        (2.5..3.5).contains(&ratio),
+        "tan(60°)/tan(30°) = 3, found {ratio}"
+    );
+    for mistake in close2gl::core::Mistake::ALL {
+        assert_eq!(
+            with(mistake.name())["triangles_in"],
+            12,
+            "{}",
+            mistake.name()
+        );
+    }
+}

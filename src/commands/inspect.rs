@@ -3,10 +3,12 @@
 //! reference's); `--pixel X,Y` prints who drew that pixel in each view, and for Close2GL every
 //! triangle that reached it and why each lost. JSON, with the keys the panel shows.
 
-use close2gl_core::{App, Camera, Fates, Mesh, RenderSettings, Scene, Viewport};
+use close2gl_core::glam::DMat4;
+use close2gl_core::{App, Camera, Fates, Mesh, Mistake, RenderSettings, Scene, Viewport};
 use close2gl_gpu::{Gpu, ReferenceHit, probe_reference};
 use close2gl_pipeline::journey::{Journey, journey};
 use close2gl_pipeline::matrices;
+use close2gl_pipeline::mistakes::{Mistakes, Program};
 use close2gl_raster::probe::{self, Drawn, PixelProbe};
 use glam::{Mat4, Vec3, Vec4};
 use serde_json::{Value, json};
@@ -101,7 +103,37 @@ fn triangle_report(app: &mut App, index: usize, viewport: Viewport) -> Result<Va
     let mut report = journey_json(&j);
     report["fate"] = json!(fate.kind.name());
     report["matrices"] = matrices_json(&camera, viewport);
+    if settings.mistake != Mistake::None {
+        report["mistake"] = mistake_json(&mesh, index, &camera, &settings, viewport);
+    }
     Ok(report)
+}
+
+/// With `render.mistake` set, what Close2GL making it computes for the triangle: the mistaken
+/// matrices (V into the view's pixels, y down), the clip coordinates, the fate and the polygon
+/// drawn. The journey beside it is the right pipeline's, so that the two can be compared.
+fn mistake_json(
+    mesh: &Mesh,
+    index: usize,
+    camera: &Camera,
+    settings: &RenderSettings,
+    viewport: Viewport,
+) -> Value {
+    let mistakes = Mistakes::one(settings.mistake);
+    let program = Program::for_view(camera, settings, viewport, mistakes);
+    let rows = |m: DMat4| -> Vec<[f64; 4]> { (0..4).map(|r| m.row(r).to_array()).collect() };
+    let Some(outcome) = program.triangle(mesh, index) else {
+        return Value::Null;
+    };
+    json!({
+        "id": settings.mistake.name(),
+        "M": rows(program.m),
+        "P": rows(program.p),
+        "V": rows(program.v),
+        "clip": outcome.clip.map(|c| c.to_array()),
+        "fate": outcome.fate.kind.name(),
+        "window": outcome.polygon.iter().map(|p| p.to_array()).collect::<Vec<_>>(),
+    })
 }
 
 /// The journey's numbers under the keys.

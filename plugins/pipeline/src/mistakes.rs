@@ -10,7 +10,10 @@
 //! Where a mistake's one-line meaning leaves a choice open, `trace-format.md` pins it; the
 //! comments below quote those choices.
 
-use close2gl_core::{Camera, FateKind, FrontFace, Mesh, Mistake, RenderMode, TriangleFate};
+use close2gl_core::{
+    Camera, Clipping, FateKind, FrontFace, Mesh, Mistake, RenderMode, RenderSettings, TriangleFate,
+    Viewport,
+};
 use glam::{DMat4, DVec2, DVec3, DVec4};
 
 use crate::clip::{NEAR, Polygon, clip_polygon, outcode};
@@ -258,6 +261,27 @@ impl Program {
             cull,
             declared,
         }
+    }
+
+    /// The program that draws close2gl's own view with `mistakes`: this camera and these
+    /// settings, into the view's pixels (close2gl's 2D buffer: the origin top-left, y down).
+    pub fn for_view(
+        camera: &Camera,
+        settings: &RenderSettings,
+        viewport: Viewport,
+        mistakes: Mistakes,
+    ) -> Self {
+        let declared = Declared {
+            window: (viewport.width, viewport.height),
+            system: System2d::pixels(viewport.width, viewport.height),
+            culling: settings.backface_culling.then_some(settings.front_face),
+            clip: match settings.clipping {
+                Clipping::Simple => ClipRule::Simple,
+                Clipping::Full => ClipRule::Full,
+            },
+            mode: settings.mode,
+        };
+        Program::new(&ProgramCamera::from(camera), declared, mistakes)
     }
 
     /// Mesh triangle `index` down the stages: its clip coordinates, its fate, and what it drew.
@@ -601,4 +625,97 @@ pub fn viewport(system: &System2d, mistakes: Mistakes) -> DMat4 {
         [0.0, 0.0, 0.5, 0.5],
         [0.0, 0.0, 0.0, 1.0],
     ])
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::textbook;
+    use close2gl_core::{Clipping, Viewport};
+    use glam::Vec3;
+
+    /// A xorshift stream in [0, 1).
+    fn random(mut seed: u64) -> impl FnMut() -> f32 {
+        move || {
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            (seed >> 40) as f32 / (1u64 << 24) as f32
+        }
+    }
+
+    /// Without mistakes, the program is close2gl's pipeline: for random triangles around a
+    /// camera (many cut by the near and side planes), the same fate as the textbook path, and
+    /// the same polygon to a hundredth of a pixel (the textbook path rounds P·M to float32),
+    /// wherever rounding cannot tell.
+    #[test]
+    fn without_mistakes_it_draws_what_the_textbook_path_draws() {
+        let mut r = random(0x2545_f491_4f6c_dd1d);
+        let camera = Camera {
+            near: 1.0,
+            far: 20.0,
+            ..Camera::default()
+        }
+        .looking_at(Vec3::new(0.5, 0.2, 6.0), Vec3::ZERO, Vec3::Y)
+        .expect("a valid pose");
+        let viewport = Viewport {
+            width: 320,
+            height: 200,
+        };
+        for i in 0..3000 {
+            let mut point = || Vec3::new(r() - 0.5, r() - 0.5, r() - 0.5) * 24.0;
+            let mesh = Mesh {
+                name: "one".into(),
+                positions: vec![point(), point(), point()],
+                normals: vec![Vec3::Z; 3],
+                uvs: Vec::new(),
+                triangles: vec![[0, 1, 2]],
+                face_normals: Vec::new(),
+            };
+            let settings = RenderSettings {
+                backface_culling: i % 2 == 0,
+                clipping: if i % 3 == 0 {
+                    Clipping::Simple
+                } else {
+                    Clipping::Full
+                },
+                ..RenderSettings::default()
+            };
+            let (frame, fates) = textbook::run_recording(&mesh, &camera, &settings, viewport);
+            let program = Program::for_view(&camera, &settings, viewport, Mistakes::NONE);
+            let outcome = program.triangle(&mesh, 0).expect("triangle 0");
+            if outcome.near_a_plane || outcome.near_edge_on {
+                continue;
+            }
+            assert_eq!(outcome.fate.kind, fates.triangles[0].kind, "{i}");
+            let fan: Vec<[f32; 2]> = emitted_fan(&outcome);
+            assert_eq!(fan.len(), frame.vertices.len(), "{i}");
+            for (a, b) in fan.iter().zip(&frame.vertices) {
+                let close = |x: f32, y: f32| (x - y).abs() < 1e-2 + 1e-5 * y.abs();
+                assert!(close(a[0], b[0]) && close(a[1], b[1]), "{i}: {a:?} {b:?}");
+            }
+        }
+    }
+
+    fn emitted_fan(outcome: &Outcome) -> Vec<[f32; 2]> {
+        let p = &outcome.polygon;
+        (1..p.len().saturating_sub(1))
+            .flat_map(|i| [p[0], p[i], p[i + 1]])
+            .map(|q| [q.x as f32, q.y as f32])
+            .collect()
+    }
+
+    #[test]
+    fn pairs_leave_out_two_rules_for_one_decision() {
+        let sets = Mistakes::singles_and_pairs();
+        let singles = Mistake::ALL.len() - 1;
+        let both = |a, b| Mistakes::one(a).with(b);
+        assert!(!sets.contains(&both(Mistake::DivideBeforeClip, Mistake::NoClipping)));
+        assert!(!sets.contains(&both(
+            Mistake::CullingByFileNormals,
+            Mistake::CullingByViewAxis
+        )));
+        assert!(sets.contains(&both(Mistake::FovNotHalved, Mistake::CullingInverted)));
+        assert_eq!(sets.len(), singles + singles * (singles - 1) / 2 - 2);
+    }
 }

@@ -3,13 +3,12 @@
 //! check; the fast path must produce exactly its output.
 
 use close2gl_core::{
-    Camera, Clipping, Close2glFrame, CutVertex, Fates, Mesh, Rasterizer, RenderMode,
-    RenderSettings, Viewport,
+    Camera, Close2glFrame, CutVertex, Fates, Mesh, Rasterizer, RenderMode, RenderSettings, Viewport,
 };
 
 use crate::Tally;
 use crate::matrices::ClipTransform;
-use crate::mistakes::{ClipRule, Declared, Mistakes, Outcome, Program, ProgramCamera, System2d};
+use crate::mistakes::{Mistakes, Outcome, Program};
 use crate::stage::{Fate, Stage, corner, process};
 
 /// The 2D buffer and counts for this camera, mesh, settings and viewport, in a new frame (the
@@ -74,17 +73,7 @@ pub fn run_mistaken(
     viewport: Viewport,
     mistakes: Mistakes,
 ) -> (Close2glFrame, Fates) {
-    let declared = Declared {
-        window: (viewport.width, viewport.height),
-        system: System2d::pixels(viewport.width, viewport.height),
-        culling: settings.backface_culling.then_some(settings.front_face),
-        clip: match settings.clipping {
-            Clipping::Simple => ClipRule::Simple,
-            Clipping::Full => ClipRule::Full,
-        },
-        mode: settings.mode,
-    };
-    let program = Program::new(&ProgramCamera::from(camera), declared, mistakes);
+    let program = Program::for_view(camera, settings, viewport, mistakes);
     let stage = Stage::new(settings, viewport);
     let raster = settings.close2gl_raster == Rasterizer::Software;
     let mut frame = Close2glFrame {
