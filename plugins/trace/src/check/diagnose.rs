@@ -81,18 +81,41 @@ pub fn unexplained(
         );
     };
     let n = triangles.len();
-    let what = match kind {
-        Kind::ClipCoordinates => "triangles have other clip coordinates",
-        Kind::DrawnBehindEye => "triangles with a corner behind the eye were drawn",
-        Kind::DrawnOutside => "triangles outside the view volume were drawn",
-        Kind::NotDrawn => "triangles close2gl draws (at the volume's border) were not drawn",
-        Kind::FrontCulled => "front-facing triangles inside the view volume were not drawn",
-        Kind::BackDrawn => "back-facing triangles inside the view volume were drawn",
-        Kind::Moved => "triangles were drawn elsewhere or in another shape",
-        Kind::Depth => "triangles were drawn at other depths",
+    // (what, its plural): "1 triangle was", "2 triangles were".
+    let (one, many) = match kind {
+        Kind::ClipCoordinates => ("has other clip coordinates", "have other clip coordinates"),
+        Kind::DrawnBehindEye => (
+            "with a corner behind the eye was drawn",
+            "with a corner behind the eye were drawn",
+        ),
+        Kind::DrawnOutside => (
+            "outside the view volume was drawn",
+            "outside the view volume were drawn",
+        ),
+        Kind::NotDrawn => (
+            "close2gl draws (at the volume's border) was not drawn",
+            "close2gl draws (at the volume's border) were not drawn",
+        ),
+        Kind::FrontCulled => (
+            "front-facing, inside the view volume, was not drawn",
+            "front-facing, inside the view volume, were not drawn",
+        ),
+        Kind::BackDrawn => (
+            "back-facing, inside the view volume, was drawn",
+            "back-facing, inside the view volume, were drawn",
+        ),
+        Kind::Moved => (
+            "was drawn elsewhere or in another shape",
+            "were drawn elsewhere or in another shape",
+        ),
+        Kind::Depth => ("was drawn at other depths", "were drawn at other depths"),
+    };
+    let what = match n {
+        1 => format!("1 triangle {one}"),
+        _ => format!("{n} triangles {many}"),
     };
     format!(
-        "no catalogue mistake explains it: {n} {what}; {}",
+        "no catalogue mistake explains it: {what}; {}",
         whereabouts(program, mesh, triangles, expected)
     )
 }
@@ -117,7 +140,8 @@ fn whereabouts(
         .filter(|&&t| expected[t].fate.planes != 0)
         .count();
     format!(
-        "all lie between {}·near and {}·near in front of the eye (near = {}); {cut} of them touch the view volume's border",
+        "between {}·near and {}·near in front of the eye (near = {}); {cut} of them touch the \
+         view volume's border",
         number(low / near),
         number(high / near),
         number(near)
