@@ -11,7 +11,9 @@ use std::time::{Duration, Instant};
 
 use close2gl_core::parity::Comparison;
 use close2gl_gpu::Image;
-use common::{APP_TIMEOUT, TempDir, Xvfb, finish, run_app, spawn_app};
+use common::{
+    APP_TIMEOUT, TempDir, Xvfb, assert_one_triangle_highlighted, finish, run_app, spawn_app,
+};
 
 /// A recording of `frames` frames at 60 Hz: `d` held over frames 2..12 (the camera moves right),
 /// Shift+P on frame 14 (Phong), the copy-command key two frames before the end (the panel
@@ -345,20 +347,7 @@ fn a_recorded_probe_click_selects_the_triangle_under_it_and_highlights_it_in_bot
             .iter()
             .zip(plain.iter().zip(&probed))
         {
-            let changed = before
-                .pixels
-                .iter()
-                .zip(&after.pixels)
-                .filter(|(a, b)| a != b)
-                .count();
-            assert!(
-                changed > 0,
-                "{layout} {view}: the selected triangle is highlighted"
-            );
-            assert!(
-                changed < before.pixels.len() / 20,
-                "{layout} {view}: only one triangle is highlighted ({changed} pixels changed)"
-            );
+            assert_one_triangle_highlighted(&format!("{layout} {view}"), before, after);
             assert_ne!(
                 before.pixel(x, y),
                 after.pixel(x, y),

@@ -8,7 +8,7 @@ mod common;
 
 use close2gl_gpu::Image;
 use close2gl_testkit::student::{asset, compile_pipeline, mistake_flag};
-use common::{TempDir, Xvfb, run_app};
+use common::{TempDir, Xvfb, assert_one_triangle_highlighted, run_app};
 
 /// The window's size: the panel, then the two views side by side.
 const SIZE: [u32; 2] = [900, 420];
@@ -130,16 +130,6 @@ fn a_probe_on_the_trace_selects_the_triangle_it_drew_there() {
         .iter()
         .zip([&reference, &close2gl].into_iter().zip(&probed))
     {
-        let changed = before
-            .pixels
-            .iter()
-            .zip(&after.pixels)
-            .filter(|(a, b)| a != b)
-            .count();
-        assert!(changed > 0, "{name}: the selected triangle is highlighted");
-        assert!(
-            changed < before.pixels.len() / 20,
-            "{name}: one triangle is highlighted ({changed} pixels changed)"
-        );
+        assert_one_triangle_highlighted(name, before, after);
     }
 }

@@ -144,6 +144,22 @@ pub fn covered_pixels(image: &Image, x0: u32, x1: u32) -> usize {
         .count()
 }
 
+/// Asserts that a probe's highlight changed `after` from `before` (a view's pixels): somewhere,
+/// and no more than one triangle's worth (a twentieth of the view).
+pub fn assert_one_triangle_highlighted(what: &str, before: &Image, after: &Image) {
+    let changed = before
+        .pixels
+        .iter()
+        .zip(&after.pixels)
+        .filter(|(a, b)| a != b)
+        .count();
+    assert!(changed > 0, "{what}: the selected triangle is highlighted");
+    assert!(
+        changed < before.pixels.len() / 20,
+        "{what}: only one triangle is highlighted ({changed} pixels changed)"
+    );
+}
+
 /// The views' background as the window stores it.
 pub fn background_color() -> [u8; 3] {
     let color = config::load(None, &[])

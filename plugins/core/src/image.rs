@@ -32,14 +32,23 @@ impl Image {
     pub fn write_png(&self, path: &Path) -> Result<(), String> {
         let fail = |e: &dyn std::fmt::Display| format!("{}: cannot write: {e}", path.display());
         let file = File::create(path).map_err(|e| fail(&e))?;
-        let mut encoder = png::Encoder::new(BufWriter::new(file), self.width, self.height);
+        self.encode_png(BufWriter::new(file)).map_err(|e| fail(&e))
+    }
+
+    /// The image as the bytes of an 8-bit RGBA PNG (for a page that inlines its pictures).
+    pub fn to_png(&self) -> Result<Vec<u8>, String> {
+        let mut bytes = Vec::new();
+        self.encode_png(&mut bytes).map_err(|e| e.to_string())?;
+        Ok(bytes)
+    }
+
+    fn encode_png(&self, out: impl std::io::Write) -> Result<(), png::EncodingError> {
+        let mut encoder = png::Encoder::new(out, self.width, self.height);
         encoder.set_color(png::ColorType::Rgba);
         encoder.set_depth(png::BitDepth::Eight);
-        let mut writer = encoder.write_header().map_err(|e| fail(&e))?;
-        writer
-            .write_image_data(self.pixels.as_flattened())
-            .map_err(|e| fail(&e))?;
-        writer.finish().map_err(|e| fail(&e))
+        let mut writer = encoder.write_header()?;
+        writer.write_image_data(self.pixels.as_flattened())?;
+        writer.finish()
     }
 
     /// Reads an 8-bit RGB or RGBA PNG (what [`Image::write_png`] and most tools write).

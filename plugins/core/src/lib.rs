@@ -13,6 +13,7 @@ mod named;
 
 mod app;
 mod camera;
+mod excerpt;
 mod fates;
 mod frame;
 pub mod image;
@@ -36,6 +37,7 @@ pub use camera::{
     Camera, CameraAction, CameraActions, CameraHome, CameraMode, CameraSpeeds, Framing, KeepPose,
     Pose,
 };
+pub use excerpt::{EXCERPT_CHARS, excerpt};
 pub use fates::{ClipPlane, FateCounts, FateKind, Fates, SelectedTriangle, TriangleFate};
 pub use frame::{
     Close2glFrame, CutVertex, RasterGeometry, RasterVertex, Scene, SoftwareFrame, StageCounts,

@@ -1,29 +1,16 @@
 //! The one shape every line-precise load error has:
 //! `path:line: expected '<what>', found '<the line>'`.
 
-/// Longest excerpt of the offending line an error quotes.
-const SHOWN_CHARS: usize = 60;
+use close2gl_core::excerpt;
 
 pub(crate) fn expected(label: &str, line: usize, what: &str, found: Option<&str>) -> String {
     match found {
-        Some(text) => format!("{label}:{line}: expected '{what}', found '{}'", shown(text)),
+        Some(text) => format!(
+            "{label}:{line}: expected '{what}', found '{}'",
+            excerpt(text)
+        ),
         None => format!("{label}:{line}: expected '{what}', found end of file"),
     }
-}
-
-/// The line trimmed, cut to a readable length, with control characters replaced so that the
-/// message stays on one line whatever bytes the file held.
-fn shown(text: &str) -> String {
-    let text = text.trim();
-    let mut out: String = text
-        .chars()
-        .take(SHOWN_CHARS)
-        .map(|c| if c.is_control() { '?' } else { c })
-        .collect();
-    if text.chars().nth(SHOWN_CHARS).is_some() {
-        out.push('…');
-    }
-    out
 }
 
 #[cfg(test)]

@@ -131,46 +131,18 @@ fn clip_steps(clip: [Vec4; 3], outcodes: [u8; 3], stage: &Stage) -> Vec<ClipStep
 mod tests {
     use super::*;
     use crate::clip::clip_polygon;
+    use crate::random_triangles;
     use crate::textbook;
-
-    /// A xorshift stream in [0, 1).
-    fn random(mut seed: u64) -> impl FnMut() -> f32 {
-        move || {
-            seed ^= seed << 13;
-            seed ^= seed >> 7;
-            seed ^= seed << 17;
-            (seed >> 40) as f32 / (1u64 << 24) as f32
-        }
-    }
 
     /// For random triangles around a camera (many straddle the near and side planes), the
     /// journey's fate, area and final polygon are the textbook path's, bit for bit, and its
     /// last clip step is the polygon `clip_polygon` gives the pipeline.
     #[test]
     fn the_journey_retraces_the_textbook_path() {
-        let mut r = random(0x9e37_79b9_7f4a_7c15);
-        let camera = Camera {
-            near: 1.0,
-            far: 20.0,
-            ..Camera::default()
-        }
-        .looking_at(Vec3::new(0.0, 0.0, 6.0), Vec3::ZERO, Vec3::Y)
-        .expect("a valid pose");
-        let viewport = Viewport {
-            width: 320,
-            height: 200,
-        };
+        let camera = random_triangles::camera(Vec3::new(0.0, 0.0, 6.0));
+        let viewport = random_triangles::VIEWPORT;
         let mut seen = close2gl_core::FateCounts::default();
-        for i in 0..3000 {
-            let mut point = || Vec3::new(r() - 0.5, r() - 0.5, r() - 0.5) * 24.0;
-            let mesh = Mesh {
-                face_normals: Vec::new(),
-                name: "one".into(),
-                positions: vec![point(), point(), point()],
-                normals: vec![Vec3::Z; 3],
-                uvs: Vec::new(),
-                triangles: vec![[0, 1, 2]],
-            };
+        for (i, mesh) in random_triangles::triangles(0x9e37_79b9_7f4a_7c15, 3000).enumerate() {
             let settings = RenderSettings {
                 backface_culling: i % 2 == 0,
                 clipping: if i % 7 == 0 {

@@ -18,6 +18,8 @@ pub mod journey;
 pub mod matrices;
 pub mod mistakes;
 pub mod morph;
+#[cfg(test)]
+mod random_triangles;
 pub mod stage;
 pub mod textbook;
 

@@ -17,7 +17,7 @@ use close2gl_core::{
 use glam::{DMat4, DVec2, DVec3, DVec4};
 
 use crate::clip::{NEAR, Polygon, clip_polygon, outcode};
-use crate::stage::face;
+use crate::stage::{face, longest_edge_squared};
 
 /// A set of mistakes (at most a few at once: diagnosis tries each one and each pair).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
@@ -508,15 +508,6 @@ fn near_a_plane(clip: &[DVec4; 3]) -> bool {
     })
 }
 
-fn longest_edge_squared(polygon: &[[f32; 2]]) -> f32 {
-    let mut longest = 0.0f32;
-    for (i, a) in polygon.iter().enumerate() {
-        let b = polygon[(i + 1) % polygon.len()];
-        longest = longest.max((b[0] - a[0]).powi(2) + (b[1] - a[1]).powi(2));
-    }
-    longest
-}
-
 /// The file's face normal of triangle `index`; for a model without them (an OBJ), the mean of
 /// its three corner normals, as `trace-format.md` pins it.
 fn file_normal(mesh: &Mesh, index: usize) -> DVec3 {
@@ -630,19 +621,9 @@ pub fn viewport(system: &System2d, mistakes: Mistakes) -> DMat4 {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::textbook;
-    use close2gl_core::{Clipping, Viewport};
+    use crate::{random_triangles, textbook};
+    use close2gl_core::Clipping;
     use glam::Vec3;
-
-    /// A xorshift stream in [0, 1).
-    fn random(mut seed: u64) -> impl FnMut() -> f32 {
-        move || {
-            seed ^= seed << 13;
-            seed ^= seed >> 7;
-            seed ^= seed << 17;
-            (seed >> 40) as f32 / (1u64 << 24) as f32
-        }
-    }
 
     /// Without mistakes, the program is close2gl's pipeline: for random triangles around a
     /// camera (many cut by the near and side planes), the same fate as the textbook path, and
@@ -650,28 +631,9 @@ mod tests {
     /// wherever rounding cannot tell.
     #[test]
     fn without_mistakes_it_draws_what_the_textbook_path_draws() {
-        let mut r = random(0x2545_f491_4f6c_dd1d);
-        let camera = Camera {
-            near: 1.0,
-            far: 20.0,
-            ..Camera::default()
-        }
-        .looking_at(Vec3::new(0.5, 0.2, 6.0), Vec3::ZERO, Vec3::Y)
-        .expect("a valid pose");
-        let viewport = Viewport {
-            width: 320,
-            height: 200,
-        };
-        for i in 0..3000 {
-            let mut point = || Vec3::new(r() - 0.5, r() - 0.5, r() - 0.5) * 24.0;
-            let mesh = Mesh {
-                name: "one".into(),
-                positions: vec![point(), point(), point()],
-                normals: vec![Vec3::Z; 3],
-                uvs: Vec::new(),
-                triangles: vec![[0, 1, 2]],
-                face_normals: Vec::new(),
-            };
+        let camera = random_triangles::camera(Vec3::new(0.5, 0.2, 6.0));
+        let viewport = random_triangles::VIEWPORT;
+        for (i, mesh) in random_triangles::triangles(0x2545_f491_4f6c_dd1d, 3000).enumerate() {
             let settings = RenderSettings {
                 backface_culling: i % 2 == 0,
                 clipping: if i % 3 == 0 {

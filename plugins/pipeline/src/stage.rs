@@ -316,7 +316,7 @@ fn signed_area(window: &[[f32; 2]]) -> f32 {
     area
 }
 
-fn longest_edge_squared(window: &[[f32; 2]]) -> f32 {
+pub(crate) fn longest_edge_squared(window: &[[f32; 2]]) -> f32 {
     let mut longest = 0.0f32;
     for (i, a) in window.iter().enumerate() {
         let b = window[(i + 1) % window.len()];

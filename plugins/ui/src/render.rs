@@ -42,39 +42,38 @@ pub fn section(ui: &mut egui::Ui, world: &mut World) {
 
 /// A classic mistake for Close2GL to make, from a list: its symptom shows beside the reference.
 fn mistake(ui: &mut egui::Ui, mistake: &mut Mistake) {
-    ui.horizontal(|ui| {
-        ui.label("Mistake");
-        egui::ComboBox::from_id_salt("mistake")
-            .selected_text(mistake.name())
-            .show_ui(ui, |ui| {
-                for &option in Mistake::ALL {
-                    ui.selectable_value(mistake, option, option.name());
-                }
-            })
-            .response
-            .on_hover_text(
-                "Close2GL makes a classic mistake of the assignment on purpose, so that its \
-                 symptom shows beside the reference (docs/checking.md).",
-            );
-    });
+    let hover = "Close2GL makes a classic mistake of the assignment on purpose, so that its \
+                 symptom shows beside the reference (docs/checking.md).";
+    listed(ui, "Mistake", mistake, Mistake::ALL, Mistake::name, hover);
 }
 
 /// The shading, from a list: it names what the two views' lighting is.
 fn shading(ui: &mut egui::Ui, shading: &mut Shading) {
+    let hover = "Both views' lighting when Close2GL rasterizes in software; with the GPU \
+                 rasterizer, Close2GL draws flat colour.";
+    listed(ui, "Shading", shading, Shading::ALL, Shading::name, hover);
+}
+
+/// A labelled drop-down list of every value of a named setting.
+fn listed<T: Copy + PartialEq>(
+    ui: &mut egui::Ui,
+    label: &str,
+    value: &mut T,
+    all: &[T],
+    name: fn(T) -> &'static str,
+    hover: &str,
+) {
     ui.horizontal(|ui| {
-        ui.label("Shading");
-        egui::ComboBox::from_id_salt("shading")
-            .selected_text(shading.name())
+        ui.label(label);
+        egui::ComboBox::from_id_salt(label)
+            .selected_text(name(*value))
             .show_ui(ui, |ui| {
-                for &option in Shading::ALL {
-                    ui.selectable_value(shading, option, option.name());
+                for &option in all {
+                    ui.selectable_value(value, option, name(option));
                 }
             })
             .response
-            .on_hover_text(
-                "Both views' lighting when Close2GL rasterizes in software; with the GPU \
-                 rasterizer, Close2GL draws flat colour.",
-            );
+            .on_hover_text(hover);
     });
 }
 

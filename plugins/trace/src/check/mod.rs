@@ -9,9 +9,7 @@ pub mod region;
 pub mod report;
 
 use close2gl_core::{FrontFace, Mesh, RenderMode};
-use close2gl_pipeline::mistakes::{
-    ClipRule, Declared, Mistakes, Outcome, Program, ProgramCamera, System2d,
-};
+use close2gl_pipeline::mistakes::{ClipRule, Declared, Mistakes, Outcome, Program, System2d};
 
 use crate::format::{Culling, FormatError, Trace, TraceClipping};
 pub use compare::{Comparison, Kind, Stage, StageResult, Status};
@@ -45,17 +43,6 @@ impl Report {
 /// The program close2gl runs for this trace: its camera, window, 2D system and settings, with
 /// `mistakes`.
 pub fn program_for(trace: &Trace, mistakes: Mistakes) -> Program {
-    let c = &trace.camera;
-    let camera = ProgramCamera {
-        position: c.position,
-        u: c.u,
-        v: c.v,
-        n: c.n,
-        hfov: c.hfov,
-        vfov: c.vfov,
-        near: c.near,
-        far: c.far,
-    };
     let o = trace.ortho2d;
     let declared = Declared {
         window: trace.window,
@@ -77,7 +64,7 @@ pub fn program_for(trace: &Trace, mistakes: Mistakes) -> Program {
         },
         mode: trace.mode.unwrap_or(RenderMode::Solid),
     };
-    Program::new(&camera, declared, mistakes)
+    Program::new(&trace.camera, declared, mistakes)
 }
 
 /// What a trace says about a model that is not a matter of its numbers: its triangle count and

@@ -30,31 +30,14 @@ impl FormatError {
     }
 }
 
-/// Longest excerpt of the offending text an error quotes.
-const SHOWN_CHARS: usize = 60;
-
 /// The most fields a line keeps: the longest record, `poly T K` with 3·64 numbers, and one more
 /// so that a longer line still fails its count. A hostile line of a billion fields then costs
 /// no more memory than a good one.
 const MAX_FIELDS: usize = 3 + 3 * super::MAX_POLY_CORNERS + 1;
 
-/// `text` cut to a readable length, control characters replaced, so that an error stays on one
-/// line whatever bytes the file held.
-fn shown(text: &str) -> String {
-    let mut out: String = text
-        .chars()
-        .take(SHOWN_CHARS)
-        .map(|c| if c.is_control() { '?' } else { c })
-        .collect();
-    if text.chars().nth(SHOWN_CHARS).is_some() {
-        out.push('…');
-    }
-    out
-}
-
 /// `expected <what>, found '<found>'` at `file:line`.
 pub(crate) fn expected(file: &str, line: usize, what: &str, found: &str) -> FormatError {
-    let message = format!("expected {what}, found '{}'", shown(found));
+    let message = format!("expected {what}, found '{}'", close2gl_core::excerpt(found));
     FormatError::new(file, line, message)
 }
 

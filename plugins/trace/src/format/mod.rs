@@ -14,8 +14,6 @@ mod scene;
 mod trace;
 mod write;
 
-use glam::DVec3;
-
 pub use lines::FormatError;
 pub use scene::{Motion, Scene, SceneCamera, parse_scene, read_scene};
 pub use trace::{ClipLine, Piece, Trace, parse_trace, read_trace};
@@ -32,18 +30,9 @@ pub const MAX_POLY_CORNERS: usize = 64;
 pub const MAX_FILE_BYTES: u64 = 1 << 30;
 
 /// The eight `camera` lines, in the assignment's names: the centre of projection, the camera's
-/// axes (right-handed, looking along -n) and its view volume (angles in degrees).
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct CameraLines {
-    pub position: DVec3,
-    pub u: DVec3,
-    pub v: DVec3,
-    pub n: DVec3,
-    pub hfov: f64,
-    pub vfov: f64,
-    pub near: f64,
-    pub far: f64,
-}
+/// axes (right-handed, looking along -n) and its view volume (angles in degrees). The camera a
+/// program holds, as the pipeline's mistakes module runs programs with it.
+pub type CameraLines = close2gl_pipeline::mistakes::ProgramCamera;
 
 /// `culling`: backface culling off, or which on-screen winding is front (`glFrontFace`).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
