@@ -114,7 +114,11 @@ fn traces_that_lie_stop_with_a_line_numbered_error() {
             .expect("triangles line");
         l[i] = "triangles 13".into();
     };
-    let cases: [(&str, String, &str); 7] = [
+    let repeated = |l: &mut Vec<String>| {
+        let line = l[tri].clone();
+        l.splice(tri..tri, std::iter::repeat_n(line, 64));
+    };
+    let cases: [(&str, String, &str); 8] = [
         ("truncated", with(&cut), "expected"),
         ("nan", with(&nan), "expected"),
         ("index out of range", with(&out_of_range), "below 12"),
@@ -122,6 +126,7 @@ fn traces_that_lie_stop_with_a_line_numbered_error() {
         ("unknown key", with(&unknown), "colour"),
         ("wrong version", with(&version), "close2gl-trace 1"),
         ("triangle count", with(&count), "triangles 12"),
+        ("one triangle drawn 65 times", with(&repeated), "at most 64"),
     ];
     for (name, text, says) in cases {
         let trace = dir.write("lie.trace", text.as_bytes());

@@ -68,7 +68,8 @@ pub fn program_for(trace: &Trace, mistakes: Mistakes) -> Program {
 }
 
 /// What a trace says about a model that is not a matter of its numbers: its triangle count and
-/// every triangle index it uses must be the model's. An error names the trace's line.
+/// every triangle index it uses must be the model's, and no triangle drawn in more than
+/// [`MAX_PIECES`] pieces. An error names the trace's line.
 pub fn fits(trace: &Trace, mesh: &Mesh) -> Result<(), FormatError> {
     let count = mesh.triangles.len();
     let error = |line: usize, message: String| FormatError {
@@ -97,8 +98,27 @@ pub fn fits(trace: &Trace, mesh: &Mesh) -> Result<(), FormatError> {
             ));
         }
     }
+    let mut pieces = vec![0usize; count];
+    for piece in &trace.pieces {
+        pieces[piece.triangle] += 1;
+        if pieces[piece.triangle] > MAX_PIECES {
+            return Err(error(
+                piece.line,
+                format!(
+                    "expected at most {MAX_PIECES} 'tri' or 'poly' lines for one mesh triangle \
+                     (a clipped triangle is at most 7), found more for triangle {}",
+                    piece.triangle
+                ),
+            ));
+        }
+    }
     Ok(())
 }
+
+/// The most pieces a trace may draw for one mesh triangle: a triangle clipped by six planes is
+/// a polygon of at most nine corners, a fan of seven triangles; the rest is room for clippers
+/// that leave slivers. More is a trace that lies, and would make checking it quadratic.
+pub const MAX_PIECES: usize = 64;
 
 /// Checks `trace` against close2gl's pipeline on `mesh`, and diagnoses it when it differs.
 pub fn check(mesh: &Mesh, trace: &Trace) -> Result<Report, FormatError> {

@@ -6,7 +6,7 @@ use close2gl_pipeline::mistakes::System2d;
 use glam::DVec2;
 
 use super::Report;
-use super::compare::Kind;
+use super::compare::{Kind, pieces_by_triangle};
 use crate::format::Trace;
 
 const BACKGROUND: [u8; 4] = [20, 20, 26, 255];
@@ -41,34 +41,57 @@ pub fn pictures(report: &Report, trace: &Trace) -> [Image; 3] {
     let to_pixels = |polygon: &[DVec2]| -> Vec<DVec2> {
         polygon.iter().map(|&p| system.to_pixels(p, w, h)).collect()
     };
-    let mut ours = Image::filled(w, h, BACKGROUND);
-    let mut theirs = Image::filled(w, h, BACKGROUND);
-    let mut difference = Image::filled(w, h, BACKGROUND);
+    // A hostile trace may list millions of window-sized polygons: each picture stops filling
+    // after a hundred windows' worth of pixels looked at, well after any real frame.
+    let budget = 100 * u64::from(w) * u64::from(h);
+    let mut ours = Canvas::new(w, h, budget);
+    let mut theirs = Canvas::new(w, h, budget);
+    let mut difference = Canvas::new(w, h, budget);
     for outcome in report.expected.iter().filter(|o| o.drawn()) {
-        fill(&mut ours, &to_pixels(&outcome.polygon), OURS);
-        fill(&mut difference, &to_pixels(&outcome.polygon), AGREE);
+        ours.fill(&to_pixels(&outcome.polygon), OURS);
+        difference.fill(&to_pixels(&outcome.polygon), AGREE);
     }
     for piece in &trace.pieces {
-        fill(&mut theirs, &to_pixels(&piece.corners), THEIRS);
+        theirs.fill(&to_pixels(&piece.corners), THEIRS);
     }
+    let pieces = pieces_by_triangle(trace, report.expected.len());
     for (kind, triangles) in &report.comparison.triangles {
         for &t in triangles {
             let color = kind_color(*kind);
             let expected = &report.expected[t];
             if expected.drawn() {
-                fill(&mut difference, &to_pixels(&expected.polygon), color);
+                difference.fill(&to_pixels(&expected.polygon), color);
             }
-            for piece in trace.pieces.iter().filter(|p| p.triangle == t) {
-                fill(&mut difference, &to_pixels(&piece.corners), color);
+            for &i in &pieces[t] {
+                difference.fill(&to_pixels(&trace.pieces[i].corners), color);
             }
         }
     }
-    [ours, theirs, difference]
+    [ours.image, theirs.image, difference.image]
 }
 
-/// Fills a polygon (any winding, convex) given in window pixels: the pixels whose centres it
-/// covers, clipped to the image.
-fn fill(image: &mut Image, polygon: &[DVec2], color: [u8; 4]) {
+/// An image being painted, and how many more pixels it may look at.
+struct Canvas {
+    image: Image,
+    budget: u64,
+}
+
+impl Canvas {
+    fn new(width: u32, height: u32, budget: u64) -> Self {
+        Self {
+            image: Image::filled(width, height, BACKGROUND),
+            budget,
+        }
+    }
+
+    /// Fills a polygon (any winding, convex) given in window pixels: the pixels whose centres
+    /// it covers, clipped to the image; nothing once the budget is spent.
+    fn fill(&mut self, polygon: &[DVec2], color: [u8; 4]) {
+        fill(&mut self.image, polygon, color, &mut self.budget);
+    }
+}
+
+fn fill(image: &mut Image, polygon: &[DVec2], color: [u8; 4], budget: &mut u64) {
     if polygon.len() < 3 || polygon.iter().any(|p| !p.is_finite()) {
         return;
     }
@@ -85,6 +108,11 @@ fn fill(image: &mut Image, polygon: &[DVec2], color: [u8; 4]) {
     let y1 = (max.y - 0.5).floor().clamp(-1.0, h - 1.0);
     if x1 < 0.0 || y1 < 0.0 {
         return;
+    }
+    let area_box = (x1 + 1.0 - f64::from(x0)).max(0.0) * (y1 + 1.0 - f64::from(y0)).max(0.0);
+    match budget.checked_sub(area_box as u64) {
+        Some(left) => *budget = left,
+        None => return,
     }
     let n = polygon.len();
     let area: f64 = (0..n)
