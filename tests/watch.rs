@@ -182,3 +182,55 @@ fn a_saved_config_applies_its_settings_and_a_broken_one_changes_nothing() {
         "nothing half-applied"
     );
 }
+
+/// A trace shown with --watch is read again when the program writes it again: its new camera
+/// and check's new report replace the old; a half-written or broken trace shows its error and
+/// the last good one stays.
+#[test]
+fn a_shown_trace_is_read_again_when_the_program_writes_it_again() {
+    use close2gl_trace::view::{TraceRequest, TraceView};
+    let files = Files::new("trace");
+    let trace = files.model.with_file_name("frame.trace");
+    let write = |x: f32| {
+        let text = format!(
+            "close2gl-trace 1\nwindow 320 240\ncamera position {x} 0 5\ncamera u 1 0 0\n\
+             camera v 0 1 0\ncamera n 0 0 1\ncamera hfov 60\ncamera vfov 60\ncamera near 1\n\
+             camera far 20\nend\n"
+        );
+        std::fs::write(&trace, text).expect("the trace");
+    };
+    write(0.0);
+    let mut app = files.app();
+    app.world_mut().resource_mut::<TraceRequest>().0 = Some(trace.clone());
+    app.update();
+    assert_eq!(camera(&mut app).position, Vec3::new(0.0, 0.0, 5.0));
+    // The watch takes up the shown trace's file on the frame after it is shown.
+    app.update();
+    write(1.5);
+    frames_until(&mut app, "the trace written again", |app| {
+        app.world()
+            .resource::<TraceView>()
+            .shown
+            .as_ref()
+            .is_some_and(|s| s.trace.camera.position.x == 1.5)
+    });
+    assert_eq!(camera(&mut app).position, Vec3::new(1.5, 0.0, 5.0));
+    std::fs::write(&trace, "close2gl-trace 1\nwindow 320\n").expect("a broken trace");
+    frames_until(&mut app, "the broken trace's error", |app| {
+        app.world().resource::<TraceView>().error.is_some()
+    });
+    let view = app.world().resource::<TraceView>();
+    assert!(
+        view.error
+            .as_deref()
+            .is_some_and(|e| e.contains("frame.trace:2:")),
+        "{:?}",
+        view.error
+    );
+    assert!(
+        view.shown
+            .as_ref()
+            .is_some_and(|s| s.trace.camera.position.x == 1.5),
+        "the last good one stays"
+    );
+}
