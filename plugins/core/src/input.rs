@@ -65,7 +65,8 @@ named_enum!(
         CopyCommand = "copy_command",
         FateView = "fate_view",
         DifferenceView = "difference_view",
-        OutsideView = "outside_view"
+        OutsideView = "outside_view",
+        OutsideWholeVolume = "outside_whole_volume"
     }
 );
 
@@ -75,7 +76,7 @@ pub struct InputBindings(pub HashMap<Action, String>);
 
 impl InputBindings {
     /// Every bindable action with its default key, in the cheat sheet's order.
-    pub const DEFAULTS: [(Action, &'static str); 23] = [
+    pub const DEFAULTS: [(Action, &'static str); 24] = [
         (Action::Forward, "w"),
         (Action::Back, "s"),
         (Action::Left, "a"),
@@ -99,6 +100,7 @@ impl InputBindings {
         (Action::FateView, "i"),
         (Action::DifferenceView, "v"),
         (Action::OutsideView, "o"),
+        (Action::OutsideWholeVolume, "shift+o"),
     ];
 
     /// The binding as written: one key, or several separated by spaces (`"f1 ?"`).

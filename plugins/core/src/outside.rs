@@ -38,13 +38,15 @@ impl OutsideView {
 }
 
 /// The outside view's own orbit camera, independent of the Close2GL camera: it turns about the
-/// centre of what it frames (the model and the view volume together). Angles in radians; `zoom`
-/// scales the framed distance (below 1 is closer).
+/// centre of what it frames (the model, the eye and the near plane; or the whole view volume
+/// with them). Angles in radians; `zoom` scales the framed distance (below 1 is closer).
 #[derive(Resource, Clone, Copy, Debug, PartialEq)]
 pub struct OutsideOrbit {
     pub yaw: f32,
     pub pitch: f32,
     pub zoom: f32,
+    /// Frame the whole view volume, far plane included, rather than the model and the near part.
+    pub whole_volume: bool,
 }
 
 impl Default for OutsideOrbit {
@@ -55,6 +57,7 @@ impl Default for OutsideOrbit {
             yaw: 0.9,
             pitch: 0.45,
             zoom: 1.0,
+            whole_volume: false,
         }
     }
 }

@@ -3,8 +3,8 @@
 //! writes `CameraActions` (moves scaled by the model's size, rotations, zoom, reset, mode toggle)
 //! and, for the lecture's Shift+D / Shift+P / Shift+G keys, `RenderSettings::shading`, and the
 //! tool keys (cheat sheet, screenshot, copy as command) into `ToolRequests`, and the outside
-//! view's key into `OutsideView::show`. It knows
-//! no window system: the viewer fills `InputState`, and so can a test. It owns `InputState` and
+//! view's keys into `OutsideView::show` and `OutsideOrbit::whole_volume`. It knows no window
+//! system: the viewer fills `InputState`, and so can a test. It owns `InputState` and
 //! `InputBindings` and `ToolRequests`; the camera plugin provides the actions and speeds, the core's
 //! `SettingsPlugin` the render settings. Its system runs in `FrameSet::Input`.
 

@@ -109,14 +109,16 @@ impl StageMorph {
     }
 }
 
-/// How far past the model and the near plane the outside view's framing follows the view
-/// volume, as a multiple of their farthest distance from the eye.
-pub const FRAMED_REACH: f32 = 2.0;
+/// How far beyond the model's farthest point from the eye the far plane may lie before the
+/// outside view draws it faded: past that it only marks where the volume ends, far from what
+/// is clipped.
+pub const FAR_FADED_BEYOND: f32 = 2.0;
 
-/// What the outside camera frames: one sphere around the model, the eye, the near plane and the
-/// view volume up to [`FRAMED_REACH`] in world coordinates (a far plane hundreds of times farther
-/// than the model would shrink the model to a dot; the volume's edges run on out of the frame,
-/// and zooming out shows the far plane). At the eye stage it is the same sphere moved by M; at the NDC stage the
+/// What the outside camera frames: one sphere around the model, the eye and the near plane (the
+/// part of the view volume that clips the model: its side planes run through the model, in the
+/// frame), so that the model fills a good part of the view; or, asked for, around the whole view
+/// volume, far plane included (a far plane hundreds of times farther than the model shrinks the
+/// model to a dot there). At the eye stage it is the same sphere moved by M; at the NDC stage the
 /// cube is drawn to the same radius, so the framing never jumps.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct StageFrame {
@@ -125,36 +127,44 @@ pub struct StageFrame {
     /// The sphere's centre at the world, eye and NDC stops, in drawn coordinates.
     pub centres: [Vec3; 3],
     pub radius: f32,
+    /// The far plane lies more than [`FAR_FADED_BEYOND`] times the model's farthest distance
+    /// from the eye: drawn faded.
+    pub far_faded: bool,
 }
 
 impl StageFrame {
-    /// The frame of a model with bounds `(lo, hi)` seen by `camera`.
-    pub fn new(camera: &Camera, (lo, hi): (Vec3, Vec3)) -> Self {
+    /// The model, the eye and the near plane, seen by `camera`; the model's bounds `(lo, hi)`.
+    pub fn new(camera: &Camera, bounds: (Vec3, Vec3)) -> Self {
+        Self::framing(camera, bounds, false)
+    }
+
+    /// The whole view volume with the model and the eye.
+    pub fn whole_volume(camera: &Camera, bounds: (Vec3, Vec3)) -> Self {
+        Self::framing(camera, bounds, true)
+    }
+
+    fn framing(camera: &Camera, (lo, hi): (Vec3, Vec3), whole_volume: bool) -> Self {
         let origin = (lo + hi) * 0.5;
         let corners = world_corners(camera);
         let eye = camera.position;
         let (near, far) = corners.split_at(4);
-        let distance = |p: &Vec3| (*p - eye).length();
-        let reach = FRAMED_REACH
-            * near
-                .iter()
-                .chain([&lo, &hi])
-                .map(distance)
-                .fold(0.0, f32::max);
-        let far = far
-            .iter()
-            .map(|&c| eye + (c - eye) * (reach / distance(&c)).min(1.0));
-        let points = near.iter().copied().chain(far).chain([lo, hi, eye]);
+        let far = if whole_volume { far } else { &[] };
+        let points = near.iter().chain(far).chain([&lo, &hi, &eye]);
         let (min, max) = points.fold((Vec3::INFINITY, Vec3::NEG_INFINITY), |(a, b), p| {
-            (a.min(p - origin), b.max(p - origin))
+            (a.min(*p - origin), b.max(*p - origin))
         });
         let centre = (min + max) * 0.5;
         let radius = ((max - min).length() * 0.5).max(f32::MIN_POSITIVE);
         let eye_centre = ClipTransform::new(camera).eye(centre + origin);
+        let model_reach = [lo, hi]
+            .map(|p| (p - eye).length())
+            .into_iter()
+            .fold(0.0, f32::max);
         Self {
             origin,
             centres: [centre, eye_centre, Vec3::ZERO],
             radius,
+            far_faded: camera.far > FAR_FADED_BEYOND * model_reach,
         }
     }
 
@@ -261,20 +271,27 @@ mod tests {
     #[test]
     fn the_frame_holds_the_model_the_volume_and_the_eye() {
         let (camera, bounds) = scene();
-        // A far plane within the framed reach of the model (about 2,100 from the eye).
+        // A far plane near the model (about 2,100 from the eye): not faded.
         let camera = Camera {
             far: 3000.0,
             ..camera
         };
-        let frame = StageFrame::new(&camera, bounds);
-        let inside =
-            |p: Vec3| (p - frame.origin - frame.centres[0]).length() <= frame.radius * 1.0001;
-        assert!(world_corners(&camera).iter().all(|c| inside(*c)));
-        assert!(inside(camera.position) && inside(bounds.0) && inside(bounds.1));
+        let inside = |frame: &StageFrame, p: Vec3| {
+            (p - frame.origin - frame.centres[0]).length() <= frame.radius * 1.0001
+        };
+        let corners = world_corners(&camera);
+        for (frame, framed) in [
+            (StageFrame::new(&camera, bounds), &corners[..4]),
+            (StageFrame::whole_volume(&camera, bounds), &corners[..]),
+        ] {
+            assert!(framed.iter().all(|c| inside(&frame, *c)));
+            assert!([camera.position, bounds.0, bounds.1].map(|p| inside(&frame, p)) == [true; 3]);
+            assert!(!frame.far_faded, "the far plane is near the model");
+        }
     }
 
     #[test]
-    fn a_far_plane_far_beyond_the_model_does_not_shrink_it_to_a_dot() {
+    fn a_far_plane_far_beyond_the_model_does_not_shrink_it_to_a_dot_unless_asked() {
         let (camera, bounds) = scene();
         let model = (bounds.1 - bounds.0).length() * 0.5;
         let far_away = Camera {
@@ -282,22 +299,30 @@ mod tests {
             ..camera
         };
         let frame = StageFrame::new(&far_away, bounds);
-        let inside =
-            |p: Vec3| (p - frame.origin - frame.centres[0]).length() <= frame.radius * 1.0001;
+        let inside = |frame: &StageFrame, p: Vec3| {
+            (p - frame.origin - frame.centres[0]).length() <= frame.radius * 1.0001
+        };
+        let corners = world_corners(&far_away);
         assert!(
-            world_corners(&far_away)[..4].iter().all(|c| inside(*c)),
+            corners[..4].iter().all(|c| inside(&frame, *c)),
             "the near face"
         );
-        assert!(inside(bounds.0) && inside(bounds.1) && inside(camera.position));
+        assert!([bounds.0, bounds.1, camera.position].map(|p| inside(&frame, p)) == [true; 3]);
         assert!(
-            frame.radius < 20.0 * model,
-            "the model is a twentieth of the frame or more: {} vs {model}",
+            frame.radius < 3.0 * model,
+            "the model is a third of the frame or more: {} vs {model}",
             frame.radius
         );
         let nearer = StageFrame::new(&camera, bounds);
         assert!(
             (frame.radius - nearer.radius).abs() < 1e-4 * frame.radius,
-            "framed as with the scene's own far plane, already beyond the reach"
+            "framed as with the scene's own far plane"
+        );
+        assert!(frame.far_faded);
+        let whole = StageFrame::whole_volume(&far_away, bounds);
+        assert!(
+            corners.iter().all(|c| inside(&whole, *c)),
+            "the far face too"
         );
     }
 

@@ -80,9 +80,10 @@ impl Harness {
         };
         let world = self.app.world_mut();
         let mut views = egui::Rect::NOTHING;
-        let mut output = self
-            .ctx
-            .run_ui(input, |ui| views = close2gl_ui::show(ui, world));
+        let mut output = self.ctx.run_ui(input, |ui| {
+            views = close2gl_ui::show(ui, world);
+            close2gl_ui::over_views(ui, world, views, true);
+        });
         // No renderer here to upload the font atlas to.
         output.textures_delta.clear();
         self.views = views;
@@ -123,6 +124,28 @@ impl Harness {
         self.nodes
             .iter()
             .any(|(_, node)| node.label() == Some(text) || node.value() == Some(text))
+    }
+
+    /// Every text shown (a node's label or value, its padding trimmed) with its rectangle, in
+    /// points: where a test reads whether something fits.
+    pub fn texts(&self) -> Vec<(String, egui::Rect)> {
+        let mut texts: Vec<(String, egui::Rect)> = Vec::new();
+        let all = self.nodes.iter().filter_map(|(_, node)| {
+            let text = node.label().or(node.value())?.trim().to_string();
+            let b = node.bounds()?;
+            let rect = egui::Rect::from_min_max(
+                egui::pos2(b.x0 as f32, b.y0 as f32),
+                egui::pos2(b.x1 as f32, b.y1 as f32),
+            );
+            Some((text, rect))
+        });
+        // A label and the run of text in it are two nodes with the same text and place.
+        for text in all {
+            if !texts.contains(&text) {
+                texts.push(text);
+            }
+        }
+        texts
     }
 
     pub fn act(&mut self, role: Role, label: &str, action: Action, data: Option<ActionData>) {

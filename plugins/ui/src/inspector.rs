@@ -1,12 +1,12 @@
-//! The inspector section: the overlay switch and its legend (the fate view's: each fate's count,
-//! from the record Close2GL itself keeps, and the colours of the reference's overlays, which the
-//! GPU answers; the live difference's colours); a
-//! triangle picked by index with its fate and its journey; the matrices M, P, V with their current numbers beside
-//! the reference's own view and projection, and their largest difference.
+//! The inspector section: the overlay switch, whether the views show their legends, and the
+//! panel's legend (the fate view's: each fate's count, from the record Close2GL itself keeps,
+//! and the colours of the reference's overlays, which the GPU answers; the live difference's
+//! colours); the probe's full record; a triangle picked by index with its fate and its journey
+//! as tables; the matrices M, P, V with their current numbers beside the reference's own view
+//! and projection, and their largest difference.
 
 use bevy_ecs::prelude::*;
 use close2gl_core::glam::Mat4;
-use close2gl_core::parity::{ONLY_CLOSE2GL, ONLY_REFERENCE};
 use close2gl_core::{
     Camera, ClipPlane, FateKind, Fates, Mesh, Overlay, RenderSettings, SelectedTriangle,
     TriangleFate, Viewport, camera_matrices,
@@ -14,45 +14,24 @@ use close2gl_core::{
 use close2gl_pipeline::journey::{Journey, journey};
 use close2gl_pipeline::matrices;
 
-use close2gl_raster::probe::PixelProbe;
+use crate::PanelState;
+use crate::legend::{self, swatch};
 
-/// The last pixel probe (a Ctrl+click on a view), answered by both sides: the viewer fills it.
-#[derive(Resource, Clone, Debug)]
-pub struct ProbeAnswer {
-    /// The view clicked.
-    pub view: &'static str,
-    /// The GPU's ID pass: the reference's triangle and depth there (None: background), or why
-    /// it could not be read.
-    pub reference: Result<Option<(u32, f32)>, String>,
-    /// Close2GL's winner, depth and every candidate with why it lost.
-    pub close2gl: PixelProbe,
-    /// While the Close2GL view shows a trace: what the trace drew there and what check says of
-    /// it, in lines.
-    pub trace: Option<Vec<String>>,
-}
+mod probe;
+mod table;
 
-impl ProbeAnswer {
-    pub fn reference_triangle(&self) -> Option<u32> {
-        self.reference
-            .as_ref()
-            .ok()
-            .copied()
-            .flatten()
-            .map(|(t, _)| t)
-    }
-}
+pub use probe::{ProbeAnswer, probe_window};
 
 pub fn section(ui: &mut egui::Ui, world: &mut World) {
     overlay_switch(ui, world);
+    legends_switch(ui, world);
     legend(ui, world);
-    probe_answer(ui, world);
+    probe::record(ui, world);
     triangle(ui, world);
     egui::CollapsingHeader::new("Matrices")
         .default_open(false)
         .show(ui, |ui| {
-            egui::ScrollArea::horizontal()
-                .id_salt("matrices")
-                .show(ui, |ui| matrices_grid(ui, world));
+            matrices_grid(ui, world);
         });
 }
 
@@ -74,6 +53,17 @@ fn overlay_switch(ui: &mut egui::Ui, world: &mut World) {
          differ (as `close2gl render` writes diff.png); Ctrl+click any pixel to probe it.",
     );
     crate::write_if_changed(world, &settings);
+}
+
+/// The legends in the views' corners, shown unless hidden here or by their own close button.
+fn legends_switch(ui: &mut egui::Ui, world: &mut World) {
+    let Some(mut state) = world.get_resource_mut::<PanelState>() else {
+        return;
+    };
+    let mut shown = !state.hide_legends;
+    if ui.checkbox(&mut shown, "Legends in the views").changed() {
+        state.hide_legends = !shown;
+    }
 }
 
 /// The two halves of the fate view's legend: Close2GL's fates with their counts, and what the
@@ -101,11 +91,7 @@ fn legend(ui: &mut egui::Ui, world: &mut World) {
     });
     ui.label("Reference (the GPU's answers):");
     egui::Grid::new("reference_legend").show(ui, |ui| {
-        for (kind, meaning) in [
-            (FateKind::Drawn, "front facing, won the depth test"),
-            (FateKind::Culled, "back facing, won the depth test"),
-            (FateKind::Hidden, "failed the depth test"),
-        ] {
+        for (kind, meaning) in legend::REFERENCE {
             swatch(ui, kind.color());
             ui.label(meaning);
             ui.end_row();
@@ -115,24 +101,13 @@ fn legend(ui: &mut egui::Ui, world: &mut World) {
 
 /// The live difference's colours, as `close2gl render` paints diff.png.
 fn difference_legend(ui: &mut egui::Ui) {
-    let rgb = |[r, g, b, _]: [u8; 4]| [r, g, b];
     egui::Grid::new("difference_legend").show(ui, |ui| {
-        for (color, meaning) in [
-            (rgb(ONLY_REFERENCE), "covered in the reference only"),
-            (rgb(ONLY_CLOSE2GL), "covered in Close2GL only"),
-            ([230, 230, 230], "the same in both (the reference, faded)"),
-        ] {
+        for (color, meaning) in legend::difference() {
             swatch(ui, color);
             ui.label(meaning);
             ui.end_row();
         }
     });
-}
-
-fn swatch(ui: &mut egui::Ui, [r, g, b]: [u8; 3]) {
-    let (rect, _) = ui.allocate_exact_size(egui::vec2(12.0, 12.0), egui::Sense::hover());
-    ui.painter()
-        .rect_filled(rect, 2.0, egui::Color32::from_rgb(r, g, b));
 }
 
 /// The picked triangle: its fate (as recorded, with the rasterizer's verdicts, else as the
@@ -163,9 +138,14 @@ fn triangle(ui: &mut egui::Ui, world: &mut World) {
         .get_resource::<Fates>()
         .and_then(|f| f.of(index).copied());
     fate_lines(ui, recorded.unwrap_or(journey.fate));
-    egui::CollapsingHeader::new("Journey")
+    let wanted = std::mem::take(&mut world.resource_mut::<PanelState>().show_journey);
+    let shown = egui::CollapsingHeader::new("Journey")
         .default_open(true)
+        .open(wanted.then_some(true))
         .show(ui, |ui| journey_grid(ui, &journey));
+    if wanted {
+        shown.header_response.scroll_to_me(Some(egui::Align::TOP));
+    }
 }
 
 /// The selected triangle's index (dragged or typed; the probe selects too), with a button to
@@ -218,46 +198,11 @@ fn fate_lines(ui: &mut egui::Ui, fate: TriangleFate) {
     }
 }
 
-/// Each stage's points, one row each: world, eye = M·p, clip = P·M·p, the polygon after each
-/// clipping step, NDC (÷ w) and window (V·ndc: pixels, depth).
+/// The journey's tables and the culling decision.
 fn journey_grid(ui: &mut egui::Ui, journey: &Journey) {
-    // Rows of four numbers are wider than the panel: they scroll sideways inside it.
-    egui::ScrollArea::horizontal()
-        .id_salt("journey")
-        .show(ui, |ui| points_grid(ui, journey));
+    table::journey_table(ui, journey);
     let culling = journey.culling.map_or("kept", FateKind::name);
     ui.label(format!("Culling: {culling}"));
-}
-
-fn points_grid(ui: &mut egui::Ui, journey: &Journey) {
-    egui::Grid::new("journey").striped(true).show(ui, |ui| {
-        let mut row = |name: String, values: &[f32]| {
-            ui.label(name);
-            let text: Vec<String> = values.iter().map(|v| format!("{v:>8.3}")).collect();
-            ui.add(numbers(text.concat()));
-            ui.end_row();
-        };
-        for (i, p) in journey.world.iter().enumerate() {
-            row(format!("world {i}"), &p.to_array());
-        }
-        for (i, p) in journey.eye.iter().enumerate() {
-            row(format!("eye {i}"), &p.to_array());
-        }
-        for (i, p) in journey.clip.iter().enumerate() {
-            row(format!("clip {i}"), &p.to_array());
-        }
-        for step in &journey.clip_steps {
-            for (i, p) in step.polygon.iter().enumerate() {
-                row(format!("{} {i}", step.plane.name()), &p.to_array());
-            }
-        }
-        for (i, p) in journey.ndc.iter().enumerate() {
-            row(format!("ndc {i}"), &p.to_array());
-        }
-        for (i, p) in journey.window.iter().enumerate() {
-            row(format!("window {i}"), &p.to_array());
-        }
-    });
 }
 
 /// M, P and V as Close2GL builds them, the reference's view and projection (glam's), and how far
@@ -280,7 +225,7 @@ fn matrices_grid(ui: &mut egui::Ui, world: &mut World) {
         ("view (reference)", view),
         ("projection (reference)", projection),
     ] {
-        rows(ui, name, matrix);
+        table::matrix_table(ui, name, matrix);
     }
     let (dm, dp) = differences(&camera);
     ui.label(format!(
@@ -306,84 +251,11 @@ fn differences(camera: &Camera) -> (f32, f32) {
     )
 }
 
-/// A 4x4 matrix as four row literals.
-fn rows(ui: &mut egui::Ui, name: &str, matrix: Mat4) {
-    ui.label(name);
-    let text: Vec<String> = (0..4)
-        .map(|r| {
-            let row = matrix.row(r);
-            format!(
-                "[{:>9.4},{:>9.4},{:>9.4},{:>9.4}]",
-                row.x, row.y, row.z, row.w
-            )
-        })
-        .collect();
-    ui.add(numbers(text.join("\n")));
-}
-
-/// Small monospace numbers that keep their columns: never wrapped (the panel scrolls sideways).
-fn numbers(text: String) -> egui::Label {
-    egui::Label::new(egui::RichText::new(text).monospace().size(10.0))
-        .wrap_mode(egui::TextWrapMode::Extend)
-}
-
 fn largest_difference(a: Mat4, b: Mat4) -> f32 {
     (a - b)
         .to_cols_array()
         .iter()
         .fold(0.0, |m, d| m.max(d.abs()))
-}
-
-/// The probed pixel in both views: each winner with its depth, Close2GL's candidates with why
-/// each lost, and whether the two winners agree.
-fn probe_answer(ui: &mut egui::Ui, world: &mut World) {
-    let Some(answer) = world.get_resource::<ProbeAnswer>() else {
-        ui.weak("Ctrl+click a view to probe a pixel.");
-        return;
-    };
-    let [x, y] = answer.close2gl.pixel;
-    ui.label(format!(
-        "Probe: pixel {x}, {y} (clicked on {})",
-        answer.view
-    ));
-    let winner = |hit: Option<(u32, f32)>| {
-        hit.map_or("background".to_string(), |(t, d)| {
-            format!("triangle {t}, depth {d:.5}")
-        })
-    };
-    match &answer.reference {
-        Ok(hit) => ui.label(format!("Reference (GPU): {}", winner(*hit))),
-        Err(e) => ui.label(format!("Reference (GPU): {e}")),
-    };
-    let probe = &answer.close2gl;
-    let close2gl = probe.triangle.map(|t| (t, probe.depth));
-    ui.label(format!("Close2GL: {}", winner(close2gl)));
-    if let Some([r, g, b, _]) = probe.color {
-        ui.horizontal(|ui| {
-            ui.label("Close2GL colour");
-            swatch(ui, [r, g, b]);
-        });
-    }
-    for candidate in &probe.candidates {
-        ui.label(format!(
-            "  triangle {}: {} (depth {:.5})",
-            candidate.triangle,
-            candidate.outcome.name(),
-            candidate.depth
-        ));
-    }
-    for line in answer.trace.iter().flatten() {
-        ui.label(line);
-    }
-    if answer.trace.is_none()
-        && answer.reference.is_ok()
-        && answer.reference_triangle() != probe.triangle
-    {
-        ui.colored_label(
-            ui.visuals().warn_fg_color,
-            "The two views' winners differ here.",
-        );
-    }
 }
 
 #[cfg(test)]

@@ -1,21 +1,24 @@
 //! The control panel: an egui side panel over the ECS world, in eight sections. Model reads
-//! `ModelStatus` and `Mesh` and writes `ModelRequest` (a path, a primitive, a reload). Render
-//! reads and writes `RenderSettings`. Camera reads and writes the `Camera` component and
-//! `CameraSpeeds`, and pushes `CameraAction::Reset` into `CameraActions`. Outside view reads
-//! and writes `OutsideView` (shown, stage) and resets `OutsideOrbit`. Stats reads
+//! `ModelStatus` and `Mesh` and writes `ModelRequest` (a path, a primitive, a reload). Render reads
+//! and writes `RenderSettings`. Camera reads and writes the `Camera` component and `CameraSpeeds`,
+//! and pushes `CameraAction::Reset` into `CameraActions`. Outside view reads and writes
+//! `OutsideView` (shown, stage) and `OutsideOrbit` (a reset, the whole volume framed). Stats reads
 //! `Close2glFrame` and [`ViewStats`] (frame times, the adapter's name and limitations, which the
 //! viewer fills). Tools sets `ToolRequests` (the input plugin's), carries out copy as command
 //! (clipboard and terminal) and the key cheat sheet (from `InputBindings`), and shows the
-//! [`Notice`] a tool leaves. Inspector reads `Fates`, `Mesh`, `Camera` and `Viewport` (the
-//! legend's counts, the picked triangle's fate, the matrices) and writes
-//! `RenderSettings::overlay` and `SelectedTriangle`. It owns `PanelState`, `ViewStats` and
-//! `Notice`; the other plugins provide what it reads. Its one system ([`panel_system`], in
-//! `FrameSet::Panel`) runs the panel over the world with the frame's [`PanelInput`], which the
-//! viewer gives, and leaves egui's [`PanelOutput`] for it to paint. It knows no window system or
-//! GPU; a test can call [`show`] with an `egui::Ui` and the world.
+//! [`Notice`] a tool leaves. Inspector reads `Fates`, `Mesh`, `Camera` and `Viewport` (the legend's
+//! counts, the picked triangle's fate, the matrices) and writes `RenderSettings::overlay` and
+//! `SelectedTriangle`. Over the views ([`over_views`]) it names them, shows the legend of the
+//! overlay each shows, and opens the probe's [`ProbeAnswer`] beside the clicked pixel (Esc, from
+//! egui or `InputState`, closes it; its button selects the triangle). It owns `PanelState`,
+//! `ViewStats` and `Notice`; the other plugins provide what it reads. Its one system
+//! ([`panel_system`], in `FrameSet::Panel`) runs the panel over the world with the frame's
+//! [`PanelInput`], which the viewer gives, and leaves egui's [`PanelOutput`] for it to paint. It
+//! knows no window system or GPU; a test can call [`show`] with an `egui::Ui` and the world.
 
 mod camera;
 mod inspector;
+mod legend;
 mod model;
 mod outside;
 mod render;
@@ -27,8 +30,8 @@ mod trace;
 
 use bevy_ecs::prelude::*;
 use close2gl_core::{
-    App, CameraActions, CameraSpeeds, Close2glFrame, FrameSet, ModelRequest, ModelStatus, Owner,
-    Plugin, PreUpdate, RenderSettings,
+    App, CameraActions, CameraSpeeds, Close2glFrame, FrameSet, ModelRequest, ModelStatus,
+    OutsideView, Owner, Plugin, PreUpdate, RenderSettings,
 };
 
 pub use inspector::ProbeAnswer;
@@ -69,6 +72,11 @@ pub struct PanelState {
     pub texture_path: String,
     /// The key cheat sheet is shown.
     pub help: bool,
+    /// The legends in the views' corners are hidden.
+    pub hide_legends: bool,
+    /// The probe's window asked for the selected triangle's journey: the panel opens it and
+    /// scrolls to it once.
+    pub show_journey: bool,
 }
 
 /// What the panel leaves of `screen` for the views: all but its fixed width at the right. Not
@@ -101,24 +109,26 @@ pub fn show(ui: &mut egui::Ui, world: &mut World) -> egui::Rect {
     views
 }
 
-/// Names the views in their top-left corners: the reference on the left of `area` and, when the
-/// views share it (the split layout), Close2GL beside it, and the outside view in a third
-/// column when it shows.
-pub fn label_views(ui: &egui::Ui, area: egui::Rect, shared: bool, outside: bool) {
-    let mut labels = vec![(area.left_top(), "Reference (wgpu)")];
-    if shared {
-        let columns = if outside { 3.0 } else { 2.0 };
-        let column = area.width() / columns;
-        labels.push((area.left_top() + egui::vec2(column, 0.0), "Close2GL"));
-        if outside {
-            let at = area.left_top() + egui::vec2(2.0 * column, 0.0);
-            labels.push((at, "Outside (drag, scroll)"));
-        }
-    }
+/// What the panel paints over the views of `area` (`shared`: the split layout shows them all
+/// there): their names, the legends of the overlays they show, and the probe's answer.
+pub fn over_views(ui: &egui::Ui, world: &mut World, area: egui::Rect, shared: bool) {
+    let outside = world.get_resource::<OutsideView>().is_some_and(|o| o.show);
+    label_views(ui, area, shared, outside);
+    legend::show(ui, world, area, shared);
+    inspector::probe_window(ui.ctx(), world, area);
+}
+
+/// Names the views in their top-left corners.
+fn label_views(ui: &egui::Ui, area: egui::Rect, shared: bool, outside: bool) {
     let painter = ui.painter();
-    for (corner, text) in labels {
+    for (view, rect) in legend::view_rects(area, shared, outside) {
+        let text = match view {
+            legend::View::Reference => "Reference (wgpu)",
+            legend::View::Close2gl => "Close2GL",
+            legend::View::Outside => "Outside (drag, scroll)",
+        };
         painter.text(
-            corner + egui::vec2(10.0, 8.0),
+            rect.left_top() + egui::vec2(10.0, 8.0),
             egui::Align2::LEFT_TOP,
             text,
             egui::FontId::proportional(14.0),

@@ -2,7 +2,7 @@ use bevy_ecs::prelude::*;
 use close2gl_core::{OutsideOrbit, OutsideView, STAGE_NAMES};
 
 /// The pipeline seen from outside: shown or not, the stage slider (world, eye, NDC, and every
-/// stage between), and the orbit camera's reset.
+/// stage between), the orbit camera's reset and what it frames.
 pub fn section(ui: &mut egui::Ui, world: &mut World) {
     let Some(mut outside) = world.get_resource::<OutsideView>().copied() else {
         return;
@@ -26,6 +26,14 @@ pub fn section(ui: &mut egui::Ui, world: &mut World) {
                 super::write_if_changed(world, &OutsideOrbit::default());
             }
         });
+        if let Some(mut orbit) = world.get_resource::<OutsideOrbit>().copied() {
+            ui.checkbox(&mut orbit.whole_volume, "Frame the whole volume")
+                .on_hover_text(
+                    "Off: the model, the eye and the near plane fill the view. On: the far plane \
+                     too, however far beyond the model",
+                );
+            super::write_if_changed(world, &orbit);
+        }
     });
     super::write_if_changed(world, &outside);
 }

@@ -6,7 +6,6 @@
 //! it does nothing.
 
 use bevy_ecs::prelude::*;
-use close2gl_core::OutsideView;
 
 /// This frame's input for the panel, from the window's owner.
 #[derive(Resource)]
@@ -32,8 +31,7 @@ pub fn panel_system(world: &mut World) {
     let (ctx, both_views) = (input.ctx.clone(), input.both_views);
     let output = ctx.run_ui(raw, |ui| {
         let views = crate::show(ui, world);
-        let outside = world.get_resource::<OutsideView>().is_some_and(|o| o.show);
-        crate::label_views(ui, views, both_views, outside);
+        crate::over_views(ui, world, views, both_views);
     });
     world.insert_resource(PanelOutput(output));
 }

@@ -119,7 +119,7 @@ pub fn show_notice(ui: &egui::Ui, area: egui::Rect, world: &mut World) {
 }
 
 /// What each action does, in the cheat sheet's words.
-const DESCRIPTIONS: [(Action, &str); 23] = [
+const DESCRIPTIONS: [(Action, &str); 24] = [
     (Action::Forward, "move forward (along -n)"),
     (Action::Back, "move back (along n)"),
     (Action::Left, "move left (along -u)"),
@@ -148,6 +148,10 @@ const DESCRIPTIONS: [(Action, &str); 23] = [
     (
         Action::OutsideView,
         "the outside view on / off (a third column)",
+    ),
+    (
+        Action::OutsideWholeVolume,
+        "the outside view frames the whole volume / the model and the near plane",
     ),
 ];
 

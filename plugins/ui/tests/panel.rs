@@ -3,13 +3,17 @@
 //! through the real Close2GL system in the 2D frame. `tests/panel_views.rs` at the root follows
 //! it on into both GPU views.
 
+use close2gl_core::glam::Vec2;
 use close2gl_core::{
     Action, CameraAction, CameraActions, Close2glFrame, CommandLine, FateKind, Fates,
-    InputBindings, ModelRequest, ModelSource, ModelStatus, Overlay, PrimitiveKind, RenderMode,
-    RenderSettings, SelectedTriangle, TextureFilter, TextureRequest, ToolRequests, Topology,
+    InputBindings, ModelRequest, ModelSource, ModelStatus, OutsideView, Overlay, PrimitiveKind,
+    RenderMode, RenderSettings, SelectedTriangle, TextureFilter, TextureRequest, ToolRequests,
+    Topology,
 };
+use close2gl_core::{Camera, Mesh, ProbeClick, Scene, Viewport};
+use close2gl_raster::probe::probe;
 use close2gl_testkit::panel::Harness;
-use close2gl_ui::{Notice, PanelState};
+use close2gl_ui::{Notice, PanelState, ProbeAnswer};
 use egui::accesskit::Role;
 
 #[test]
@@ -235,16 +239,16 @@ fn the_inspector_switches_the_fate_view_and_shows_the_picked_triangles_fate_and_
     assert!(h.shows(&area), "{area}");
     // The journey: a triangle inside the volume has no clip steps, and is divided as it is.
     for stage in [
-        "world 1",
-        "eye 2",
-        "clip 0",
-        "ndc 1",
-        "window 2",
+        "world",
+        "eye = M·p",
+        "clip = P·M·p",
+        "ndc (÷ w)",
+        "window (V·ndc)",
         "Culling: culled",
     ] {
         assert!(h.shows(stage), "{stage}");
     }
-    assert!(!h.shows("left 0"), "no clip step");
+    assert!(!h.shows("clipped at the left plane"), "no clip step");
     assert!(!h.shows("M (Close2GL)"), "the matrices start folded");
     h.click(Role::DisclosureTriangle, "Matrices");
     assert!(h.shows("M (Close2GL)") && h.shows("projection (reference)"));
@@ -252,4 +256,190 @@ fn the_inspector_switches_the_fate_view_and_shows_the_picked_triangles_fate_and_
     h.click(Role::Button, "Clear");
     assert_eq!(h.world().resource::<SelectedTriangle>().0, None);
     assert!(!h.shows("Fate: culled"));
+}
+
+/// The journey's numbers in columns that say what they are, all inside the panel: a user reads
+/// every column at the default width without scrolling sideways.
+#[test]
+fn the_journey_and_the_matrices_are_tables_with_headers_inside_the_panel() {
+    let mut h = Harness::new();
+    h.click(Role::Button, "Select");
+    h.click(Role::DisclosureTriangle, "Matrices");
+    // The section opens over a few frames' animation, meanwhile overlapping what is below.
+    for _ in 0..10 {
+        h.frame(Vec::new());
+    }
+    let texts = h.texts();
+    let count = |text: &str| texts.iter().filter(|(t, _)| t == text).count();
+    // world, eye, ndc and window have three columns; clip and the five matrices four.
+    assert_eq!(count("x"), 4 + 1 + 5, "{texts:?}");
+    assert_eq!(count("w"), 1 + 5);
+    assert_eq!(count("depth"), 1, "the window's third column");
+    // Across: the panel's columns (down, it scrolls).
+    let panel = 1280.0 - close2gl_ui::PANEL_WIDTH..=1280.0;
+    let at = |text: &str| texts.iter().find(|(t, _)| t == text).expect(text).1;
+    // From the journey's first table to the section below the inspector.
+    let tables = at("world").min.y..at("Stats").min.y;
+    let numbers: Vec<_> = texts
+        .iter()
+        .filter(|(_, r)| tables.contains(&r.min.y))
+        .filter(|(t, _)| {
+            t.parse::<f32>().is_ok() || ["x", "y", "z", "w", "depth"].contains(&t.as_str())
+        })
+        .collect();
+    assert!(numbers.len() > 100, "{}", numbers.len());
+    for (text, rect) in &numbers {
+        assert!(
+            panel.contains(&rect.min.x) && panel.contains(&rect.max.x),
+            "{text:?} at {rect:?} leaves the panel {panel:?}"
+        );
+    }
+    // No two cells of a row overlap: the numbers do not run together.
+    for (i, (a, ra)) in numbers.iter().enumerate() {
+        for (b, rb) in &numbers[i + 1..] {
+            assert!(
+                !ra.shrink(0.5).intersects(rb.shrink(0.5)),
+                "{a:?} {ra:?} overlaps {b:?} {rb:?}"
+            );
+        }
+    }
+}
+
+/// Each view showing an overlay says what its colours mean in its corner; the reference only in
+/// the fate view (the difference replaces Close2GL's view alone), the outside view while it shows
+/// the fates; the legend's close button and the Inspector's checkbox hide them all.
+#[test]
+fn the_views_show_the_legend_of_their_overlay_until_hidden() {
+    let mut h = Harness::new();
+    let titles = [
+        "The GPU's answers",
+        "Close2GL's fates",
+        "Where the views differ",
+        "Outside view: fates",
+    ];
+    let shown = |h: &Harness| titles.map(|t| h.shows(t));
+    assert_eq!(shown(&h), [false; 4], "no overlay, no legend");
+
+    h.click(Role::Button, "fates");
+    h.frame(Vec::new());
+    assert_eq!(shown(&h), [true, true, false, false]);
+    h.world().insert_resource(OutsideView {
+        show: true,
+        ..OutsideView::default()
+    });
+    // A new egui area sizes itself unseen in its first frame.
+    h.frame(Vec::new());
+    h.frame(Vec::new());
+    assert_eq!(shown(&h), [true, true, false, true]);
+    assert!(h.shows("dimmed: outside the view volume"));
+
+    h.click(Role::Button, "difference");
+    h.frame(Vec::new());
+    assert_eq!(shown(&h), [false, false, true, false]);
+    assert!(h.shows("covered in the reference only"));
+
+    h.click(Role::Button, "×");
+    assert!(h.world().resource::<PanelState>().hide_legends);
+    h.frame(Vec::new());
+    assert_eq!(shown(&h), [false; 4], "hidden by its close button");
+    h.click(Role::CheckBox, "Legends in the views");
+    h.frame(Vec::new());
+    assert_eq!(shown(&h), [false, false, true, false], "shown again");
+    h.click(Role::CheckBox, "Legends in the views");
+    assert_eq!(shown(&h), [false; 4], "hidden by the checkbox");
+}
+
+/// A probe as the viewer answers a Ctrl+click: Close2GL's side from the raster crate's probe of
+/// the harness's scene (its one triangle, a back face, culled there), the GPU's as if it drew
+/// that triangle. The answer opens beside the click, says the views differ and why, opens the
+/// triangle's journey, says when the camera moved since, and closes with Esc; the panel keeps it.
+#[test]
+fn a_probe_opens_its_answer_beside_the_click_until_escape() {
+    let mut h = Harness::new();
+    h.world().resource_mut::<Fates>().record = true;
+    h.click(Role::Button, "fates");
+    let camera = h.camera();
+    let world = h.world();
+    let mesh = world
+        .query::<&Mesh>()
+        .single(world)
+        .expect("a mesh")
+        .clone();
+    let scene = Scene {
+        mesh: &mesh,
+        camera: &camera,
+        settings: world.resource::<RenderSettings>(),
+        viewport: *world.resource::<Viewport>(),
+    };
+    let close2gl = probe(scene, world.resource::<Fates>(), (100, 50), None);
+    world.insert_resource(ProbeAnswer {
+        view: "Close2GL",
+        reference: Ok(Some((0, 0.98))),
+        close2gl,
+        trace: None,
+        click: ProbeClick {
+            at: Vec2::new(300.0, 200.0),
+            close2gl_window: false,
+        },
+        camera,
+        window: true,
+    });
+    // A new egui window sizes itself unseen in its first frame.
+    h.frame(Vec::new());
+    h.frame(Vec::new());
+
+    let title = "Pixel 100, 50 of the Close2GL view";
+    let at = h.texts().into_iter().find(|(t, _)| t == title);
+    let (_, rect) = at.unwrap_or_else(|| panic!("{title}: {:?}", h.texts()));
+    assert!(
+        (300.0..360.0).contains(&rect.min.x) && (200.0..280.0).contains(&rect.min.y),
+        "beside the click at 300, 200: {rect:?}"
+    );
+    for line in [
+        "Reference (GPU): triangle 0, depth 0.98000",
+        "Close2GL: background",
+        "The views differ: the GPU drew triangle 0, Close2GL nothing (triangle 0 in Close2GL: a \
+         back face, removed by culling).",
+    ] {
+        assert!(h.shows(line), "{line}");
+    }
+    let candidate = |(t, _): &(String, egui::Rect)| {
+        t.starts_with("triangle 0 culled (depth ")
+            && t.ends_with("): a back face, removed by culling")
+    };
+    assert!(
+        h.texts().iter().any(candidate),
+        "Close2GL's candidate and why it lost"
+    );
+    assert!(!h.shows("Fate: culled"), "no triangle selected yet");
+    h.click(Role::Button, "Journey of triangle 0");
+    assert_eq!(h.world().resource::<SelectedTriangle>().0, Some(0));
+    h.frame(Vec::new());
+    assert!(h.shows("Fate: culled") && h.shows("window (V·ndc)"));
+
+    let stale = "Stale: the camera moved since this probe (Ctrl+click again).";
+    assert!(!h.shows(stale));
+    let world = h.world();
+    world
+        .query::<&mut Camera>()
+        .single_mut(world)
+        .expect("a camera")
+        .near = 0.5;
+    h.frame(Vec::new());
+    assert!(h.shows(stale));
+
+    h.frame(vec![egui::Event::Key {
+        key: egui::Key::Escape,
+        physical_key: None,
+        pressed: true,
+        repeat: false,
+        modifiers: egui::Modifiers::NONE,
+    }]);
+    h.frame(Vec::new());
+    assert!(!h.world().resource::<ProbeAnswer>().window);
+    assert!(!h.shows(title), "closed");
+    assert!(
+        h.shows("Probe: pixel 100, 50 (clicked on Close2GL)"),
+        "the panel keeps it"
+    );
 }

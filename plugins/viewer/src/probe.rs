@@ -64,6 +64,9 @@ pub fn answer(world: &mut World, gpu: &Gpu, placement: &Placement) {
         reference: reference.map(|hit| hit.map(|h| (h.triangle, h.depth))),
         close2gl,
         trace: trace.map(|t| t.lines),
+        click: at,
+        camera,
+        window: true,
     };
     let close2gl = trace_triangle.or(answer.close2gl.triangle);
     if let Some(triangle) = close2gl.or(answer.reference_triangle()) {

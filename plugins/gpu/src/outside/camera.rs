@@ -66,3 +66,62 @@ fn direction(orbit: &OutsideOrbit) -> Vec3 {
     let (sin_pitch, cos_pitch) = orbit.pitch.sin_cos();
     Vec3::new(cos_pitch * sin_yaw, sin_pitch, cos_pitch * cos_yaw)
 }
+
+#[cfg(test)]
+mod tests {
+    use close2gl_core::Camera;
+
+    use super::*;
+
+    /// How much of the outside view's height the model's bounding box covers, as the default
+    /// orbit and `frame` see it at the world stage, in a view `aspect` wide.
+    fn box_height(frame: &StageFrame, (lo, hi): (Vec3, Vec3), aspect: f32) -> f32 {
+        let outside = OutsideCamera::new(&OutsideOrbit::default(), frame, frame.centres[0], aspect);
+        let ys = (0..8).map(|i| {
+            let corner = Vec3::select(glam::BVec3::new(i & 1 != 0, i & 2 != 0, i & 4 != 0), hi, lo);
+            let clip = outside.view_projection() * (corner - frame.origin).extend(1.0);
+            clip.y / clip.w
+        });
+        let (low, high) = ys.fold((f32::INFINITY, f32::NEG_INFINITY), |(a, b), y| {
+            (a.min(y), b.max(y))
+        });
+        (high - low) / 2.0
+    }
+
+    /// The cow (about 1500 units long, near 359, far 8617 as its framing chose) and
+    /// `far_away.in`'s 1200-unit model 500 units out: by default the model covers a quarter of
+    /// the outside view's height or more in a view 4:3 or wider (its own window in the windows
+    /// layout); framing the whole volume it is smaller. The split layout's third column at
+    /// 1366x768 is narrow (0.47:1): there the sphere fits its width, and the long cow covers
+    /// about a fifth of the height.
+    #[test]
+    fn the_default_framing_shows_the_model_over_a_quarter_of_the_view_height() {
+        let cow = (
+            Vec3::new(-750.0, -300.0, -200.0),
+            Vec3::new(750.0, 300.0, 200.0),
+        );
+        let cow_camera = Camera {
+            near: 359.0,
+            far: 8617.0,
+            ..Camera::default()
+        }
+        .looking_at(Vec3::new(300.0, 200.0, 1800.0), Vec3::ZERO, Vec3::Y);
+        let centre = Vec3::new(440.0, -224.0, 63.0);
+        let far_away = (centre - 600.0, centre + 600.0);
+        let far_away_camera = Camera {
+            near: 519.62,
+            far: 12470.77,
+            ..Camera::default()
+        }
+        .looking_at(Vec3::new(440.0, -224.0, 2141.46), centre, Vec3::Y);
+        for (bounds, camera) in [(cow, cow_camera), (far_away, far_away_camera)] {
+            let camera = camera.expect("a valid pose");
+            for aspect in [4.0 / 3.0, 16.0 / 9.0] {
+                let framed = box_height(&StageFrame::new(&camera, bounds), bounds, aspect);
+                assert!(framed >= 0.25, "{framed} of the height at aspect {aspect}");
+                let whole = box_height(&StageFrame::whole_volume(&camera, bounds), bounds, aspect);
+                assert!(whole < framed, "{whole} vs {framed}");
+            }
+        }
+    }
+}

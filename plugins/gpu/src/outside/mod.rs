@@ -67,7 +67,10 @@ fn upload_outside(
     if mesh.validate().is_err() {
         return;
     }
-    let frame = StageFrame::new(&camera, mesh.bounds());
+    let frame = match orbit.whole_volume {
+        true => StageFrame::whole_volume(&camera, mesh.bounds()),
+        false => StageFrame::new(&camera, mesh.bounds()),
+    };
     let morph = StageMorph::new(&camera, &frame, outside.stage);
     let aspect = viewport.width.max(1) as f32 / viewport.height.max(1) as f32;
     let view = OutsideCamera::new(&orbit, &frame, morph.blend(frame.centres), aspect);

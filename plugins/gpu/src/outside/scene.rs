@@ -29,6 +29,8 @@ const EDGE: [u8; 4] = [220, 220, 230, 255];
 const WINDOW: [u8; 4] = [255, 210, 60, 255];
 const NEAR_FACE: [u8; 4] = [255, 210, 60, 60];
 const FAR_FACE: [u8; 4] = [110, 150, 255, 45];
+/// The far face when it lies far beyond the model: a faint mark of where the volume ends.
+const FAR_FACE_FADED: [u8; 4] = [110, 150, 255, 12];
 const AXES: [[u8; 4]; 3] = [[240, 80, 70, 255], [90, 220, 90, 255], [90, 140, 255, 255]];
 
 /// The letters u, v, n as strokes in a unit box (x right, y up), drawn by the axes' tips.
@@ -129,7 +131,8 @@ impl OutsideScene {
     }
 
     /// The twelve edges (the near face's four, the window's outline, in their own colour) and
-    /// the near and far faces as two translucent quads.
+    /// the near and far faces as two translucent quads (the far one fainter when it lies far
+    /// beyond the model).
     fn build_volume(&mut self, input: &SceneInput, morph: &StageMorph) {
         let corners = world_corners(input.camera).map(|c| morph.place(c));
         self.lines.clear();
@@ -138,7 +141,11 @@ impl OutsideScene {
             self.segment(&[corners[*a], corners[*b]], color);
         }
         self.faces.clear();
-        for (face, color) in [([0, 1, 3, 2], NEAR_FACE), ([4, 5, 7, 6], FAR_FACE)] {
+        let far = match input.frame.far_faded {
+            true => FAR_FACE_FADED,
+            false => FAR_FACE,
+        };
+        for (face, color) in [([0, 1, 3, 2], NEAR_FACE), ([4, 5, 7, 6], far)] {
             for i in [0, 1, 2, 0, 2, 3] {
                 let c = &corners[face[i]];
                 self.faces
