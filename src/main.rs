@@ -3,7 +3,7 @@
 use std::process::ExitCode;
 
 use clap::{Parser, Subcommand};
-use close2gl::commands::{self, bench, check, inspect, render, run, stats};
+use close2gl::commands::{self, bench, check, grade, inspect, render, run, stats};
 
 #[derive(Parser)]
 #[command(
@@ -32,6 +32,10 @@ enum Command {
     /// Check a program's trace of one frame against close2gl's pipeline, stage by stage, and
     /// name the classic mistake that reproduces it (exit 0 agree, 1 differs, 2 bad input).
     Check(check::CheckArgs),
+    /// Grade a program on the assignment's rubric: run it on the rubric's scenes under limits
+    /// (no sandbox: see docs/grading.md) and score its 200 points line by line with the
+    /// evidence; --submissions grades a folder of them into grades.csv.
+    Grade(grade::GradeArgs),
 }
 
 fn main() -> ExitCode {
@@ -43,6 +47,7 @@ fn main() -> ExitCode {
         Some(Command::Bench(args)) => bench::run(args),
         Some(Command::Inspect(args)) => inspect::run(args),
         Some(Command::Check(args)) => check::run(args),
+        Some(Command::Grade(args)) => grade::run(args),
     };
     commands::exit(result)
 }

@@ -8,7 +8,8 @@ use close2gl_core::ModelSource;
 /// One updating line on a terminal; a line per tenth done otherwise (a log, a test), which
 /// stays readable where `\r` does not work.
 pub struct TerminalProgress {
-    name: String,
+    /// What is under way: "loading knot.obj".
+    label: String,
     terminal: bool,
     /// The last percent shown on a terminal, or tenth written to a log.
     shown: Option<u32>,
@@ -20,8 +21,13 @@ impl TerminalProgress {
             ModelSource::File(path) => path.display().to_string(),
             ModelSource::Primitive(kind) => kind.name().to_string(),
         };
+        Self::labelled(format!("loading {name}"))
+    }
+
+    /// Progress of anything else: `label` says what ("grading 30 submissions").
+    pub fn labelled(label: String) -> Self {
         Self {
-            name,
+            label,
             terminal: std::io::stderr().is_terminal(),
             shown: None,
         }
@@ -38,9 +44,9 @@ impl TerminalProgress {
         let mut stderr = std::io::stderr().lock();
         // A failed write to stderr has nowhere to be reported; the load goes on.
         let _ = if self.terminal {
-            write!(stderr, "\rloading {}: {percent:3}%", self.name)
+            write!(stderr, "\r{}: {percent:3}%", self.label)
         } else {
-            writeln!(stderr, "loading {}: {percent}%", self.name)
+            writeln!(stderr, "{}: {percent}%", self.label)
         };
         let _ = stderr.flush();
     }

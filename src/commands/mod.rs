@@ -2,6 +2,7 @@
 
 pub mod bench;
 pub mod check;
+pub mod grade;
 pub mod inspect;
 pub mod render;
 pub mod run;
@@ -19,6 +20,8 @@ pub enum CliError {
     /// The command ran and its answer is no (`check` found a difference): exit 1, its report
     /// already printed.
     Verdict,
+    /// Ctrl+C (or SIGTERM, SIGHUP) stopped `grade`: exit 130, as a shell reports SIGINT.
+    Interrupted,
 }
 
 /// Prints the one-line error and maps it to the process exit code.
@@ -34,5 +37,9 @@ pub fn exit(result: Result<(), CliError>) -> ExitCode {
             ExitCode::from(1)
         }
         Err(CliError::Verdict) => ExitCode::from(1),
+        Err(CliError::Interrupted) => {
+            eprintln!("close2gl: grading interrupted; nothing was written");
+            ExitCode::from(130)
+        }
     }
 }

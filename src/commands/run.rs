@@ -145,7 +145,7 @@ fn watch(scene: SceneArgs) -> WatchPlugin {
         reload: Arc::new(move || {
             scene.config().map_err(|e| match e {
                 CliError::Input(m) | CliError::Runtime(m) => m,
-                CliError::Verdict => "the configuration was refused".into(),
+                CliError::Verdict | CliError::Interrupted => "the configuration was refused".into(),
             })
         }),
     }

@@ -25,20 +25,26 @@ pub fn mistake_flag(id: &str) -> String {
 /// fails (CI installs a C compiler: a test without one is a broken machine, not a skip).
 pub fn compile_pipeline(dir: &Path, name: &str, flags: &[&str]) -> PathBuf {
     let source = repository().join("examples/trace/pipeline.c");
-    let out = dir.join(name);
+    compile_c(&source, &dir.join(name), flags)
+}
+
+/// Compiles the C99 file `source` with `flags` into the program `out` (warnings are errors),
+/// as [`compile_pipeline`] does: for the programs a test writes itself (a hostile one, say).
+pub fn compile_c(source: &Path, out: &Path, flags: &[&str]) -> PathBuf {
     let compiled = Command::new("cc")
         .args(["-std=c99", "-O2", "-Wall", "-Wextra", "-Werror"])
         .args(flags)
         .arg("-o")
-        .arg(&out)
-        .arg(&source)
+        .arg(out)
+        .arg(source)
         .arg("-lm")
         .output()
         .expect("a C compiler (cc) on PATH");
     assert!(
         compiled.status.success(),
-        "cc {flags:?} pipeline.c failed:\n{}",
+        "cc {flags:?} {} failed:\n{}",
+        source.display(),
         String::from_utf8_lossy(&compiled.stderr)
     );
-    out
+    out.to_path_buf()
 }

@@ -3,10 +3,13 @@
 //! program to say which frame to draw, a trace is what the program wrote about that frame of its
 //! own Close2GL (its camera, its matrices, the 2D triangles it drew). This crate owns reading
 //! both into plain values, with every fault a one-line [`FormatError`] naming the file and line,
-//! and writing them back as text that reads back the same. It owns no ECS resource.
+//! and writing them back as text that reads back the same; [`check`] compares a trace with the
+//! pipeline, and [`rubric`] makes the assignment's rubric into scenes and judges a program's
+//! traces of them, for `close2gl grade`. It owns no ECS resource.
 
 pub mod check;
 pub mod format;
+pub mod rubric;
 pub mod view;
 
 pub use format::{

@@ -18,6 +18,8 @@ pub enum LineId {
     Synchronized,
 }
 
+use close2gl_core::Mistake;
+
 /// What the whole rubric is worth.
 pub const MAX_TOTAL: u32 = 200;
 
@@ -75,7 +77,7 @@ impl LineId {
     }
 
     /// The line's points.
-    pub fn max(self) -> u32 {
+    pub fn max_points(self) -> u32 {
         match self {
             LineId::Points | LineId::Wireframe | LineId::Solid | LineId::SimpleClipping => 10,
             LineId::Translation | LineId::Hfov | LineId::Vfov | LineId::Resize => 15,
@@ -85,12 +87,42 @@ impl LineId {
         }
     }
 
+    /// The catalogue mistakes this line's own stage can show, the ones a failing scene's
+    /// diagnosis is reported under it by; `None`: any (the line sees the whole frame).
+    pub fn stage_mistakes(self) -> Option<&'static [Mistake]> {
+        use Mistake as M;
+        match self {
+            LineId::Points | LineId::Wireframe | LineId::Solid | LineId::Synchronized => None,
+            LineId::Translation => Some(&[
+                M::ModelviewTransposed,
+                M::TranslationUnrotated,
+                M::TranslationSign,
+                M::LeftHanded,
+            ]),
+            LineId::LookatTranslation | LineId::Rotation => Some(&[M::LeftHanded]),
+            LineId::Culling => Some(&[
+                M::CullingInverted,
+                M::CullingByFileNormals,
+                M::CullingByViewAxis,
+            ]),
+            LineId::Hfov | LineId::Vfov => Some(&[
+                M::FovNotHalved,
+                M::FovInDegrees,
+                M::FovsSwapped,
+                M::AspectFromAngles,
+                M::ProductOrder,
+            ]),
+            LineId::SimpleClipping => Some(&[M::DivideBeforeClip, M::NoClipping]),
+            LineId::Resize => Some(&[M::ViewportYFlipped, M::ViewportFullScale]),
+        }
+    }
+
     /// The points for `passed` of `scenes`: the line's points shared out evenly over its
     /// scenes, rounded down (so a line with every scene passed has all its points).
     pub fn points(self, passed: usize, scenes: usize) -> u32 {
         match scenes {
             0 => 0,
-            _ => (u64::from(self.max()) * passed as u64 / scenes as u64) as u32,
+            _ => (u64::from(self.max_points()) * passed as u64 / scenes as u64) as u32,
         }
     }
 }
@@ -101,7 +133,7 @@ mod tests {
 
     #[test]
     fn the_lines_add_up_to_the_assignments_200() {
-        let total: u32 = LineId::ALL.iter().map(|l| l.max()).sum();
+        let total: u32 = LineId::ALL.iter().map(|l| l.max_points()).sum();
         assert_eq!(total, MAX_TOTAL);
     }
 

@@ -102,7 +102,10 @@ mod tests {
         let roll = identity().rotated(Axis::N, 90.0);
         assert!(close(roll.u, DVec3::Y) && close(roll.v, -DVec3::X) && close(roll.n, DVec3::Z));
         for pose in [up, left, roll] {
-            assert!(pose.u.cross(pose.v).dot(pose.n) > 0.999, "still right-handed");
+            assert!(
+                pose.u.cross(pose.v).dot(pose.n) > 0.999,
+                "still right-handed"
+            );
         }
     }
 
@@ -113,6 +116,9 @@ mod tests {
         assert!((arc.length() - 5.0).abs() < 1e-12 && arc.x > 0.0);
         let straight = pose.orbited_straight(Axis::U, 1.0);
         assert!(close(straight, DVec3::new(1.0, 0.0, 5.0)));
-        assert!(close(pose.moved(Axis::N, -1.0).position, DVec3::new(0.0, 0.0, 4.0)));
+        assert!(close(
+            pose.moved(Axis::N, -1.0).position,
+            DVec3::new(0.0, 0.0, 4.0)
+        ));
     }
 }

@@ -33,11 +33,17 @@ const FILL: f64 = 0.6;
 /// How far a motion goes, in bounding-sphere radii; large enough that a straight orbit and an
 /// arc differ by more than the judge's tolerance.
 const STEP: f64 = 0.5;
-/// How far a rotation turns, degrees.
-const TURN: f64 = 20.0;
+/// How far a rotation turns, degrees: small enough that the turned view still holds the whole
+/// model (so that a rotation scene never tests clipping).
+const TURN: f64 = 10.0;
 /// The turned camera of the motion scenes: seen from up and to the right, degrees.
 const YAW: f64 = 35.0;
 const PITCH: f64 = 25.0;
+
+/// The look-at point a scene without a `lookat` line means: the model's bounding-box centre.
+pub fn default_lookat(mesh: &Mesh) -> DVec3 {
+    Bounds::of(mesh).centre
+}
 
 /// The model's bounding box centre and the radius of the sphere around the box.
 #[derive(Clone, Copy, Debug)]
@@ -87,7 +93,11 @@ impl Bounds {
     /// The turned camera of the motion scenes, looking at the centre.
     fn turned(&self) -> CameraLines {
         let (yaw, pitch) = (YAW.to_radians(), PITCH.to_radians());
-        let toward = DVec3::new(yaw.sin() * pitch.cos(), pitch.sin(), yaw.cos() * pitch.cos());
+        let toward = DVec3::new(
+            yaw.sin() * pitch.cos(),
+            pitch.sin(),
+            yaw.cos() * pitch.cos(),
+        );
         let distance = self.distance(60.0);
         let pose = self.looking_from(toward, distance);
         self.volume(pose, 60.0, 60.0, 0.5 * (distance - self.radius))
@@ -215,11 +225,12 @@ fn axis_name(axis: Axis) -> &'static str {
 }
 
 /// Culling ccw, cw and off, with the model seen from outside (framed) and from inside (the
-/// camera at its centre, a wide view, near close to the eye).
+/// camera at its centre, a wide view, near close to the eye; 100 degrees, not 90, so that a
+/// cube's far side is not exactly on the window's border, where rounding decides).
 fn culling_scenes(bounds: &Bounds, make: &Make) -> Vec<RubricScene> {
     let inside = {
         let pose = bounds.looking_from(DVec3::Z, 0.0);
-        bounds.volume(pose, 90.0, 90.0, 0.01 * bounds.radius)
+        bounds.volume(pose, 100.0, 100.0, 0.01 * bounds.radius)
     };
     let mut scenes = Vec::new();
     for (place, camera) in [("outside", bounds.front(60.0, 60.0)), ("inside", inside)] {
@@ -276,9 +287,11 @@ fn clipping_scenes(bounds: &Bounds, make: &Make) -> Vec<RubricScene> {
         camera.position += offset;
         scenes.push(make(&format!("clipping-{border}"), &line, WINDOW, camera));
     }
+    // The eye a quarter radius behind the centre, looking on: what lies behind it is far
+    // enough back that dividing it by its negative w would land it in the window, mirrored.
     let behind = {
-        let pose = bounds.looking_from(DVec3::Z, 0.5 * bounds.radius);
-        bounds.volume(pose, 90.0, 90.0, 0.01 * bounds.radius)
+        let pose = bounds.looking_from(DVec3::Z, -0.25 * bounds.radius);
+        bounds.volume(pose, 130.0, 130.0, 0.01 * bounds.radius)
     };
     scenes.push(make("clipping-behind-eye", &line, WINDOW, behind));
     scenes
@@ -342,7 +355,10 @@ mod tests {
     fn the_front_camera_is_the_assignments_axes_and_fits_the_model() {
         let bounds = Bounds::of(&cube());
         let camera = bounds.front(60.0, 60.0);
-        assert_eq!((camera.u, camera.v, camera.n), (DVec3::X, DVec3::Y, DVec3::Z));
+        assert_eq!(
+            (camera.u, camera.v, camera.n),
+            (DVec3::X, DVec3::Y, DVec3::Z)
+        );
         let distance = camera.position.distance(bounds.centre);
         assert!(camera.near < distance - bounds.radius && camera.far > distance + bounds.radius);
     }

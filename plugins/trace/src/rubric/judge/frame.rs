@@ -1,0 +1,116 @@
+//! The lines judged on the frame: the modes' 2D output, culling and clipping on the program's
+//! own geometry, the fields of view, resizing, and the whole frame for `synchronized`.
+
+use close2gl_pipeline::mistakes::Outcome;
+use glam::{DMat4, DVec2};
+
+use super::{Judge, Verdict, drew_nothing, required, stage_verdict, stages_agree};
+use crate::check::compare::{self, Stage, number};
+use crate::rubric::own::own_program;
+
+/// How far a frame's width in NDC (where the window is 2 wide) may be off.
+const WIDTH: f64 = 1e-3;
+
+impl Judge<'_> {
+    /// The 2D output agrees with close2gl's: the camera, clipping, culling and window stages.
+    pub(super) fn output_right(&self) -> Verdict {
+        let stages = [
+            Stage::Camera,
+            Stage::Clipping,
+            Stage::Culling,
+            Stage::Window,
+        ];
+        stages_agree(&self.report.comparison, &stages)
+    }
+    /// Stages of check recomputed on the program's own geometry (own V: `own_viewport`).
+    pub(super) fn own_stages(&self, stages: &[Stage], own_viewport: bool) -> Verdict {
+        let program = own_program(&self.ours, self.mesh, self.trace, own_viewport);
+        let expected = program.frame(self.mesh);
+        if self.trace.pieces.is_empty() {
+            return drew_nothing(&expected, "its own clip coordinates show");
+        }
+        let comparison = compare::compare(&program, self.mesh, self.trace, &expected);
+        stages_agree(&comparison, stages)
+    }
+
+    /// hfov (row 0) or vfov (row 1): P's row, and the frame's width (height) in NDC.
+    pub(super) fn fov(&self, row: usize) -> Verdict {
+        let p = compare::matrix(Stage::P, self.ours.p, self.trace.p, &[row]);
+        let p = required(&p);
+        if !p.passed {
+            return p;
+        }
+        let mut expected = self.ours;
+        if let Some(m) = self.trace.m {
+            expected.m = m;
+            expected.clip_matrix = expected.p * m;
+        }
+        let ours = extent(
+            expected
+                .frame(self.mesh)
+                .iter()
+                .flat_map(|o: &Outcome| o.polygon.iter().copied()),
+            self.ours.v,
+            row,
+        );
+        let own_v = self
+            .trace
+            .v
+            .filter(|v| v.col(row)[row].abs() > 0.0)
+            .unwrap_or(self.ours.v);
+        let theirs = extent(
+            self.trace
+                .pieces
+                .iter()
+                .flat_map(|p| p.corners.iter().copied()),
+            own_v,
+            row,
+        );
+        let (side, fov) = match row {
+            0 => ("wide", self.start.hfov),
+            _ => ("high", self.start.vfov),
+        };
+        match (theirs, ours) {
+            (None, None) => Verdict::pass(""),
+            (Some(t), Some(o)) if (t - o).abs() <= WIDTH + WIDTH * o => Verdict::pass(""),
+            (t, o) => Verdict::fail(format!(
+                "what it drew is {} {side} in NDC, close2gl's {} (a field of view of {})",
+                t.map_or("nothing".into(), number),
+                o.map_or("nothing".into(), number),
+                number(fov)
+            )),
+        }
+    }
+
+    pub(super) fn resize(&self) -> Verdict {
+        let v = required(self.report.comparison.stage(Stage::V));
+        if !v.passed {
+            return v;
+        }
+        self.own_stages(&[Stage::Window], false)
+    }
+
+    /// Every stage check compares agrees; a trace that drew nothing agrees only where close2gl
+    /// draws nothing either.
+    pub(super) fn synchronized(&self) -> Verdict {
+        if let Some(stage) = self.report.comparison.first_difference() {
+            return stage_verdict(stage);
+        }
+        match self.trace.pieces.is_empty() {
+            true => drew_nothing(&self.report.expected, "close2gl draws"),
+            false => Verdict::pass(""),
+        }
+    }
+}
+
+/// The width of `points` (in a 2D system whose viewport is `v`) along NDC axis `row`.
+fn extent(points: impl Iterator<Item = DVec2>, v: DMat4, row: usize) -> Option<f64> {
+    let (scale, offset) = (v.col(row)[row], v.col(3)[row]);
+    let (low, high) = points
+        .map(|p| (p[row] - offset) / scale)
+        .filter(|x| x.is_finite())
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), x| {
+            (l.min(x), h.max(x))
+        });
+    (low <= high).then_some(high - low)
+}

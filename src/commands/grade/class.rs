@@ -1,0 +1,99 @@
+//! `--submissions DIR`: every folder in DIR graded (`{dir}` in the command is that folder), all
+//! their scenes sharing the jobs, then `DIR/grades.csv` (one row per submission in name order:
+//! each line's points and the total, in the rubric's order) and `DIR/NAME.html` for each.
+//! Nothing in the CSV depends on timing or order of work: the same submissions give the same
+//! file.
+
+use std::fmt::Write;
+use std::path::{Path, PathBuf};
+
+use close2gl_trace::rubric::{LineId, MAX_TOTAL};
+
+use super::score::Grade;
+use super::{CliError, GradeArgs, Plan, html, run_tasks};
+
+pub(super) fn grade_class(dir: &Path, args: &GradeArgs, plan: &Plan) -> Result<(), CliError> {
+    if args.html.is_some() || args.json {
+        return Err(CliError::Input(
+            "--submissions writes grades.csv and one HTML page per submission: \
+             --html and --json are for one program"
+                .into(),
+        ));
+    }
+    let submissions = folders(dir)?;
+    if submissions.is_empty() {
+        return Err(CliError::Input(format!(
+            "{}: expected a folder per submission, found none",
+            dir.display()
+        )));
+    }
+    let dirs: Vec<Option<PathBuf>> = submissions.iter().map(|(_, p)| Some(p.clone())).collect();
+    let label = format!(
+        "grading {} submissions ({} scenes each)",
+        submissions.len(),
+        plan.rubric.scenes.len()
+    );
+    let results = run_tasks(plan, &dirs, label)?;
+    let grades: Vec<Grade> = results.into_iter().map(Grade::new).collect();
+    let write = |path: PathBuf, text: String| {
+        std::fs::write(&path, text)
+            .map_err(|e| CliError::Runtime(format!("{}: cannot write: {e}", path.display())))
+    };
+    for ((name, _), grade) in submissions.iter().zip(&grades) {
+        write(
+            dir.join(format!("{name}.html")),
+            html::page(grade, name, &args.run),
+        )?;
+    }
+    write(dir.join("grades.csv"), csv(&submissions, &grades))?;
+    for ((name, _), grade) in submissions.iter().zip(&grades) {
+        println!("{name}: {}/{MAX_TOTAL}", grade.total);
+    }
+    println!("wrote {}", dir.join("grades.csv").display());
+    Ok(())
+}
+
+/// The folders in `dir` by name (absolute paths), hidden ones left out.
+fn folders(dir: &Path) -> Result<Vec<(String, PathBuf)>, CliError> {
+    let fail = |e: std::io::Error| CliError::Input(format!("{}: cannot read: {e}", dir.display()));
+    let dir = std::path::absolute(dir).map_err(fail)?;
+    let mut folders: Vec<(String, PathBuf)> = std::fs::read_dir(&dir)
+        .map_err(fail)?
+        .flatten()
+        .filter(|entry| entry.path().is_dir())
+        .map(|entry| {
+            (
+                entry.file_name().to_string_lossy().into_owned(),
+                entry.path(),
+            )
+        })
+        .filter(|(name, _)| !name.starts_with('.'))
+        .collect();
+    folders.sort();
+    Ok(folders)
+}
+
+fn csv(submissions: &[(String, PathBuf)], grades: &[Grade]) -> String {
+    let mut out = String::from("submission");
+    for line in LineId::ALL {
+        out.push(',');
+        out.push_str(line.id());
+    }
+    out.push_str(",total\n");
+    for ((name, _), grade) in submissions.iter().zip(grades) {
+        out.push_str(&field(name));
+        for line in &grade.lines {
+            let _ = write!(out, ",{}", line.points);
+        }
+        let _ = writeln!(out, ",{}", grade.total);
+    }
+    out
+}
+
+/// A CSV field, quoted when it holds a comma, a quote or a line break (RFC 4180).
+fn field(text: &str) -> String {
+    match text.contains([',', '"', '\n', '\r']) {
+        true => format!("\"{}\"", text.replace('"', "\"\"")),
+        false => text.to_string(),
+    }
+}

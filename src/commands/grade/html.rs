@@ -1,0 +1,160 @@
+//! The grade as one self-contained HTML page (no network: styles inline, pictures as data:
+//! URIs): the rubric table, then every failing scene with close2gl's picture, the trace's, the
+//! difference, the scene's text and check's findings.
+
+use std::fmt::Write;
+
+use base64::Engine;
+use base64::engine::general_purpose::STANDARD;
+use close2gl_trace::rubric::MAX_TOTAL;
+
+use super::report::failure_lines;
+use super::score::Grade;
+
+const STYLE: &str = "body{font:14px/1.4 system-ui,sans-serif;margin:2em;color:#222;max-width:1200px}\
+table{border-collapse:collapse}td,th{padding:.25em .8em;border-bottom:1px solid #ddd;text-align:left;vertical-align:top}\
+td.n{text-align:right;white-space:nowrap}tr.full td.n{color:#186a2b}tr.lost td.n{color:#b3261e;font-weight:600}\
+.why{font-size:12px;color:#555;white-space:pre-wrap}pre{background:#f6f6f6;padding:.6em;overflow-x:auto;font-size:12px}\
+figure{display:inline-block;margin:0 1em 1em 0}figcaption{font-size:12px;color:#555}\
+img{image-rendering:pixelated;border:1px solid #ccc;max-width:360px}section{border-top:2px solid #ddd;margin-top:2em}\
+.legend span{display:inline-block;padding:0 .5em;margin-right:.3em;color:#fff;font-size:12px}";
+
+/// The page for `grade`, of the program run as `command`.
+pub fn page(grade: &Grade, title: &str, command: &str) -> String {
+    let mut out = String::new();
+    let _ = write!(
+        out,
+        "<!DOCTYPE html><html><head><meta charset=\"utf-8\"><title>{}</title><style>{STYLE}\
+         </style></head><body><h1>{}: {}/{MAX_TOTAL}</h1><p><code>{}</code></p>",
+        escape(title),
+        escape(title),
+        grade.total,
+        escape(command)
+    );
+    rubric_table(&mut out, grade);
+    let failing: Vec<_> = grade
+        .scenes
+        .iter()
+        .filter(|s| s.verdicts.iter().any(|(_, v)| !v.passed))
+        .collect();
+    if !failing.is_empty() {
+        let _ = write!(
+            out,
+            "<h2>Failing scenes ({})</h2>{}",
+            failing.len(),
+            legend()
+        );
+    }
+    for scene in failing {
+        let _ = write!(
+            out,
+            "<section><h3 id=\"{0}\">{0}</h3><ul>",
+            escape(&scene.id)
+        );
+        for (line, verdict) in scene.verdicts.iter().filter(|(_, v)| !v.passed) {
+            let _ = write!(
+                out,
+                "<li><b>{}</b>: <span class=\"why\">{}</span></li>",
+                line.id(),
+                escape(&verdict.detail)
+            );
+        }
+        out.push_str("</ul>");
+        if let Some(evidence) = &scene.evidence {
+            let captions = [
+                "close2gl (the reference)",
+                "the program's trace",
+                "the difference",
+            ];
+            for (png, caption) in evidence.pictures.iter().zip(captions) {
+                let _ = write!(
+                    out,
+                    "<figure><img alt=\"{caption}\" src=\"data:image/png;base64,{}\">\
+                     <figcaption>{caption}</figcaption></figure>",
+                    STANDARD.encode(png)
+                );
+            }
+            let _ = write!(out, "<h4>check</h4><pre>{}</pre>", escape(&evidence.text));
+        }
+        let _ = write!(
+            out,
+            "<h4>scene</h4><pre>{}</pre></section>",
+            escape(&scene.scene_text)
+        );
+    }
+    out.push_str("</body></html>\n");
+    out
+}
+
+fn rubric_table(out: &mut String, grade: &Grade) {
+    out.push_str("<table><tr><th>line</th><th>points</th><th>scenes</th><th></th></tr>");
+    for line in &grade.lines {
+        let class = if line.points == line.line.max_points() {
+            "full"
+        } else {
+            "lost"
+        };
+        let mut why = failure_lines(grade, line).join("\n");
+        for note in &line.notes {
+            why.push_str(&format!("\naccepted: {note}"));
+        }
+        let _ = write!(
+            out,
+            "<tr class=\"{class}\"><td>{}</td><td class=\"n\">{}/{}</td><td class=\"n\">{}/{}</td>\
+             <td class=\"why\">{}</td></tr>",
+            escape(line.line.title()),
+            line.points,
+            line.line.max_points(),
+            line.passed,
+            line.scenes,
+            escape(why.trim())
+        );
+    }
+    let _ = write!(
+        out,
+        "<tr><th>total</th><th class=\"n\">{}/{MAX_TOTAL}</th><th></th><th></th></tr></table>",
+        grade.total
+    );
+}
+
+/// The difference picture's colours, as check paints them.
+fn legend() -> String {
+    use close2gl_trace::check::compare::Kind;
+    use close2gl_trace::check::picture::kind_color;
+    let kinds = [
+        Kind::DrawnBehindEye,
+        Kind::DrawnOutside,
+        Kind::NotDrawn,
+        Kind::FrontCulled,
+        Kind::BackDrawn,
+        Kind::Moved,
+        Kind::Depth,
+    ];
+    let mut out = String::from("<p class=\"legend\">In the difference: grey agrees; ");
+    for kind in kinds {
+        let [r, g, b, _] = kind_color(kind);
+        let _ = write!(
+            out,
+            "<span style=\"background:rgb({r},{g},{b})\">{}</span>",
+            kind.name()
+        );
+    }
+    out.push_str("</p>");
+    out
+}
+
+/// Text for HTML: `&`, `<`, `>` and quotes escaped (a program's stderr is quoted on the page).
+fn escape(text: &str) -> String {
+    let mut out = String::with_capacity(text.len());
+    for c in text.chars() {
+        match c {
+            '&' => out.push_str("&amp;"),
+            '<' => out.push_str("&lt;"),
+            '>' => out.push_str("&gt;"),
+            '"' => out.push_str("&quot;"),
+            '\'' => out.push_str("&#39;"),
+            c => out.push(c),
+        }
+    }
+    out
+}

@@ -1,0 +1,265 @@
+//! `close2gl grade`: runs a student's program on the rubric's scenes (`close2gl_trace::rubric`)
+//! under the runner's limits, and scores the assignment's 200 points line by line with check's
+//! evidence (docs/grading.md). One program (`--run`), or a class (`--submissions DIR`).
+//!
+//! The files follow a grading: `mod.rs` the arguments, the models and the scenes' workers;
+//! `run.rs` one scene through the runner and the judges; `score.rs` the scenes' verdicts added
+//! up into the rubric's lines; `report.rs` the terminal table and the JSON; `html.rs` the page;
+//! `class.rs` a folder of submissions and its CSV.
+
+mod class;
+mod html;
+mod report;
+mod run;
+mod score;
+
+use std::panic::AssertUnwindSafe;
+use std::path::{Path, PathBuf};
+use std::sync::Mutex;
+use std::sync::atomic::{AtomicUsize, Ordering};
+use std::time::Duration;
+
+use close2gl_core::{Mesh, ModelSource, PrimitiveParams};
+use close2gl_runner::Limits;
+use close2gl_trace::rubric::{self, RubricScene};
+
+use super::CliError;
+use crate::progress::TerminalProgress;
+use run::SceneResult;
+use score::Grade;
+
+#[derive(clap::Args, Debug)]
+pub struct GradeArgs {
+    /// The program's command line, with {scene} and {trace} (and {dir}, the submission's
+    /// folder, with --submissions) standing for absolute paths. Split into words as a POSIX
+    /// shell would, never run through a shell.
+    #[arg(long, value_name = "COMMAND")]
+    pub run: String,
+    /// Grade on these models instead of the bundled ones (cube.in, far_away.in, knot.obj,
+    /// textured_cube.in); repeat for several.
+    #[arg(long = "model", value_name = "FILE")]
+    pub models: Vec<PathBuf>,
+    /// Print the grade as one JSON object.
+    #[arg(long)]
+    pub json: bool,
+    /// Also write the report as one self-contained HTML page.
+    #[arg(long, value_name = "FILE")]
+    pub html: Option<PathBuf>,
+    /// Seconds each scene's run may take before it is killed.
+    #[arg(long, value_name = "SECONDS", default_value_t = 10.0)]
+    pub time_limit: f64,
+    /// Scenes run at once (default: one per core).
+    #[arg(long, value_name = "N")]
+    pub jobs: Option<usize>,
+    /// Grade every folder in DIR, writing DIR/grades.csv and DIR/NAME.html.
+    #[arg(long, value_name = "DIR")]
+    pub submissions: Option<PathBuf>,
+}
+
+/// A model the rubric's scenes are made on: its file (copied beside each scene, so that a
+/// program can neither depend on where it lives nor change it for the next) and its mesh.
+pub struct Model {
+    /// Names it in scene ids: `cube`.
+    pub stem: String,
+    pub file_name: String,
+    pub bytes: Vec<u8>,
+    pub mesh: Mesh,
+}
+
+/// The scenes of every model, each with the index of its model.
+pub struct Rubric {
+    pub models: Vec<Model>,
+    pub scenes: Vec<(usize, RubricScene)>,
+}
+
+/// A scene close2gl failed to judge (it panicked): the scene fails, grading goes on.
+const BUG: &str = "close2gl could not judge this scene (a bug in close2gl: please report it \
+                   with the scene and the program's trace)";
+
+/// What every grading shares: the command's words, the scenes, the limits, how many at once.
+struct Plan<'a> {
+    words: &'a [String],
+    rubric: &'a Rubric,
+    limits: Limits,
+    jobs: usize,
+}
+
+/// One scene to run: which submission (its folder for `{dir}`, if any), which scene.
+struct Task {
+    submission: usize,
+    scene: usize,
+}
+
+/// Exit 0 once graded (the grade is the answer), 2 for bad input, 130 when interrupted.
+pub fn run(args: GradeArgs) -> Result<(), CliError> {
+    let words = close2gl_runner::split_words(&args.run).map_err(CliError::Input)?;
+    if !(args.time_limit > 0.0 && args.time_limit <= 86_400.0) {
+        return Err(CliError::Input(format!(
+            "--time-limit: expected seconds in (0, 86400], found {}",
+            args.time_limit
+        )));
+    }
+    let limits = Limits {
+        time: Duration::from_secs_f64(args.time_limit),
+        ..Limits::default()
+    };
+    let jobs = match args.jobs {
+        Some(0) => return Err(CliError::Input("--jobs: expected at least 1".into())),
+        Some(n) => n,
+        None => std::thread::available_parallelism().map_or(1, |n| n.get()),
+    };
+    let rubric = load_rubric(&args.models)?;
+    let plan = Plan {
+        words: &words,
+        rubric: &rubric,
+        limits,
+        jobs,
+    };
+    close2gl_runner::install_interrupt_handler();
+    let result = match &args.submissions {
+        Some(dir) => class::grade_class(dir, &args, &plan),
+        None => grade_one(&args, &plan),
+    };
+    close2gl_runner::reap_everything();
+    result
+}
+
+fn grade_one(args: &GradeArgs, plan: &Plan) -> Result<(), CliError> {
+    let label = format!("grading {} scenes", plan.rubric.scenes.len());
+    let mut results = run_tasks(plan, &[None], label)?;
+    let grade = Grade::new(results.remove(0));
+    if let Some(path) = &args.html {
+        let page = html::page(&grade, "close2gl grade", &args.run);
+        std::fs::write(path, page)
+            .map_err(|e| CliError::Runtime(format!("{}: cannot write: {e}", path.display())))?;
+    }
+    match args.json {
+        true => println!("{}", report::json(&grade)),
+        false => print!("{}", report::table(&grade, &args.run)),
+    }
+    Ok(())
+}
+
+/// Runs every scene for every submission (`dirs`: each one's folder for `{dir}`, `None` for a
+/// single program), the plan's jobs at a time, with a progress line; the results per submission, in
+/// the rubric's order. Interrupted: the error that exits 130.
+fn run_tasks(
+    plan: &Plan,
+    dirs: &[Option<PathBuf>],
+    label: String,
+) -> Result<Vec<Vec<SceneResult>>, CliError> {
+    let rubric = plan.rubric;
+    let tasks: Vec<Task> = (0..dirs.len())
+        .flat_map(|submission| {
+            (0..rubric.scenes.len()).map(move |scene| Task { submission, scene })
+        })
+        .collect();
+    let slots: Vec<Mutex<Option<SceneResult>>> = tasks.iter().map(|_| Mutex::new(None)).collect();
+    let next = AtomicUsize::new(0);
+    let done = AtomicUsize::new(0);
+    let progress = Mutex::new(TerminalProgress::labelled(label));
+    std::thread::scope(|scope| {
+        for _ in 0..plan.jobs.min(tasks.len()) {
+            scope.spawn(|| {
+                while let Some(task) = tasks.get(next.fetch_add(1, Ordering::Relaxed)) {
+                    let (model, scene) = &rubric.scenes[task.scene];
+                    let dir = dirs[task.submission].as_deref();
+                    let model = &rubric.models[*model];
+                    // A bug of ours on one program's trace must not stop a class's grading.
+                    let result = std::panic::catch_unwind(AssertUnwindSafe(|| {
+                        run::run_scene(plan.words, dir, model, scene, &plan.limits)
+                    }))
+                    .unwrap_or_else(|_| SceneResult::failed(scene, BUG.into()));
+                    let i = task.submission * rubric.scenes.len() + task.scene;
+                    *lock(&slots[i]) = Some(result);
+                    let finished = done.fetch_add(1, Ordering::Relaxed) + 1;
+                    lock(&progress).show(finished as f32 / tasks.len() as f32);
+                }
+            });
+        }
+    });
+    let progress = progress.into_inner().unwrap_or_else(|e| e.into_inner());
+    let interrupted = close2gl_runner::interrupted();
+    progress.finish(!interrupted);
+    if interrupted {
+        return Err(CliError::Interrupted);
+    }
+    let mut results: Vec<SceneResult> = slots
+        .into_iter()
+        .filter_map(|slot| slot.into_inner().unwrap_or_else(|e| e.into_inner()))
+        .collect();
+    let mut per_submission = Vec::new();
+    for _ in dirs {
+        let rest = results.split_off(rubric.scenes.len().min(results.len()));
+        per_submission.push(std::mem::replace(&mut results, rest));
+    }
+    Ok(per_submission)
+}
+
+fn lock<T>(mutex: &Mutex<T>) -> std::sync::MutexGuard<'_, T> {
+    // A worker that panicked left a finished value or none: keep going with the others.
+    mutex.lock().unwrap_or_else(|e| e.into_inner())
+}
+
+/// The bundled models, or those given; each loaded once, and its scenes made.
+fn load_rubric(given: &[PathBuf]) -> Result<Rubric, CliError> {
+    let bundled: Vec<PathBuf> = ["cube.in", "far_away.in", "knot.obj", "textured_cube.in"]
+        .iter()
+        .map(|name| {
+            Path::new(env!("CARGO_MANIFEST_DIR"))
+                .join("assets")
+                .join(name)
+        })
+        .collect();
+    let paths = if given.is_empty() { &bundled } else { given };
+    let mut models: Vec<Model> = Vec::new();
+    for path in paths {
+        let model = load_model(path)?;
+        let taken = |stem: &str| models.iter().any(|m| m.stem == stem);
+        let mut stem = model.stem.clone();
+        let mut k = 2;
+        while taken(&stem) {
+            stem = format!("{}-{k}", model.stem);
+            k += 1;
+        }
+        models.push(Model { stem, ..model });
+    }
+    let scenes = models
+        .iter()
+        .enumerate()
+        .flat_map(|(i, m)| {
+            rubric::scenes(&m.stem, &m.file_name, &m.mesh)
+                .into_iter()
+                .map(move |s| (i, s))
+        })
+        .collect();
+    Ok(Rubric { models, scenes })
+}
+
+fn load_model(path: &Path) -> Result<Model, CliError> {
+    let source = ModelSource::File(path.to_path_buf());
+    let loaded =
+        close2gl_model::load(&source, &PrimitiveParams::default()).map_err(CliError::Input)?;
+    let bytes = std::fs::read(path)
+        .map_err(|e| CliError::Input(format!("{}: cannot read: {e}", path.display())))?;
+    let name = |p: Option<&std::ffi::OsStr>| p.map(|s| s.to_string_lossy().into_owned());
+    let file_name = name(path.file_name()).unwrap_or_else(|| "model.in".into());
+    // A name a scene's `model` line can hold: one field, no comment.
+    let file_name: String = file_name
+        .chars()
+        .map(|c| {
+            if c.is_whitespace() || c == '#' {
+                '_'
+            } else {
+                c
+            }
+        })
+        .collect();
+    let stem = name(path.file_stem()).unwrap_or_else(|| "model".into());
+    Ok(Model {
+        stem,
+        file_name,
+        bytes,
+        mesh: loaded.mesh,
+    })
+}

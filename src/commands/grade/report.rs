@@ -1,0 +1,115 @@
+//! The grade for a person (the rubric as a table on the terminal) and for a script (one JSON
+//! object whose keys and line ids are binding: `total`, `max`, `lines` with `id`, `points`,
+//! `max`, `scenes`, `passed`, `mistakes`, `failures`; `scenes`).
+
+use std::fmt::Write;
+
+use close2gl_trace::rubric::MAX_TOTAL;
+use serde_json::{Value, json};
+
+use super::score::{Grade, LineScore};
+
+/// The rubric table: each line's points of its points and scenes passed of its scenes; under
+/// a failing line, its first failing scene with why, check's first difference and the
+/// mistakes named; the total.
+pub fn table(grade: &Grade, command: &str) -> String {
+    let mut out = String::new();
+    // Writing to a String cannot fail.
+    let _ = writeln!(out, "close2gl grade: {command}");
+    let _ = writeln!(out, "{:<40} {:>7} {:>9}", "line", "points", "scenes");
+    for line in &grade.lines {
+        let points = format!("{}/{}", line.points, line.line.max_points());
+        let scenes = format!("{}/{}", line.passed, line.scenes);
+        let _ = writeln!(out, "{:<40} {points:>7} {scenes:>9}", line.line.title());
+        for note in &line.notes {
+            let _ = writeln!(out, "    accepted: {note}");
+        }
+        for text in failure_lines(grade, line) {
+            let _ = writeln!(out, "    {text}");
+        }
+    }
+    let _ = writeln!(
+        out,
+        "{:<40} {:>7}",
+        "total",
+        format!("{}/{MAX_TOTAL}", grade.total)
+    );
+    out
+}
+
+/// What the report says under a failing line: its first failing scene, why, check's first
+/// difference when it says more, and the mistakes named.
+pub fn failure_lines(grade: &Grade, line: &LineScore) -> Vec<String> {
+    let Some((first, why)) = line.failures.first() else {
+        return Vec::new();
+    };
+    let scene = &grade.scenes[*first];
+    let mut lines = vec![format!("first failing scene: {}", scene.id)];
+    lines.extend(why.lines().map(|l| format!("  {l}")));
+    if let Some(difference) = scene
+        .evidence
+        .as_ref()
+        .and_then(|e| e.first_difference.as_ref())
+        && !why.contains(difference.as_str())
+    {
+        lines.push(format!("  check's first difference: {difference}"));
+    }
+    if !line.mistakes.is_empty() {
+        lines.push(format!("  mistake named: {}", line.mistakes.join(", ")));
+    }
+    lines
+}
+
+pub fn json(grade: &Grade) -> Value {
+    let lines: Vec<Value> = grade
+        .lines
+        .iter()
+        .map(|line| {
+            let failures: Vec<Value> = line
+                .failures
+                .iter()
+                .map(|(i, why)| json!({"scene": grade.scenes[*i].id, "reason": why}))
+                .collect();
+            json!({
+                "id": line.line.id(),
+                "points": line.points,
+                "max": line.line.max_points(),
+                "scenes": line.scenes,
+                "passed": line.passed,
+                "mistakes": line.mistakes,
+                "failures": failures,
+                "accepted": line.notes,
+            })
+        })
+        .collect();
+    let scenes: Vec<Value> = grade
+        .scenes
+        .iter()
+        .map(|scene| {
+            let verdicts: serde_json::Map<String, Value> = scene
+                .verdicts
+                .iter()
+                .map(|(line, v)| {
+                    (
+                        line.id().to_string(),
+                        json!({"passed": v.passed, "detail": v.detail}),
+                    )
+                })
+                .collect();
+            let evidence = scene.evidence.as_ref();
+            json!({
+                "id": scene.id,
+                "lines": verdicts,
+                "run_failure": scene.run_failure,
+                "first_difference": evidence.and_then(|e| e.first_difference.clone()),
+                "mistakes": evidence.map_or(Vec::new(), |e| e.mistakes.clone()),
+            })
+        })
+        .collect();
+    json!({
+        "total": grade.total,
+        "max": MAX_TOTAL,
+        "lines": lines,
+        "scenes": scenes,
+    })
+}

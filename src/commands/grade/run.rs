@@ -1,0 +1,150 @@
+//! One scene of one program: a fresh directory holding the scene and its model, the program
+//! run there under the limits, its trace read and compared (check), and every line the scene
+//! counts for judged. A scene the program failed (a crash, a hang, no trace, garbage) fails
+//! every line with the reason; a scene it got wrong keeps check's evidence, named mistakes and
+//! pictures for the report.
+
+use std::path::Path;
+
+use close2gl_runner::{Ending, Limits, Workspace};
+use close2gl_trace::check::{self, Report, picture, report};
+use close2gl_trace::rubric::{self, LineId, RubricScene, Verdict};
+use close2gl_trace::{Trace, read_trace};
+
+use super::Model;
+
+/// What one scene showed.
+pub struct SceneResult {
+    pub id: String,
+    pub scene_text: String,
+    /// Each line the scene counts for, judged.
+    pub verdicts: Vec<(LineId, Verdict)>,
+    /// Why the run itself failed (then every line failed with it).
+    pub run_failure: Option<String>,
+    /// Check's evidence, for a scene whose trace differs from close2gl or failed a line.
+    pub evidence: Option<Evidence>,
+}
+
+/// What check found in a trace the report shows.
+pub struct Evidence {
+    /// Check's first difference, `stage: detail`; none when check agrees.
+    pub first_difference: Option<String>,
+    /// The catalogue mistakes that reproduce the trace.
+    pub mistakes: Vec<&'static str>,
+    /// Check's report as text.
+    pub text: String,
+    /// close2gl's 2D output, the trace's, the difference (PNG); empty when they could not be
+    /// encoded.
+    pub pictures: Vec<Vec<u8>>,
+}
+
+impl SceneResult {
+    /// A scene that could not be judged: every line it counts for fails with `why`.
+    pub fn failed(scene: &RubricScene, why: String) -> Self {
+        Self {
+            id: scene.id.clone(),
+            scene_text: scene.scene.to_text(),
+            verdicts: scene
+                .lines
+                .iter()
+                .map(|&line| (line, Verdict::fail(why.clone())))
+                .collect(),
+            run_failure: Some(why),
+            evidence: None,
+        }
+    }
+}
+
+/// Runs `words` (with `{scene}`, `{trace}` and `{dir}` filled in) on `scene`.
+pub fn run_scene(
+    words: &[String],
+    dir: Option<&Path>,
+    model: &Model,
+    scene: &RubricScene,
+    limits: &Limits,
+) -> SceneResult {
+    let scene_text = scene.scene.to_text();
+    let failed = |why: String| SceneResult::failed(scene, why);
+    let trace = match run_program(words, dir, model, &scene_text, limits) {
+        Ok(trace) => trace,
+        Err(why) => return failed(why),
+    };
+    let mut report = match check::compare_only(&model.mesh, &trace) {
+        Ok(report) => report,
+        Err(e) => return failed(format!("its trace does not fit the model: {}", e.message)),
+    };
+    let verdicts = rubric::judge(scene, &model.mesh, &trace, &report);
+    let evidence = (!report.agrees() || verdicts.iter().any(|(_, v)| !v.passed)).then(|| {
+        check::explain(&mut report, &model.mesh, &trace);
+        evidence(&report, &trace, &scene.id)
+    });
+    SceneResult {
+        id: scene.id.clone(),
+        scene_text,
+        verdicts,
+        run_failure: None,
+        evidence,
+    }
+}
+
+/// The program run in a fresh directory holding `scene.txt` and the model; its trace, or why
+/// there is none. The directory is gone when this returns.
+fn run_program(
+    words: &[String],
+    dir: Option<&Path>,
+    model: &Model,
+    scene_text: &str,
+    limits: &Limits,
+) -> Result<Trace, String> {
+    let workspace = Workspace::new().map_err(|e| format!("could not make its directory: {e}"))?;
+    let (scene, trace) = (
+        workspace.path().join("scene.txt"),
+        workspace.path().join("trace.txt"),
+    );
+    let write = |path: &Path, bytes: &[u8]| {
+        std::fs::write(path, bytes).map_err(|e| format!("could not write {}: {e}", path.display()))
+    };
+    write(&workspace.path().join(&model.file_name), &model.bytes)?;
+    write(&scene, scene_text.as_bytes())?;
+    let text = |p: &Path| p.to_string_lossy().into_owned();
+    let dir = dir.map(text).unwrap_or_default();
+    let values = [
+        ("scene", text(&scene)),
+        ("trace", text(&trace)),
+        ("dir", dir),
+    ];
+    let values: Vec<(&str, &str)> = values.iter().map(|(k, v)| (*k, v.as_str())).collect();
+    let command = close2gl_runner::substitute(words, &values);
+    let outcome = close2gl_runner::run(&command, workspace.path(), limits);
+    if outcome.ended != Ending::Exited(0) {
+        return Err(outcome.reason());
+    }
+    if !trace.is_file() {
+        return Err(format!("it wrote no trace ({})", outcome.reason()));
+    }
+    read_trace(&trace).map_err(|mut e| {
+        e.file = "its trace".into();
+        format!("{e}")
+    })
+}
+
+fn evidence(report: &Report, trace: &Trace, id: &str) -> Evidence {
+    let first_difference = report.comparison.first_difference().map(|s| {
+        format!(
+            "{}: {}",
+            s.stage.name(),
+            s.details.first().map_or("", String::as_str)
+        )
+    });
+    let pictures = picture::pictures(report, trace)
+        .iter()
+        .map(|image| image.to_png())
+        .collect::<Result<Vec<_>, _>>()
+        .unwrap_or_default();
+    Evidence {
+        first_difference,
+        mistakes: report.mistakes(),
+        text: report::text(report, id),
+        pictures,
+    }
+}

@@ -1,0 +1,116 @@
+//! The scenes' verdicts added up into the rubric's lines: each line's points shared out over
+//! its scenes, the mistakes check named in its failing scenes, and what was accepted.
+
+use close2gl_trace::rubric::{LineId, Verdict, settle_rotations};
+
+use super::run::SceneResult;
+
+/// One line's score.
+pub struct LineScore {
+    pub line: LineId,
+    pub points: u32,
+    pub scenes: usize,
+    pub passed: usize,
+    /// The catalogue mistakes of the line's stage check named in every one of its failing
+    /// scenes that it named any in (a scene names all those it cannot tell apart; across scenes only the
+    /// consistent explanation stays); all of them when no one is named everywhere.
+    pub mistakes: Vec<&'static str>,
+    /// The failing scenes (indices into [`Grade::scenes`]) with why each failed the line.
+    pub failures: Vec<(usize, String)>,
+    /// What its passing scenes had to say ("an arc around the look-at point"), each once.
+    pub notes: Vec<String>,
+}
+
+/// A program's grade: every scene's result and the rubric's lines.
+pub struct Grade {
+    pub scenes: Vec<SceneResult>,
+    pub lines: Vec<LineScore>,
+    pub total: u32,
+}
+
+impl Grade {
+    pub fn new(mut scenes: Vec<SceneResult>) -> Self {
+        let mut rotations: Vec<&mut Verdict> = scenes
+            .iter_mut()
+            .flat_map(|s| s.verdicts.iter_mut())
+            .filter(|(line, _)| *line == LineId::Rotation)
+            .map(|(_, verdict)| verdict)
+            .collect();
+        settle_rotations(&mut rotations);
+        let lines: Vec<LineScore> = LineId::ALL.iter().map(|&l| score(l, &scenes)).collect();
+        let total = lines.iter().map(|l| l.points).sum();
+        Self {
+            scenes,
+            lines,
+            total,
+        }
+    }
+}
+
+fn score(line: LineId, scenes: &[SceneResult]) -> LineScore {
+    let mut score = LineScore {
+        line,
+        points: 0,
+        scenes: 0,
+        passed: 0,
+        mistakes: Vec::new(),
+        failures: Vec::new(),
+        notes: Vec::new(),
+    };
+    for (i, scene) in scenes.iter().enumerate() {
+        let Some((_, verdict)) = scene.verdicts.iter().find(|(l, _)| *l == line) else {
+            continue;
+        };
+        score.scenes += 1;
+        if verdict.passed {
+            score.passed += 1;
+            if !verdict.detail.is_empty() && !score.notes.contains(&verdict.detail) {
+                score.notes.push(verdict.detail.clone());
+            }
+            continue;
+        }
+        score.failures.push((i, verdict.detail.clone()));
+    }
+    let failing = score.failures.iter().map(|(i, _)| &scenes[*i]);
+    score.mistakes = consistent_mistakes(failing, line);
+    score.points = line.points(score.passed, score.scenes);
+    score
+}
+
+/// The mistakes of the line's stage named in every scene that names any, in the order first
+/// named; all those named when no one is named everywhere.
+fn consistent_mistakes<'a>(
+    scenes: impl Iterator<Item = &'a SceneResult>,
+    line: LineId,
+) -> Vec<&'static str> {
+    let of_stage = |name: &&'static str| {
+        line.stage_mistakes()
+            .is_none_or(|stage| stage.iter().any(|m| m.name() == *name))
+    };
+    let named: Vec<Vec<&'static str>> = scenes
+        .filter_map(|s| s.evidence.as_ref())
+        .map(|e| {
+            e.mistakes
+                .iter()
+                .copied()
+                .filter(of_stage)
+                .collect::<Vec<_>>()
+        })
+        .filter(|m| !m.is_empty())
+        .collect();
+    let mut union: Vec<&'static str> = Vec::new();
+    for mistake in named.iter().flatten() {
+        if !union.contains(mistake) {
+            union.push(mistake);
+        }
+    }
+    let everywhere: Vec<&'static str> = union
+        .iter()
+        .copied()
+        .filter(|m| named.iter().all(|set| set.contains(m)))
+        .collect();
+    match everywhere.is_empty() {
+        true => union,
+        false => everywhere,
+    }
+}
