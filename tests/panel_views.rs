@@ -37,3 +37,47 @@ fn panel_changes_reach_both_gpu_views() {
         "wireframe {wire:?} against solid {solid:?} pixels"
     );
 }
+
+/// A Ctrl+click as a recording holds it (a replay's frame, applied to the input as the viewer
+/// applies it) on the Close2GL view of the split layout: the viewer's probe asks both views (the
+/// reference's ID pass on the GPU, Close2GL's candidates), and the panel opens its window beside
+/// the click with the answer.
+#[test]
+fn a_recorded_ctrl_click_opens_the_probe_window_with_both_answers() {
+    use close2gl_core::InputState;
+    use close2gl_viewer::layout::{self, PixelRect};
+
+    let mut h = Harness::new();
+    h.click(Role::CheckBox, "Backface culling");
+    assert!(
+        !h.world().resource::<close2gl_core::Fates>().record,
+        "the fate view is off: the probe works the fates out itself"
+    );
+    // Two 200 × 100 views side by side; the click is in the middle of the Close2GL one.
+    let dir = close2gl_testkit::TempDir::new("probe_recording");
+    let recording = dir.write(
+        "probe.rec",
+        b"{\"close2gl_recording\":1,\"size\":[690,100]}\n\
+          {\"frame\":0,\"dt\":0.016666668,\"probe\":[300,50],\"probe_close2gl_window\":false}\n",
+    );
+    let recording = close2gl_viewer::Recording::read(&recording).unwrap_or_else(|e| panic!("{e}"));
+    let mut input = InputState::default();
+    recording.frames[0].apply(&mut input);
+    h.world().insert_resource(input);
+    let placement = layout::split(PixelRect::whole(400, 100), false);
+    close2gl_viewer::probe::answer(h.world(), &gpu(), &placement);
+    // A new egui window sizes itself unseen in its first frame.
+    h.frame(Vec::new());
+    h.frame(Vec::new());
+    let texts: Vec<String> = h.texts().into_iter().map(|(t, _)| t).collect();
+    let shows = |start: &str| texts.iter().any(|t| t.starts_with(start));
+    for line in [
+        "Pixel 100, 50 of the Close2GL view",
+        "Reference (GPU): triangle 0, depth",
+        "Close2GL: triangle 0, depth",
+        "Both views drew triangle 0 here.",
+        "Journey of triangle 0",
+    ] {
+        assert!(shows(line), "{line}: {texts:?}");
+    }
+}

@@ -25,7 +25,7 @@ pub mod layout;
 mod orbit_input;
 mod pacing;
 mod present;
-mod probe;
+pub mod probe;
 mod recording;
 mod routing;
 mod screenshot;

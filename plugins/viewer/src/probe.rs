@@ -6,14 +6,35 @@
 //! winner becomes the selected triangle.
 
 use bevy_ecs::prelude::*;
+use close2gl_core::Mistake;
 use close2gl_core::{Camera, Fates, InputState, Mesh, RenderSettings, Scene, SelectedTriangle};
 use close2gl_gpu::{Gpu, probe_reference};
+use close2gl_pipeline::mistakes::Mistakes;
+use close2gl_pipeline::textbook;
 use close2gl_raster::probe::{Drawn, probe};
 use close2gl_trace::view::TraceView;
 use close2gl_trace::view::probe::probe as trace_probe;
 use close2gl_ui::ProbeAnswer;
 
 use crate::layout::{Placed, Placement, View};
+
+/// Every triangle's fate in `scene`, as Close2GL's pipeline (with its mistake, if one is set)
+/// records them.
+fn recorded_fates(scene: Scene<'_>) -> Fates {
+    let Scene {
+        mesh,
+        camera,
+        settings,
+        viewport,
+    } = scene;
+    match settings.mistake {
+        Mistake::None => textbook::run_recording(mesh, camera, settings, viewport).1,
+        mistake => {
+            let mistakes = Mistakes::one(mistake);
+            textbook::run_mistaken(mesh, camera, settings, viewport, mistakes).1
+        }
+    }
+}
 
 /// Answers this frame's probe click, if any, once the frame's pipeline has run.
 pub fn answer(world: &mut World, gpu: &Gpu, placement: &Placement) {
@@ -47,7 +68,11 @@ pub fn answer(world: &mut World, gpu: &Gpu, placement: &Placement) {
     };
     let reference = probe_reference(gpu, scene, pixel);
     let drawn = Drawn::last_frame(world, &settings);
-    let close2gl = probe(scene, world.resource::<Fates>(), pixel, drawn);
+    let close2gl = match world.resource::<Fates>() {
+        fates if fates.triangles.len() == mesh.triangles.len() => probe(scene, fates, pixel, drawn),
+        // Nothing records fates while the fate view is off: this frame's, worked out once.
+        _ => probe(scene, &recorded_fates(scene), pixel, drawn),
+    };
     let trace = match placed.view {
         View::Close2gl => world
             .get_resource::<TraceView>()
