@@ -6,27 +6,10 @@ use close2gl_core::limits::MAX_PIXELS;
 use close2gl_core::{NamedEnum, RenderMode};
 
 use super::camera::CameraSlots;
-use super::lines::{FormatError, Line};
+use super::lines::{FormatError, Line, Slot, set_once};
 use super::magic::Format;
 use super::names::choices;
 use super::{Culling, TraceClipping};
-
-/// A value and the line that gave it, so that a second line for its key can name the first.
-pub(crate) type Slot<T> = Option<(T, usize)>;
-
-/// Fills `slot` from `line`; a key given twice is an error at the second line.
-pub(crate) fn set_once<T>(
-    slot: &mut Slot<T>,
-    value: T,
-    line: &Line,
-    key: &str,
-) -> Result<(), FormatError> {
-    if let Some((_, first)) = slot {
-        return Err(line.expected(&format!("one '{key}' line (the first is line {first})")));
-    }
-    *slot = Some((value, line.number));
-    Ok(())
-}
 
 /// What both formats read alike, as the lines come.
 #[derive(Default)]

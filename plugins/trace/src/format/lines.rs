@@ -193,6 +193,23 @@ fn parse_integer(word: &str) -> Result<usize, &'static str> {
         .map_err(|_| "an integer of at most 18446744073709551615")
 }
 
+/// A value and the line that gave it, so that a second line for its key can name the first.
+pub(crate) type Slot<T> = Option<(T, usize)>;
+
+/// Fills `slot` from `line`; a key given twice is an error at the second line.
+pub(crate) fn set_once<T>(
+    slot: &mut Slot<T>,
+    value: T,
+    line: &Line,
+    key: &str,
+) -> Result<(), FormatError> {
+    if let Some((_, first)) = slot {
+        return Err(line.expected(&format!("one '{key}' line (the first is line {first})")));
+    }
+    *slot = Some((value, line.number));
+    Ok(())
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

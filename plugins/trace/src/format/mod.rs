@@ -15,8 +15,9 @@ mod trace;
 mod write;
 
 pub use lines::FormatError;
+pub use output::{ClipLine, Piece};
 pub use scene::{Motion, Scene, SceneCamera, parse_scene, read_scene};
-pub use trace::{ClipLine, Piece, Trace, parse_trace, read_trace};
+pub use trace::{Trace, parse_trace, read_trace};
 
 /// The most `clip`, `tri` and `poly` lines one trace may hold, together: a mesh of millions of
 /// triangles fits, and a hostile file cannot make the values outgrow memory.

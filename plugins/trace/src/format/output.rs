@@ -5,7 +5,26 @@ use glam::{DMat4, DVec2, DVec4};
 
 use super::MAX_POLY_CORNERS;
 use super::lines::{FormatError, Line};
-use super::trace::{ClipLine, Piece};
+
+/// `clip T`: mesh triangle T's corners in clip coordinates, before clipping.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ClipLine {
+    pub triangle: usize,
+    pub corners: [DVec4; 3],
+    /// Where it was written, for a checker's messages.
+    pub line: usize,
+}
+
+/// A `tri` (3 corners) or `poly` (K corners) line: a 2D polygon drawn for mesh triangle T, in
+/// the `ortho2d` system, with each corner's NDC depth when the program gave them.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Piece {
+    pub triangle: usize,
+    pub corners: Vec<DVec2>,
+    /// One per corner, or none.
+    pub depths: Option<Vec<f64>>,
+    pub line: usize,
+}
 
 const MATRIX: &str = "matrix M|P|V m00 m01 m02 m03 m10 … m33";
 const CLIP: &str = "clip T x0 y0 z0 w0 x1 y1 z1 w1 x2 y2 z2 w2";

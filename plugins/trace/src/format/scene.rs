@@ -7,8 +7,8 @@ use close2gl_core::{NamedEnum, RenderMode};
 use glam::DVec3;
 
 use super::camera::shape;
-use super::common::{Common, Ends, Slot, set_once};
-use super::lines::{FormatError, Line, last_line, records};
+use super::common::{Common, Ends};
+use super::lines::{FormatError, Line, Slot, last_line, records, set_once};
 use super::magic::{Format, check_magic};
 use super::{Axis, CameraLines, Culling, MAX_RECORDS, TraceClipping, read};
 

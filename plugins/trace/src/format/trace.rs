@@ -5,34 +5,14 @@ use std::collections::HashMap;
 use std::path::Path;
 
 use close2gl_core::RenderMode;
-use glam::{DMat4, DVec2, DVec4};
+use glam::DMat4;
 
 use super::camera::shape;
-use super::common::{Common, Ends, Slot, set_once};
-use super::lines::{FormatError, Line, last_line, records};
+use super::common::{Common, Ends};
+use super::lines::{FormatError, Line, Slot, last_line, records, set_once};
 use super::magic::{Format, check_magic};
-use super::output::{self, MATRIX_NAMES};
+use super::output::{self, ClipLine, MATRIX_NAMES, Piece};
 use super::{CameraLines, Culling, MAX_RECORDS, Ortho2d, TraceClipping, read};
-
-/// `clip T`: mesh triangle T's corners in clip coordinates, before clipping.
-#[derive(Clone, Debug, PartialEq)]
-pub struct ClipLine {
-    pub triangle: usize,
-    pub corners: [DVec4; 3],
-    /// Where it was written, for a checker's messages.
-    pub line: usize,
-}
-
-/// A `tri` (3 corners) or `poly` (K corners) line: a 2D polygon drawn for mesh triangle T, in
-/// the `ortho2d` system, with each corner's NDC depth when the program gave them.
-#[derive(Clone, Debug, PartialEq)]
-pub struct Piece {
-    pub triangle: usize,
-    pub corners: Vec<DVec2>,
-    /// One per corner, or none.
-    pub depths: Option<Vec<f64>>,
-    pub line: usize,
-}
 
 /// One trace file. What the file leaves out is `None` (or empty), so that a checker can say
 /// what it did not check.
