@@ -24,7 +24,9 @@ enum Command {
     Stats(stats::StatsArgs),
     /// Render both views offscreen to PNGs with a parity report.
     Render(render::RenderArgs),
-    /// Time the Close2GL geometry stage against the straightforward version.
+    /// Time the Close2GL geometry stage against the straightforward version; --raster the
+    /// software frame beside the GPU's (--grid: a million sub-pixel triangles), --fill the fill
+    /// rate, --load a model's loading.
     Bench(bench::BenchArgs),
     /// One triangle's journey through the pipeline (--triangle N), or who drew one pixel in
     /// each view and why the others lost (--pixel X,Y), as JSON.
@@ -39,7 +41,10 @@ enum Command {
 }
 
 fn main() -> ExitCode {
-    let cli = Cli::parse();
+    let cli = match Cli::try_parse() {
+        Ok(cli) => cli,
+        Err(error) => return commands::exit(Err(commands::usage(error))),
+    };
     let result = match cli.command {
         None => run::run(cli.run),
         Some(Command::Stats(args)) => stats::run(args),

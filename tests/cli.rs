@@ -249,7 +249,7 @@ fn bad_input_is_one_line_and_exit_code_2() {
             "render.close2gl_raster",
         ),
         (vec!["bench", "--raster", "--fill"], "--fill"),
-        (vec!["bench", "--grid"], "--grid"),
+        (vec!["bench", "--grid"], "--raster"),
         (
             vec!["bench", "--raster", "--grid", "assets/cube.in"],
             "--grid",
@@ -384,5 +384,46 @@ fn stats_with_a_mistake_shows_its_symptom() {
             "{}",
             mistake.name()
         );
+    }
+}
+
+/// Every command's help names its modes, and bench's exclusive modes are refused together
+/// (clap's own error, exit code 2) before anything runs.
+#[test]
+fn help_names_every_mode_and_bench_refuses_two_at_once() {
+    let help = |args: &[&str]| {
+        let out = close2gl(args);
+        assert!(out.status.success(), "{args:?}");
+        String::from_utf8_lossy(&out.stdout).into_owned()
+    };
+    let top = help(&["--help"]);
+    for (command, modes) in [
+        ("bench", &["--raster", "--grid", "--fill", "--load"][..]),
+        ("inspect", &["--triangle", "--pixel"]),
+        ("grade", &["--submissions"]),
+    ] {
+        let line = top
+            .lines()
+            .find(|l| l.trim_start().starts_with(command))
+            .unwrap_or_else(|| panic!("{command} in {top}"));
+        for mode in modes {
+            assert!(
+                line.contains(mode),
+                "close2gl --help: {command} names {mode}: {line}"
+            );
+            assert!(
+                help(&[command, "--help"]).contains(mode),
+                "{command} --help: {mode}"
+            );
+        }
+    }
+    for refused in [
+        &["bench", "--raster", "--fill"][..],
+        &["bench", "--fill", "--load", "assets/cube.in"],
+        &["bench", "--grid"],
+        &["bench", "--raster", "--grid", "box"],
+    ] {
+        let out = close2gl(refused);
+        assert_eq!(out.status.code(), Some(2), "{refused:?}");
     }
 }

@@ -23,7 +23,10 @@ use serde_json::json;
 use super::CliError;
 use super::scene::{SceneArgs, viewport};
 
+/// `--raster`, `--fill` and `--load` time different things: at most one of them (clap says so,
+/// with exit code 2, before anything runs).
 #[derive(clap::Args, Debug, Default)]
+#[command(group(clap::ArgGroup::new("mode").args(["raster", "fill", "load"])))]
 pub struct BenchArgs {
     #[command(flatten)]
     pub scene: SceneArgs,
@@ -37,7 +40,7 @@ pub struct BenchArgs {
     pub raster: bool,
     /// With --raster: instead of the model, a generated flat grid of about --triangles (default
     /// 1,000,000) triangles, each smaller than a pixel at 1920x1080.
-    #[arg(long)]
+    #[arg(long, requires = "raster", conflicts_with = "model")]
     pub grid: bool,
     /// Time the software rasterizer's fill rate on a screen of large triangles.
     #[arg(long)]
@@ -60,18 +63,6 @@ pub fn run(args: BenchArgs) -> Result<(), CliError> {
     if args.frames == 0 || args.triangles == Some(0) {
         return Err(CliError::Input(
             "bench: --frames and --triangles must be at least 1".into(),
-        ));
-    }
-    let modes = [args.raster, args.fill, args.load.is_some()];
-    if modes.into_iter().filter(|&m| m).count() > 1 {
-        return Err(CliError::Input(
-            "bench: --raster, --fill and --load time different things; give one of them".into(),
-        ));
-    }
-    if args.grid && (!args.raster || args.scene.model.is_some()) {
-        return Err(CliError::Input(
-            "bench: --grid is a scene for --raster, in place of a MODEL; give --raster and no MODEL"
-                .into(),
         ));
     }
     let pool = thread_pool(args.threads)?;
