@@ -175,6 +175,12 @@ impl V8 {
         }
     }
 
+    /// The first lane's vector: what a point given to all eight lanes (`splat`) comes to.
+    #[inline(always)]
+    pub fn first(self) -> glam::Vec3 {
+        glam::Vec3::new(self.x.0[0], self.y.0[0], self.z.0[0])
+    }
+
     #[inline(always)]
     pub fn dot(self, o: V8) -> F8 {
         self.x * o.x + self.y * o.y + self.z * o.z

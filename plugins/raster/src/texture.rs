@@ -77,17 +77,25 @@ impl Mips {
         let other_y = if upper_row { y + 1.0 } else { y - 1.0 };
         let other = planes.texture_coordinates(x, other_y, planes.w(x, other_y));
         let ((s0, t0), (s1, t1)) = if upper_row { (st, other) } else { (other, st) };
-        let (width, height) = self.size();
-        let length = |ds: F8, dt: F8| {
-            let (ds, dt) = (ds * F8::splat(width), dt * F8::splat(height));
-            (ds * ds + dt * dt).sqrt()
-        };
-        let across = length(
+        let across = (
             quad_right(s0) - quad_left(s0),
             quad_right(t0) - quad_left(t0),
         );
-        let down = length(quad_left(s1) - quad_left(s0), quad_left(t1) - quad_left(t0));
-        across.max(down).log2()
+        let down = (quad_left(s1) - quad_left(s0), quad_left(t1) - quad_left(t0));
+        self.footprint_log2(across, down)
+    }
+
+    /// log2 of ρ, the larger of the quad's differences of (s, t) `across` (its top-left pixel
+    /// to the one right of it) and `down` (to the one below), each as a length in level-0
+    /// texels.
+    #[inline(always)]
+    pub(crate) fn footprint_log2(&self, across: (F8, F8), down: (F8, F8)) -> F8 {
+        let (width, height) = self.size();
+        let length = |(ds, dt): (F8, F8)| {
+            let (ds, dt) = (ds * F8::splat(width), dt * F8::splat(height));
+            (ds * ds + dt * dt).sqrt()
+        };
+        length(across).max(length(down)).log2()
     }
 
     /// The texel each of eight points (s, t) falls in, at level 0.

@@ -219,16 +219,20 @@ impl Planes {
     /// lane of `lanes_at` gives there, bit for bit (the same operations in the same order).
     #[inline(always)]
     pub(crate) fn at_pixel(&self, x: i32, y: i32) -> [f32; AT_PIXEL] {
-        let (x, y) = (x as f32 + 0.5, y as f32 + 0.5);
-        let at = |plane: &Plane| {
-            let row = plane.a + plane.dady * (y - self.origin[1]);
-            (x - self.origin[0]) * plane.dadx + row
-        };
-        let mut values = [at(&self.inv_w); AT_PIXEL];
+        let mut values = [self.value_at(&self.inv_w, x, y); AT_PIXEL];
         for (value, plane) in values[1..].iter_mut().zip(&self.varyings) {
-            *value = at(plane);
+            *value = self.value_at(plane, x, y);
         }
         values
+    }
+
+    /// One of these planes at the centre of pixel (x, y): the row's value, then x's share, as a
+    /// lane of `lanes_at` sums them (the same operations in the same order).
+    #[inline(always)]
+    pub(crate) fn value_at(&self, plane: &Plane, x: i32, y: i32) -> f32 {
+        let (x, y) = (x as f32 + 0.5, y as f32 + 0.5);
+        let row = plane.a + plane.dady * (y - self.origin[1]);
+        (x - self.origin[0]) * plane.dadx + row
     }
 
     /// A plane's value at eight pixel centres of one row: the row's value, then x's share.

@@ -3,7 +3,7 @@
 //! parallel, then the vertices clipping made, blended from their triangle's corners as a GPU's
 //! clipper blends them.
 
-use close2gl_core::{RasterGeometry, Shading};
+use close2gl_core::{CutVertex, RasterGeometry, RasterVertex, Shading};
 use glam::Vec3;
 use rayon::prelude::*;
 
@@ -108,14 +108,31 @@ pub(crate) fn vertex_stage(
         .map(|(out, vertices)| {
             let mut farthest_squared = 0.0f32;
             for (o, v) in out.iter_mut().zip(vertices) {
-                let (eye, normal) = (Vec3::from(v.eye), Vec3::from(v.normal));
-                *o = Vertex::new(v.window, vertex_varyings(shading, light, eye, normal, v.uv));
+                *o = Vertex::lit(v, shading, light);
+                let eye = Vec3::from(v.eye);
                 farthest_squared = farthest_squared.max(light.position.distance_squared(eye));
             }
             farthest_squared
         })
         .reduce(|| 0.0, f32::max);
     for (o, cut) in cuts.iter_mut().zip(&raster.cuts) {
+        *o = Vertex::cut(cut, mesh);
+    }
+    farthest_squared.sqrt()
+}
+
+impl Vertex {
+    /// A mesh vertex with its varyings: lit (Gouraud) or passed on (Phong).
+    #[inline(always)]
+    pub(crate) fn lit(v: &RasterVertex, shading: Shading, light: &Light) -> Vertex {
+        let (eye, normal) = (Vec3::from(v.eye), Vec3::from(v.normal));
+        Vertex::new(v.window, vertex_varyings(shading, light, eye, normal, v.uv))
+    }
+
+    /// A vertex clipping made, its varyings blended from its triangle's corners among the
+    /// `mesh` vertices, as a GPU's clipper blends them.
+    #[inline(always)]
+    pub(crate) fn cut(cut: &CutVertex, mesh: &[Vertex]) -> Vertex {
         let mut varyings = [0.0; VARYINGS];
         for (corner, weight) in cut.corners.iter().zip(cut.weights) {
             let from = &mesh[*corner as usize].varyings;
@@ -123,9 +140,8 @@ pub(crate) fn vertex_stage(
                 *v += weight * f;
             }
         }
-        *o = Vertex::new(cut.window, varyings);
+        Vertex::new(cut.window, varyings)
     }
-    farthest_squared.sqrt()
 }
 
 /// A vertex's varyings from its eye position, normal and texture coordinates.
@@ -141,8 +157,10 @@ fn vertex_varyings(
     match shading {
         Shading::None => {}
         Shading::GouraudAd | Shading::GouraudAds => {
-            let i = light.illumination(V8::splat(eye), V8::splat(normal));
-            v[INTENSITY..INTENSITY + 3].copy_from_slice(&[i.x.0[0], i.y.0[0], i.z.0[0]]);
+            let i = light
+                .illumination(V8::splat(eye), V8::splat(normal))
+                .first();
+            v[INTENSITY..INTENSITY + 3].copy_from_slice(&i.to_array());
         }
         Shading::Phong => {
             v[EYE..EYE + 3].copy_from_slice(&eye.to_array());

@@ -5,7 +5,8 @@
 //! when the constants were taken. A restructuring that changes no pixel keeps them all; any change
 //! of output, however small, fails here and names the scene. A change meant to alter the output (a
 //! fix for parity with the reference, say) takes the new hashes this test prints, in the same
-//! commit, saying why.
+//! commit, saying why. The same scenes, on one thread and on two, are also the textbook
+//! rasterizer's (`src/textbook.rs`): every pixel's colour and depth, and every recorded owner.
 
 use TextureFilter::Nearest;
 use close2gl_core::glam::{Vec2, Vec3};
@@ -13,6 +14,7 @@ use close2gl_core::{
     Clipping, Mesh, Rasterizer, RenderMode, RenderSettings, Shading, SoftwareFrame, Texture,
     TextureFilter, Viewport,
 };
+use close2gl_raster::textbook;
 
 mod common;
 use common::{Drawing, Scene};
@@ -230,6 +232,14 @@ fn hash(drawing: &Drawing, viewport: Viewport, record: bool) -> u64 {
     hash.0
 }
 
+/// A pool of `threads` threads for the frames to be drawn on.
+fn pool(threads: usize) -> rayon::ThreadPool {
+    rayon::ThreadPoolBuilder::new()
+        .num_threads(threads)
+        .build()
+        .expect("a thread pool")
+}
+
 /// Whether the images show something: the background alone would hash the same every time.
 fn distinct_colours(frame: &SoftwareFrame) -> usize {
     let mut colours: Vec<[u8; 4]> = frame.image.pixels.clone();
@@ -242,10 +252,7 @@ fn distinct_colours(frame: &SoftwareFrame) -> usize {
 fn every_path_draws_the_pixels_it_drew_when_the_hashes_were_taken() {
     let pinned = pinned();
     for threads in [1, 2] {
-        let pool = rayon::ThreadPoolBuilder::new()
-            .num_threads(threads)
-            .build()
-            .expect("a thread pool");
+        let pool = pool(threads);
         let mut hashes = Vec::new();
         with_scene(|scene| hashes = pool.install(|| draw_pinned(scene, &pinned)));
         let wrong: Vec<String> = pinned
@@ -260,6 +267,83 @@ fn every_path_draws_the_pixels_it_drew_when_the_hashes_were_taken() {
             wrong.join("\n")
         );
     }
+}
+
+/// Every pinned scene drawn by the fast rasterizer, on one thread and on two, is the textbook
+/// rasterizer's drawing of the same pipeline output: every pixel's colour and depth, and, while
+/// fates are recorded, its owner.
+#[test]
+fn every_path_draws_the_textbooks_pixels_and_depths() {
+    let pinned = pinned();
+    for threads in [1, 2] {
+        let pool = pool(threads);
+        let mut wrong = Vec::new();
+        with_scene(|scene| {
+            pool.install(|| {
+                let mut drawing = Drawing::default();
+                for p in &pinned {
+                    drawing.draw(scene, &p.settings, p.record);
+                    let frame = &drawing.frame;
+                    let textbook = textbook::draw(
+                        frame,
+                        &scene.camera,
+                        &p.settings,
+                        &scene.lighting,
+                        scene.texture,
+                    );
+                    wrong.extend(
+                        differences(&drawing, &textbook, p).map(|d| format!("{}: {d}", p.name)),
+                    );
+                }
+            })
+        });
+        assert!(
+            wrong.is_empty(),
+            "on {threads} thread(s), the fast rasterizer and the textbook differ:\n{}",
+            wrong.join("\n")
+        );
+    }
+}
+
+/// How the fast rasterizer's `drawing` differs from the `textbook`'s: how many pixels differ in
+/// colour, depth and owner, with the first of each and the largest differences.
+fn differences(drawing: &Drawing, textbook: &textbook::Buffers, p: &Pinned) -> Option<String> {
+    let image = &drawing.image.image;
+    assert_eq!(
+        (image.width, image.height),
+        (textbook.image.width, textbook.image.height)
+    );
+    let (mut colours, mut depths, mut owners) = (Vec::new(), Vec::new(), Vec::new());
+    let (mut channel, mut depth) = (0u8, 0.0f32);
+    for (i, (fast, slow)) in image.pixels.iter().zip(&textbook.image.pixels).enumerate() {
+        let (x, y) = (i as u32 % image.width, i as u32 / image.width);
+        if fast != slow {
+            colours.push((x, y, *fast, *slow));
+            channel = channel.max((0..4).map(|k| fast[k].abs_diff(slow[k])).max().unwrap_or(0));
+        }
+        let z = drawing.rasterizer.depth(x, y).unwrap_or(f32::NAN);
+        if z.to_bits() != textbook.depth[i].to_bits() {
+            depths.push((x, y, z, textbook.depth[i]));
+            depth = depth.max((z - textbook.depth[i]).abs());
+        }
+        let owner = drawing.rasterizer.owner(x, y);
+        if p.record && owner != textbook.owners[i] {
+            owners.push((x, y, owner, textbook.owners[i]));
+        }
+    }
+    if colours.is_empty() && depths.is_empty() && owners.is_empty() {
+        return None;
+    }
+    Some(format!(
+        "{} colours (largest channel difference {channel}, first {:?}), {} depths (largest \
+         {depth:e}, first {:?}), {} owners (first {:?})",
+        colours.len(),
+        colours.first(),
+        depths.len(),
+        depths.first(),
+        owners.len(),
+        owners.first(),
+    ))
 }
 
 /// The scenes hashed above are real pictures: two colours at least (model and background) in
