@@ -7,6 +7,7 @@ use glam::DVec2;
 
 use super::Report;
 use super::compare::{Kind, pieces_by_triangle};
+use super::region::covers;
 use crate::format::Trace;
 
 const BACKGROUND: [u8; 4] = [20, 20, 26, 255];
@@ -87,46 +88,35 @@ impl Canvas {
     /// Fills a polygon (any winding, convex) given in window pixels: the pixels whose centres
     /// it covers, clipped to the image; nothing once the budget is spent.
     fn fill(&mut self, polygon: &[DVec2], color: [u8; 4]) {
-        fill(&mut self.image, polygon, color, &mut self.budget);
-    }
-}
-
-fn fill(image: &mut Image, polygon: &[DVec2], color: [u8; 4], budget: &mut u64) {
-    if polygon.len() < 3 || polygon.iter().any(|p| !p.is_finite()) {
-        return;
-    }
-    let (w, h) = (f64::from(image.width), f64::from(image.height));
-    let min = polygon
-        .iter()
-        .fold(DVec2::splat(f64::INFINITY), |a, &p| a.min(p));
-    let max = polygon
-        .iter()
-        .fold(DVec2::splat(f64::NEG_INFINITY), |a, &p| a.max(p));
-    let x0 = (min.x - 0.5).ceil().clamp(0.0, w) as u32;
-    let x1 = (max.x - 0.5).floor().clamp(-1.0, w - 1.0);
-    let y0 = (min.y - 0.5).ceil().clamp(0.0, h) as u32;
-    let y1 = (max.y - 0.5).floor().clamp(-1.0, h - 1.0);
-    if x1 < 0.0 || y1 < 0.0 {
-        return;
-    }
-    let area_box = (x1 + 1.0 - f64::from(x0)).max(0.0) * (y1 + 1.0 - f64::from(y0)).max(0.0);
-    match budget.checked_sub(area_box as u64) {
-        Some(left) => *budget = left,
-        None => return,
-    }
-    let n = polygon.len();
-    let area: f64 = (0..n)
-        .map(|i| polygon[i].perp_dot(polygon[(i + 1) % n]))
-        .sum();
-    for y in y0..=y1 as u32 {
-        for x in x0..=x1 as u32 {
-            let c = DVec2::new(f64::from(x) + 0.5, f64::from(y) + 0.5);
-            let inside = (0..n).all(|i| {
-                let (a, b) = (polygon[i], polygon[(i + 1) % n]);
-                (b - a).perp_dot(c - a) * area >= 0.0
-            });
-            if inside {
-                image.pixels[(y * image.width + x) as usize] = color;
+        let (image, budget) = (&mut self.image, &mut self.budget);
+        if polygon.len() < 3 || polygon.iter().any(|p| !p.is_finite()) {
+            return;
+        }
+        let (w, h) = (f64::from(image.width), f64::from(image.height));
+        let min = polygon
+            .iter()
+            .fold(DVec2::splat(f64::INFINITY), |a, &p| a.min(p));
+        let max = polygon
+            .iter()
+            .fold(DVec2::splat(f64::NEG_INFINITY), |a, &p| a.max(p));
+        let x0 = (min.x - 0.5).ceil().clamp(0.0, w) as u32;
+        let x1 = (max.x - 0.5).floor().clamp(-1.0, w - 1.0);
+        let y0 = (min.y - 0.5).ceil().clamp(0.0, h) as u32;
+        let y1 = (max.y - 0.5).floor().clamp(-1.0, h - 1.0);
+        if x1 < 0.0 || y1 < 0.0 {
+            return;
+        }
+        let area_box = (x1 + 1.0 - f64::from(x0)).max(0.0) * (y1 + 1.0 - f64::from(y0)).max(0.0);
+        match budget.checked_sub(area_box as u64) {
+            Some(left) => *budget = left,
+            None => return,
+        }
+        for y in y0..=y1 as u32 {
+            for x in x0..=x1 as u32 {
+                let centre = DVec2::new(f64::from(x) + 0.5, f64::from(y) + 0.5);
+                if covers(polygon, centre) {
+                    image.pixels[(y * image.width + x) as usize] = color;
+                }
             }
         }
     }

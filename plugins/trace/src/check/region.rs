@@ -47,25 +47,35 @@ fn perimeter(polygon: &[DVec2]) -> f64 {
         .sum()
 }
 
+/// Whether the convex polygon (either winding, with an area) covers `p`, its border included.
+pub fn covers(polygon: &[DVec2], p: DVec2) -> bool {
+    let n = polygon.len();
+    let sign = twice_area(polygon).signum();
+    n >= 3
+        && sign != 0.0
+        && (0..n).all(|i| {
+            let (a, b) = (polygon[i], polygon[(i + 1) % n]);
+            (b - a).perp_dot(p - a) * sign >= 0.0
+        })
+}
+
 /// The distance from `p` to a convex polygon (0 inside), whichever way it winds.
 fn distance_to(polygon: &[DVec2], p: DVec2) -> f64 {
-    let n = polygon.len();
-    let mut nearest = f64::INFINITY;
-    let sign = twice_area(polygon).signum();
-    let mut inside = sign != 0.0;
-    for i in 0..n {
-        let (a, b) = (polygon[i], polygon[(i + 1) % n]);
-        let ab = b - a;
-        let t = match ab.length_squared() {
-            0.0 => 0.0,
-            l => ((p - a).dot(ab) / l).clamp(0.0, 1.0),
-        };
-        nearest = nearest.min(p.distance(a + ab * t));
-        if ab.perp_dot(p - a) * sign < 0.0 {
-            inside = false;
-        }
+    if covers(polygon, p) {
+        return 0.0;
     }
-    if inside { 0.0 } else { nearest }
+    let n = polygon.len();
+    (0..n)
+        .map(|i| {
+            let (a, b) = (polygon[i], polygon[(i + 1) % n]);
+            let ab = b - a;
+            let t = match ab.length_squared() {
+                0.0 => 0.0,
+                l => ((p - a).dot(ab) / l).clamp(0.0, 1.0),
+            };
+            p.distance(a + ab * t)
+        })
+        .fold(f64::INFINITY, f64::min)
 }
 
 /// Compares the trace's `pieces` with close2gl's convex `polygon` (both in the same 2D system).

@@ -4,7 +4,7 @@
 use serde_json::{Value, json};
 
 use super::Report;
-use super::compare::{Kind, Stage, Status};
+use super::compare::Status;
 
 /// The most triangle indices listed per kind of disagreement in the JSON (the totals are all).
 pub const MAX_LISTED: usize = 100;
@@ -117,22 +117,4 @@ pub fn json(report: &Report) -> Value {
         "stages": stages,
         "triangles": triangles,
     })
-}
-
-/// One line about a stage, for a summary after the first difference.
-pub fn stage_line(report: &Report, stage: Stage) -> String {
-    let s = report.comparison.stage(stage);
-    let kinds: Vec<String> = report
-        .comparison
-        .triangles
-        .iter()
-        .filter(|(k, _)| k.stage() == stage)
-        .map(|(k, t): &(Kind, Vec<usize>)| format!("{} {}", t.len(), k.name()))
-        .collect();
-    format!(
-        "{}: {} ({})",
-        stage.name(),
-        s.status.name(),
-        kinds.join(", ")
-    )
 }

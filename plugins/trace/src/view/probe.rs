@@ -8,6 +8,7 @@ use glam::DVec2;
 use super::TraceView;
 use super::show::system;
 use crate::check::compare::fate_words;
+use crate::check::region::covers;
 
 /// The trace's side of a probe.
 #[derive(Clone, Debug, PartialEq)]
@@ -28,7 +29,7 @@ pub fn probe(view: &TraceView, pixel: (u32, u32), viewport: Viewport) -> Option<
             .iter()
             .map(|&p| system.to_pixels(p, viewport.width, viewport.height))
             .collect();
-        inside(&pixels, centre)
+        covers(&pixels, centre)
     };
     let mut drawn: Vec<(usize, usize)> = shown
         .trace
@@ -80,19 +81,4 @@ pub fn probe(view: &TraceView, pixel: (u32, u32), viewport: Viewport) -> Option<
         ));
     }
     Some(TraceProbe { lines, triangle })
-}
-
-/// Whether `p` is inside the convex polygon (either winding).
-fn inside(polygon: &[DVec2], p: DVec2) -> bool {
-    let n = polygon.len();
-    if n < 3 {
-        return false;
-    }
-    let area: f64 = (0..n)
-        .map(|i| polygon[i].perp_dot(polygon[(i + 1) % n]))
-        .sum();
-    (0..n).all(|i| {
-        let (a, b) = (polygon[i], polygon[(i + 1) % n]);
-        (b - a).perp_dot(p - a) * area >= 0.0 && area != 0.0
-    })
 }
