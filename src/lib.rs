@@ -24,9 +24,12 @@
 //! app.update();
 //! ```
 
+// The command line and --watch run processes, threads and terminals: not in a browser.
+#[cfg(not(target_arch = "wasm32"))]
 pub mod commands;
 pub mod config;
 mod progress;
+#[cfg(not(target_arch = "wasm32"))]
 pub mod watch;
 
 pub use close2gl_camera as camera;

@@ -191,7 +191,13 @@ pub fn set(
 /// always, the rest where they differ from the defaults; the primitives' sizes only for a
 /// primitive's own view.
 pub fn pixel_overrides(config: &Config) -> Vec<String> {
-    let default = Config::default();
+    pixel_overrides_from(config, &Config::default())
+}
+
+/// [`pixel_overrides`] against `base` instead of the defaults: what `--set` must change of
+/// `base` to show `config` (the web page's link, whose base is its `config.toml`).
+pub fn pixel_overrides_from(config: &Config, base: &Config) -> Vec<String> {
+    let default = base;
     let primitive = matches!(config.model, ModelSource::Primitive(_));
     KEYS.iter()
         .filter(|k| primitive || k.section != "primitives")
@@ -199,7 +205,7 @@ pub fn pixel_overrides(config: &Config) -> Vec<String> {
             let value = match k.write {
                 Never => None,
                 Always(write) => write(config),
-                IfChanged(write) => write(config).filter(|v| Some(v) != write(&default).as_ref()),
+                IfChanged(write) => write(config).filter(|v| Some(v) != write(default).as_ref()),
             }?;
             Some(format!("{}.{}={value}", k.section, k.name))
         })

@@ -3,7 +3,7 @@
 //! every component and resource that more than one plugin touches (the camera, the mesh, the
 //! render settings and lighting, the outside view's settings and orbit, the raw input and the camera actions it becomes, the viewport,
 //! and the Close2GL frame: the 2D vertex buffer and its stage counts, the fates and the selected
-//! triangle), the one RGBA8 [`Image`] and how two are compared ([`parity`]), and the limits and
+//! triangle), the files the app opens by path ([`files`]: the disk, or the bytes a web page handed it), the one RGBA8 [`Image`] and how two are compared ([`parity`]), and the limits and
 //! names they share ([`limits`], [`NamedEnum`]). Its one plugin, [`SettingsPlugin`], owns the settings
 //! both views follow. It reads and writes nothing itself; every other crate depends on it, so
 //! that plugins can talk to each other without depending on each other.
@@ -15,6 +15,7 @@ mod app;
 mod camera;
 mod excerpt;
 mod fates;
+pub mod files;
 mod frame;
 pub mod image;
 mod input;
@@ -61,7 +62,7 @@ pub use settings::{
 };
 pub use settings_plugin::SettingsPlugin;
 pub use texture::{Texture, checkerboard};
-pub use tools::{CommandLine, ToolRequests};
+pub use tools::{CommandLine, PageLink, ToolRequests};
 pub use wake::Wake;
 
 /// Re-exported so that plugin authors need only this crate to write systems.

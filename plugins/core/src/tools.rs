@@ -12,7 +12,17 @@ pub struct ToolRequests {
     pub copy_command: bool,
     /// Show or hide the key cheat sheet.
     pub toggle_help: bool,
+    /// Compare the two views' pixels once more (their coverage agreement, as `close2gl render`
+    /// computes it), without saving them.
+    pub compare_views: bool,
+    /// In a browser: open the page's file chooser (a model, an image, a trace).
+    pub open_file: bool,
 }
+
+/// In a browser: the page's link to what the views show (model, camera and settings in its
+/// fragment), kept current by the page, for the panel's Copy link.
+#[derive(Resource, Clone, Debug, Default, PartialEq)]
+pub struct PageLink(pub String);
 
 /// How the views are written as a `close2gl render` command (copy as command, the screenshot
 /// key): the configuration's own writer, from the same key table the configuration is read with
@@ -22,6 +32,10 @@ pub struct CommandLine(pub fn(&mut World, &str) -> Option<String>);
 
 impl ToolRequests {
     pub fn any(&self) -> bool {
-        self.screenshot || self.copy_command || self.toggle_help
+        self.screenshot
+            || self.copy_command
+            || self.toggle_help
+            || self.compare_views
+            || self.open_file
     }
 }

@@ -71,20 +71,44 @@ impl Gpu {
         }
     }
 
+    /// In a browser: the adapter that draws on the canvas of `surface` (WebGL2 ties the two
+    /// together), awaited as a browser requires.
+    #[cfg(target_arch = "wasm32")]
+    pub async fn for_canvas(
+        instance: wgpu::Instance,
+        surface: &wgpu::Surface<'_>,
+    ) -> Result<Gpu, String> {
+        let adapter = instance
+            .request_adapter(&wgpu::RequestAdapterOptions {
+                power_preference: wgpu::PowerPreference::HighPerformance,
+                compatible_surface: Some(surface),
+                ..Default::default()
+            })
+            .await
+            .map_err(|e| format!("this browser offers no WebGPU or WebGL2 adapter: {e}"))?;
+        Self::open_device(instance, adapter).await
+    }
+
     fn with_adapter(instance: wgpu::Instance, adapter: wgpu::Adapter) -> Result<Gpu, String> {
-        let (device, queue) = pollster::block_on(adapter.request_device(&wgpu::DeviceDescriptor {
-            label: Some("close2gl"),
-            required_features: adapter.features() & WANTED_FEATURES,
-            // Everything the adapter offers: big viewports need its real texture size limit.
-            required_limits: adapter.limits(),
-            ..Default::default()
-        }))
-        .map_err(|e| {
-            format!(
-                "the GPU adapter {} refused to open a device: {e}",
-                adapter.get_info().name
-            )
-        })?;
+        pollster::block_on(Self::open_device(instance, adapter))
+    }
+
+    async fn open_device(instance: wgpu::Instance, adapter: wgpu::Adapter) -> Result<Gpu, String> {
+        let (device, queue) = adapter
+            .request_device(&wgpu::DeviceDescriptor {
+                label: Some("close2gl"),
+                required_features: adapter.features() & WANTED_FEATURES,
+                // Everything the adapter offers: big viewports need its real texture size limit.
+                required_limits: adapter.limits(),
+                ..Default::default()
+            })
+            .await
+            .map_err(|e| {
+                format!(
+                    "the GPU adapter {} refused to open a device: {e}",
+                    adapter.get_info().name
+                )
+            })?;
         Ok(Self::from_device(instance, adapter, device, queue))
     }
 
@@ -124,6 +148,7 @@ impl Gpu {
     /// system did, not on a bug of ours. Every kind of error is caught: a swapchain refused for
     /// a window that is going away is a validation error or an internal one depending on the
     /// driver.
+    #[cfg(not(target_arch = "wasm32"))]
     pub fn validated<T>(&self, f: impl FnOnce() -> T) -> Result<T, String> {
         let filters = [
             wgpu::ErrorFilter::Validation,
@@ -143,6 +168,13 @@ impl Gpu {
             Some(error) => Err(error),
             None => Ok(value),
         }
+    }
+
+    /// In a browser the error scopes' answers can only be awaited, and no other client takes a
+    /// canvas away: `f` runs unwatched, its errors logged in the browser's console.
+    #[cfg(target_arch = "wasm32")]
+    pub fn validated<T>(&self, f: impl FnOnce() -> T) -> Result<T, String> {
+        Ok(f())
     }
 
     /// The adapter's name, e.g. "llvmpipe (LLVM 15.0.6, 256 bits)".

@@ -42,7 +42,7 @@ pub use close2gl_core::camera_matrices;
 pub use gpu::{Gpu, parse_backends};
 pub use id_pass::{ReferenceHit, probe_reference};
 pub use offscreen::{OFFSCREEN_FORMAT, OffscreenPlugin, Snapshot, render_offscreen};
-pub use readback::Readback;
+pub use readback::{Pending, Readback};
 pub use reference::clear_color;
 pub use systems::GpuPlugin;
 pub use views::Views;
@@ -86,7 +86,7 @@ pub fn submit_pass_timed(
     load: wgpu::LoadOp<wgpu::Color>,
     record: impl FnOnce(&mut wgpu::RenderPass<'_>),
 ) -> f64 {
-    let start = std::time::Instant::now();
+    let start = web_time::Instant::now();
     submit_pass(gpu, target, depth, load, record);
     // A failed wait means a lost device; the next acquire or readback reports it.
     let _ = gpu.device.poll(wgpu::PollType::Wait {

@@ -1,10 +1,13 @@
 //! Reading textures back from the GPU: wgpu copies rows padded to its copy alignment into a
 //! mappable buffer, which is mapped once the copy is done and unpadded into pixels.
 
+use std::sync::{Arc, Mutex};
+
 use crate::Gpu;
 
 /// A mappable buffer for `layers` textures of `width` x `height` at 4 bytes a pixel, kept
 /// between frames by whoever reads back every frame.
+#[derive(Clone)]
 pub struct Readback {
     buffer: wgpu::Buffer,
     width: u32,
@@ -42,6 +45,19 @@ impl Readback {
         gpu: &Gpu,
         textures: &[&wgpu::Texture],
     ) -> Result<Vec<Vec<[u8; 4]>>, String> {
+        let pending = self.start(gpu, textures);
+        gpu.device
+            .poll(wgpu::PollType::wait_indefinitely())
+            .map_err(|e| failed("the image", &e))?;
+        pending
+            .finish(gpu)
+            .unwrap_or_else(|| Err(failed("the image", &"the GPU never finished the copy")))
+    }
+
+    /// [`Self::read`] without the wait: the copies are submitted and the buffer is mapped once
+    /// the GPU is done, which [`Pending::finish`] asks after. In a browser nothing can wait for
+    /// the GPU (WebGL2 sees it done only once the page's task has ended): ask again each frame.
+    pub fn start(&self, gpu: &Gpu, textures: &[&wgpu::Texture]) -> Pending {
         let mut encoder = gpu.device.create_command_encoder(&Default::default());
         for (layer, texture) in textures.iter().enumerate() {
             encoder.copy_texture_to_buffer(
@@ -58,17 +74,54 @@ impl Readback {
             );
         }
         gpu.queue.submit([encoder.finish()]);
-        let pixels = self.map(gpu, textures.len())?;
-        self.buffer.unmap();
-        Ok(pixels)
+        let mapped = Arc::new(Mutex::new(None));
+        let slot = Arc::clone(&mapped);
+        self.buffer
+            .slice(..)
+            .map_async(wgpu::MapMode::Read, move |result| {
+                if let Ok(mut slot) = slot.lock() {
+                    *slot = Some(result);
+                }
+            });
+        Pending {
+            readback: self.clone(),
+            layers: textures.len(),
+            mapped,
+        }
     }
+}
 
-    /// Maps the buffer once the copies are done and unpads the first `layers` layers.
-    fn map(&self, gpu: &Gpu, layers: usize) -> Result<Vec<Vec<[u8; 4]>>, String> {
-        let slice = self.buffer.slice(..);
-        let bytes = map_read(gpu, &slice, "the image")?;
+/// Textures on their way back from the GPU ([`Readback::start`]).
+pub struct Pending {
+    readback: Readback,
+    layers: usize,
+    mapped: Arc<Mutex<Option<Result<(), wgpu::BufferAsyncError>>>>,
+}
+
+impl Pending {
+    /// Each texture's pixels once the GPU has copied them; `None` while it has not yet.
+    pub fn finish(&self, gpu: &Gpu) -> Option<Result<Vec<Vec<[u8; 4]>>, String>> {
+        let _ = gpu.device.poll(wgpu::PollType::Poll);
+        let mapped = self.mapped.lock().ok()?.take()?;
+        let readback = &self.readback;
+        let pixels = mapped.map_err(|e| failed("the image", &e)).and_then(|()| {
+            let bytes = readback
+                .buffer
+                .slice(..)
+                .get_mapped_range()
+                .map_err(|e| failed("the image", &e))?;
+            Ok(readback.unpad(&bytes, self.layers))
+        });
+        readback.buffer.unmap();
+        Some(pixels)
+    }
+}
+
+impl Readback {
+    /// The first `layers` layers of the mapped `bytes`, each row without its padding.
+    fn unpad(&self, bytes: &[u8], layers: usize) -> Vec<Vec<[u8; 4]>> {
         let row = self.width as usize * 4;
-        Ok(bytes
+        bytes
             .chunks_exact(self.layer_bytes())
             .take(layers)
             .map(|layer| {
@@ -78,8 +131,12 @@ impl Readback {
                     .map(|p| [p[0], p[1], p[2], p[3]])
                     .collect()
             })
-            .collect())
+            .collect()
     }
+}
+
+fn failed(what: &str, e: &dyn std::fmt::Display) -> String {
+    format!("cannot read {what} back from the GPU: {e}")
 }
 
 /// Maps `slice` for reading once the GPU is done with it; `what` names it in the error.
@@ -88,7 +145,7 @@ pub(crate) fn map_read<'a>(
     slice: &wgpu::BufferSlice<'a>,
     what: &str,
 ) -> Result<wgpu::BufferView, String> {
-    let failed = |e: &dyn std::fmt::Display| format!("cannot read {what} back from the GPU: {e}");
+    let failed = |e: &dyn std::fmt::Display| failed(what, e);
     let (sender, receiver) = std::sync::mpsc::channel();
     slice.map_async(wgpu::MapMode::Read, move |result| {
         let _ = sender.send(result);

@@ -30,8 +30,6 @@ mod progress;
 mod texture;
 mod words;
 
-use std::fs::File;
-use std::io::Seek;
 use std::path::Path;
 
 use bevy_ecs::prelude::*;
@@ -88,28 +86,30 @@ pub(crate) fn load_file(path: &Path, progress: &LoadProgress) -> Result<LoadedMo
         }
     };
     let cannot_read = |e: std::io::Error| format!("{label}: cannot read: {e}");
-    let file = File::open(path).map_err(cannot_read)?;
-    let metadata = file.metadata().map_err(cannot_read)?;
-    if !metadata.is_file() {
-        return Err(format!(
-            "{label}: expected a .in or .obj file, found a directory or device"
-        ));
-    }
+    let open_file = || {
+        close2gl_core::files::open(path).map_err(|e| match e.kind() {
+            std::io::ErrorKind::InvalidInput => {
+                format!("{label}: expected a .in or .obj file, found a directory or device")
+            }
+            _ => cannot_read(e),
+        })
+    };
+    let size = open_file()?.len().map_err(cannot_read)?;
     // Either file is read once (a `.in` file's header twice); one with an error again, line by
     // line (see `obj::read_obj` and `in_format::read_in`), which the bar does not foresee.
-    progress.set_total(metadata.len());
+    progress.set_total(size);
     let label = label.as_str();
+    // Opened again for each read: a file with an error is read a second time, line by line.
     let open = || {
-        (&file).rewind().map_err(cannot_read)?;
         Ok(Counted {
-            inner: &file,
+            inner: open_file()?,
             progress,
         })
     };
     if obj {
         obj::read_obj(open, label)
     } else {
-        in_format::read_in(open, metadata.len(), label)
+        in_format::read_in(open, size, label)
     }
 }
 

@@ -13,8 +13,9 @@ const MAX_DECODE_BYTES: u64 = 4 * (MAX_PIXELS as u64) * (MAX_PIXELS as u64) + (6
 /// Reads a PNG or JPEG file as RGBA8. Every error is one line naming the file.
 pub fn load_texture(path: &Path) -> Result<Image, String> {
     let label = path.display();
-    let mut reader = image::ImageReader::open(path)
-        .map_err(|e| format!("{label}: cannot read: {e}"))?
+    let file =
+        close2gl_core::files::open(path).map_err(|e| format!("{label}: cannot read: {e}"))?;
+    let mut reader = image::ImageReader::new(std::io::BufReader::new(file))
         .with_guessed_format()
         .map_err(|e| format!("{label}: cannot read: {e}"))?;
     let mut limits = image::Limits::default();

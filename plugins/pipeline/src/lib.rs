@@ -23,7 +23,7 @@ mod random_triangles;
 pub mod stage;
 pub mod textbook;
 
-use std::time::Instant;
+use web_time::Instant;
 
 use bevy_ecs::prelude::*;
 use close2gl_core::Owner;

@@ -63,7 +63,7 @@ mod tile;
 mod varyings;
 mod vertex;
 
-use std::time::Instant;
+use web_time::Instant;
 
 use bevy_ecs::prelude::*;
 use close2gl_core::Owner;

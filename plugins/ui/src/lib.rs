@@ -77,15 +77,19 @@ pub struct PanelState {
     /// The probe's window asked for the selected triangle's journey: the panel opens it and
     /// scrolls to it once.
     pub show_journey: bool,
+    /// No panel: the views take the whole window (a page embedded in a course's page).
+    pub hidden: bool,
 }
 
 /// What the panel leaves of `screen` for the views: all but its fixed width at the right. Not
 /// the rectangle egui reports for the panel, which grows by a few points when its scroll bar
 /// appears: the views, their viewport and a replay's pixels must not depend on whether the panel
 /// scrolls, nor on what it shows.
-pub fn views_area(screen: egui::Rect) -> egui::Rect {
+pub fn views_area(screen: egui::Rect, hidden: bool) -> egui::Rect {
     let mut views = screen;
-    views.max.x = (views.max.x - PANEL_WIDTH).max(views.min.x);
+    if !hidden {
+        views.max.x = (views.max.x - PANEL_WIDTH).max(views.min.x);
+    }
     views
 }
 
@@ -93,15 +97,18 @@ pub fn views_area(screen: egui::Rect) -> egui::Rect {
 pub fn show(ui: &mut egui::Ui, world: &mut World) -> egui::Rect {
     world.init_resource::<PanelState>();
     world.init_resource::<ViewStats>();
-    egui::Panel::right("close2gl_panel")
-        .resizable(false)
-        .exact_size(PANEL_WIDTH)
-        .show(ui, |ui| {
-            egui::ScrollArea::vertical()
-                .auto_shrink([false, false])
-                .show(ui, |ui| sections(ui, world));
-        });
-    let views = views_area(ui.max_rect());
+    let hidden = world.resource::<PanelState>().hidden;
+    if !hidden {
+        egui::Panel::right("close2gl_panel")
+            .resizable(false)
+            .exact_size(PANEL_WIDTH)
+            .show(ui, |ui| {
+                egui::ScrollArea::vertical()
+                    .auto_shrink([false, false])
+                    .show(ui, |ui| sections(ui, world));
+            });
+    }
+    let views = views_area(ui.max_rect(), hidden);
     // After the panel, so that its buttons take effect in the frame they are clicked in.
     tools::carry_out(ui.ctx(), world);
     tools::show_notice(ui, views, world);

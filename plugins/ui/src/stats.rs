@@ -1,5 +1,5 @@
 use std::collections::VecDeque;
-use std::time::{Duration, Instant};
+use web_time::{Duration, Instant};
 
 use bevy_ecs::prelude::*;
 use close2gl_core::{Close2glFrame, Rasterizer, RenderSettings, SoftwareFrame};
@@ -15,6 +15,9 @@ pub struct ViewStats {
     /// During `--replay`: the frame being replayed and how many there are. Times are not
     /// shown then: a replay must draw the same window on every run, and times never repeat.
     pub replay: Option<(u32, u32)>,
+    /// The two views' coverage agreement when they were last compared (the screenshot key,
+    /// `ToolRequests::compare_views`), as `close2gl render` computes it.
+    pub coverage_agreement: Option<f64>,
 }
 
 /// The frames of the last second: when each started and how long it took.

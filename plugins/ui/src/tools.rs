@@ -1,11 +1,12 @@
-//! The user's tools in the panel: buttons for copy as command, screenshot and the key cheat
-//! sheet (the same `ToolRequests` their keys set), carrying out the two that need no GPU, the
-//! cheat sheet overlay itself, and a short notice of what a tool did.
+//! The user's tools in the panel: buttons for copy as command, screenshot, the key cheat sheet
+//! and comparing the views (the same `ToolRequests` their keys set; in a browser also the page's
+//! file chooser and its link), carrying out the two that need no GPU, the cheat sheet overlay
+//! itself, and a short notice of what a tool did.
 
 use bevy_ecs::prelude::*;
-use close2gl_core::{Action, CommandLine, InputBindings, ToolRequests};
+use close2gl_core::{Action, CommandLine, InputBindings, PageLink, ToolRequests};
 
-use crate::PanelState;
+use crate::{PanelState, ViewStats};
 
 /// How long a notice stays, in seconds.
 const NOTICE_SECONDS: f64 = 6.0;
@@ -53,12 +54,35 @@ pub fn section(ui: &mut egui::Ui, world: &mut World) {
             .button(format!("Screenshot{}", key(Action::Screenshot)))
             .clicked();
         asked.toggle_help = ui.button(format!("Keys{}", key(Action::Help))).clicked();
+        asked.compare_views = ui
+            .button("Compare views")
+            .on_hover_text("The views' coverage agreement, as close2gl render computes it")
+            .clicked();
+        // In a browser: the page's own file chooser, and its link to this view.
+        asked.open_file = cfg!(target_arch = "wasm32") && ui.button("Open a file…").clicked();
+        if let Some(PageLink(link)) = world.get_resource::<PageLink>()
+            && ui.button("Copy link").clicked()
+        {
+            ui.ctx().copy_text(link.clone());
+            world.insert_resource(Notice::new("Copied the link to this view"));
+        }
     });
+    if let Some(agreement) = world
+        .get_resource::<ViewStats>()
+        .and_then(|s| s.coverage_agreement)
+    {
+        ui.weak(format!(
+            "The views cover the same pixels: {:.3} % (last compared)",
+            100.0 * agreement
+        ));
+    }
     if asked.any() {
         let mut tools = world.get_resource_or_insert_with(ToolRequests::default);
         tools.copy_command |= asked.copy_command;
         tools.screenshot |= asked.screenshot;
         tools.toggle_help |= asked.toggle_help;
+        tools.compare_views |= asked.compare_views;
+        tools.open_file |= asked.open_file;
     }
 }
 

@@ -1,6 +1,6 @@
 //! Records the views into a window's texture, one timed submission per view.
 
-use std::time::{Duration, Instant};
+use web_time::{Duration, Instant};
 
 use close2gl_gpu::outside::OutsideRenderer;
 use close2gl_gpu::{Gpu, Views, submit_pass_timed};

@@ -1,7 +1,7 @@
 //! egui in a winit window drawn by wgpu: events in, the frame's input handed to the panel system
 //! (`close2gl_ui::panel_system`, which runs in the app's frame), its paint out.
 
-use std::time::{Duration, Instant};
+use web_time::{Duration, Instant};
 
 use bevy_ecs::world::World;
 use close2gl_gpu::Gpu;
@@ -101,10 +101,11 @@ impl Gui {
     }
 
     /// Where the views go in a `size` window, in points, and the points' size in pixels: what
-    /// the panel leaves (`close2gl_ui::views_area`), known before the panel runs.
-    pub fn views_area(&self, window: &Window, size: (u32, u32)) -> (egui::Rect, f32) {
+    /// the panel leaves (`close2gl_ui::views_area`; everything when it is `hidden`), known
+    /// before the panel runs.
+    pub fn views_area(&self, window: &Window, size: (u32, u32), hidden: bool) -> (egui::Rect, f32) {
         let (screen, pixels_per_point) = self.screen(window, size);
-        (close2gl_ui::views_area(screen), pixels_per_point)
+        (close2gl_ui::views_area(screen, hidden), pixels_per_point)
     }
 
     /// Hands the panel system (`close2gl_ui::panel_system`) this frame's `input` (from
@@ -123,6 +124,8 @@ impl Gui {
         let Some(PanelOutput(output)) = world.remove_resource::<PanelOutput>() else {
             return GuiFrame::empty(size);
         };
+        #[cfg(target_arch = "wasm32")]
+        crate::browser::copy_to_clipboard(&output.platform_output);
         self.state
             .handle_platform_output(window, output.platform_output);
         let repaint_delay = output

@@ -1,14 +1,15 @@
 //! The winit application: windows appear on `resumed`, events become input, and each redraw of
 //! the main window runs one app frame and draws every window.
 
-use std::time::{Duration, Instant};
+use web_time::{Duration, Instant};
 
 use bevy_ecs::world::World;
-use close2gl_core::{App, InputState, OutsideView, ToolRequests, Viewport, Wake};
-use close2gl_ui::{Notice, ViewStats};
+use close2gl_core::parity::{Comparison, to_rgb8};
+use close2gl_core::{App, InputState, OutsideView, RenderSettings, ToolRequests, Viewport, Wake};
+use close2gl_ui::{Notice, PanelState, ViewStats};
 use winit::application::ApplicationHandler;
 use winit::event::WindowEvent;
-use winit::event_loop::{ActiveEventLoop, ControlFlow, EventLoop};
+use winit::event_loop::{ActiveEventLoop, ControlFlow};
 use winit::window::WindowId;
 
 use crate::ViewerOptions;
@@ -16,10 +17,10 @@ use crate::input::InputTracker;
 use crate::layout::PixelRect;
 use crate::orbit_input::OrbitInput;
 use crate::pacing::Pacing;
-use crate::present::{Capture, Shot};
+use crate::present::{Capture, PendingShot, Shot};
 use crate::routing::{apply_input, offer_to_panel};
 use crate::session::Session;
-use crate::surface_source::{self, Connections};
+use crate::surface_source::Connections;
 use crate::windows::{Created, Windows, create_windows};
 
 pub struct Viewer {
@@ -36,6 +37,12 @@ pub struct Viewer {
     session: Session,
     /// Windows whose drawing could not be set up, kept for a moment: see [`Opening`].
     opening: Option<Opening>,
+    /// A frame's capture still on its way back from the GPU (in a browser, where it cannot be
+    /// waited for).
+    shot: Option<PendingShot>,
+    /// In a browser: the windows waiting for their GPU, which arrives later.
+    #[cfg(target_arch = "wasm32")]
+    arriving: Option<crate::browser::Arriving>,
 }
 
 /// A window destroyed by another client while the app sets up its surface makes the setup fail
@@ -48,6 +55,7 @@ struct Opening {
     deadline: Instant,
 }
 
+#[cfg(not(target_arch = "wasm32"))]
 const OPENING_GRACE: Duration = Duration::from_millis(500);
 
 impl Viewer {
@@ -55,9 +63,8 @@ impl Viewer {
         app: App,
         options: ViewerOptions,
         session: Session,
-        event_loop: &EventLoop<()>,
+        instance: (wgpu::Instance, Connections),
     ) -> Self {
-        let instance = surface_source::instance(&event_loop.owned_display_handle());
         Self {
             app,
             options,
@@ -70,15 +77,21 @@ impl Viewer {
             frames: 0,
             session,
             opening: None,
+            shot: None,
+            #[cfg(target_arch = "wasm32")]
+            arriving: None,
         }
     }
 
-    /// What the run came to, once the event loop has returned.
+    /// What the run came to, once the event loop has returned (in a browser it never does).
+    #[cfg(not(target_arch = "wasm32"))]
     pub fn finish(self) -> Result<(), String> {
         self.result
     }
 
     fn fail(&mut self, event_loop: &ActiveEventLoop, error: String) {
+        #[cfg(target_arch = "wasm32")]
+        crate::browser::report(&error);
         self.result = Err(error);
         event_loop.exit();
     }
@@ -108,7 +121,10 @@ impl Viewer {
         {
             world.insert_resource(Notice::new(format!("the outside view's window: {e}")));
         }
-        let views = windows.gui.views_area(&windows.main.window, surface);
+        let hidden = world.get_resource::<PanelState>().is_some_and(|p| p.hidden);
+        let views = windows
+            .gui
+            .views_area(&windows.main.window, surface, hidden);
         let placement = windows.placement(views, outside);
         update_viewport(world, placement.viewport);
         self.app.update();
@@ -123,7 +139,10 @@ impl Viewer {
         let drawn = windows.draw(self.app.world_mut(), &gui_frame, &placement, capture);
         windows.gui.free_textures(&mut gui_frame);
         let held = end_input_frame(self.app.world_mut());
-        let saved = drawn.and_then(|shot| save(&self.options, self.app.world_mut(), shot));
+        let shot = drawn.and_then(|pending| arrived_shot(&mut self.shot, pending, &windows.gpu));
+        let saved = shot.and_then(|shot| save(&self.options, self.app.world_mut(), shot));
+        // In a browser a shot arrives frames later: draw until it has.
+        let held = held || self.shot.is_some();
         if let Err(e) =
             saved.and_then(|()| self.session.end_frame(self.frames, self.app.world_mut()))
         {
@@ -208,21 +227,53 @@ fn is_close(event: &WindowEvent) -> bool {
 }
 
 /// What frame number `frame` keeps of itself: the window for `--screenshot` on its frame, each
-/// view when the screenshot key (or button) asked.
+/// view when the screenshot key (or button) asked, or a comparison of the views.
 fn capture(options: &ViewerOptions, frame: u32, world: &mut World) -> Capture {
-    let key = match world.get_resource_mut::<ToolRequests>() {
-        Some(mut tools) if tools.screenshot => {
-            tools.screenshot = false;
+    let views = match world.get_resource_mut::<ToolRequests>() {
+        Some(mut tools) if tools.screenshot || tools.compare_views => {
+            tools.compare_views = false;
             true
         }
         _ => false,
     };
     if options.screenshot.is_some() && options.screenshot_frame == Some(frame + 1) {
         Capture::Window
-    } else if key {
+    } else if views {
         Capture::Views
     } else {
         Capture::Nothing
+    }
+}
+
+/// The frame's shot, or in a browser one captured before that has now arrived (`waiting` holds
+/// it meanwhile; a newer capture replaces it).
+#[cfg(not(target_arch = "wasm32"))]
+fn arrived_shot(
+    _waiting: &mut Option<PendingShot>,
+    drawn: Option<PendingShot>,
+    gpu: &close2gl_gpu::Gpu,
+) -> Result<Option<Shot>, String> {
+    drawn.map_or(Ok(None), |pending| pending.wait(gpu))
+}
+
+#[cfg(target_arch = "wasm32")]
+fn arrived_shot(
+    waiting: &mut Option<PendingShot>,
+    drawn: Option<PendingShot>,
+    gpu: &close2gl_gpu::Gpu,
+) -> Result<Option<Shot>, String> {
+    if drawn.is_some() {
+        *waiting = drawn;
+    }
+    let Some(pending) = waiting else {
+        return Ok(None);
+    };
+    match pending.finish(gpu) {
+        None => Ok(None),
+        Some(shot) => {
+            *waiting = None;
+            shot
+        }
     }
 }
 
@@ -255,6 +306,16 @@ fn save(options: &ViewerOptions, world: &mut World, shot: Option<Shot>) -> Resul
             }),
             _,
         ) => {
+            let background = to_rgb8(world.resource::<RenderSettings>().background);
+            let compared = Comparison::of_images(&reference, &close2gl, background);
+            world.resource_mut::<ViewStats>().coverage_agreement =
+                Some(compared.coverage_agreement);
+            let asked = world
+                .get_resource_mut::<ToolRequests>()
+                .map(|mut tools| std::mem::take(&mut tools.screenshot));
+            if asked != Some(true) {
+                return Ok(());
+            }
             let notice = match crate::screenshot::save_views(
                 &options.screenshot_dir,
                 &reference,
@@ -272,7 +333,58 @@ fn save(options: &ViewerOptions, world: &mut World, shot: Option<Shot>) -> Resul
     }
 }
 
+impl Viewer {
+    /// The windows are drawn into from now on: background work wakes the main one.
+    fn opened(&mut self, windows: Windows) {
+        let window = windows.main.window.clone();
+        if let Some(wake) = self.app.world().get_resource::<Wake>() {
+            wake.install(move || window.request_redraw());
+        }
+        windows.main.window.request_redraw();
+        self.windows = Some(windows);
+    }
+
+    /// In a browser: once the GPU has arrived, the windows waiting for it open.
+    #[cfg(target_arch = "wasm32")]
+    fn take_arrived(&mut self, event_loop: &ActiveEventLoop) {
+        let Some((created, surface, gpu)) = self.arriving.as_ref().and_then(|a| a.take()) else {
+            return;
+        };
+        self.arriving = None;
+        let world = self.app.world_mut();
+        let opened =
+            gpu.and_then(|gpu| Windows::with_gpu(created, surface, gpu, self.instance.1, world));
+        match opened {
+            Ok(windows) => self.opened(windows),
+            Err(e) => self.fail(event_loop, e),
+        }
+    }
+}
+
 impl ApplicationHandler for Viewer {
+    #[cfg(target_arch = "wasm32")]
+    fn resumed(&mut self, event_loop: &ActiveEventLoop) {
+        if self.windows.is_some() || self.arriving.is_some() {
+            return;
+        }
+        let created = create_windows(event_loop, &self.options).and_then(|created| {
+            let surface =
+                crate::windows::surface_for(&created.0, &self.instance.0, self.instance.1)?;
+            Ok((created, surface))
+        });
+        match created {
+            Ok((created, surface)) => {
+                self.arriving = Some(crate::browser::choose_gpu(
+                    &self.instance.0,
+                    created,
+                    surface,
+                ));
+            }
+            Err(e) => self.fail(event_loop, e),
+        }
+    }
+
+    #[cfg(not(target_arch = "wasm32"))]
     fn resumed(&mut self, event_loop: &ActiveEventLoop) {
         if self.windows.is_some() || self.opening.is_some() {
             return;
@@ -283,14 +395,7 @@ impl ApplicationHandler for Viewer {
         };
         let world = self.app.world_mut();
         match Windows::open(created.clone(), &self.instance, world) {
-            Ok(windows) => {
-                let window = windows.main.window.clone();
-                if let Some(wake) = world.get_resource::<Wake>() {
-                    wake.install(move || window.request_redraw());
-                }
-                windows.main.window.request_redraw();
-                self.windows = Some(windows);
-            }
+            Ok(windows) => self.opened(windows),
             Err(error) => {
                 self.opening = Some(Opening {
                     windows: created,
@@ -302,6 +407,8 @@ impl ApplicationHandler for Viewer {
     }
 
     fn window_event(&mut self, event_loop: &ActiveEventLoop, id: WindowId, event: WindowEvent) {
+        #[cfg(target_arch = "wasm32")]
+        self.take_arrived(event_loop);
         let Some(windows) = self.windows.as_mut() else {
             return self.opening_event(event_loop, id, &event);
         };

@@ -17,6 +17,8 @@
 //! the app's frames.
 
 mod acquire;
+#[cfg(target_arch = "wasm32")]
+pub mod browser;
 mod draw;
 mod gui;
 mod handler;
@@ -40,6 +42,8 @@ pub use close2gl_core::Layout;
 use close2gl_core::Owner;
 use close2gl_core::{App, InputState, ModelRequest, Plugin, Viewport, Wake};
 pub use recording::Recording;
+pub use routing::drop_file;
+#[cfg(not(target_arch = "wasm32"))]
 use winit::event_loop::{ControlFlow, EventLoop};
 
 #[derive(Clone, Debug, PartialEq)]
@@ -81,28 +85,23 @@ impl Plugin for ViewerPlugin {
             .requires::<Viewport>(Owner::Settings)
             .requires::<Wake>(Owner::Settings);
         let options = self.0.clone();
+        #[cfg(not(target_arch = "wasm32"))]
         app.set_runner(move |app| run(app, options));
+        #[cfg(target_arch = "wasm32")]
+        app.set_runner(move |app| browser::run(app, options));
     }
 }
 
 /// Opens the windows and runs `app` until they close (or the screenshot is taken).
+#[cfg(not(target_arch = "wasm32"))]
 pub fn run(app: App, options: ViewerOptions) -> Result<(), String> {
     let event_loop = EventLoop::new().map_err(|e| {
         format!("cannot open a window: {e} (no display? set DISPLAY, or run under Xvfb)")
     })?;
     event_loop.set_control_flow(ControlFlow::Wait);
-    let session = match (&options.record, &options.replay) {
-        (_, Some(recording)) => {
-            session::Session::Replaying(session::Player::new(recording.clone()))
-        }
-        (Some(path), None) => session::Session::Recording(recording::Recorder::create(
-            path,
-            [options.width, options.height],
-            options.scene.clone(),
-        )?),
-        (None, None) => session::Session::Live,
-    };
-    let mut viewer = handler::Viewer::new(app, options, session, &event_loop);
+    let instance = surface_source::instance(&event_loop.owned_display_handle());
+    let session = session::Session::for_options(&options)?;
+    let mut viewer = handler::Viewer::new(app, options, session, instance);
     event_loop
         .run_app(&mut viewer)
         .map_err(|e| format!("the window system failed: {e}"))?;

@@ -1,7 +1,7 @@
 //! When to draw: on demand (input, held keys, the panel's own animations), so that an idle
 //! viewer sleeps, and with frame times that do not fling the camera after a pause.
 
-use std::time::{Duration, Instant};
+use web_time::{Duration, Instant};
 
 use winit::event_loop::ControlFlow;
 

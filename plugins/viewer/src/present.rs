@@ -9,7 +9,7 @@ use close2gl_ui::ViewStats;
 use crate::draw::{AllViews, ViewTimes, draw_views, record_times};
 use crate::gui::GuiFrame;
 use crate::layout::{Placed, Placement, View};
-use crate::screenshot;
+use crate::screenshot::{self, PendingImage};
 use crate::surface::WindowSurface;
 use crate::windows::Windows;
 
@@ -29,6 +29,42 @@ pub enum Shot {
     Views { reference: Image, close2gl: Image },
 }
 
+/// What a frame captured, on its way back from the GPU: each window drawn, with the views
+/// placed in it, read back ([`PendingShot::finish`]).
+pub struct PendingShot {
+    capture: Capture,
+    windows: Vec<(PendingImage, Vec<Placed>)>,
+    arrived: Vec<Option<Image>>,
+}
+
+impl PendingShot {
+    /// The shot once every window is back from the GPU: `None` while one is not yet; the
+    /// shot is `None` when the views it asked for were not drawn.
+    pub fn finish(&mut self, gpu: &Gpu) -> Option<Result<Option<Shot>, String>> {
+        for ((pending, _), arrived) in self.windows.iter().zip(&mut self.arrived) {
+            if arrived.is_none() {
+                match pending.finish(gpu)? {
+                    Ok(image) => *arrived = Some(image),
+                    Err(e) => return Some(Err(e)),
+                }
+            }
+        }
+        let images = self.arrived.iter().flatten();
+        let placed = self.windows.iter().map(|(_, placed)| placed);
+        Some(Ok(shot(self.capture, images.zip(placed).collect())))
+    }
+
+    /// [`Self::finish`], waiting for the GPU.
+    #[cfg(not(target_arch = "wasm32"))]
+    pub fn wait(mut self, gpu: &Gpu) -> Result<Option<Shot>, String> {
+        gpu.device
+            .poll(wgpu::PollType::wait_indefinitely())
+            .map_err(|e| format!("cannot read the frame back from the GPU: {e}"))?;
+        self.finish(gpu)
+            .unwrap_or_else(|| Err("the GPU never finished copying the frame".into()))
+    }
+}
+
 /// How one drawing of a window goes: `timed` when it is the frame shown (its times are the
 /// stats'), `panel` when the panel is painted over the views.
 #[derive(Clone, Copy)]
@@ -45,7 +81,7 @@ impl Windows {
         gui: &GuiFrame,
         placement: &Placement,
         capture: Capture,
-    ) -> Result<Option<Shot>, String> {
+    ) -> Result<Option<PendingShot>, String> {
         // A lost device draws nothing and reports nothing: stop with its reason instead.
         if let Some(lost) = self.gpu.lost() {
             return Err(lost);
@@ -72,7 +108,7 @@ impl Windows {
         gui_frame: &GuiFrame,
         placement: &Placement,
         capture: Capture,
-    ) -> Result<Option<Shot>, String> {
+    ) -> Result<Option<PendingShot>, String> {
         let Windows {
             gpu,
             main,
@@ -89,7 +125,7 @@ impl Windows {
                 gui.paint(gpu, gui_frame, target);
             }
         })?;
-        shots.extend(main_shot.map(|shot| (shot, &placement.main)));
+        shots.extend(main_shot.map(|shot| (shot, placement.main.clone())));
         for (window, placed) in [
             (close2gl, &placement.close2gl),
             (outside, &placement.outside),
@@ -101,18 +137,22 @@ impl Windows {
                 let times = pass.timed.then_some(&mut *times);
                 draw_views(gpu, views, target, depth, placed, times);
             })?;
-            shots.extend(shot.map(|shot| (shot, placed)));
+            shots.extend(shot.map(|shot| (shot, placed.clone())));
         }
-        Ok(shot(capture, shots))
+        Ok((capture != Capture::Nothing).then(|| PendingShot {
+            capture,
+            arrived: shots.iter().map(|_| None).collect(),
+            windows: shots,
+        }))
     }
 }
 
 /// What `capture` keeps of the windows drawn (each with the views placed in it).
-fn shot(capture: Capture, shots: Vec<(Image, &Vec<Placed>)>) -> Option<Shot> {
+fn shot(capture: Capture, shots: Vec<(&Image, &Vec<Placed>)>) -> Option<Shot> {
     match capture {
         Capture::Nothing => None,
         Capture::Window => {
-            let images: Vec<Image> = shots.into_iter().map(|(shot, _)| shot).collect();
+            let images: Vec<Image> = shots.into_iter().map(|(shot, _)| shot.clone()).collect();
             Some(Shot::Window(screenshot::side_by_side(&images)))
         }
         Capture::Views => {
@@ -140,7 +180,7 @@ fn draw_window(
     window: &mut WindowSurface,
     capture: Capture,
     mut draw: impl FnMut(&wgpu::TextureView, &wgpu::TextureView, Pass),
-) -> Result<Option<Image>, String> {
+) -> Result<Option<PendingImage>, String> {
     let mut shot = None;
     if let Some(texture) = window.acquire()? {
         let target = texture.texture.create_view(&Default::default());

@@ -3,7 +3,7 @@
 //! window for `--screenshot`, each view alone for the screenshot key.
 
 use close2gl_gpu::texture::{READABLE_TARGET, texture_2d};
-use close2gl_gpu::{Gpu, Image, Readback};
+use close2gl_gpu::{Gpu, Image, Pending, Readback};
 
 use std::path::Path;
 
@@ -51,15 +51,15 @@ pub fn save_views(
     ))
 }
 
-/// Draws with `draw` into a `width` x `height` texture of `format` and reads it back as RGBA:
-/// for a window whose surface cannot be read back itself.
+/// Draws with `draw` into a `width` x `height` texture of `format` and starts reading it back
+/// as RGBA: for a window whose surface cannot be read back itself.
 pub fn capture(
     gpu: &Gpu,
     format: wgpu::TextureFormat,
     width: u32,
     height: u32,
     draw: impl FnOnce(&wgpu::TextureView),
-) -> Result<Image, String> {
+) -> Result<PendingImage, String> {
     let texture = texture_2d(
         &gpu.device,
         "screenshot",
@@ -71,30 +71,52 @@ pub fn capture(
     read_back(gpu, &texture)
 }
 
-/// What `texture` (a window's frame, in its 8-bit colour format) holds, as RGBA.
-pub fn read_back(gpu: &Gpu, texture: &wgpu::Texture) -> Result<Image, String> {
+/// A window's frame on its way back from the GPU, as RGBA once it is in.
+pub struct PendingImage {
+    pending: Pending,
+    swap_red_blue: bool,
+    width: u32,
+    height: u32,
+}
+
+/// Starts reading back what `texture` (a window's frame, in its 8-bit colour format) holds.
+pub fn read_back(gpu: &Gpu, texture: &wgpu::Texture) -> Result<PendingImage, String> {
     let swap_red_blue = match texture.format() {
         wgpu::TextureFormat::Bgra8Unorm | wgpu::TextureFormat::Bgra8UnormSrgb => true,
         wgpu::TextureFormat::Rgba8Unorm | wgpu::TextureFormat::Rgba8UnormSrgb => false,
         other => return Err(format!("cannot save a screenshot of a {other:?} window")),
     };
     let (width, height) = (texture.width(), texture.height());
-    let stored = Readback::new(&gpu.device, (width, height), 1)
-        .read(gpu, &[texture])?
-        .concat();
-    // A window's alpha is how it blends with the desktop, not part of the picture.
-    let pixels = stored
-        .into_iter()
-        .map(|p| match swap_red_blue {
-            true => [p[2], p[1], p[0], 255],
-            false => [p[0], p[1], p[2], 255],
-        })
-        .collect();
-    Ok(Image {
+    let pending = Readback::new(&gpu.device, (width, height), 1).start(gpu, &[texture]);
+    Ok(PendingImage {
+        pending,
+        swap_red_blue,
         width,
         height,
-        pixels,
     })
+}
+
+impl PendingImage {
+    /// The image once the GPU has copied it; `None` while it has not yet.
+    pub fn finish(&self, gpu: &Gpu) -> Option<Result<Image, String>> {
+        let stored = self.pending.finish(gpu)?;
+        // A window's alpha is how it blends with the desktop, not part of the picture.
+        let swap = self.swap_red_blue;
+        Some(stored.map(|layers| {
+            Image {
+                width: self.width,
+                height: self.height,
+                pixels: layers
+                    .concat()
+                    .into_iter()
+                    .map(|p| match swap {
+                        true => [p[2], p[1], p[0], 255],
+                        false => [p[0], p[1], p[2], 255],
+                    })
+                    .collect(),
+            }
+        }))
+    }
 }
 
 /// The part of `image` under `rect` (clamped to the image).

@@ -1,7 +1,7 @@
 //! Whose input a frame gets: the window system's (live, and written down with `--record`), or
 //! a recording's (`--replay`), which then owns the frames until it ends.
 
-use std::time::{Duration, Instant};
+use web_time::{Duration, Instant};
 
 use crate::surface::WindowSurface;
 use bevy_ecs::world::World;
@@ -40,6 +40,19 @@ impl Player {
 }
 
 impl Session {
+    /// Live, or recording or replaying as `--record` and `--replay` say.
+    pub fn for_options(options: &crate::ViewerOptions) -> Result<Session, String> {
+        Ok(match (&options.record, &options.replay) {
+            (_, Some(recording)) => Session::Replaying(Player::new(recording.clone())),
+            (Some(path), None) => Session::Recording(Recorder::create(
+                path,
+                [options.width, options.height],
+                options.scene.clone(),
+            )?),
+            (None, None) => Session::Live,
+        })
+    }
+
     pub fn is_replaying(&self) -> bool {
         matches!(self, Session::Replaying(_))
     }

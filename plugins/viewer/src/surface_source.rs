@@ -13,14 +13,15 @@
 
 use std::sync::Arc;
 
+#[cfg(not(target_arch = "wasm32"))]
 use wgpu::rwh::{HasWindowHandle, RawWindowHandle};
-use winit::event_loop::OwnedDisplayHandle;
 use winit::window::Window;
 
 /// The wgpu instance windows draw with: the primary backends (Vulkan, Metal, DX12) when one has
 /// an adapter, with no display of winit's in it, so that surfaces may bring their own; else GL,
 /// which needs winit's display to present on X11.
-pub fn instance(display: &OwnedDisplayHandle) -> (wgpu::Instance, Connections) {
+#[cfg(not(target_arch = "wasm32"))]
+pub fn instance(display: &winit::event_loop::OwnedDisplayHandle) -> (wgpu::Instance, Connections) {
     let mut descriptor = wgpu::InstanceDescriptor::new_without_display_handle_from_env();
     descriptor.backends &= wgpu::Backends::PRIMARY;
     let primary = wgpu::Instance::new(descriptor);
@@ -50,12 +51,7 @@ pub struct SurfaceSource {
 
 impl SurfaceSource {
     pub fn new(window: Arc<Window>, connections: Connections) -> Result<Self, String> {
-        let x11_window = match window.window_handle().map(|h| h.as_raw()) {
-            Ok(RawWindowHandle::Xlib(handle)) => u32::try_from(handle.window).ok(),
-            Ok(RawWindowHandle::Xcb(handle)) => Some(handle.window.get()),
-            _ => None,
-        };
-        let x11 = match (connections, x11_window) {
+        let x11 = match (connections, x11_window(&window)) {
             (Connections::OwnOnX11, Some(id)) => Some(x11::OwnConnection::open(id)?),
             _ => None,
         };
@@ -81,6 +77,21 @@ impl SurfaceSource {
             )
         })
     }
+}
+
+/// The X window's id, when `window` is one.
+#[cfg(not(target_arch = "wasm32"))]
+fn x11_window(window: &Window) -> Option<u32> {
+    match window.window_handle().map(|h| h.as_raw()) {
+        Ok(RawWindowHandle::Xlib(handle)) => u32::try_from(handle.window).ok(),
+        Ok(RawWindowHandle::Xcb(handle)) => Some(handle.window.get()),
+        _ => None,
+    }
+}
+
+#[cfg(target_arch = "wasm32")]
+fn x11_window(_window: &Window) -> Option<u32> {
+    None
 }
 
 #[cfg(all(

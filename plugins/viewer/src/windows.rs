@@ -40,14 +40,28 @@ pub struct Windows {
 impl Windows {
     /// Draws into the windows `create_windows` opened, on one GPU device that can present to
     /// them, and gives the world the `Gpu` and `Views` resources and the adapter's name.
+    #[cfg(not(target_arch = "wasm32"))]
     pub fn open(
-        (main_window, close2gl_window): Created,
+        created: Created,
         (instance, connections): &(wgpu::Instance, Connections),
         world: &mut World,
     ) -> Result<Windows, String> {
-        let surface_for = |window: &NewWindow| surface_for(window, instance, *connections);
-        let main_surface = surface_for(&main_window)?;
+        let main_surface = surface_for(&created.0, instance, *connections)?;
         let gpu = Gpu::for_surface(instance.clone(), &main_surface.1)?;
+        Self::with_gpu(created, main_surface, gpu, *connections, world)
+    }
+
+    /// [`Self::open`] once the GPU is chosen for the main window's `main_surface` (in a
+    /// browser, where that is awaited: [`crate::browser`]).
+    pub fn with_gpu(
+        (main_window, close2gl_window): Created,
+        main_surface: (SurfaceSource, wgpu::Surface<'static>),
+        gpu: Gpu,
+        connections: Connections,
+        world: &mut World,
+    ) -> Result<Windows, String> {
+        let instance = &gpu.instance;
+        let surface_for = |window: &NewWindow| surface_for(window, instance, connections);
         let main = WindowSurface::new(&gpu, main_window, main_surface, None)?;
         let close2gl = match close2gl_window {
             Some(window) => {
@@ -255,7 +269,7 @@ fn columns(
 }
 
 /// What a window's surface is made from, and the surface.
-fn surface_for(
+pub fn surface_for(
     window: &NewWindow,
     instance: &wgpu::Instance,
     connections: Connections,
@@ -265,6 +279,7 @@ fn surface_for(
     Ok((source, surface))
 }
 
+#[cfg(not(target_arch = "wasm32"))]
 fn open_window(
     event_loop: &ActiveEventLoop,
     title: &str,
@@ -282,6 +297,30 @@ fn open_window(
     let window = event_loop
         .create_window(attributes)
         .map_err(|e| format!("cannot open a window: {e}"))?;
+    Ok(NewWindow {
+        window: Arc::new(window),
+        size,
+    })
+}
+
+/// In a browser the window is a canvas added to the page, sized by the page's style sheet
+/// (winit reports its size as it changes; until then it has no pixels and is not drawn).
+#[cfg(target_arch = "wasm32")]
+fn open_window(
+    event_loop: &ActiveEventLoop,
+    title: &str,
+    _width: u32,
+    _height: u32,
+    _position: Option<PhysicalPosition<i32>>,
+) -> Result<NewWindow, String> {
+    use winit::platform::web::WindowAttributesExtWebSys;
+    let attributes = Window::default_attributes()
+        .with_title(title)
+        .with_append(true);
+    let window = event_loop
+        .create_window(attributes)
+        .map_err(|e| format!("cannot add the canvas to the page: {e}"))?;
+    let size = window.inner_size();
     Ok(NewWindow {
         window: Arc::new(window),
         size,

@@ -110,7 +110,7 @@ impl Vertices {
     /// [`Vertices::dense`]. `None` when they do not fit 32 bits.
     pub(super) fn count(&self, positions: usize) -> Option<usize> {
         let count = positions.checked_add(self.others.len())?;
-        (count <= 1 << 32).then_some(count)
+        (count as u64 <= 1 << 32).then_some(count)
     }
 
     /// Vertex `id` as an index below [`Vertices::count`].

@@ -2,7 +2,6 @@
 //! cannot be read, one too big to be a trace (which would otherwise take the memory), and bytes
 //! that are not UTF-8, named by their line.
 
-use std::fs::File;
 use std::io::Read;
 use std::path::Path;
 
@@ -17,8 +16,8 @@ pub(crate) fn text(path: &Path) -> Result<(String, String), FormatError> {
         let message = format!("expected a file of at most 1 GiB, found {found}");
         FormatError::new(&file, 0, message)
     };
-    let mut reader = File::open(path).map_err(io)?;
-    let size = reader.metadata().map_err(io)?.len();
+    let mut reader = close2gl_core::files::open(path).map_err(io)?;
+    let size = reader.len().map_err(io)?;
     if size > MAX_FILE_BYTES {
         return Err(too_big(&format!("{size} bytes")));
     }

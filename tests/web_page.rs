@@ -1,0 +1,197 @@
+//! The web build in a real browser: `scripts/build-web` builds the site, a static server on
+//! 127.0.0.1 serves it, and Debian's Chromium, headless, opens it (driven by
+//! `tests/web/page.mjs` with playwright-core; WebGL2 runs on SwiftShader there). Each page is
+//! opened with `?test=1`, so the app keeps its JSON status in `#status`: the first frame is
+//! drawn, both views agree, a link's model and settings are applied and the link follows the
+//! view. Needs what `.ci/run` installs: the wasm32 target, wasm-bindgen-cli at the lock file's
+//! version, Node.js with `npm ci` done in tests/web, and chromium.
+
+use std::io::{BufRead, BufReader, Write};
+use std::net::{TcpListener, TcpStream};
+use std::path::{Path, PathBuf};
+use std::process::Command;
+use std::sync::OnceLock;
+
+use serde_json::Value;
+
+fn root() -> &'static Path {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+}
+
+/// The site, built once for all the tests, into a target directory of its own (the tests'
+/// own cargo holds the workspace's).
+fn site() -> &'static Path {
+    static SITE: OnceLock<PathBuf> = OnceLock::new();
+    SITE.get_or_init(|| {
+        let out = root().join("target/web-test/site");
+        let status = Command::new(root().join("scripts/build-web"))
+            .arg(&out)
+            .env("CARGO_TARGET_DIR", root().join("target/web-test/build"))
+            .status()
+            .expect("scripts/build-web runs");
+        assert!(status.success(), "scripts/build-web failed: {status}");
+        out
+    })
+}
+
+/// Serves the site on 127.0.0.1 for as long as the test binary runs; returns its address.
+fn server() -> &'static str {
+    static ADDRESS: OnceLock<String> = OnceLock::new();
+    ADDRESS.get_or_init(|| {
+        let listener = TcpListener::bind("127.0.0.1:0").expect("a local port");
+        let address = format!("http://{}", listener.local_addr().unwrap());
+        let site = site().to_path_buf();
+        std::thread::spawn(move || {
+            for stream in listener.incoming().flatten() {
+                let site = site.clone();
+                std::thread::spawn(move || serve(stream, &site));
+            }
+        });
+        address
+    })
+}
+
+fn serve(mut stream: TcpStream, site: &Path) {
+    let mut request = String::new();
+    if BufReader::new(&stream).read_line(&mut request).is_err() {
+        return;
+    }
+    let path = request.split_whitespace().nth(1).unwrap_or("/");
+    let path = path.split(['?', '#']).next().unwrap_or("/");
+    let relative = match path.trim_start_matches('/') {
+        "" => "index.html",
+        other => other,
+    };
+    let file = site.join(relative);
+    let inside = !relative.split('/').any(|part| part == "..");
+    let (status, kind, body) = match std::fs::read(&file) {
+        Ok(body) if inside => ("200 OK", content_type(&file), body),
+        _ => ("404 Not Found", "text/plain", b"not found".to_vec()),
+    };
+    let head = format!(
+        "HTTP/1.1 {status}\r\nContent-Type: {kind}\r\nContent-Length: {}\r\nConnection: close\r\n\r\n",
+        body.len()
+    );
+    let _ = stream.write_all(head.as_bytes());
+    let _ = stream.write_all(&body);
+}
+
+fn content_type(file: &Path) -> &'static str {
+    match file.extension().and_then(|e| e.to_str()) {
+        Some("html") => "text/html; charset=utf-8",
+        Some("js") => "text/javascript",
+        Some("wasm") => "application/wasm",
+        _ => "application/octet-stream",
+    }
+}
+
+/// Opens `page` (a path and query on the site, with its fragment) and returns what page.mjs
+/// reports: the app's status, the page's fragment afterwards and any errors.
+fn open(page: &str, screenshot: &str) -> Value {
+    let url = format!("{}/{page}", server());
+    let shot = root().join("target/web-test").join(screenshot);
+    let output = Command::new("node")
+        .arg(root().join("tests/web/page.mjs"))
+        .arg(&url)
+        .arg(&shot)
+        .output()
+        .expect("node runs (apt-get install nodejs; npm ci in tests/web)");
+    let stdout = String::from_utf8_lossy(&output.stdout);
+    let report: Value = stdout
+        .lines()
+        .last()
+        .and_then(|line| serde_json::from_str(line).ok())
+        .unwrap_or_else(|| {
+            panic!(
+                "page.mjs printed no report for {url}: {stdout}\n{}",
+                String::from_utf8_lossy(&output.stderr)
+            )
+        });
+    let errors = report["errors"].as_array().cloned().unwrap_or_default();
+    assert!(
+        errors.is_empty(),
+        "{url}: the page reported errors: {errors:?}"
+    );
+    assert!(shot.is_file(), "{url}: no screenshot");
+    report
+}
+
+fn number(status: &Value, key: &str) -> f64 {
+    status[key]
+        .as_f64()
+        .unwrap_or_else(|| panic!("status has no number {key}: {status}"))
+}
+
+#[test]
+fn the_first_frame_is_drawn_and_both_views_agree() {
+    let report = open("?test=1", "default.png");
+    let status = &report["status"];
+    assert!(number(status, "frames") >= 3.0, "{status}");
+    let first = number(status, "first_frame_ms");
+    assert!(first > 0.0, "{status}");
+    assert!(
+        ["webgl2", "webgpu"].contains(&status["backend"].as_str().unwrap_or("")),
+        "{status}"
+    );
+    assert!(
+        !status["adapter"].as_str().unwrap_or("").is_empty(),
+        "{status}"
+    );
+    assert_eq!(status["model"], "knot.obj", "{status}");
+    assert_eq!(status["triangles"], 8192, "{status}");
+    assert_eq!(status["panel"], true, "{status}");
+    let agreement = number(status, "coverage_agreement");
+    assert!(
+        agreement >= 0.999,
+        "the views disagree: {agreement} ({status})"
+    );
+    eprintln!("first frame after {first:.0} ms: {status}");
+}
+
+#[test]
+fn a_links_model_and_settings_are_applied_and_the_link_follows_the_view() {
+    let link =
+        "model=cube.in&camera.hfov=45&render.clipping=%22simple%22&render.front_face=%22cw%22";
+    let report = open(&format!("?test=1#{link}"), "link.png");
+    let status = &report["status"];
+    assert_eq!(status["model"], "cube.in", "{status}");
+    assert_eq!(status["triangles"], 12, "{status}");
+    let settings = &status["settings"];
+    assert_eq!(settings["camera.hfov"], 45.0, "{status}");
+    assert_eq!(settings["render.clipping"], "simple", "{status}");
+    assert_eq!(settings["render.front_face"], "cw", "{status}");
+    assert!(number(status, "coverage_agreement") >= 0.999, "{status}");
+    // The page rewrote its link from the view: the same settings, and the pose pinned.
+    let hash = report["hash"].as_str().unwrap_or("");
+    for item in [
+        "#model=cube.in&",
+        "camera.hfov=45",
+        "render.clipping=%22simple%22",
+    ] {
+        assert!(hash.contains(item), "the link lacks {item}: {hash}");
+    }
+    assert!(hash.contains("camera.position="), "{hash}");
+    // The rewritten link opens the same view.
+    let again = open(&format!("?test=1{hash}"), "link-again.png");
+    assert_eq!(again["status"]["settings"], *settings, "{again}");
+}
+
+#[test]
+fn a_primitive_embedded_without_the_panel() {
+    let report = open("?test=1&embed=1#model=torus", "embed.png");
+    let status = &report["status"];
+    assert_eq!(status["model"], "torus", "{status}");
+    assert_eq!(status["panel"], false, "{status}");
+    assert!(number(status, "coverage_agreement") >= 0.999, "{status}");
+}
+
+#[test]
+fn a_broken_link_shows_the_default_view_and_says_why() {
+    // Broken links are the user's input: the page still opens, on the default model.
+    let report = open(
+        "?test=1#model=no_such_model.in&camera.hfov=banana",
+        "broken.png",
+    );
+    let status = &report["status"];
+    assert_eq!(status["model"], "knot.obj", "{status}");
+}
