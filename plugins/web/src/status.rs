@@ -22,14 +22,17 @@ pub struct Status {
     compared_at: Option<u64>,
 }
 
-/// `section.key=value` items as a JSON object of their values (TOML read as JSON).
+/// `section.key=value` items as a JSON object of their values: TOML read as JSON, and a bare
+/// word (a name such as `simple`, as `--set` takes it) as a string.
 fn settings_json(settings: &[String]) -> Map<String, Value> {
     settings
         .iter()
         .filter_map(|item| {
             let (key, value) = item.split_once('=')?;
-            let toml: toml::Table = format!("v = {value}").parse().ok()?;
-            let value = serde_json::to_value(toml.get("v")?).ok()?;
+            let toml = format!("v = {value}").parse::<toml::Table>().ok();
+            let value = toml
+                .and_then(|t| serde_json::to_value(t.get("v")?).ok())
+                .unwrap_or_else(|| Value::String(value.to_string()));
             Some((key.to_string(), value))
         })
         .collect()
