@@ -29,6 +29,10 @@ impl<'m> Object<'m> {
         }
     }
 
+    fn vertices(&self) -> usize {
+        self.mesh.positions.len() / 3
+    }
+
     fn triangles(&self) -> impl Iterator<Item = [u32; 3]> + '_ {
         let indices = self.mesh.indices.chunks_exact(3);
         indices.map(|t| [t[0], t[1], t[2]])
@@ -60,15 +64,25 @@ pub(super) fn build(models: &[tobj::Model], name: String) -> Result<Mesh, String
     let smooth = smooth_normals(&objects);
     let mut builder = MeshBuilder::with_capacity(name, triangles);
     for object in &objects {
+        // tobj made a vertex of each distinct `v/vt/vn` of the object, and each makes one
+        // corner: the mesh builder is asked once per vertex, not once per triangle corner.
+        let mut mesh_index: Vec<Option<u32>> = vec![None; object.vertices()];
         for triangle in object.triangles() {
             let mut corners = [0; 3];
             for (corner, i) in corners.iter_mut().zip(triangle) {
-                let position = object.position(i);
-                let normal = object
-                    .normal(i)
-                    .or_else(|| smooth.get(&key(position)).copied())
-                    .unwrap_or(Vec3::Z);
-                *corner = builder.corner(&Corner::new(position, normal, object.uv(i)))?;
+                *corner = match mesh_index[i as usize] {
+                    Some(index) => index,
+                    None => {
+                        let position = object.position(i);
+                        let normal = object
+                            .normal(i)
+                            .or_else(|| smooth.get(&key(position)).copied())
+                            .unwrap_or(Vec3::Z);
+                        let uv = object.uv(i);
+                        let index = builder.corner(&Corner::new(position, normal, uv))?;
+                        *mesh_index[i as usize].insert(index)
+                    }
+                };
             }
             builder.triangle(corners);
         }
@@ -83,9 +97,9 @@ fn key(p: Vec3) -> [u32; 3] {
 
 /// Area-weighted normals per position, if some corner has no usable normal of its own: the
 /// unnormalised cross product of each triangle is its normal times twice its area, so big faces
-/// weigh more. Summed per position (not per tobj vertex), so that neither a texture seam nor a
-/// position written twice creases the shading. A position whose faces cancel out or have no
-/// area has none (its corners get +z).
+/// weigh more. Summed per position, over all the tobj vertices there, so that neither a texture
+/// seam nor a position written twice creases the shading. Where the faces cancel out or have no
+/// area, +z.
 fn smooth_normals(objects: &[Object]) -> HashMap<[u32; 3], Vec3> {
     let mut sums: HashMap<[u32; 3], Vec3> = HashMap::new();
     let lacking = |o: &Object| o.triangles().flatten().any(|i| o.normal(i).is_none());
@@ -93,15 +107,21 @@ fn smooth_normals(objects: &[Object]) -> HashMap<[u32; 3], Vec3> {
         return sums;
     }
     for object in objects {
+        // Per tobj vertex first: a position is hashed once per vertex, not once per corner.
+        let mut at_vertex = vec![Vec3::ZERO; object.vertices()];
         for triangle in object.triangles() {
             let [a, b, c] = triangle.map(|i| object.position(i));
             let weighted = (b - a).cross(c - a);
-            for p in [a, b, c] {
-                *sums.entry(key(p)).or_default() += weighted;
+            for i in triangle {
+                at_vertex[i as usize] += weighted;
             }
         }
+        for (i, sum) in at_vertex.into_iter().enumerate() {
+            *sums.entry(key(object.position(i as u32))).or_default() += sum;
+        }
     }
-    sums.into_iter()
-        .filter_map(|(key, sum)| Some((key, sum.try_normalize()?)))
-        .collect()
+    for sum in sums.values_mut() {
+        *sum = sum.try_normalize().unwrap_or(Vec3::Z);
+    }
+    sums
 }
