@@ -1,7 +1,7 @@
-//! The Wavefront `.obj` loader (our parser, the line reader it falls back on, normals and
-//! indexing), fed exactly as the app feeds it a file: any bytes, made UTF-8 with
-//! `from_utf8_lossy`, then `parse_obj`. It must never panic, a mesh it accepts must be whole,
-//! and `\r\n` line ends must not change the outcome.
+//! The Wavefront `.obj` loader (the line checks, tobj, smooth normals, the mesh builder), fed
+//! exactly as the app feeds it a file: any bytes, made UTF-8 with `from_utf8_lossy`, then
+//! `parse_obj`. It must never panic, a mesh it accepts must be whole, and `\r\n` line ends
+//! must not change the outcome.
 #![no_main]
 
 use libfuzzer_sys::fuzz_target;

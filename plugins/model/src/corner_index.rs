@@ -1,8 +1,7 @@
-//! The mesh builder's index of corners (and the OBJ loader's of distinct positions):
-//! a 64-bit fingerprint of each corner → the first vertex with that fingerprint, in 8 bytes a
-//! slot (a 32-bit tag of the fingerprint and the vertex), half what a `HashMap<u64, u32>` takes,
-//! because it is the largest thing a big load holds besides the mesh. Open addressing with
-//! linear probing, at most 3/4 full.
+//! The mesh builder's index of corners: a 64-bit fingerprint of each corner → the first vertex
+//! with that fingerprint, in 8 bytes a slot (a 32-bit tag of the fingerprint and the vertex),
+//! half what a `HashMap<u64, u32>` takes, because it is the largest thing a big load holds
+//! besides the mesh. Open addressing with linear probing, at most 3/4 full.
 
 /// An empty slot.
 const EMPTY: u64 = u64::MAX;

@@ -1,5 +1,5 @@
 //! The model plugin. It owns turning a `ModelSource` into a `Mesh`: the course's `.in` triangle
-//! files (every variant the README's Models section lists), Wavefront `.obj` files (our parser),
+//! files (every variant the README's Models section lists), Wavefront `.obj` files (through tobj),
 //! and the shading lecture's primitives (box, sphere, torus, cone, cylinder) with exact normals.
 //! Its system reads and takes the `ModelRequest` resource, reads `PrimitiveParams`, replaces the
 //! one `Mesh` component (spawning it if there is none) and writes `ModelStatus`. A load that
@@ -95,11 +95,11 @@ pub(crate) fn load_file(path: &Path, progress: &LoadProgress) -> Result<LoadedMo
         })
     };
     let size = open_file()?.len().map_err(cannot_read)?;
-    // Either file is read once (a `.in` file's header twice); one with an error again, line by
-    // line (see `obj::read_obj` and `in_format::read_in`), which the bar does not foresee.
+    // An OBJ file is read once; a `.in` file too (its header twice), one with an error again,
+    // line by line (see `in_format::read_in`), which the bar does not foresee.
     progress.set_total(size);
     let label = label.as_str();
-    // Opened again for each read: a file with an error is read a second time, line by line.
+    // Opened again for each read: a `.in` file with an error is read a second time.
     let open = || {
         Ok(Counted {
             inner: open_file()?,
@@ -107,7 +107,7 @@ pub(crate) fn load_file(path: &Path, progress: &LoadProgress) -> Result<LoadedMo
         })
     };
     if obj {
-        obj::read_obj(open, label)
+        obj::read_obj(open()?, label)
     } else {
         in_format::read_in(open, size, label)
     }

@@ -1,8 +1,6 @@
 //! The words of a model file's lines as `str::split_whitespace` sees them, read from the bytes
 //! without making a `str` of each line first.
 
-use std::str::SplitWhitespace;
-
 /// The ASCII bytes `char::is_whitespace` takes for space, as `str::trim` and
 /// `str::split_whitespace` do in the line readers.
 pub(crate) fn is_space(b: u8) -> bool {
@@ -36,48 +34,14 @@ impl<'t> Iterator for Words<'t> {
     }
 }
 
-/// The words of one line, whatever its characters: split byte by byte when the line is ASCII
-/// (nearly always), by `str::split_whitespace` otherwise, whose idea of a space (U+00A0, U+2003,
-/// ...) the bytes alone do not give.
-pub(crate) enum LineWords<'l> {
-    Ascii(Words<'l>),
-    Unicode(SplitWhitespace<'l>),
-}
-
-impl<'l> LineWords<'l> {
-    pub(crate) fn new(line: &'l str) -> Self {
-        if line.is_ascii() {
-            LineWords::Ascii(Words(line.as_bytes()))
-        } else {
-            LineWords::Unicode(line.split_whitespace())
-        }
-    }
-}
-
-impl<'l> Iterator for LineWords<'l> {
-    type Item = &'l [u8];
-
-    fn next(&mut self) -> Option<&'l [u8]> {
-        match self {
-            LineWords::Ascii(words) => words.next(),
-            LineWords::Unicode(words) => words.next().map(str::as_bytes),
-        }
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
 
     #[test]
     fn words_are_split_as_split_whitespace_splits_them() {
-        for line in [
-            "",
-            "  ",
-            "v 1\t2 \x0b3\r",
-            "v\u{a0}1\u{2003}2 caf\u{e9} \u{fffd}",
-        ] {
-            let ours: Vec<&[u8]> = LineWords::new(line).collect();
+        for line in ["", "  ", "v 1\t2 \x0b3\r"] {
+            let ours: Vec<&[u8]> = Words(line.as_bytes()).collect();
             let std: Vec<&[u8]> = line.split_whitespace().map(str::as_bytes).collect();
             assert_eq!(ours, std, "{line:?}");
         }
