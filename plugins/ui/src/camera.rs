@@ -1,10 +1,12 @@
 use bevy_ecs::prelude::*;
+use close2gl_camera::motion::{zoom, zoom_factor};
 use close2gl_core::limits::{FOV_RANGE, MOVE_SPEED_RANGE, ROTATE_SPEED_RANGE};
 use close2gl_core::{Camera, CameraAction, CameraActions, CameraMode, CameraSpeeds};
 
 use crate::state::PanelState;
 
-/// Mode, hfov and vfov (locked together or not), near, far, speeds, and reset.
+/// Mode, hfov and vfov (locked together, they zoom as the scroll wheel does), near, far, speeds,
+/// and reset.
 pub fn section(
     InMut(ui): InMut<egui::Ui>,
     mut cameras: Query<&mut Camera>,
@@ -61,11 +63,14 @@ fn lens(ui: &mut egui::Ui, camera: &mut Camera, lock: &mut bool) {
     for (fov, name) in [(&mut camera.hfov, "hfov"), (&mut camera.vfov, "vfov")] {
         ui.add(egui::Slider::new(fov, FOV_RANGE).text(name).suffix("°"));
     }
-    if *lock {
-        // The one that moved drags the other by the same number of degrees.
-        let delta = (camera.hfov - before.0) + (camera.vfov - before.1);
-        camera.hfov = (before.0 + delta).clamp(*FOV_RANGE.start(), *FOV_RANGE.end());
-        camera.vfov = (before.1 + delta).clamp(*FOV_RANGE.start(), *FOV_RANGE.end());
+    let (from, to) = match camera.hfov != before.0 {
+        true => (before.0, camera.hfov),
+        false => (before.1, camera.vfov),
+    };
+    if *lock && from != to {
+        // The one that moved zooms both, by the camera's one zoom rule (the scroll wheel's).
+        (camera.hfov, camera.vfov) = before;
+        zoom(camera, zoom_factor(from, to));
     }
     // Speeds proportional to the value: the planes range from 1e-4 to 1e6 between models.
     let (near, far) = (camera.near, camera.far);

@@ -99,11 +99,18 @@ fn fields_of_view_change_alone_or_together() {
     h.click(Role::CheckBox, "Lock hfov and vfov");
     h.set_value(Role::Slider, "vfov", 70.0);
     let camera = h.camera();
-    assert_eq!(
-        (camera.hfov, camera.vfov),
-        (100.0, 70.0),
-        "locked: both move by 10°"
+    // Locked, they zoom as the scroll wheel does: tan(fov/2) of both scaled by the same factor,
+    // so hfov moves by more degrees than vfov's 10, and the image keeps its aspect.
+    let half_tan = |fov: f32| (fov.to_radians() / 2.0).tan();
+    assert!((camera.vfov - 70.0).abs() < 1e-3, "vfov {}", camera.vfov);
+    assert!(
+        (half_tan(camera.hfov) / half_tan(camera.vfov) - half_tan(90.0) / half_tan(60.0)).abs()
+            < 1e-5,
+        "locked: the aspect stays ({}, {})",
+        camera.hfov,
+        camera.vfov
     );
+    assert!(camera.hfov > 100.5, "hfov {}", camera.hfov);
     h.click(Role::CheckBox, "Backface culling");
     assert_ne!(
         h.world().resource::<Close2glFrame>().vertices,
