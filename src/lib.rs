@@ -38,8 +38,8 @@ pub use close2gl_raster as raster;
 
 use close2gl_core::bevy_ecs::world::World;
 use close2gl_core::{
-    App, Camera, CommandLine, Framing, ModelRequest, ModelStatus, Plugin, SettingsPlugin,
-    TextureRequest, Viewport,
+    App, Camera, CommandLine, ModelRequest, ModelStatus, Plugin, SettingsPlugin, TextureRequest,
+    Viewport,
 };
 
 use config::Config;
@@ -76,12 +76,9 @@ pub fn build_app(config: &Config, viewport: Viewport) -> Result<App, String> {
         .insert_resource(ModelRequest(Some(config.model.clone())))
         .insert_resource(TextureRequest(config.texture.clone()))
         .add_plugins(DefaultPlugins);
-    app.world_mut().spawn(Camera {
-        hfov: config.camera.hfov,
-        vfov: config.camera.vfov,
-        mode: config.camera.mode,
-        ..Camera::default()
-    });
+    let mut camera = Camera::default();
+    config.camera.set_lens(&mut camera);
+    app.world_mut().spawn(camera);
     app.update();
     wait_for_model(&mut app);
     match &app.world().resource::<ModelStatus>().error {
@@ -99,11 +96,7 @@ pub fn apply_settings(world: &mut World, config: &Config) {
     world.insert_resource(config.primitives);
     world.insert_resource(config.outside);
     world.insert_resource(config.input.clone());
-    world.insert_resource(Framing {
-        pose: config.camera.pose(),
-        near: config.camera.near,
-        far: config.camera.far,
-    });
+    world.insert_resource(config.camera.framing());
 }
 
 /// Runs frames until a model loading in the background is in, showing its progress.

@@ -10,8 +10,8 @@ use close2gl_core::{
     Texture, Viewport,
 };
 
-use super::Config;
 use super::keys::{absolute, pixel_overrides};
+use super::{CameraConfig, Config};
 
 /// What the world shows now, as a configuration (the pose pinned, near and far too); `None`
 /// before a model and a camera exist.
@@ -35,11 +35,7 @@ pub fn of_world(world: &mut World) -> Option<Config> {
             .unwrap_or_default(),
         ..Config::default()
     };
-    let camera = &mut config.camera;
-    (camera.position, camera.target) = (Some(c.position), Some(c.target));
-    (camera.u, camera.v, camera.n) = (Some(c.u), Some(c.v), Some(c.n));
-    (camera.hfov, camera.vfov) = (c.hfov, c.vfov);
-    (camera.near, camera.far) = (Some(c.near), Some(c.far));
+    config.camera = CameraConfig::pinning(&c);
     Some(config)
 }
 
