@@ -38,14 +38,14 @@ pub use close2gl_raster as raster;
 
 use close2gl_core::bevy_ecs::world::World;
 use close2gl_core::{
-    App, Camera, CommandLine, ModelRequest, ModelStatus, Plugin, SettingsPlugin, TextureRequest,
-    Viewport,
+    App, Camera, ModelRequest, ModelStatus, Plugin, SettingsPlugin, TextureRequest, Viewport,
 };
 
 use config::Config;
 
 /// Everything headless: the shared settings, model loading, the camera, input mapping, the
-/// Close2GL pipeline and its software rasterizer, and a program's trace shown in its place. The GPU renderers and the windows are added on
+/// Close2GL pipeline and its software rasterizer, a program's trace shown in its place, and the
+/// copied command's writer (`config::command`). The GPU renderers and the windows are added on
 /// top by the commands that need them. A plugin already in the app is not added again, so an app
 /// may add one of these by hand first.
 pub struct DefaultPlugins;
@@ -58,7 +58,8 @@ impl Plugin for DefaultPlugins {
             .add_plugin_once(close2gl_input::InputPlugin)
             .add_plugin_once(close2gl_pipeline::Close2glPlugin)
             .add_plugin_once(close2gl_raster::RasterPlugin)
-            .add_plugin_once(close2gl_trace::view::TracePlugin);
+            .add_plugin_once(close2gl_trace::view::TracePlugin)
+            .add_plugin_once(config::command::CommandPlugin);
     }
 }
 
@@ -72,7 +73,6 @@ pub fn build_app(config: &Config, viewport: Viewport) -> Result<App, String> {
     apply_settings(app.world_mut(), config);
     app.insert_resource(config.camera.speeds)
         .insert_resource(viewport)
-        .insert_resource(CommandLine(config::command::of_world_command))
         .insert_resource(ModelRequest(Some(config.model.clone())))
         .insert_resource(TextureRequest(config.texture.clone()))
         .add_plugins(DefaultPlugins);

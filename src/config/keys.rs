@@ -16,7 +16,7 @@ use super::Config;
 
 /// One key of the configuration: where it lands in [`Config`] and how its value is checked (the
 /// file and `--set` read it through [`set`]), and, for the keys that decide the views' pixels, how
-/// the copied `close2gl render` command writes it back ([`pixel_overrides`]). One table, so that
+/// the copied `close2gl render` command writes it back ([`pixel_keys`]). One table, so that
 /// reading and writing cannot drift apart.
 pub struct Key {
     pub section: &'static str,
@@ -187,10 +187,12 @@ pub fn set(
     (row.read)(config, value, base)
 }
 
-/// `section.key=value` for every key that decides the views' pixels: the pose and the lens
-/// always, the rest where they differ from the defaults; the primitives' sizes only for a
-/// primitive's own view.
-pub fn pixel_overrides(config: &Config) -> Vec<String> {
+/// Every key that decides the views' pixels with its value as the configuration reads it
+/// (`("camera.hfov", "60.0")`), in the table's order: the pose and the lens always, the rest where
+/// they differ from the defaults; the primitives' sizes only for a primitive's own view. The model
+/// is not among them: it is the command's argument. Copy as command writes each as
+/// `--set key=value`.
+pub fn pixel_keys(config: &Config) -> Vec<(String, String)> {
     let default = Config::default();
     let primitive = matches!(config.model, ModelSource::Primitive(_));
     KEYS.iter()
@@ -201,7 +203,7 @@ pub fn pixel_overrides(config: &Config) -> Vec<String> {
                 Always(write) => write(config),
                 IfChanged(write) => write(config).filter(|v| Some(v) != write(&default).as_ref()),
             }?;
-            Some(format!("{}.{}={value}", k.section, k.name))
+            Some((format!("{}.{}", k.section, k.name), value))
         })
         .collect()
 }
