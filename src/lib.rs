@@ -41,14 +41,14 @@ pub use close2gl_raster as raster;
 
 use close2gl_core::bevy_ecs::world::World;
 use close2gl_core::{
-    App, Camera, CommandLine, Framing, ModelRequest, ModelStatus, Plugin, SettingsPlugin,
-    TextureRequest, Viewport,
+    App, Camera, ModelRequest, ModelStatus, Plugin, SettingsPlugin, TextureRequest, Viewport,
 };
 
 use config::Config;
 
 /// Everything headless: the shared settings, model loading, the camera, input mapping, the
-/// Close2GL pipeline and its software rasterizer, and a program's trace shown in its place. The GPU renderers and the windows are added on
+/// Close2GL pipeline and its software rasterizer, a program's trace shown in its place, and the
+/// copied command's writer (`config::command`). The GPU renderers and the windows are added on
 /// top by the commands that need them. A plugin already in the app is not added again, so an app
 /// may add one of these by hand first.
 pub struct DefaultPlugins;
@@ -61,7 +61,8 @@ impl Plugin for DefaultPlugins {
             .add_plugin_once(close2gl_input::InputPlugin)
             .add_plugin_once(close2gl_pipeline::Close2glPlugin)
             .add_plugin_once(close2gl_raster::RasterPlugin)
-            .add_plugin_once(close2gl_trace::view::TracePlugin);
+            .add_plugin_once(close2gl_trace::view::TracePlugin)
+            .add_plugin_once(config::command::CommandPlugin);
     }
 }
 
@@ -75,16 +76,12 @@ pub fn build_app(config: &Config, viewport: Viewport) -> Result<App, String> {
     apply_settings(app.world_mut(), config);
     app.insert_resource(config.camera.speeds)
         .insert_resource(viewport)
-        .insert_resource(CommandLine(config::command::of_world_command))
         .insert_resource(ModelRequest(Some(config.model.clone())))
         .insert_resource(TextureRequest(config.texture.clone()))
         .add_plugins(DefaultPlugins);
-    app.world_mut().spawn(Camera {
-        hfov: config.camera.hfov,
-        vfov: config.camera.vfov,
-        mode: config.camera.mode,
-        ..Camera::default()
-    });
+    let mut camera = Camera::default();
+    config.camera.set_lens(&mut camera);
+    app.world_mut().spawn(camera);
     app.update();
     wait_for_model(&mut app);
     match &app.world().resource::<ModelStatus>().error {
@@ -102,11 +99,7 @@ pub fn apply_settings(world: &mut World, config: &Config) {
     world.insert_resource(config.primitives);
     world.insert_resource(config.outside);
     world.insert_resource(config.input.clone());
-    world.insert_resource(Framing {
-        pose: config.camera.pose(),
-        near: config.camera.near,
-        far: config.camera.far,
-    });
+    world.insert_resource(config.camera.framing());
 }
 
 /// Runs frames until a model loading in the background is in, showing its progress.

@@ -231,11 +231,7 @@ fn reload_config(world: &mut World) {
     });
     let mut cameras = world.query::<&mut Camera>();
     for mut camera in cameras.iter_mut(world) {
-        camera.hfov = config.camera.hfov;
-        camera.vfov = config.camera.vfov;
-        camera.mode = config.camera.mode;
-        camera.near = config.camera.near.unwrap_or(camera.near);
-        camera.far = config.camera.far.unwrap_or(camera.far);
+        config.camera.set_lens(&mut camera);
     }
     if model_changed || primitive_changed {
         world.resource_mut::<KeepPose>().0 = !model_changed;

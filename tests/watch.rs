@@ -183,6 +183,29 @@ fn a_saved_config_applies_its_settings_and_a_broken_one_changes_nothing() {
     );
 }
 
+/// A saved config's lens reaches the camera by the mapping the app starts with
+/// (`CameraConfig::set_lens`): both fields of view, and a pinned near beyond the camera's far
+/// moves far past it; the pose stays.
+#[test]
+fn a_saved_configs_lens_reaches_the_camera_and_its_pose_stays() {
+    let files = Files::new("lens");
+    let mut app = files.app();
+    let before = camera(&mut app);
+    let near = before.far * 2.0;
+    let text = format!(
+        "[model]\npath = \"tetra.in\"\n[render]\nmode = \"wireframe\"\n\
+         [camera]\nhfov = 45.0\nvfov = 30.0\nnear = {near:?}\n"
+    );
+    write(&files.config, &text);
+    frames_until(&mut app, "the saved config", |app| {
+        app.world().resource::<RenderSettings>().mode == RenderMode::Wireframe
+    });
+    let after = camera(&mut app);
+    assert_eq!((after.hfov, after.vfov, after.near), (45.0, 30.0, near));
+    assert!(after.far > after.near, "far {} before near", after.far);
+    assert_eq!(after.position, before.position, "the pose stays");
+}
+
 /// A trace shown with --watch is read again when the program writes it again: its new camera
 /// and check's new report replace the old; a half-written or broken trace shows its error and
 /// the last good one stays.

@@ -1,17 +1,28 @@
-//! "Copy as command": the `close2gl render` line that reproduces what the views show, headless.
-//! It is written from the same key table the configuration is read with ([`super::keys::KEYS`]):
+//! "Copy as command": the `close2gl render` line that reproduces what the views show, headless;
+//! [`CommandPlugin`] makes it the app's `CommandLine`, which the panel's Copy as command and the
+//! screenshot key call. It is written from the same key table the configuration is read with
+//! ([`super::keys::KEYS`], its pairs from [`pixel_keys`]):
 //! the pose as position, target and the camera's own u, v, n, every number so that it reads back
 //! to the same bits (the command's images are the views' pixels, not an approximation of them),
 //! and the other settings only where they differ from the defaults, so the line stays readable.
 
 use close2gl_core::bevy_ecs::world::World;
 use close2gl_core::{
-    Camera, Lighting, ModelSource, ModelStatus, OutsideView, PrimitiveParams, RenderSettings,
-    Texture, Viewport,
+    App, Camera, CommandLine, Lighting, ModelSource, ModelStatus, OutsideView, Plugin,
+    PrimitiveParams, RenderSettings, Texture, Viewport,
 };
 
-use super::Config;
-use super::keys::{absolute, pixel_overrides};
+use super::keys::{absolute, pixel_keys};
+use super::{CameraConfig, Config};
+
+/// Puts [`of_world_command`] in the app as its `CommandLine`.
+pub struct CommandPlugin;
+
+impl Plugin for CommandPlugin {
+    fn build(&self, app: &mut App) {
+        app.insert_resource(CommandLine(of_world_command));
+    }
+}
 
 /// What the world shows now, as a configuration (the pose pinned, near and far too); `None`
 /// before a model and a camera exist.
@@ -35,11 +46,7 @@ pub fn of_world(world: &mut World) -> Option<Config> {
             .unwrap_or_default(),
         ..Config::default()
     };
-    let camera = &mut config.camera;
-    (camera.position, camera.target) = (Some(c.position), Some(c.target));
-    (camera.u, camera.v, camera.n) = (Some(c.u), Some(c.v), Some(c.n));
-    (camera.hfov, camera.vfov) = (c.hfov, c.vfov);
-    (camera.near, camera.far) = (Some(c.near), Some(c.far));
+    config.camera = CameraConfig::pinning(&c);
     Some(config)
 }
 
@@ -51,8 +58,8 @@ pub fn args(config: &Config, size: Viewport, out: &str) -> Vec<String> {
     };
     let size = format!("{}x{}", size.width, size.height);
     let mut args = vec!["render".into(), model, "--size".into(), size];
-    for set in pixel_overrides(config) {
-        args.extend(["--set".into(), set]);
+    for (key, value) in pixel_keys(config) {
+        args.extend(["--set".into(), format!("{key}={value}")]);
     }
     args.extend(["--out".into(), out.into()]);
     args
@@ -68,7 +75,8 @@ pub fn command(config: &Config, size: Viewport, out: &str) -> String {
     line
 }
 
-/// The command for what `world` shows (the app's `CommandLine`); `None` before anything shows.
+/// The command for what `world` shows, writing its images to `out` (the app's `CommandLine`);
+/// `None` before anything shows.
 pub fn of_world_command(world: &mut World, out: &str) -> Option<String> {
     let size = *world.get_resource::<Viewport>()?;
     of_world(world).map(|config| command(&config, size, out))
@@ -212,6 +220,49 @@ mod tests {
                 "the command lacks {name}: {back:?}"
             );
         }
+    }
+
+    /// The pairs a link would carry too: the table's keys in the table's order, their values as
+    /// the configuration reads them, which the command writes as `--set key=value`.
+    #[test]
+    fn the_pixel_keys_are_the_tables_in_its_order() {
+        let pairs = pixel_keys(&torus());
+        assert_eq!(
+            pairs[0],
+            ("camera.position".to_string(), "[0.0,0.0,5.0]".to_string())
+        );
+        let table: Vec<String> = KEYS
+            .iter()
+            .map(|k| format!("{}.{}", k.section, k.name))
+            .collect();
+        let places: Vec<usize> = pairs
+            .iter()
+            .map(|(key, _)| {
+                table
+                    .iter()
+                    .position(|k| k == key)
+                    .expect("a key of the table")
+            })
+            .collect();
+        assert!(places.is_sorted(), "{pairs:?}");
+        let words = args(&torus(), SIZE, "out");
+        for (key, value) in &pairs {
+            assert!(
+                words.contains(&format!("{key}={value}")),
+                "{key} in {words:?}"
+            );
+        }
+    }
+
+    #[test]
+    fn the_default_plugins_give_the_app_its_command_writer() {
+        let mut app = App::new();
+        app.add_plugins(crate::DefaultPlugins);
+        let write = app.world().get_resource::<CommandLine>().map(|c| c.0);
+        assert!(
+            write.is_some_and(|write| write(app.world_mut(), "out").is_none()),
+            "no model shown yet, nothing to write"
+        );
     }
 
     #[test]

@@ -16,7 +16,7 @@ use super::Config;
 
 /// One key of the configuration: where it lands in [`Config`] and how its value is checked (the
 /// file and `--set` read it through [`set`]), and, for the keys that decide the views' pixels, how
-/// the copied `close2gl render` command writes it back ([`pixel_overrides`]). One table, so that
+/// the copied `close2gl render` command writes it back ([`pixel_keys`]). One table, so that
 /// reading and writing cannot drift apart.
 pub struct Key {
     pub section: &'static str,
@@ -187,16 +187,18 @@ pub fn set(
     (row.read)(config, value, base)
 }
 
-/// `section.key=value` for every key that decides the views' pixels: the pose and the lens
-/// always, the rest where they differ from the defaults; the primitives' sizes only for a
-/// primitive's own view.
-pub fn pixel_overrides(config: &Config) -> Vec<String> {
-    pixel_overrides_from(config, &Config::default())
+/// Every key that decides the views' pixels with its value as the configuration reads it
+/// (`("camera.hfov", "60.0")`), in the table's order: the pose and the lens always, the rest where
+/// they differ from the defaults; the primitives' sizes only for a primitive's own view. The model
+/// is not among them: it is the command's argument. Copy as command writes each as
+/// `--set key=value`.
+pub fn pixel_keys(config: &Config) -> Vec<(String, String)> {
+    pixel_keys_from(config, &Config::default())
 }
 
-/// [`pixel_overrides`] against `base` instead of the defaults: what `--set` must change of
-/// `base` to show `config` (the web page's link, whose base is its `config.toml`).
-pub fn pixel_overrides_from(config: &Config, base: &Config) -> Vec<String> {
+/// [`pixel_keys`] against `base` instead of the defaults: what `--set` must change of `base` to
+/// show `config` (the web page's link, whose base is its `config.toml`).
+pub fn pixel_keys_from(config: &Config, base: &Config) -> Vec<(String, String)> {
     let default = base;
     let primitive = matches!(config.model, ModelSource::Primitive(_));
     KEYS.iter()
@@ -207,7 +209,7 @@ pub fn pixel_overrides_from(config: &Config, base: &Config) -> Vec<String> {
                 Always(write) => write(config),
                 IfChanged(write) => write(config).filter(|v| Some(v) != write(default).as_ref()),
             }?;
-            Some(format!("{}.{}={value}", k.section, k.name))
+            Some((format!("{}.{}", k.section, k.name), value))
         })
         .collect()
 }

@@ -1,6 +1,7 @@
 //! The TOML configuration: every setting with its default, read from a file and then from
 //! `--set section.key=value` overrides, each key checked for type and range as it is set.
 
+mod camera;
 pub mod command;
 pub mod keys;
 mod load;
@@ -11,14 +12,15 @@ pub use close2gl_core::Layout;
 use close2gl_core::glam::Vec3;
 use close2gl_core::limits::DEFAULT_FOV;
 use close2gl_core::{
-    CameraMode, CameraSpeeds, InputBindings, Lighting, ModelSource, OutsideView, Pose,
-    PrimitiveParams, RenderSettings,
+    CameraMode, CameraSpeeds, InputBindings, Lighting, ModelSource, OutsideView, PrimitiveParams,
+    RenderSettings,
 };
 
 pub use keys::parse_stage;
 pub use load::{file_to_read, load, load_text, parse_size};
 
-/// `[camera]`: the optional pose and the lens; near and far follow the model unless pinned.
+/// `[camera]`: the optional pose and the lens; near and far follow the model unless pinned. How
+/// it reaches the app's `Camera`, and how a camera is written back as one: `camera.rs`.
 #[derive(Clone, Debug, PartialEq)]
 pub struct CameraConfig {
     pub position: Option<Vec3>,
@@ -93,24 +95,6 @@ impl Default for Config {
             input: InputBindings::default(),
             outside: OutsideView::default(),
         }
-    }
-}
-
-impl CameraConfig {
-    /// The explicit pose, when the config gives a position (the target defaults to the origin);
-    /// when absent the camera frames the model.
-    pub fn pose(&self) -> Option<Pose> {
-        self.position.map(|position| Pose {
-            position,
-            target: self.target.unwrap_or(Vec3::ZERO),
-            up: self.up,
-            basis: self.basis(),
-        })
-    }
-
-    /// u, v, n when all three are given.
-    pub fn basis(&self) -> Option<[Vec3; 3]> {
-        Some([self.u?, self.v?, self.n?])
     }
 }
 

@@ -56,7 +56,7 @@ pub fn frame(centre: Vec3, radius: f32, lens: &Camera, framing: &Framing) -> Cam
 }
 
 /// Config-pinned near/far win; the other one is moved if it would cross the pinned one.
-fn pin_clipping_planes(camera: &mut Camera, framing: &Framing) {
+pub fn pin_clipping_planes(camera: &mut Camera, framing: &Framing) {
     match (framing.near, framing.far) {
         (Some(near), Some(far)) => (camera.near, camera.far) = (near, far),
         (Some(near), None) => (camera.near, camera.far) = (near, camera.far.max(near * 100.0)),

@@ -79,18 +79,64 @@ fn approach(camera: &mut Camera, n: f32) {
     camera.position = camera.target + camera.n * distance;
 }
 
-/// Scales tan(fov/2) of both fields of view, so their ratio (the image's aspect) is kept.
-fn zoom(camera: &mut Camera, factor: f32) {
+/// The zoom rule, the one every zoom follows (the scroll wheel's `CameraAction::Zoom`, the
+/// panel's locked fields of view): scales tan(fov/2) of both fields of view by `factor`, so that
+/// their ratio (the image's aspect) is kept. A zoom that would take either out of `FOV_RANGE` is
+/// not made.
+pub fn zoom(camera: &mut Camera, factor: f32) {
     if !(factor.is_finite() && factor > 0.0) {
         return;
     }
-    let scaled = |fov: f32| {
-        2.0 * ((fov.to_radians() * 0.5).tan() * factor)
-            .atan()
-            .to_degrees()
-    };
+    let scaled = |fov: f32| 2.0 * (half_tan(fov) * factor).atan().to_degrees();
     let (h, v) = (scaled(camera.hfov), scaled(camera.vfov));
     if FOV_RANGE.contains(&h) && FOV_RANGE.contains(&v) {
         (camera.hfov, camera.vfov) = (h, v);
+    }
+}
+
+/// The [`zoom`] factor that takes a field of view from `from` to `to` degrees.
+pub fn zoom_factor(from: f32, to: f32) -> f32 {
+    half_tan(to) / half_tan(from)
+}
+
+/// tan(fov/2), `fov` in degrees: what a zoom scales.
+fn half_tan(fov: f32) -> f32 {
+    (fov.to_radians() * 0.5).tan()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn lens(hfov: f32, vfov: f32) -> Camera {
+        Camera {
+            hfov,
+            vfov,
+            ..Camera::default()
+        }
+    }
+
+    #[test]
+    fn a_zoom_to_a_field_of_view_lands_on_it_and_keeps_the_aspect() {
+        let mut camera = lens(90.0, 60.0);
+        zoom(&mut camera, zoom_factor(60.0, 70.0));
+        assert!((camera.vfov - 70.0).abs() < 1e-4, "vfov {}", camera.vfov);
+        let aspect = half_tan(camera.hfov) / half_tan(camera.vfov);
+        assert!((aspect - half_tan(90.0) / half_tan(60.0)).abs() < 1e-5);
+        assert!(
+            camera.hfov > 100.5,
+            "more than the 10 degrees of vfov: {}",
+            camera.hfov
+        );
+    }
+
+    #[test]
+    fn a_zoom_that_would_leave_the_range_is_not_made() {
+        let mut camera = lens(165.0, 60.0);
+        zoom(&mut camera, zoom_factor(60.0, 90.0));
+        assert_eq!((camera.hfov, camera.vfov), (165.0, 60.0));
+        zoom(&mut camera, f32::NAN);
+        zoom(&mut camera, 0.0);
+        assert_eq!((camera.hfov, camera.vfov), (165.0, 60.0));
     }
 }

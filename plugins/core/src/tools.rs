@@ -24,9 +24,10 @@ pub struct ToolRequests {
 #[derive(Resource, Clone, Debug, Default, PartialEq)]
 pub struct PageLink(pub String);
 
-/// How the views are written as a `close2gl render` command (copy as command, the screenshot
-/// key): the configuration's own writer, from the same key table the configuration is read with
-/// (`close2gl::config::command`), which the app builder gives. `None` before anything shows.
+/// How the views are written as a `close2gl render` command writing its images to the directory
+/// given (copy as command, the screenshot key). Written in `src/config/command.rs`
+/// (`close2gl::config::command`, whose `CommandPlugin` inserts it), from the same key table the
+/// configuration is read with. `None` before anything shows.
 #[derive(Resource, Clone, Copy)]
 pub struct CommandLine(pub fn(&mut World, &str) -> Option<String>);
 

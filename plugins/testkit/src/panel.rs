@@ -6,8 +6,9 @@ use close2gl_core::bevy_ecs::prelude::*;
 use close2gl_core::glam::Vec3;
 use close2gl_core::{
     App, Camera, CameraActions, CameraSpeeds, Mesh, ModelRequest, ModelSource, ModelStatus,
-    SettingsPlugin, Viewport,
+    SettingsPlugin, TextureRequest, ToolRequests, Viewport,
 };
+use close2gl_ui::{PanelInput, PanelOutput};
 use egui::accesskit::{Action, ActionData, ActionRequest, Node, NodeId, Role, TreeId};
 
 /// Re-exported for the tests that name widgets' roles and send events.
@@ -17,11 +18,13 @@ pub struct Harness {
     pub ctx: egui::Context,
     pub app: App,
     nodes: Vec<(NodeId, Node)>,
-    /// What the panel left for the views, in points.
-    pub views: egui::Rect,
 }
 
 impl Harness {
+    /// The window the panel is shown in, in points.
+    pub const SCREEN: egui::Rect =
+        egui::Rect::from_min_max(egui::Pos2::ZERO, egui::pos2(1280.0, 2400.0));
+
     /// One triangle 5 units in front of the default camera, wound clockwise as seen from it: a
     /// back face, culled while backface culling is on.
     pub fn new() -> Self {
@@ -33,6 +36,8 @@ impl Harness {
             .init_resource::<CameraActions>()
             .init_resource::<CameraSpeeds>()
             .init_resource::<ModelRequest>()
+            .init_resource::<TextureRequest>()
+            .init_resource::<ToolRequests>()
             .insert_resource(ModelStatus {
                 source: Some(ModelSource::File("models/tri.in".into())),
                 generation: 1,
@@ -62,37 +67,36 @@ impl Harness {
             ctx,
             app,
             nodes: Vec::new(),
-            views: egui::Rect::NOTHING,
         };
         harness.frame(Vec::new());
         harness
     }
 
-    /// One panel frame with `events`, then one app frame, as the viewer does.
+    /// One app frame with `events` for the panel, which runs in it as in the viewer's (the split
+    /// layout's, both views beside the panel).
     pub fn frame(&mut self, events: Vec<egui::Event>) {
         let input = egui::RawInput {
-            screen_rect: Some(egui::Rect::from_min_size(
-                egui::Pos2::ZERO,
-                egui::vec2(1280.0, 2400.0),
-            )),
+            screen_rect: Some(Self::SCREEN),
             events,
             ..Default::default()
         };
-        let world = self.app.world_mut();
-        let mut views = egui::Rect::NOTHING;
-        let mut output = self.ctx.run_ui(input, |ui| {
-            views = close2gl_ui::show(ui, world);
-            close2gl_ui::over_views(ui, world, views, true);
+        self.app.insert_resource(PanelInput {
+            ctx: self.ctx.clone(),
+            raw: Some(input),
+            both_views: true,
         });
+        self.app.update();
+        let Some(PanelOutput(mut output)) = self.app.world_mut().remove_resource::<PanelOutput>()
+        else {
+            panic!("the panel did not run in the app's frame");
+        };
         // No renderer here to upload the font atlas to.
         output.textures_delta.clear();
-        self.views = views;
         self.nodes = output
             .platform_output
             .accesskit_update
             .map(|update| update.nodes)
             .unwrap_or_default();
-        self.app.update();
     }
 
     /// A node's own label, or else the text of the label beside it (`labelled_by`, as sliders).

@@ -1,52 +1,47 @@
 use bevy_ecs::prelude::*;
+use close2gl_camera::motion::{zoom, zoom_factor};
 use close2gl_core::limits::{FOV_RANGE, MOVE_SPEED_RANGE, ROTATE_SPEED_RANGE};
 use close2gl_core::{Camera, CameraAction, CameraActions, CameraMode, CameraSpeeds};
 
-use crate::PanelState;
+use crate::state::PanelState;
 
-/// Mode, hfov and vfov (locked together or not), near, far, speeds, and reset.
-pub fn section(ui: &mut egui::Ui, world: &mut World) {
-    let mut cameras = world.query::<&mut Camera>();
-    let Ok(camera) = cameras.single(world) else {
+/// Mode, hfov and vfov (locked together, they zoom as the scroll wheel does), near, far, speeds,
+/// and reset.
+pub fn section(
+    InMut(ui): InMut<egui::Ui>,
+    mut cameras: Query<&mut Camera>,
+    mut speeds: ResMut<CameraSpeeds>,
+    mut actions: ResMut<CameraActions>,
+    mut state: ResMut<PanelState>,
+) {
+    let Ok(mut camera) = cameras.single_mut() else {
         return;
     };
-    let original = *camera;
-    let mut edited = original;
-    lens(
-        ui,
-        &mut edited,
-        &mut world.resource_mut::<PanelState>().lock_fov,
-    );
-    if edited != original
-        && let Ok(mut camera) = cameras.single_mut(world)
-    {
-        *camera = edited;
-    }
+    let mut edited = *camera;
+    lens(ui, &mut edited, &mut state.lock_fov);
+    camera.set_if_neq(edited);
 
-    if let Some(mut speeds) = world.get_resource::<CameraSpeeds>().copied() {
-        ui.horizontal(|ui| {
-            ui.label("Move");
-            ui.add(
-                egui::DragValue::new(&mut speeds.move_speed)
-                    .speed(0.01)
-                    .range(MOVE_SPEED_RANGE)
-                    .suffix(" radii/s"),
-            );
-            ui.label("Rotate");
-            ui.add(
-                egui::DragValue::new(&mut speeds.rotate_speed)
-                    .speed(0.005)
-                    .range(ROTATE_SPEED_RANGE)
-                    .suffix(" °/px"),
-            );
-        });
-        crate::write_if_changed(world, &speeds);
-    }
+    let mut edited_speeds = *speeds;
+    ui.horizontal(|ui| {
+        ui.label("Move");
+        ui.add(
+            egui::DragValue::new(&mut edited_speeds.move_speed)
+                .speed(0.01)
+                .range(MOVE_SPEED_RANGE)
+                .suffix(" radii/s"),
+        );
+        ui.label("Rotate");
+        ui.add(
+            egui::DragValue::new(&mut edited_speeds.rotate_speed)
+                .speed(0.005)
+                .range(ROTATE_SPEED_RANGE)
+                .suffix(" °/px"),
+        );
+    });
+    speeds.set_if_neq(edited_speeds);
 
     ui.horizontal(|ui| {
-        if ui.button("Reset").clicked()
-            && let Some(mut actions) = world.get_resource_mut::<CameraActions>()
-        {
+        if ui.button("Reset").clicked() {
             actions.0.push(CameraAction::Reset);
         }
         ui.weak(format!(
@@ -68,11 +63,14 @@ fn lens(ui: &mut egui::Ui, camera: &mut Camera, lock: &mut bool) {
     for (fov, name) in [(&mut camera.hfov, "hfov"), (&mut camera.vfov, "vfov")] {
         ui.add(egui::Slider::new(fov, FOV_RANGE).text(name).suffix("°"));
     }
-    if *lock {
-        // The one that moved drags the other by the same number of degrees.
-        let delta = (camera.hfov - before.0) + (camera.vfov - before.1);
-        camera.hfov = (before.0 + delta).clamp(*FOV_RANGE.start(), *FOV_RANGE.end());
-        camera.vfov = (before.1 + delta).clamp(*FOV_RANGE.start(), *FOV_RANGE.end());
+    let (from, to) = match camera.hfov != before.0 {
+        true => (before.0, camera.hfov),
+        false => (before.1, camera.vfov),
+    };
+    if *lock && from != to {
+        // The one that moved zooms both, by the camera's one zoom rule (the scroll wheel's).
+        (camera.hfov, camera.vfov) = before;
+        zoom(camera, zoom_factor(from, to));
     }
     // Speeds proportional to the value: the planes range from 1e-4 to 1e6 between models.
     let (near, far) = (camera.near, camera.far);

@@ -6,39 +6,72 @@
 //! and projection, and their largest difference.
 
 use bevy_ecs::prelude::*;
+use bevy_ecs::system::SystemParam;
 use close2gl_core::glam::Mat4;
 use close2gl_core::{
-    Camera, ClipPlane, FateKind, Fates, Mesh, Overlay, RenderSettings, SelectedTriangle,
+    Camera, ClipPlane, FateKind, Fates, Mesh, Overlay, RenderSettings, Scene, SelectedTriangle,
     TriangleFate, Viewport, camera_matrices,
 };
 use close2gl_pipeline::journey::{Journey, journey};
 use close2gl_pipeline::matrices;
 
-use crate::PanelState;
 use crate::legend::{self, swatch};
+use crate::state::PanelState;
 
 mod probe;
 mod table;
 
 pub use probe::{ProbeAnswer, probe_window};
 
-pub fn section(ui: &mut egui::Ui, world: &mut World) {
-    overlay_switch(ui, world);
-    legends_switch(ui, world);
-    legend(ui, world);
-    probe::record(ui, world);
-    triangle(ui, world);
+/// What the inspector reads of the frame: the mesh and camera the pipeline drew, its viewport,
+/// and the fates it recorded.
+#[derive(SystemParam)]
+pub struct Frame<'w, 's> {
+    meshes: Query<'w, 's, &'static Mesh>,
+    cameras: Query<'w, 's, &'static Camera>,
+    viewport: Option<Res<'w, Viewport>>,
+    fates: Option<Res<'w, Fates>>,
+}
+
+pub fn section(
+    InMut(ui): InMut<egui::Ui>,
+    mut settings: ResMut<RenderSettings>,
+    mut state: ResMut<PanelState>,
+    mut selected: Option<ResMut<SelectedTriangle>>,
+    answer: Option<Res<ProbeAnswer>>,
+    frame: Frame,
+) {
+    overlay_switch(ui, &mut settings);
+    legends_switch(ui, &mut state);
+    match settings.overlay {
+        Overlay::Difference => difference_legend(ui),
+        _ => fates_legend(ui, frame.fates.as_deref()),
+    }
+    probe::record(ui, answer.as_deref());
+    let camera = frame.cameras.iter().next();
+    if let (Some(mesh), Some(camera), Some(selected)) =
+        (frame.meshes.iter().next(), camera, selected.as_mut())
+    {
+        let viewport = frame.viewport.as_deref().copied().unwrap_or_default();
+        let scene = Scene {
+            mesh,
+            camera,
+            settings: &settings,
+            viewport,
+        };
+        triangle(ui, scene, frame.fates.as_deref(), selected, &mut state);
+    }
     egui::CollapsingHeader::new("Matrices")
         .default_open(false)
         .show(ui, |ui| {
-            matrices_grid(ui, world);
+            if let (Some(camera), Some(viewport)) = (camera, frame.viewport.as_deref()) {
+                matrices_grid(ui, camera, *viewport);
+            }
         });
 }
 
-fn overlay_switch(ui: &mut egui::Ui, world: &mut World) {
-    let Some(mut settings) = world.get_resource::<RenderSettings>().copied() else {
-        return;
-    };
+fn overlay_switch(ui: &mut egui::Ui, current: &mut ResMut<RenderSettings>) {
+    let mut settings = **current;
     ui.horizontal(|ui| {
         ui.label("Overlay");
         for &overlay in Overlay::ALL {
@@ -52,14 +85,11 @@ fn overlay_switch(ui: &mut egui::Ui, world: &mut World) {
          and depth-test answers.\ndifference: Close2GL's view replaced by where the two views \
          differ (as `close2gl render` writes diff.png); Ctrl+click any pixel to probe it.",
     );
-    crate::write_if_changed(world, &settings);
+    current.set_if_neq(settings);
 }
 
 /// The legends in the views' corners, shown unless hidden here or by their own close button.
-fn legends_switch(ui: &mut egui::Ui, world: &mut World) {
-    let Some(mut state) = world.get_resource_mut::<PanelState>() else {
-        return;
-    };
+fn legends_switch(ui: &mut egui::Ui, state: &mut PanelState) {
     let mut shown = !state.hide_legends;
     if ui.checkbox(&mut shown, "Legends in the views").changed() {
         state.hide_legends = !shown;
@@ -68,14 +98,8 @@ fn legends_switch(ui: &mut egui::Ui, world: &mut World) {
 
 /// The two halves of the fate view's legend: Close2GL's fates with their counts, and what the
 /// GPU paints over the reference.
-fn legend(ui: &mut egui::Ui, world: &mut World) {
-    if world
-        .get_resource::<RenderSettings>()
-        .is_some_and(|s| s.overlay == Overlay::Difference)
-    {
-        return difference_legend(ui);
-    }
-    let Some(fates) = world.get_resource::<Fates>() else {
+fn fates_legend(ui: &mut egui::Ui, fates: Option<&Fates>) {
+    let Some(fates) = fates else {
         return;
     };
     if fates.triangles.is_empty() {
@@ -112,33 +136,32 @@ fn difference_legend(ui: &mut egui::Ui) {
 
 /// The picked triangle: its fate (as recorded, with the rasterizer's verdicts, else as the
 /// journey decides it) and its journey through the pipeline, every stage's numbers.
-fn triangle(ui: &mut egui::Ui, world: &mut World) {
-    let Some((mesh, camera)) = mesh_and_camera(world) else {
-        return;
-    };
-    let count = mesh.triangles.len();
+fn triangle(
+    ui: &mut egui::Ui,
+    scene: Scene,
+    fates: Option<&Fates>,
+    selected: &mut ResMut<SelectedTriangle>,
+    state: &mut PanelState,
+) {
+    let count = scene.mesh.triangles.len();
     if count == 0 {
         return;
     }
-    let Some(index) = pick_triangle(ui, world, count) else {
+    let Some(index) = pick_triangle(ui, selected, count) else {
         return;
     };
-    let settings = world
-        .get_resource::<RenderSettings>()
-        .copied()
-        .unwrap_or_default();
-    let viewport = world
-        .get_resource::<Viewport>()
-        .copied()
-        .unwrap_or_default();
-    let Some(journey) = journey(&mesh, index, &camera, &settings, viewport) else {
+    let Some(journey) = journey(
+        scene.mesh,
+        index,
+        scene.camera,
+        scene.settings,
+        scene.viewport,
+    ) else {
         return;
     };
-    let recorded = world
-        .get_resource::<Fates>()
-        .and_then(|f| f.of(index).copied());
+    let recorded = fates.and_then(|f| f.of(index).copied());
     fate_lines(ui, recorded.unwrap_or(journey.fate));
-    let wanted = std::mem::take(&mut world.resource_mut::<PanelState>().show_journey);
+    let wanted = std::mem::take(&mut state.show_journey);
     let shown = egui::CollapsingHeader::new("Journey")
         .default_open(true)
         .open(wanted.then_some(true))
@@ -150,11 +173,12 @@ fn triangle(ui: &mut egui::Ui, world: &mut World) {
 
 /// The selected triangle's index (dragged or typed; the probe selects too), with a button to
 /// select one when none is and to clear the selection (and its highlight in the views).
-fn pick_triangle(ui: &mut egui::Ui, world: &mut World, count: usize) -> Option<usize> {
-    let before = world
-        .get_resource::<SelectedTriangle>()?
-        .0
-        .map(|t| (t as usize).min(count - 1));
+fn pick_triangle(
+    ui: &mut egui::Ui,
+    selected: &mut ResMut<SelectedTriangle>,
+    count: usize,
+) -> Option<usize> {
+    let before = selected.0.map(|t| (t as usize).min(count - 1));
     let after = ui
         .horizontal(|ui| {
             let label = ui.label("Triangle");
@@ -170,16 +194,9 @@ fn pick_triangle(ui: &mut egui::Ui, world: &mut World, count: usize) -> Option<u
         })
         .inner;
     if after != before {
-        world.resource_mut::<SelectedTriangle>().0 = after.map(|i| i as u32);
+        selected.0 = after.map(|i| i as u32);
     }
     after
-}
-
-/// The world's one mesh and camera, copied out (the panel writes other resources meanwhile).
-fn mesh_and_camera(world: &mut World) -> Option<(Mesh, Camera)> {
-    let mesh = world.query::<&Mesh>().iter(world).next()?.clone();
-    let camera = *world.query::<&Camera>().iter(world).next()?;
-    Some((mesh, camera))
 }
 
 fn fate_lines(ui: &mut egui::Ui, fate: TriangleFate) {
@@ -208,15 +225,11 @@ fn journey_grid(ui: &mut egui::Ui, journey: &Journey) {
 /// M, P and V as Close2GL builds them, the reference's view and projection (glam's), and how far
 /// apart they are. P is compared in wgpu's depth range (z' = (z + w) / 2), the one the reference
 /// projects to: OpenGL's -1..1 and WebGPU's 0..1 differ there by design.
-fn matrices_grid(ui: &mut egui::Ui, world: &mut World) {
-    let camera = world.query::<&Camera>().iter(world).next().copied();
-    let (Some(camera), Some(viewport)) = (camera, world.get_resource::<Viewport>().copied()) else {
-        return;
-    };
+fn matrices_grid(ui: &mut egui::Ui, camera: &Camera, viewport: Viewport) {
     let v = matrices::viewport(viewport.width as f32, viewport.height as f32);
-    let (view, projection) = camera_matrices(&camera);
+    let (view, projection) = camera_matrices(camera);
     for (name, matrix) in [
-        ("M (Close2GL)", matrices::modelview(&camera)),
+        ("M (Close2GL)", matrices::modelview(camera)),
         (
             "P (Close2GL)",
             matrices::projection(camera.hfov, camera.vfov, camera.near, camera.far),
@@ -227,7 +240,7 @@ fn matrices_grid(ui: &mut egui::Ui, world: &mut World) {
     ] {
         table::matrix_table(ui, name, matrix);
     }
-    let (dm, dp) = differences(&camera);
+    let (dm, dp) = differences(camera);
     ui.label(format!(
         "Largest difference: M vs view {dm:.2e}, P vs projection {dp:.2e}"
     ));

@@ -8,7 +8,8 @@ use bevy_ecs::prelude::*;
 use close2gl_core::parity::{ONLY_CLOSE2GL, ONLY_REFERENCE};
 use close2gl_core::{FateKind, OutsideView, Overlay, RenderSettings};
 
-use crate::PanelState;
+use crate::state::PanelState;
+use crate::views::{View, Views, view_rects};
 
 /// What the GPU paints over the reference in the fate view: its own answers.
 pub const REFERENCE: [(FateKind, &str); 3] = [
@@ -43,38 +44,6 @@ pub fn swatch(ui: &mut egui::Ui, [r, g, b]: [u8; 3]) {
         .rect_filled(rect, 2.0, egui::Color32::from_rgb(r, g, b));
 }
 
-/// A view the window shows, as the labels and the legends place them.
-#[derive(Clone, Copy, PartialEq, Eq, Hash, Debug)]
-pub enum View {
-    Reference,
-    Close2gl,
-    Outside,
-}
-
-/// Where each view of `area` is: the reference alone, or, when the views share it (the split
-/// layout), the reference, Close2GL and the outside view (when it shows) in columns.
-pub fn view_rects(area: egui::Rect, shared: bool, outside: bool) -> Vec<(View, egui::Rect)> {
-    if !shared {
-        return vec![(View::Reference, area)];
-    }
-    let views: &[View] = match outside {
-        true => &[View::Reference, View::Close2gl, View::Outside],
-        false => &[View::Reference, View::Close2gl],
-    };
-    let width = area.width() / views.len() as f32;
-    views
-        .iter()
-        .enumerate()
-        .map(|(i, &view)| {
-            let min = area.left_top() + egui::vec2(i as f32 * width, 0.0);
-            (
-                view,
-                egui::Rect::from_min_size(min, egui::vec2(width, area.height())),
-            )
-        })
-        .collect()
-}
-
 /// A legend's title and rows, for `view` as the settings show it; None when it shows no overlay.
 fn rows(view: View, overlay: Overlay) -> Option<(&'static str, Vec<Row>)> {
     let fates = || FateKind::ALL.iter().map(|k| (k.color(), k.name()));
@@ -94,29 +63,25 @@ fn rows(view: View, overlay: Overlay) -> Option<(&'static str, Vec<Row>)> {
     }
 }
 
-/// The legends in the corners of the views of `area` that show an overlay, unless hidden.
-pub fn show(ui: &egui::Ui, world: &mut World, area: egui::Rect, shared: bool) {
-    if world
-        .get_resource::<PanelState>()
-        .is_none_or(|s| s.hide_legends)
-    {
+/// The legends in the corners of the views that show an overlay, unless hidden.
+pub fn show(
+    (InRef(ui), In(views)): (InRef<egui::Ui>, In<Views>),
+    settings: Res<RenderSettings>,
+    outside: Option<Res<OutsideView>>,
+    mut state: ResMut<PanelState>,
+) {
+    if state.hide_legends || settings.overlay == Overlay::Off {
         return;
     }
-    let overlay = world
-        .get_resource::<RenderSettings>()
-        .map_or(Overlay::Off, |s| s.overlay);
-    if overlay == Overlay::Off {
-        return;
-    }
-    let outside = world.get_resource::<OutsideView>().is_some_and(|o| o.show);
+    let outside = outside.is_some_and(|o| o.show);
     let mut hide = false;
-    for (view, rect) in view_rects(area, shared, outside) {
-        if let Some((title, rows)) = rows(view, overlay) {
+    for (view, rect) in view_rects(views, outside) {
+        if let Some((title, rows)) = rows(view, settings.overlay) {
             hide |= legend(ui.ctx(), view, rect, title, &rows);
         }
     }
     if hide {
-        world.resource_mut::<PanelState>().hide_legends = true;
+        state.hide_legends = true;
     }
 }
 

@@ -3,7 +3,7 @@ use std::time::Duration;
 use bevy_ecs::prelude::*;
 use close2gl_core::{Loading, Mesh, ModelRequest, ModelSource, ModelStatus, PrimitiveKind};
 
-use crate::PanelState;
+use crate::state::PanelState;
 
 /// The path being typed and its Load button; a new model (dropped, picked, reloaded) shows its
 /// path in the field. Returns the model asked for, if any.
@@ -50,12 +50,14 @@ fn loading_bar(ui: &mut egui::Ui, loading: &Loading) {
 }
 
 /// A path field with Load, a button per primitive, Reload, and what the last load said.
-pub fn section(ui: &mut egui::Ui, world: &mut World) {
-    let status = world
-        .get_resource::<ModelStatus>()
-        .cloned()
-        .unwrap_or_default();
-    let mut request = path_field(ui, &mut world.resource_mut::<PanelState>(), &status);
+pub fn section(
+    InMut(ui): InMut<egui::Ui>,
+    status: Res<ModelStatus>,
+    mut requested: ResMut<ModelRequest>,
+    meshes: Query<&Mesh>,
+    mut state: ResMut<PanelState>,
+) {
+    let mut request = path_field(ui, &mut state, &status);
     ui.horizontal_wrapped(|ui| {
         for &kind in PrimitiveKind::ALL {
             if ui.button(kind.name()).clicked() {
@@ -69,8 +71,7 @@ pub fn section(ui: &mut egui::Ui, world: &mut World) {
             request = status.source.clone();
         }
     });
-    let mut meshes = world.query::<&Mesh>();
-    if let Ok(mesh) = meshes.single(world) {
+    if let Ok(mesh) = meshes.single() {
         ui.weak(format!(
             "{}: {} triangles, {} vertices",
             mesh.name,
@@ -88,6 +89,6 @@ pub fn section(ui: &mut egui::Ui, world: &mut World) {
         ui.colored_label(ui.visuals().warn_fg_color, warning);
     }
     if request.is_some() {
-        world.insert_resource(ModelRequest(request));
+        requested.0 = request;
     }
 }

@@ -3,10 +3,12 @@ use close2gl_core::{OutsideOrbit, OutsideView, STAGE_NAMES};
 
 /// The pipeline seen from outside: shown or not, the stage slider (world, eye, NDC, and every
 /// stage between), the orbit camera's reset and what it frames.
-pub fn section(ui: &mut egui::Ui, world: &mut World) {
-    let Some(mut outside) = world.get_resource::<OutsideView>().copied() else {
-        return;
-    };
+pub fn section(
+    InMut(ui): InMut<egui::Ui>,
+    mut current: ResMut<OutsideView>,
+    mut orbit: Option<ResMut<OutsideOrbit>>,
+) {
+    let mut outside = *current;
     ui.checkbox(&mut outside.show, "Show the outside view")
         .on_hover_text("The camera, its view volume and the model, seen from outside");
     ui.add_enabled_ui(outside.show, |ui| {
@@ -22,20 +24,23 @@ pub fn section(ui: &mut egui::Ui, world: &mut World) {
                     outside.stage = stage;
                 }
             }
-            if ui.button("Reset orbit").clicked() {
-                super::write_if_changed(world, &OutsideOrbit::default());
+            if ui.button("Reset orbit").clicked()
+                && let Some(orbit) = orbit.as_mut()
+            {
+                orbit.set_if_neq(OutsideOrbit::default());
             }
         });
-        if let Some(mut orbit) = world.get_resource::<OutsideOrbit>().copied() {
-            ui.checkbox(&mut orbit.whole_volume, "Frame the whole volume")
+        if let Some(orbit) = orbit.as_mut() {
+            let mut edited = **orbit;
+            ui.checkbox(&mut edited.whole_volume, "Frame the whole volume")
                 .on_hover_text(
                     "Off: the model, the eye and the near plane fill the view. On: the far plane \
                      too, however far beyond the model",
                 );
-            super::write_if_changed(world, &orbit);
+            orbit.set_if_neq(edited);
         }
     });
-    super::write_if_changed(world, &outside);
+    current.set_if_neq(outside);
 }
 
 /// The stage's number, with the stop's name when it is on one.

@@ -6,10 +6,8 @@ use close2gl_core::{
 
 /// Mode, front face, culling, clipping, shading, who rasterizes Close2GL and the model's colour:
 /// one `RenderSettings` for both views.
-pub fn section(ui: &mut egui::Ui, world: &mut World) {
-    let Some(mut settings) = world.get_resource::<RenderSettings>().copied() else {
-        return;
-    };
+pub fn section(InMut(ui): InMut<egui::Ui>, mut current: ResMut<RenderSettings>) {
+    let mut settings = *current;
     ui.horizontal(|ui| {
         ui.label("Mode");
         choice(ui, &mut settings.mode, RenderMode::ALL, RenderMode::name);
@@ -37,7 +35,8 @@ pub fn section(ui: &mut egui::Ui, world: &mut World) {
         ui.label("Background");
         color(ui, &mut settings.background);
     });
-    crate::write_if_changed(world, &settings);
+    // Unchanged, it stays so: an idle panel must not mark the settings changed every frame.
+    current.set_if_neq(settings);
 }
 
 /// A classic mistake for Close2GL to make, from a list: its symptom shows beside the reference.

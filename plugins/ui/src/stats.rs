@@ -57,22 +57,24 @@ impl FrameTimer {
 }
 
 /// FPS and frame time of each view, the Close2GL stage counts and time, the adapter.
-pub fn section(ui: &mut egui::Ui, world: &mut World) {
-    let stats = world.resource::<ViewStats>();
+pub fn section(
+    InMut(ui): InMut<egui::Ui>,
+    stats: Res<ViewStats>,
+    frame: Option<Res<Close2glFrame>>,
+    settings: Option<Res<RenderSettings>>,
+    software: Option<Res<SoftwareFrame>>,
+) {
     let timed = stats.replay.is_none();
     if let Some((frame, frames)) = stats.replay {
         ui.label(format!("Replaying frame {} of {frames}", frame + 1));
     }
-    frame_rates(ui, stats, timed);
-    if let Some(frame) = world.get_resource::<Close2glFrame>() {
-        let software = world
-            .get_resource::<RenderSettings>()
-            .is_some_and(|s| s.close2gl_raster == Rasterizer::Software);
-        let raster_ms = world
-            .get_resource::<SoftwareFrame>()
-            .filter(|_| timed && software)
+    frame_rates(ui, &stats, timed);
+    if let Some(frame) = frame {
+        let drawn_in_software = settings.is_some_and(|s| s.close2gl_raster == Rasterizer::Software);
+        let raster_ms = software
+            .filter(|_| timed && drawn_in_software)
             .map(|image| image.raster_ms);
-        counts(ui, frame, timed.then_some(frame.stage_ms), raster_ms);
+        counts(ui, &frame, timed.then_some(frame.stage_ms), raster_ms);
     }
     ui.label(format!("Adapter: {}", stats.adapter));
     if let Some(limits) = &stats.limitations {

@@ -1,11 +1,14 @@
 //! The control panel as a system: an exclusive system in `PreUpdate`'s `FrameSet::Panel`, after
 //! the keys were mapped and before a model loads, the camera moves and the pipeline runs, so that
-//! what the panel changes (and the tools the keys asked for) lands in this same frame, and its
-//! reads and writes are in the schedule. The window's owner hands it the frame's input
-//! ([`PanelInput`]) and takes what egui painted ([`PanelOutput`]); without input (a headless app)
-//! it does nothing.
+//! what the panel changes (and the tools the keys asked for) lands in this same frame. The window's
+//! owner hands it the frame's input ([`PanelInput`]) and takes what egui painted ([`PanelOutput`]);
+//! without input (a headless app) it does nothing. It is the panel's one function over the whole
+//! world, which it lends to the layout as [`Parts`]: every section is a system of its own.
 
 use bevy_ecs::prelude::*;
+
+use crate::layout;
+use crate::parts::Parts;
 
 /// This frame's input for the panel, from the window's owner.
 #[derive(Resource)]
@@ -30,8 +33,7 @@ pub fn panel_system(world: &mut World) {
     };
     let (ctx, both_views) = (input.ctx.clone(), input.both_views);
     let output = ctx.run_ui(raw, |ui| {
-        let views = crate::show(ui, world);
-        crate::over_views(ui, world, views, both_views);
+        layout::show(ui, &mut Parts(&mut *world), both_views);
     });
     world.insert_resource(PanelOutput(output));
 }

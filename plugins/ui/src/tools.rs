@@ -4,9 +4,11 @@
 //! itself, and a short notice of what a tool did.
 
 use bevy_ecs::prelude::*;
-use close2gl_core::{Action, CommandLine, InputBindings, PageLink, ToolRequests};
+use close2gl_core::{Action, InputBindings, PageLink, ToolRequests};
 
-use crate::{PanelState, ViewStats};
+use crate::ViewStats;
+use crate::state::PanelState;
+use crate::views::Views;
 
 /// How long a notice stays, in seconds.
 const NOTICE_SECONDS: f64 = 6.0;
@@ -32,9 +34,14 @@ impl Notice {
     }
 }
 
-/// The buttons, each naming its key as bound.
-pub fn section(ui: &mut egui::Ui, world: &mut World) {
-    let bindings = world.get_resource::<InputBindings>().cloned();
+/// The buttons, each naming its key as bound, and what the views' last comparison found.
+pub fn section(
+    InMut(ui): InMut<egui::Ui>,
+    bindings: Option<Res<InputBindings>>,
+    mut tools: ResMut<ToolRequests>,
+    (link, stats): (Option<Res<PageLink>>, Res<ViewStats>),
+    mut commands: Commands,
+) {
     let key = |action: Action| {
         let keys = bindings
             .as_ref()
@@ -60,24 +67,20 @@ pub fn section(ui: &mut egui::Ui, world: &mut World) {
             .clicked();
         // In a browser: the page's own file chooser, and its link to this view.
         asked.open_file = cfg!(target_arch = "wasm32") && ui.button("Open a file…").clicked();
-        if let Some(PageLink(link)) = world.get_resource::<PageLink>()
+        if let Some(PageLink(link)) = link.as_deref()
             && ui.button("Copy link").clicked()
         {
             ui.ctx().copy_text(link.clone());
-            world.insert_resource(Notice::new("Copied the link to this view"));
+            commands.insert_resource(Notice::new("Copied the link to this view"));
         }
     });
-    if let Some(agreement) = world
-        .get_resource::<ViewStats>()
-        .and_then(|s| s.coverage_agreement)
-    {
+    if let Some(agreement) = stats.coverage_agreement {
         ui.weak(format!(
             "The views cover the same pixels: {:.3} % (last compared)",
             100.0 * agreement
         ));
     }
     if asked.any() {
-        let mut tools = world.get_resource_or_insert_with(ToolRequests::default);
         tools.copy_command |= asked.copy_command;
         tools.screenshot |= asked.screenshot;
         tools.toggle_help |= asked.toggle_help;
@@ -86,39 +89,41 @@ pub fn section(ui: &mut egui::Ui, world: &mut World) {
     }
 }
 
-/// Copies the command (clipboard and terminal) and toggles the cheat sheet when asked.
-pub fn carry_out(ctx: &egui::Context, world: &mut World) {
-    let Some(mut tools) = world.get_resource_mut::<ToolRequests>() else {
-        return;
-    };
-    let (copy, help) = (tools.copy_command, tools.toggle_help);
-    if !copy && !help {
-        return;
+/// Takes the requests the panel carries out: toggles the cheat sheet, and answers whether the
+/// command is to be copied ([`copied`] then says what was).
+pub fn take_requests(mut tools: ResMut<ToolRequests>, mut state: ResMut<PanelState>) -> bool {
+    let ToolRequests {
+        copy_command,
+        toggle_help,
+        ..
+    } = *tools;
+    if !copy_command && !toggle_help {
+        return false;
     }
     (tools.copy_command, tools.toggle_help) = (false, false);
-    if help {
-        let mut state = world.resource_mut::<PanelState>();
-        state.help = !state.help;
-    }
-    if copy {
-        let write = world.get_resource::<CommandLine>().map(|c| c.0);
-        let notice = match write.and_then(|write| write(world, REPRO_OUT)) {
-            Some(command) => {
-                println!("{command}");
-                ctx.copy_text(command);
-                "Copied the command that renders this view (also printed on the terminal)"
-            }
-            None => "Nothing to copy yet: no model is shown",
-        };
-        world.insert_resource(Notice::new(notice));
-    }
+    state.help ^= toggle_help;
+    copy_command
+}
+
+/// Puts the copied `command` on the clipboard and the terminal, and says so; `None`: nothing
+/// shows yet to copy.
+pub fn copied(In((ctx, command)): In<(egui::Context, Option<String>)>, mut notice: ResMut<Notice>) {
+    let text = match command {
+        Some(command) => {
+            println!("{command}");
+            ctx.copy_text(command);
+            "Copied the command that renders this view (also printed on the terminal)"
+        }
+        None => "Nothing to copy yet: no model is shown",
+    };
+    *notice = Notice::new(text);
 }
 
 /// The notice, at the top of the views, until it has been shown long enough.
-pub fn show_notice(ui: &egui::Ui, area: egui::Rect, world: &mut World) {
-    let Some(mut notice) = world.get_resource_mut::<Notice>() else {
-        return;
-    };
+pub fn show_notice(
+    (InRef(ui), In(views)): (InRef<egui::Ui>, In<Views>),
+    mut notice: ResMut<Notice>,
+) {
     if notice.text.is_empty() {
         return;
     }
@@ -131,7 +136,7 @@ pub fn show_notice(ui: &egui::Ui, area: egui::Rect, world: &mut World) {
     ui.ctx()
         .request_repaint_after(std::time::Duration::from_secs_f64(NOTICE_SECONDS));
     let painter = ui.painter();
-    let at = area.center_bottom() - egui::vec2(0.0, 16.0);
+    let at = views.area.center_bottom() - egui::vec2(0.0, 16.0);
     let galley = painter.layout_no_wrap(
         notice.text.clone(),
         egui::FontId::proportional(15.0),
@@ -185,16 +190,17 @@ fn shown(bindings: &InputBindings, action: Action) -> String {
 }
 
 /// The key cheat sheet over the views, from the bindings as configured.
-pub fn cheat_sheet(ctx: &egui::Context, world: &mut World) {
-    if !world.get_resource::<PanelState>().is_some_and(|s| s.help) {
-        return;
-    }
-    let Some(bindings) = world.get_resource::<InputBindings>() else {
+pub fn cheat_sheet(
+    InRef(ui): InRef<egui::Ui>,
+    bindings: Option<Res<InputBindings>>,
+    mut state: ResMut<PanelState>,
+) {
+    let Some(bindings) = bindings.filter(|_| state.help) else {
         return;
     };
     let rows: Vec<(String, &str)> = DESCRIPTIONS
         .iter()
-        .map(|(action, what)| (shown(bindings, *action), *what))
+        .map(|(action, what)| (shown(&bindings, *action), *what))
         .filter(|(keys, _)| !keys.is_empty())
         .collect();
     let mut open = true;
@@ -203,7 +209,7 @@ pub fn cheat_sheet(ctx: &egui::Context, world: &mut World) {
         .collapsible(false)
         .resizable(false)
         .anchor(egui::Align2::LEFT_TOP, egui::vec2(16.0, 32.0))
-        .show(ctx, |ui| {
+        .show(ui.ctx(), |ui| {
             egui::Grid::new("keys").striped(true).show(ui, |ui| {
                 for (key, what) in &rows {
                     ui.monospace(key);
@@ -222,7 +228,7 @@ pub fn cheat_sheet(ctx: &egui::Context, world: &mut World) {
             });
         });
     if !open {
-        world.resource_mut::<PanelState>().help = false;
+        state.help = false;
     }
 }
 

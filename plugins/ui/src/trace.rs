@@ -7,16 +7,11 @@ use close2gl_trace::check::compare::Status;
 use close2gl_trace::view::TraceView;
 
 /// Whether there is a trace (or a refused one) to show.
-pub fn shown(world: &World) -> bool {
-    world
-        .get_resource::<TraceView>()
-        .is_some_and(|v| v.shown.is_some() || v.error.is_some())
+pub fn shown(view: Option<Res<TraceView>>) -> bool {
+    view.is_some_and(|v| v.shown.is_some() || v.error.is_some())
 }
 
-pub fn section(ui: &mut egui::Ui, world: &mut World) {
-    let Some(view) = world.get_resource::<TraceView>() else {
-        return;
-    };
+pub fn section(InMut(ui): InMut<egui::Ui>, view: Res<TraceView>) {
     if let Some(error) = &view.error {
         ui.colored_label(ui.visuals().error_fg_color, error);
     }

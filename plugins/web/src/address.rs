@@ -1,5 +1,5 @@
 //! The view in the page's link: the model and every setting that decides the views' pixels,
-//! written as copy as command writes them (`close2gl::config::keys::pixel_overrides`).
+//! written as copy as command writes them (`close2gl::config::keys::pixel_keys_from`).
 
 use bevy_ecs::prelude::*;
 use close2gl_core::{ModelSource, PageLink, Wake};
@@ -38,7 +38,7 @@ pub fn fragment(world: &mut World) -> Option<String> {
         ModelSource::File(path) => path.file_name()?.to_string_lossy().into_owned(),
         ModelSource::Primitive(kind) => kind.name().to_string(),
     };
-    let settings = close2gl::config::keys::pixel_overrides_from(&config, crate::base_config());
+    let settings = close2gl::config::keys::pixel_keys_from(&config, crate::base_config());
     Some(link::write(&model, &settings))
 }
 

@@ -118,7 +118,7 @@ mod tests {
         // Back to a built-in default that the page's config.toml changes: still in the link.
         config.render.shading = close2gl_core::Shading::None;
         config.camera.hfov = 45.0;
-        let settings = close2gl::config::keys::pixel_overrides_from(&config, base_config());
+        let settings = close2gl::config::keys::pixel_keys_from(&config, base_config());
         let fragment = link::write("cube.in", &settings);
         let read = link::parse(&fragment).unwrap();
         let again = config_with(&read.settings).unwrap();

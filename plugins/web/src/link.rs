@@ -32,13 +32,15 @@ pub fn parse(fragment: &str) -> Result<Link, String> {
     Ok(link)
 }
 
-/// The fragment (without `#`) for `model` and `settings` (`section.key=value` each).
-pub fn write(model: &str, settings: &[String]) -> String {
+/// The fragment (without `#`) for `model` and `settings` (`("section.key", "value")` each, as
+/// `close2gl::config::keys::pixel_keys` gives them).
+pub fn write(model: &str, settings: &[(String, String)]) -> String {
     let mut items = vec![format!("model={}", encode(model))];
-    items.extend(settings.iter().map(|item| match item.split_once('=') {
-        Some((key, value)) => format!("{}={}", encode(key), encode(value)),
-        None => encode(item),
-    }));
+    items.extend(
+        settings
+            .iter()
+            .map(|(key, value)| format!("{}={}", encode(key), encode(value))),
+    );
     items.join("&")
 }
 
@@ -103,12 +105,13 @@ mod tests {
 
     #[test]
     fn a_link_reads_back_what_was_written() {
-        let settings = vec![
-            "camera.hfov=45".to_string(),
-            "render.clipping=\"simple\"".to_string(),
-            "camera.position=[0.5,-1e-7,3]".to_string(),
-            "input.orbit_left=\"shift+a & b\"".to_string(),
-        ];
+        let settings = [
+            ("camera.hfov", "45"),
+            ("render.clipping", "\"simple\""),
+            ("camera.position", "[0.5,-1e-7,3]"),
+            ("input.orbit_left", "\"shift+a & b\""),
+        ]
+        .map(|(k, v)| (k.to_string(), v.to_string()));
         let fragment = write("cube.in", &settings);
         assert!(!fragment.contains(['"', '[', ' ', '#']), "{fragment}");
         assert!(
@@ -117,7 +120,8 @@ mod tests {
         );
         let link = parse(&format!("#{fragment}")).unwrap();
         assert_eq!(link.model.as_deref(), Some("cube.in"));
-        assert_eq!(link.settings, settings);
+        let items: Vec<String> = settings.iter().map(|(k, v)| format!("{k}={v}")).collect();
+        assert_eq!(link.settings, items);
     }
 
     #[test]

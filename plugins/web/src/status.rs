@@ -22,18 +22,17 @@ pub struct Status {
     compared_at: Option<u64>,
 }
 
-/// `section.key=value` items as a JSON object of their values: TOML read as JSON, and a bare
+/// `(section.key, value)` pairs as a JSON object of their values: TOML read as JSON, and a bare
 /// word (a name such as `simple`, as `--set` takes it) as a string.
-fn settings_json(settings: &[String]) -> Map<String, Value> {
+fn settings_json(settings: &[(String, String)]) -> Map<String, Value> {
     settings
         .iter()
-        .filter_map(|item| {
-            let (key, value) = item.split_once('=')?;
+        .map(|(key, value)| {
             let toml = format!("v = {value}").parse::<toml::Table>().ok();
             let value = toml
                 .and_then(|t| serde_json::to_value(t.get("v")?).ok())
-                .unwrap_or_else(|| Value::String(value.to_string()));
-            Some((key.to_string(), value))
+                .unwrap_or_else(|| Value::String(value.clone()));
+            (key.clone(), value)
         })
         .collect()
 }
@@ -87,7 +86,7 @@ fn status_json(world: &mut World, gpu: &Gpu, agreement: Option<f64>) -> Value {
         .next()
         .map_or(0, |m| m.triangles.len());
     let settings = close2gl::config::command::of_world(world)
-        .map(|config| settings_json(&close2gl::config::keys::pixel_overrides(&config)))
+        .map(|config| settings_json(&close2gl::config::keys::pixel_keys(&config)))
         .unwrap_or_default();
     let panel = !world.resource::<PanelState>().hidden;
     let status = world.resource::<Status>();

@@ -8,8 +8,9 @@ use bevy_ecs::prelude::*;
 use close2gl_core::{Camera, InputState, ProbeClick, SelectedTriangle};
 use close2gl_raster::probe::{Outcome, PixelProbe};
 
-use crate::PanelState;
 use crate::legend::swatch;
+use crate::state::PanelState;
+use crate::views::Views;
 
 /// The last pixel probe (a Ctrl+click on a view), answered by both sides: the viewer fills it.
 #[derive(Resource, Clone, Debug)]
@@ -133,8 +134,8 @@ fn explanation(ui: &mut egui::Ui, answer: &ProbeAnswer) {
 }
 
 /// The full record in the Inspector section.
-pub fn record(ui: &mut egui::Ui, world: &mut World) {
-    let Some(answer) = world.get_resource::<ProbeAnswer>() else {
+pub fn record(ui: &mut egui::Ui, answer: Option<&ProbeAnswer>) {
+    let Some(answer) = answer else {
         ui.weak("Ctrl+click a view to probe a pixel.");
         return;
     };
@@ -150,19 +151,21 @@ pub fn record(ui: &mut egui::Ui, world: &mut World) {
 /// The answer beside the clicked pixel, over the views of `area`: on the side of the click with
 /// more room, kept inside the views. A click in the Close2GL window of the windows layout, which
 /// has no panel to draw in, opens it in the views' corner.
-pub fn probe_window(ctx: &egui::Context, world: &mut World, area: egui::Rect) {
-    let Some(answer) = world
-        .get_resource::<ProbeAnswer>()
-        .filter(|a| a.window)
-        .cloned()
-    else {
+pub fn probe_window(
+    (InRef(ui), In(views)): (InRef<egui::Ui>, In<Views>),
+    answer: Option<ResMut<ProbeAnswer>>,
+    input: Option<Res<InputState>>,
+    cameras: Query<&Camera>,
+    selected: Option<ResMut<SelectedTriangle>>,
+    mut state: ResMut<PanelState>,
+) {
+    let Some(mut answer) = answer.filter(|a| a.window) else {
         return;
     };
+    let (ctx, area) = (ui.ctx(), views.area);
     let escape = ctx.input(|i| i.key_pressed(egui::Key::Escape))
-        || world
-            .get_resource::<InputState>()
-            .is_some_and(|i| i.pressed.iter().any(|k| k == "escape"));
-    let camera = world.query::<&Camera>().iter(world).next().copied();
+        || input.is_some_and(|i| i.pressed.iter().any(|k| k == "escape"));
+    let camera = cameras.iter().next();
     let click = answer.click.at / ctx.pixels_per_point();
     let (at, pivot) = match answer.click.close2gl_window {
         true => (
@@ -188,7 +191,7 @@ pub fn probe_window(ctx: &egui::Context, world: &mut World, area: egui::Rect) {
         .show(ctx, |ui| {
             let [x, y] = answer.close2gl.pixel;
             ui.label(format!("Pixel {x}, {y} of the {} view", answer.view));
-            if camera != Some(answer.camera) {
+            if camera != Some(&answer.camera) {
                 ui.colored_label(
                     ui.visuals().warn_fg_color,
                     "Stale: the camera moved since this probe (Ctrl+click again).",
@@ -203,11 +206,13 @@ pub fn probe_window(ctx: &egui::Context, world: &mut World, area: egui::Rect) {
                 journey = Some(t);
             }
         });
-    if let Some(t) = journey {
-        world.resource_mut::<SelectedTriangle>().0 = Some(t);
-        world.resource_mut::<PanelState>().show_journey = true;
+    if let Some(t) = journey
+        && let Some(mut selected) = selected
+    {
+        selected.0 = Some(t);
+        state.show_journey = true;
     }
     if !open {
-        world.resource_mut::<ProbeAnswer>().window = false;
+        answer.window = false;
     }
 }

@@ -1,0 +1,82 @@
+//! The panel's layout: the side panel at the right with its sections top to bottom, then what
+//! it paints over the views (the tools' notice and cheat sheet, the views' names, the legends,
+//! the probe's answer). Each part is a system of its own module, run here through [`Parts`].
+
+use bevy_ecs::prelude::*;
+
+use crate::parts::Parts;
+use crate::state::PanelState;
+use crate::views::{self, Views};
+use crate::{camera, inspector, legend, model, outside, render, stats, texture, tools, trace};
+
+/// Width of the side panel, its margins included, in points.
+pub const PANEL_WIDTH: f32 = 290.0;
+
+/// What the panel leaves of `screen` for the views: all but its fixed width at the right. Not
+/// the rectangle egui reports for the panel, which grows by a few points when its scroll bar
+/// appears: the views, their viewport and a replay's pixels must not depend on whether the panel
+/// scrolls, nor on what it shows.
+/// Everything when the panel is `hidden`.
+pub fn views_area(screen: egui::Rect, hidden: bool) -> egui::Rect {
+    let mut views = screen;
+    if !hidden {
+        views.max.x = (views.max.x - PANEL_WIDTH).max(views.min.x);
+    }
+    views
+}
+
+/// The panel at the right of `ui` (unless it is hidden), then what it paints over the views
+/// (`shared`: the split layout shows them all beside the panel).
+pub fn show(ui: &mut egui::Ui, parts: &mut Parts, shared: bool) {
+    let hidden = parts.run(|state: Res<PanelState>| state.hidden, ()) == Some(true);
+    if !hidden {
+        egui::Panel::right("close2gl_panel")
+            .resizable(false)
+            .exact_size(PANEL_WIDTH)
+            .show(ui, |ui| {
+                egui::ScrollArea::vertical()
+                    .auto_shrink([false, false])
+                    .show(ui, |ui| sections(ui, parts));
+            });
+    }
+    let views = Views {
+        area: views_area(ui.max_rect(), hidden),
+        shared,
+    };
+    // After the panel, so that its buttons take effect in the frame they are clicked in.
+    if parts.run(tools::take_requests, ()) == Some(true) {
+        let command = parts.command(tools::REPRO_OUT);
+        parts.run(tools::copied, (ui.ctx().clone(), command));
+    }
+    parts.run(tools::show_notice, (ui, views));
+    parts.run(tools::cheat_sheet, ui);
+    parts.run(views::labels, (ui, views));
+    parts.run(legend::show, (ui, views));
+    parts.run(inspector::probe_window, (ui, views));
+}
+
+fn sections(ui: &mut egui::Ui, parts: &mut Parts) {
+    section(ui, parts, "Model", model::section);
+    if parts.run(trace::shown, ()) == Some(true) {
+        section(ui, parts, "Trace", trace::section);
+    }
+    section(ui, parts, "Render", render::section);
+    section(ui, parts, "Texture", texture::section);
+    section(ui, parts, "Camera", camera::section);
+    section(ui, parts, "Outside view", outside::section);
+    section(ui, parts, "Tools", tools::section);
+    section(ui, parts, "Inspector", inspector::section);
+    section(ui, parts, "Stats", stats::section);
+}
+
+/// One section under its title, open at first.
+fn section<M>(
+    ui: &mut egui::Ui,
+    parts: &mut Parts,
+    title: &str,
+    part: impl IntoSystem<InMut<'static, egui::Ui>, (), M> + 'static,
+) {
+    egui::CollapsingHeader::new(title)
+        .default_open(true)
+        .show(ui, |ui| parts.run(part, ui));
+}

@@ -1,0 +1,71 @@
+//! Where each view is in the window, as the panel paints over them, and their names.
+
+use bevy_ecs::prelude::*;
+use close2gl_core::OutsideView;
+
+/// The views' part of the window and whether they share it: what the parts painted over the
+/// views are handed.
+#[derive(Clone, Copy, Debug)]
+pub struct Views {
+    /// The window but the panel, in points.
+    pub area: egui::Rect,
+    /// The split layout: the reference, Close2GL and the outside view side by side in `area`;
+    /// otherwise `area` is the reference's alone.
+    pub shared: bool,
+}
+
+/// A view the window shows, as the labels and the legends place them.
+#[derive(Clone, Copy, PartialEq, Eq, Hash, Debug)]
+pub enum View {
+    Reference,
+    Close2gl,
+    Outside,
+}
+
+/// Where each view is: the reference alone, or, when the views share the area, the reference,
+/// Close2GL and the outside view (when it shows) in columns.
+pub fn view_rects(views: Views, outside: bool) -> Vec<(View, egui::Rect)> {
+    let Views { area, shared } = views;
+    if !shared {
+        return vec![(View::Reference, area)];
+    }
+    let shown: &[View] = match outside {
+        true => &[View::Reference, View::Close2gl, View::Outside],
+        false => &[View::Reference, View::Close2gl],
+    };
+    let width = area.width() / shown.len() as f32;
+    shown
+        .iter()
+        .enumerate()
+        .map(|(i, &view)| {
+            let min = area.left_top() + egui::vec2(i as f32 * width, 0.0);
+            (
+                view,
+                egui::Rect::from_min_size(min, egui::vec2(width, area.height())),
+            )
+        })
+        .collect()
+}
+
+/// Names the views in their top-left corners.
+pub fn labels(
+    (InRef(ui), In(views)): (InRef<egui::Ui>, In<Views>),
+    outside: Option<Res<OutsideView>>,
+) {
+    let outside = outside.is_some_and(|o| o.show);
+    let painter = ui.painter();
+    for (view, rect) in view_rects(views, outside) {
+        let text = match view {
+            View::Reference => "Reference (wgpu)",
+            View::Close2gl => "Close2GL",
+            View::Outside => "Outside (drag, scroll)",
+        };
+        painter.text(
+            rect.left_top() + egui::vec2(10.0, 8.0),
+            egui::Align2::LEFT_TOP,
+            text,
+            egui::FontId::proportional(14.0),
+            ui.visuals().weak_text_color(),
+        );
+    }
+}
