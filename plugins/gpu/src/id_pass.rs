@@ -13,6 +13,7 @@ use bytemuck::{Pod, Zeroable};
 use close2gl_core::{Mesh, Scene, Viewport};
 use wgpu::util::DeviceExt;
 
+use crate::readback::Mapping;
 use crate::reference::{PipelineKey, has_area, primitive_state, relative_matrices};
 use crate::texture::texture_2d;
 use crate::{DEPTH_FORMAT, Gpu, UniformSetup};
@@ -43,8 +44,21 @@ const DEPTH_OUT_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::R32Float;
 pub fn probe_reference(
     gpu: &Gpu,
     scene: Scene<'_>,
-    (x, y): (u32, u32),
+    pixel: (u32, u32),
 ) -> Result<Option<ReferenceHit>, String> {
+    match &start_probe(gpu, scene, pixel)?.0 {
+        Some(mapping) => mapping.wait(gpu, WHAT, read_hit),
+        None => Ok(None),
+    }
+}
+
+/// [`probe_reference`] without the wait: the pass is drawn and its texel's copy submitted, and
+/// [`ReferenceProbe::finish`] answers once the GPU is done (in a browser, frames later).
+pub fn start_probe(
+    gpu: &Gpu,
+    scene: Scene<'_>,
+    (x, y): (u32, u32),
+) -> Result<ReferenceProbe, String> {
     let Viewport { width, height } = scene.viewport;
     if x >= width || y >= height {
         return Err(format!(
@@ -57,14 +71,39 @@ pub fn probe_reference(
         .map_err(|e| format!("cannot probe an invalid mesh: {e}"))?;
     let vertices = id_vertices(scene.mesh, scene.settings.backface_culling);
     if vertices.is_empty() {
-        return Ok(None);
+        return Ok(ReferenceProbe(None));
     }
     let targets = Targets::new(&gpu.device, (width, height));
     draw(gpu, scene, &vertices, &targets);
-    let (id, depth) = read_texel(gpu, &targets, (x, y))?;
-    Ok(id
-        .checked_sub(1)
-        .map(|triangle| ReferenceHit { triangle, depth }))
+    Ok(ReferenceProbe(Some(copy_texel(gpu, &targets, (x, y)))))
+}
+
+/// A reference probe on its way back from the GPU (`None`: nothing was drawn to probe).
+pub struct ReferenceProbe(Option<Mapping>);
+
+impl ReferenceProbe {
+    /// The reference's answer once the GPU has copied it; `None` while it has not yet.
+    pub fn finish(&self, gpu: &Gpu) -> Option<Result<Option<ReferenceHit>, String>> {
+        match &self.0 {
+            Some(mapping) => mapping.finish(gpu, WHAT, read_hit),
+            None => Some(Ok(None)),
+        }
+    }
+}
+
+const WHAT: &str = "the probed pixel";
+
+/// The hit in a texel's mapped bytes: the ID (triangle + 1, 0 for the background) at 0, the
+/// depth one copy row further.
+fn read_hit(bytes: &[u8]) -> Option<ReferenceHit> {
+    let stride = wgpu::COPY_BYTES_PER_ROW_ALIGNMENT as usize;
+    let word = |at: usize| [bytes[at], bytes[at + 1], bytes[at + 2], bytes[at + 3]];
+    let (id, depth) = (
+        u32::from_le_bytes(word(0)),
+        f32::from_le_bytes(word(stride)),
+    );
+    id.checked_sub(1)
+        .map(|triangle| ReferenceHit { triangle, depth })
 }
 
 /// Three vertices per drawn triangle, each carrying the triangle's mesh index. With culling on,
@@ -197,8 +236,8 @@ fn create_pipeline(
 }
 
 /// Copies texel (`x`, `y`) of the id and depth targets into one buffer (each at a copy-aligned
-/// offset), maps it and reads both.
-fn read_texel(gpu: &Gpu, targets: &Targets, (x, y): (u32, u32)) -> Result<(u32, f32), String> {
+/// offset), to be mapped once the copy is done.
+fn copy_texel(gpu: &Gpu, targets: &Targets, (x, y): (u32, u32)) -> Mapping {
     let stride = wgpu::COPY_BYTES_PER_ROW_ALIGNMENT as u64;
     let buffer = gpu.device.create_buffer(&wgpu::BufferDescriptor {
         label: Some("probe readback"),
@@ -231,11 +270,5 @@ fn read_texel(gpu: &Gpu, targets: &Targets, (x, y): (u32, u32)) -> Result<(u32, 
         );
     }
     gpu.queue.submit([encoder.finish()]);
-    let slice = buffer.slice(..);
-    let bytes = crate::readback::map_read(gpu, &slice, "the probed pixel")?;
-    let word = |at: usize| [bytes[at], bytes[at + 1], bytes[at + 2], bytes[at + 3]];
-    Ok((
-        u32::from_le_bytes(word(0)),
-        f32::from_le_bytes(word(stride as usize)),
-    ))
+    Mapping::start(buffer)
 }

@@ -40,7 +40,7 @@ mod views;
 pub use close2gl_core::Image;
 pub use close2gl_core::camera_matrices;
 pub use gpu::{Gpu, parse_backends};
-pub use id_pass::{ReferenceHit, probe_reference};
+pub use id_pass::{ReferenceHit, ReferenceProbe, probe_reference, start_probe};
 pub use offscreen::{OFFSCREEN_FORMAT, OffscreenPlugin, Snapshot, render_offscreen};
 pub use readback::{Pending, Readback};
 pub use reference::clear_color;

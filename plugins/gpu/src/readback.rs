@@ -46,12 +46,9 @@ impl Readback {
         textures: &[&wgpu::Texture],
     ) -> Result<Vec<Vec<[u8; 4]>>, String> {
         let pending = self.start(gpu, textures);
-        gpu.device
-            .poll(wgpu::PollType::wait_indefinitely())
-            .map_err(|e| failed("the image", &e))?;
         pending
-            .finish(gpu)
-            .unwrap_or_else(|| Err(failed("the image", &"the GPU never finished the copy")))
+            .mapping
+            .wait(gpu, "the image", |bytes| self.unpad(bytes, pending.layers))
     }
 
     /// [`Self::read`] without the wait: the copies are submitted and the buffer is mapped once
@@ -74,46 +71,82 @@ impl Readback {
             );
         }
         gpu.queue.submit([encoder.finish()]);
-        let mapped = Arc::new(Mutex::new(None));
-        let slot = Arc::clone(&mapped);
-        self.buffer
-            .slice(..)
-            .map_async(wgpu::MapMode::Read, move |result| {
-                if let Ok(mut slot) = slot.lock() {
-                    *slot = Some(result);
-                }
-            });
         Pending {
+            mapping: Mapping::start(self.buffer.clone()),
             readback: self.clone(),
             layers: textures.len(),
-            mapped,
         }
     }
 }
 
 /// Textures on their way back from the GPU ([`Readback::start`]).
 pub struct Pending {
+    mapping: Mapping,
     readback: Readback,
     layers: usize,
-    mapped: Arc<Mutex<Option<Result<(), wgpu::BufferAsyncError>>>>,
 }
 
 impl Pending {
     /// Each texture's pixels once the GPU has copied them; `None` while it has not yet.
     pub fn finish(&self, gpu: &Gpu) -> Option<Result<Vec<Vec<[u8; 4]>>, String>> {
+        self.mapping.finish(gpu, "the image", |bytes| {
+            self.readback.unpad(bytes, self.layers)
+        })
+    }
+}
+
+/// A buffer asked to be mapped for reading once the GPU is done writing it: asked after each
+/// frame in a browser (where nothing can wait for the GPU), waited for elsewhere.
+pub(crate) struct Mapping {
+    buffer: wgpu::Buffer,
+    mapped: Arc<Mutex<Option<Result<(), wgpu::BufferAsyncError>>>>,
+}
+
+impl Mapping {
+    /// Asks for `buffer` (its copies already submitted) to be mapped.
+    pub(crate) fn start(buffer: wgpu::Buffer) -> Mapping {
+        let mapped = Arc::new(Mutex::new(None));
+        let slot = Arc::clone(&mapped);
+        buffer
+            .slice(..)
+            .map_async(wgpu::MapMode::Read, move |result| {
+                if let Ok(mut slot) = slot.lock() {
+                    *slot = Some(result);
+                }
+            });
+        Mapping { buffer, mapped }
+    }
+
+    /// `read` of the buffer's bytes once it is mapped (then unmapped); `None` while it is not
+    /// yet. `what` names the bytes in the error.
+    pub(crate) fn finish<T>(
+        &self,
+        gpu: &Gpu,
+        what: &str,
+        read: impl FnOnce(&[u8]) -> T,
+    ) -> Option<Result<T, String>> {
         let _ = gpu.device.poll(wgpu::PollType::Poll);
         let mapped = self.mapped.lock().ok()?.take()?;
-        let readback = &self.readback;
-        let pixels = mapped.map_err(|e| failed("the image", &e)).and_then(|()| {
-            let bytes = readback
-                .buffer
-                .slice(..)
-                .get_mapped_range()
-                .map_err(|e| failed("the image", &e))?;
-            Ok(readback.unpad(&bytes, self.layers))
+        let value = mapped.map_err(|e| failed(what, &e)).and_then(|()| {
+            let bytes = self.buffer.slice(..).get_mapped_range();
+            Ok(read(&bytes.map_err(|e| failed(what, &e))?))
         });
-        readback.buffer.unmap();
-        Some(pixels)
+        self.buffer.unmap();
+        Some(value)
+    }
+
+    /// [`Self::finish`], waiting for the GPU.
+    pub(crate) fn wait<T>(
+        &self,
+        gpu: &Gpu,
+        what: &str,
+        read: impl FnOnce(&[u8]) -> T,
+    ) -> Result<T, String> {
+        gpu.device
+            .poll(wgpu::PollType::wait_indefinitely())
+            .map_err(|e| failed(what, &e))?;
+        self.finish(gpu, what, read)
+            .unwrap_or_else(|| Err(failed(what, &"the GPU never finished the copy")))
     }
 }
 
@@ -137,25 +170,4 @@ impl Readback {
 
 fn failed(what: &str, e: &dyn std::fmt::Display) -> String {
     format!("cannot read {what} back from the GPU: {e}")
-}
-
-/// Maps `slice` for reading once the GPU is done with it; `what` names it in the error.
-pub(crate) fn map_read<'a>(
-    gpu: &Gpu,
-    slice: &wgpu::BufferSlice<'a>,
-    what: &str,
-) -> Result<wgpu::BufferView, String> {
-    let failed = |e: &dyn std::fmt::Display| failed(what, e);
-    let (sender, receiver) = std::sync::mpsc::channel();
-    slice.map_async(wgpu::MapMode::Read, move |result| {
-        let _ = sender.send(result);
-    });
-    gpu.device
-        .poll(wgpu::PollType::wait_indefinitely())
-        .map_err(|e| failed(&e))?;
-    receiver
-        .recv()
-        .map_err(|e| failed(&e))?
-        .map_err(|e| failed(&e))?;
-    slice.get_mapped_range().map_err(|e| failed(&e))
 }

@@ -134,6 +134,10 @@ impl Viewer {
         // The panel showed or hid the outside view this frame: lay the views out again at once.
         let relayout = world.get_resource::<OutsideView>().is_some_and(|o| o.show) != outside;
         crate::probe::answer(self.app.world_mut(), &windows.gpu, &placement);
+        #[cfg(target_arch = "wasm32")]
+        let probing = crate::probe::arrive(self.app.world_mut(), &windows.gpu);
+        #[cfg(not(target_arch = "wasm32"))]
+        let probing = false;
 
         let capture = capture(&self.options, self.frames, self.app.world_mut());
         let drawn = windows.draw(self.app.world_mut(), &gui_frame, &placement, capture);
@@ -141,8 +145,8 @@ impl Viewer {
         let held = end_input_frame(self.app.world_mut());
         let shot = drawn.and_then(|pending| arrived_shot(&mut self.shot, pending, &windows.gpu));
         let saved = shot.and_then(|shot| save(&self.options, self.app.world_mut(), shot));
-        // In a browser a shot arrives frames later: draw until it has.
-        let held = held || self.shot.is_some();
+        // In a browser a shot or a probe arrives frames later: draw until it has.
+        let held = held || self.shot.is_some() || probing;
         if let Err(e) =
             saved.and_then(|()| self.session.end_frame(self.frames, self.app.world_mut()))
         {

@@ -8,7 +8,7 @@
 use bevy_ecs::prelude::*;
 use close2gl_core::Mistake;
 use close2gl_core::{Camera, Fates, InputState, Mesh, RenderSettings, Scene, SelectedTriangle};
-use close2gl_gpu::{Gpu, probe_reference};
+use close2gl_gpu::{Gpu, ReferenceHit};
 use close2gl_pipeline::mistakes::Mistakes;
 use close2gl_pipeline::textbook;
 use close2gl_raster::probe::{Drawn, probe};
@@ -66,7 +66,7 @@ pub fn answer(world: &mut World, gpu: &Gpu, placement: &Placement) {
         settings: &settings,
         viewport,
     };
-    let reference = probe_reference(gpu, scene, pixel);
+    let reference = reference_answer(world, gpu, scene, pixel);
     let drawn = Drawn::last_frame(world, &settings);
     let close2gl = match world.resource::<Fates>() {
         fates if fates.triangles.len() == mesh.triangles.len() => probe(scene, fates, pixel, drawn),
@@ -97,5 +97,69 @@ pub fn answer(world: &mut World, gpu: &Gpu, placement: &Placement) {
     if let Some(triangle) = close2gl.or(answer.reference_triangle()) {
         world.resource_mut::<SelectedTriangle>().0 = Some(triangle);
     }
+    #[cfg(target_arch = "wasm32")]
+    if let Some(mut arriving) = world.get_resource_mut::<ArrivingProbe>() {
+        arriving.select = close2gl.is_none();
+    }
     world.insert_resource(answer);
+}
+
+/// The reference's answer: at once on the desktop.
+#[cfg(not(target_arch = "wasm32"))]
+fn reference_answer(
+    _world: &mut World,
+    gpu: &Gpu,
+    scene: Scene<'_>,
+    pixel: (u32, u32),
+) -> Result<Option<ReferenceHit>, String> {
+    close2gl_gpu::probe_reference(gpu, scene, pixel)
+}
+
+/// In a browser the GPU cannot be waited for: the reference's answer arrives frames later
+/// ([`arrive`]), and the probe says so meanwhile.
+#[cfg(target_arch = "wasm32")]
+fn reference_answer(
+    world: &mut World,
+    gpu: &Gpu,
+    scene: Scene<'_>,
+    pixel: (u32, u32),
+) -> Result<Option<ReferenceHit>, String> {
+    let probe = close2gl_gpu::start_probe(gpu, scene, pixel)?;
+    world.insert_resource(ArrivingProbe {
+        probe,
+        select: false,
+    });
+    Err("on its way back from the GPU".into())
+}
+
+/// In a browser: the reference's side of the last probe, on its way back from the GPU;
+/// `select` when its triangle becomes the selected one (Close2GL's side had none).
+#[cfg(target_arch = "wasm32")]
+#[derive(Resource)]
+pub struct ArrivingProbe {
+    probe: close2gl_gpu::ReferenceProbe,
+    select: bool,
+}
+
+/// In a browser: puts the reference's answer into the probe's once the GPU has it. Returns
+/// whether one is still on its way (the viewer draws until it has arrived).
+#[cfg(target_arch = "wasm32")]
+pub fn arrive(world: &mut World, gpu: &Gpu) -> bool {
+    let Some(arriving) = world.get_resource::<ArrivingProbe>() else {
+        return false;
+    };
+    let Some(reference) = arriving.probe.finish(gpu) else {
+        return true;
+    };
+    let select = arriving.select;
+    world.remove_resource::<ArrivingProbe>();
+    let reference = reference.map(|hit| hit.map(|h| (h.triangle, h.depth)));
+    let triangle = reference.as_ref().ok().copied().flatten().map(|(t, _)| t);
+    if let Some(mut answer) = world.get_resource_mut::<ProbeAnswer>() {
+        answer.reference = reference;
+    }
+    if let Some(triangle) = triangle.filter(|_| select) {
+        world.resource_mut::<SelectedTriangle>().0 = Some(triangle);
+    }
+    false
 }
