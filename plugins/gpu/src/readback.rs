@@ -1,7 +1,7 @@
 //! Reading textures back from the GPU: wgpu copies rows padded to its copy alignment into a
 //! mappable buffer, which is mapped once the copy is done and unpadded into pixels.
 
-use crate::Gpu;
+use crate::gpu::Gpu;
 
 /// A mappable buffer for `layers` textures of `width` x `height` at 4 bytes a pixel, kept
 /// between frames by whoever reads back every frame.

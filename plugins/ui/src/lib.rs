@@ -31,7 +31,7 @@ mod trace;
 use bevy_ecs::prelude::*;
 use close2gl_core::{
     App, CameraActions, CameraSpeeds, Close2glFrame, FrameSet, ModelRequest, ModelStatus,
-    OutsideView, Owner, Plugin, PreUpdate, RenderSettings,
+    OutsideView, Owner, Plugin, RenderSettings, Update,
 };
 
 pub use inspector::ProbeAnswer;
@@ -55,7 +55,7 @@ impl Plugin for UiPlugin {
             .requires::<CameraActions>(Owner::Camera)
             .requires::<CameraSpeeds>(Owner::Camera)
             .requires::<Close2glFrame>(Owner::Close2gl)
-            .add_systems(PreUpdate, panel_system.in_set(FrameSet::Panel));
+            .add_systems(Update, panel_system.in_set(FrameSet::Panel));
     }
 }
 

@@ -69,7 +69,7 @@ pub fn section(ui: &mut egui::Ui, world: &mut World) {
             .get_resource::<SoftwareFrame>()
             .filter(|_| timed && software)
             .map(|image| image.raster_ms);
-        counts(ui, frame, timed.then_some(frame.stage_ms), raster_ms);
+        counts(ui, frame, timed.then_some(frame.geometry_ms), raster_ms);
     }
     ui.label(format!("Adapter: {}", stats.adapter));
     if let Some(limits) = &stats.limitations {
