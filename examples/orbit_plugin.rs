@@ -9,7 +9,7 @@ use close2gl::config::Config;
 use close2gl::core::bevy_ecs::prelude::*;
 use close2gl::core::{
     App, CameraAction, CameraActions, Close2glFrame, FrameSet, ModelSource, Plugin, PrimitiveKind,
-    Render, Update, Viewport,
+    Update, Viewport,
 };
 
 /// Turns the camera around the look-at point by `step` radians a frame.
@@ -30,7 +30,7 @@ impl Plugin for Orbit {
 
 /// Logs each frame's counts where a frame's results go out (after the Close2GL pipeline).
 fn report_plugin(app: &mut App) {
-    app.add_systems(Render, report.in_set(FrameSet::Output));
+    app.add_systems(Update, report.in_set(FrameSet::Output));
 }
 
 fn orbit(step: Res<OrbitStep>, mut actions: ResMut<CameraActions>) {

@@ -4,14 +4,14 @@
 //! ```no_run
 //! use close2gl::DefaultPlugins;
 //! use close2gl::core::bevy_ecs::prelude::*;
-//! use close2gl::core::{App, Close2glFrame, FrameSet, Plugin, Render};
+//! use close2gl::core::{App, Close2glFrame, FrameSet, Plugin, Update};
 //!
 //! /// Prints how many triangles Close2GL drew, where each frame's results go out.
 //! struct DrawnCount;
 //!
 //! impl Plugin for DrawnCount {
 //!     fn build(&self, app: &mut App) {
-//!         app.add_systems(Render, print_drawn.in_set(FrameSet::Output));
+//!         app.add_systems(Update, print_drawn.in_set(FrameSet::Output));
 //!     }
 //! }
 //!
@@ -28,7 +28,7 @@
 #[cfg(not(target_arch = "wasm32"))]
 pub mod commands;
 pub mod config;
-mod progress;
+mod progress_bar;
 #[cfg(not(target_arch = "wasm32"))]
 pub mod watch;
 
@@ -61,7 +61,7 @@ impl Plugin for DefaultPlugins {
             .add_plugin_once(close2gl_input::InputPlugin)
             .add_plugin_once(close2gl_pipeline::Close2glPlugin)
             .add_plugin_once(close2gl_raster::RasterPlugin)
-            .add_plugin_once(close2gl_trace::view::TracePlugin)
+            .add_plugin_once(close2gl_trace::TracePlugin)
             .add_plugin_once(config::command::CommandPlugin);
     }
 }
@@ -109,7 +109,7 @@ fn wait_for_model(app: &mut App) {
     let Some(loading) = app.world().resource::<ModelStatus>().loading.clone() else {
         return;
     };
-    let mut bar = progress::TerminalProgress::new(&loading.source);
+    let mut bar = progress_bar::TerminalProgress::new(&loading.source);
     while let Some(loading) = &app.world().resource::<ModelStatus>().loading {
         bar.show(loading.fraction);
         std::thread::sleep(POLL);

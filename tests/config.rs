@@ -4,7 +4,9 @@
 use std::path::Path;
 
 use close2gl::config::{Config, load};
-use close2gl::core::{CameraMode, ModelSource, PrimitiveKind, Rasterizer, RenderMode, Shading};
+use close2gl::core::{
+    CameraMode, ModelSource, Overlay, PrimitiveKind, Rasterizer, RenderMode, Shading,
+};
 
 fn with(overrides: &[&str]) -> Result<Config, String> {
     let overrides: Vec<String> = overrides.iter().map(|s| s.to_string()).collect();
@@ -52,6 +54,16 @@ fn overrides_apply_in_order_and_bare_words_are_strings() {
         c.camera.pose().map(|p| p.position.to_array()),
         Some([1.0, 2.0, 3.0])
     );
+}
+
+#[test]
+fn the_fate_view_reads_by_its_name_and_by_its_old_one() {
+    for name in ["fate_view", "fates"] {
+        let c = with(&[&format!("render.overlay={name}")]).expect("a known overlay");
+        assert_eq!(c.render.overlay, Overlay::FateView, "{name}");
+    }
+    let error = with(&["render.overlay=fate"]).expect_err("an unknown overlay");
+    assert!(error.contains("\"fate_view\""), "{error}");
 }
 
 #[test]

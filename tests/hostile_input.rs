@@ -45,7 +45,7 @@ const CHILD_LOADER_ONLY: &str = "CLOSE2GL_HOSTILE_CHILD_LOADER_ONLY";
 
 /// How much of the start-up the child runs.
 #[derive(Clone, Copy)]
-enum Stage {
+enum StartUp {
     /// `build_app`: the load and the first frame.
     App,
     /// The loader alone.
@@ -59,8 +59,8 @@ struct ChildLoad {
     stderr: String,
 }
 
-/// Loads `model` as the app's start-up does, up to `stage`, in a fresh copy of this test binary.
-fn load_in_child(model: &Path, stage: Stage) -> ChildLoad {
+/// Loads `model` as the app's start-up does, up to `part`, in a fresh copy of this test binary.
+fn load_in_child(model: &Path, part: StartUp) -> ChildLoad {
     let mut child = Command::new(std::env::current_exe().expect("this test binary"));
     child
         .args([
@@ -69,7 +69,7 @@ fn load_in_child(model: &Path, stage: Stage) -> ChildLoad {
             "--nocapture",
         ])
         .env(CHILD_MODEL, model);
-    if let Stage::Loader = stage {
+    if let StartUp::Loader = part {
         child.env(CHILD_LOADER_ONLY, "1");
     }
     let out = child.output().expect("the test binary runs");
@@ -146,10 +146,10 @@ fn one_triangle_in(triangles: &str, materials: &str) -> Vec<u8> {
     .into_bytes()
 }
 
-/// The peak memory of loading an honest one-triangle file up to `stage`: what the process
+/// The peak memory of loading an honest one-triangle file up to `part`: what the process
 /// costs before any model does.
-fn baseline_rss(dir: &TempDir, stage: Stage) -> u64 {
-    let honest = load_in_child(&dir.write("honest.in", &one_triangle_in("1", "1")), stage);
+fn baseline_rss(dir: &TempDir, part: StartUp) -> u64 {
+    let honest = load_in_child(&dir.write("honest.in", &one_triangle_in("1", "1")), part);
     assert_eq!(honest.loaded, Ok(1));
     honest.peak_rss
 }
@@ -168,15 +168,15 @@ const NOISE: u64 = 8 * MIB;
 #[test]
 fn a_header_claiming_billions_costs_no_memory() {
     let dir = TempDir::new("lying_header");
-    let baseline = baseline_rss(&dir, Stage::App);
+    let baseline = baseline_rss(&dir, StartUp::App);
     for claim in ["4000000000", "18446744073709551615"] {
         let triangles = load_in_child(
             &dir.write("triangles.in", &one_triangle_in(claim, "1")),
-            Stage::App,
+            StartUp::App,
         );
         assert_eq!(triangles.loaded, Ok(1));
         let materials = dir.write("materials.in", &one_triangle_in("1", claim));
-        let refused = load_in_child(&materials, Stage::App);
+        let refused = load_in_child(&materials, StartUp::App);
         assert_eq!(
             refused.loaded,
             Err(format!(
@@ -199,7 +199,7 @@ fn a_header_claiming_billions_costs_no_memory() {
 #[test]
 fn one_endless_line_is_refused_without_reading_it_whole() {
     let dir = TempDir::new("endless_line");
-    let baseline = baseline_rss(&dir, Stage::App);
+    let baseline = baseline_rss(&dir, StartUp::App);
     let endless = dir.0.join("endless.in");
     let mut file = std::io::BufWriter::new(std::fs::File::create(&endless).expect("create"));
     let chunk = vec![b'7'; MIB as usize];
@@ -210,7 +210,7 @@ fn one_endless_line_is_refused_without_reading_it_whole() {
     let endless_obj = dir.0.join("endless.obj");
     std::os::unix::fs::symlink(&endless, &endless_obj).expect("symlink");
     for path in [endless, endless_obj] {
-        let child = load_in_child(&path, Stage::App);
+        let child = load_in_child(&path, StartUp::App);
         let error = child.loaded.expect_err("refused");
         assert!(
             error.starts_with(&format!(
@@ -238,7 +238,7 @@ fn a_200_mb_model_loads_in_memory_that_follows_its_mesh() {
     let path = dir.0.join("grid.in");
     let grid = close2gl_testkit::write_grid_in(&path, "grid", 800).expect("write the grid");
     assert!(grid.bytes > 190 * MIB, "{} B", grid.bytes);
-    let model = model_memory(&dir, &path, grid, Stage::App);
+    let model = model_memory(&dir, &path, grid, StartUp::App);
     // The mesh; while it loads, the loader's index of corners (about a quarter of the mesh); then
     // the first frame's pipeline buffers for 1.28 M triangles (about twice the mesh): never the
     // file. Measured: 3.2 x the mesh, about half the file.
@@ -246,7 +246,7 @@ fn a_200_mb_model_loads_in_memory_that_follows_its_mesh() {
     // The loader alone: the mesh, made room for from the header's count, the index, and a
     // block of text per core. Measured: 1.4 x the mesh (2.3 x when its vectors grew by
     // doubling).
-    let loader = model_memory(&dir, &path, grid, Stage::Loader);
+    let loader = model_memory(&dir, &path, grid, StartUp::Loader);
     assert!(loader <= 2 * grid.mesh_bytes(), "{loader} B");
 }
 
@@ -255,7 +255,7 @@ fn a_big_obj_loads_without_holding_its_text() {
     let dir = TempDir::new("big_obj");
     let path = dir.0.join("grid.obj");
     let grid = close2gl_testkit::write_grid_obj(&path, "grid", 800).expect("write the grid");
-    let model = model_memory(&dir, &path, grid, Stage::App);
+    let model = model_memory(&dir, &path, grid, StartUp::App);
     // tobj keeps every face (104 bytes) until the file ends, then its index of v/vt/vn triples:
     // 6.81 x the mesh measured through the app's start-up, in a release build (2026-11-25). The
     // file itself, 1.2 x the mesh, must not come on top (it did when a loader read it whole:
@@ -263,11 +263,16 @@ fn a_big_obj_loads_without_holding_its_text() {
     assert!(2 * model <= 15 * grid.mesh_bytes(), "{model} B");
 }
 
-/// What loading the grid at `path` up to `stage` adds to the peak memory of a fresh process;
+/// What loading the grid at `path` up to `part` adds to the peak memory of a fresh process;
 /// prints it.
-fn model_memory(dir: &TempDir, path: &Path, grid: close2gl_testkit::GridFile, stage: Stage) -> u64 {
-    let baseline = baseline_rss(dir, stage);
-    let child = load_in_child(path, stage);
+fn model_memory(
+    dir: &TempDir,
+    path: &Path,
+    grid: close2gl_testkit::GridFile,
+    part: StartUp,
+) -> u64 {
+    let baseline = baseline_rss(dir, part);
+    let child = load_in_child(path, part);
     assert_eq!(child.loaded, Ok(grid.triangles), "{}", child.stderr);
     let mesh = grid.mesh_bytes();
     let model = child.peak_rss.saturating_sub(baseline);

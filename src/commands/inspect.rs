@@ -14,7 +14,7 @@ use glam::{Mat4, Vec3, Vec4};
 use serde_json::{Value, json};
 
 use super::CliError;
-use super::scene::{SceneArgs, print_warnings, record_fates, viewport};
+use super::scene_args::{SceneArgs, print_warnings, record_fates, viewport};
 
 #[derive(clap::Args, Debug, Default)]
 #[group(id = "question", required = true, multiple = false, args = ["pixel", "triangle"])]

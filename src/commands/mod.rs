@@ -6,7 +6,7 @@ pub mod grade;
 pub mod inspect;
 pub mod render;
 pub mod run;
-pub mod scene;
+pub mod scene_args;
 pub mod stats;
 
 use std::process::ExitCode;

@@ -13,7 +13,7 @@ use close2gl_pipeline::frustum::world_corners;
 use serde_json::{Value, json};
 
 use super::CliError;
-use super::scene::{SceneArgs, print_warnings, viewport};
+use super::scene_args::{SceneArgs, print_warnings, viewport};
 
 #[derive(clap::Args, Debug, Default)]
 pub struct RenderArgs {

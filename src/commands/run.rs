@@ -7,7 +7,7 @@ use close2gl_trace::view::{TraceRequest, TraceView};
 use close2gl_viewer::{Recording, ViewerOptions, ViewerPlugin};
 
 use super::CliError;
-use super::scene::{SceneArgs, print_warnings, viewport};
+use super::scene_args::{SceneArgs, print_warnings, viewport};
 use crate::config::Config;
 use crate::watch::WatchPlugin;
 

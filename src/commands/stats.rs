@@ -8,7 +8,7 @@ use close2gl_core::{Close2glFrame, Fates, Image, Rasterizer, SoftwareFrame};
 use serde_json::json;
 
 use super::CliError;
-use super::scene::{SceneArgs, print_warnings, record_fates, viewport};
+use super::scene_args::{SceneArgs, print_warnings, record_fates, viewport};
 
 #[derive(clap::Args, Debug, Default)]
 pub struct StatsArgs {
@@ -37,7 +37,7 @@ pub fn run(args: StatsArgs) -> Result<(), CliError> {
     report["bounds_px"] = json!(frame.bounds_px());
     report["fates"] = json!(app.world().resource::<Fates>().counts);
     if config.render.close2gl_raster == Rasterizer::Software {
-        report["stage_ms"] = json!(frame.stage_ms);
+        report["geometry_ms"] = json!(frame.geometry_ms);
         let image = app.world().resource::<SoftwareFrame>();
         report["raster_ms"] = json!(image.raster_ms);
         report["covered_pixels"] = json!(covered(&image.image, config.render.background));

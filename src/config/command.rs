@@ -159,7 +159,7 @@ mod tests {
             "render.close2gl_raster=software",
             "render.texture=false",
             "render.texture_filter=nearest",
-            "render.overlay=fates",
+            "render.overlay=fate_view",
             "render.mistake=fov_not_halved",
             "lighting.light_position=[1.0,2.0,3.0]",
             "lighting.ia=[0.1,0.1,0.2]",

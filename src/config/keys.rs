@@ -9,7 +9,7 @@ use close2gl_core::glam::Vec3;
 use close2gl_core::limits::{
     FOV_RANGE, MAX_PIXELS, MAX_SEGMENTS, MOVE_SPEED_RANGE, ROTATE_SPEED_RANGE,
 };
-use close2gl_core::{Action, ModelSource, NamedEnum, OutsideView, STAGE_NAMES};
+use close2gl_core::{Action, ModelSource, NamedEnum, OutsideView, Overlay, STAGE_NAMES};
 use toml::Value;
 
 use super::Config;
@@ -105,7 +105,7 @@ pub const KEYS: &[Key] = &[
         IfChanged(|c| flag(c.render.texture))),
     key!("render"."texture_filter", |c, v, _b| c.render.texture_filter = named(v)?,
         IfChanged(|c| name(c.render.texture_filter))),
-    key!("render"."overlay", |c, v, _b| c.render.overlay = named(v)?,
+    key!("render"."overlay", |c, v, _b| c.render.overlay = overlay(v)?,
         IfChanged(|c| name(c.render.overlay))),
     key!("render"."mistake", |c, v, _b| c.render.mistake = named(v)?,
         IfChanged(|c| name(c.render.mistake))),
@@ -330,6 +330,15 @@ fn named<T: NamedEnum>(value: &Value) -> Result<T, String> {
         let names: Vec<String> = T::ALL.iter().map(|n| format!("\"{}\"", n.name())).collect();
         format!("expected one of {}, found \"{text}\"", names.join(", "))
     })
+}
+
+/// The overlay by name. "fates" was the fate view's name here before it had one name in the
+/// config, the keys and the code; configs and recordings that say it still read.
+fn overlay(value: &Value) -> Result<Overlay, String> {
+    match string(value)? {
+        "fates" => Ok(Overlay::FateView),
+        _ => named(value),
+    }
 }
 
 fn triple(

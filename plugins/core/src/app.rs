@@ -5,7 +5,7 @@ use bevy_ecs::prelude::*;
 use bevy_ecs::schedule::{IntoScheduleConfigs, ScheduleLabel};
 use bevy_ecs::system::ScheduleSystem;
 
-use crate::schedule::{Startup, frame_schedules, ordered_schedule};
+use crate::schedule::{Update, frame_schedule};
 
 /// A unit of behaviour, added the bevy way: `app.add_plugins(MyPlugin)`. A plain
 /// `fn(&mut App)` (or closure) is a plugin too.
@@ -53,7 +53,7 @@ struct Requirement {
     owner: Owner,
 }
 
-/// A World, its named schedules and the plugins that filled them. Small on purpose: bevy_app's
+/// A World, its frame schedule and the plugins that filled it. Small on purpose: bevy_app's
 /// job without its weight.
 pub struct App {
     world: World,
@@ -72,13 +72,10 @@ impl Default for App {
 }
 
 impl App {
-    /// An empty world with the frame schedules, each with the [`crate::FrameSet`]s in order.
+    /// An empty world with the frame's schedule, its [`crate::FrameSet`]s in order.
     pub fn new() -> Self {
         let mut world = World::new();
-        world.add_schedule(ordered_schedule(Startup));
-        for label in frame_schedules() {
-            world.add_schedule(ordered_schedule(label));
-        }
+        world.add_schedule(frame_schedule());
         Self {
             world,
             plugins: HashSet::new(),
@@ -178,20 +175,17 @@ impl App {
         &mut self.world
     }
 
-    /// Runs one frame: `Startup` the first time, then every frame schedule in order. The first
-    /// frame panics when a plugin's requirement is not met (see [`App::requires`]): a missing
-    /// plugin is a programming error, and the message names it.
+    /// Runs one frame: the [`Update`] schedule. The first frame panics when a plugin's
+    /// requirement is not met (see [`App::requires`]): a missing plugin is a programming error,
+    /// and the message names it.
     pub fn update(&mut self) {
         if !self.started {
             if let Err(message) = self.check_requirements() {
                 panic!("{message}");
             }
             self.started = true;
-            self.world.run_schedule(Startup);
         }
-        for label in frame_schedules() {
-            self.world.run_schedule(label);
-        }
+        self.world.run_schedule(Update);
     }
 
     /// Replaces what `run` does (the viewer installs its event loop here).

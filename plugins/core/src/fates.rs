@@ -1,4 +1,4 @@
-//! What happened to each mesh triangle in the Close2GL pipeline: the inspector's fate view, its
+//! What happened to each mesh triangle in the Close2GL pipeline: the fate view, its
 //! counts and the outside view's colours all read this one record, so they cannot disagree.
 
 use bevy_ecs::prelude::*;

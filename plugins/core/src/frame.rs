@@ -95,7 +95,7 @@ pub struct Close2glFrame {
     /// Viewport the vertices were mapped to.
     pub viewport: Viewport,
     /// Wall time of the geometry stage, milliseconds.
-    pub stage_ms: f64,
+    pub geometry_ms: f64,
 }
 
 impl Close2glFrame {
@@ -119,7 +119,7 @@ impl Close2glFrame {
 pub struct SoftwareFrame {
     pub image: Image,
     /// Rasterization, depth test, shading and the copy into the image, in milliseconds (the
-    /// geometry before it is `Close2glFrame::stage_ms`).
+    /// geometry before it is `Close2glFrame::geometry_ms`).
     pub raster_ms: f64,
 }
 

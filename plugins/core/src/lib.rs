@@ -1,5 +1,5 @@
 //! The shared ECS vocabulary of close2gl. This crate owns the small `App`/`Plugin` pair (a World
-//! with named frame schedules, and the [`FrameSet`]s that order every plugin's systems in them),
+//! with its one frame schedule, and the [`FrameSet`]s that order every plugin's systems in it),
 //! every component and resource that more than one plugin touches (the camera, the mesh, the
 //! render settings and lighting, the outside view's settings and orbit, the raw input and the camera actions it becomes, the viewport,
 //! and the Close2GL frame: the 2D vertex buffer and its stage counts, the fates and the selected
@@ -55,7 +55,7 @@ pub use model::{
 pub use named::NamedEnum;
 pub use outside::{OutsideOrbit, OutsideView, STAGE_NAMES};
 pub use reference_camera::camera_matrices;
-pub use schedule::{FrameSet, PostUpdate, PreUpdate, Render, Startup, Update, frame_schedules};
+pub use schedule::{FrameSet, Update};
 pub use settings::{
     Clipping, FrontFace, Lighting, Mistake, Overlay, Rasterizer, RenderMode, RenderSettings,
     Shading, TextureFilter,

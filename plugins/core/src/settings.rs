@@ -57,7 +57,7 @@ named_enum!(
         /// Close2GL's view coloured by each triangle's fate (`Fates`), with ghosts of what
         /// clipping and culling removed; the reference view with what its GPU knows (facing,
         /// the depth test's outcome).
-        Fates = "fates",
+        FateView = "fate_view",
         /// Close2GL's view replaced by where the two views differ: covered only in the
         /// reference (magenta), only in Close2GL (green), the reference faded elsewhere.
         Difference = "difference"

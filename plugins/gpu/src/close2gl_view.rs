@@ -42,11 +42,11 @@ const VERTEX_SIZE: u64 = size_of::<[f32; 2]>() as u64;
 impl Close2glView {
     pub(crate) fn new(device: &wgpu::Device, color_format: wgpu::TextureFormat) -> Self {
         let shader = device.create_shader_module(wgpu::include_wgsl!("close2gl.wgsl"));
-        let crate::UniformSetup {
+        let crate::uniforms::UniformSetup {
             buffer: uniforms,
             bind_group,
             layout,
-        } = crate::UniformSetup::new(device, "close2gl", size_of::<FrameUniforms>());
+        } = crate::uniforms::UniformSetup::new(device, "close2gl", size_of::<FrameUniforms>());
         Self {
             shader,
             layout,

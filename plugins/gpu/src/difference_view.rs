@@ -5,8 +5,10 @@
 
 use wgpu::util::DeviceExt;
 
+use crate::fullscreen;
+use crate::texture::DEPTH_FORMAT;
 use crate::texture::texture_2d;
-use crate::{DEPTH_FORMAT, fullscreen};
+use crate::uniforms::uniform_entry;
 
 /// The two views' images for one viewport size, and the bind group that compares them.
 pub(crate) struct Inputs {
@@ -29,7 +31,7 @@ pub(crate) struct DifferenceView {
 
 impl DifferenceView {
     pub(crate) fn new(device: &wgpu::Device, color_format: wgpu::TextureFormat) -> Self {
-        let uniform = crate::uniform_entry(2, wgpu::ShaderStages::FRAGMENT);
+        let uniform = uniform_entry(2, wgpu::ShaderStages::FRAGMENT);
         let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
             label: Some("difference"),
             entries: &[

@@ -1,4 +1,4 @@
-//! The fate view (`Overlay::Fates`): Close2GL's view with every mesh triangle in its fate's
+//! The fate view (`Overlay::FateView`): Close2GL's view with every mesh triangle in its fate's
 //! colour (`FateKind::color`, the one legend), from the fates Close2GL itself recorded
 //! (`Fates`). Triangles that reach the screen (drawn, cut, no pixels, hidden) are filled; those
 //! clipping or culling removed (clipped, culled, zero area) are outlined where they would
@@ -150,7 +150,7 @@ pub(crate) fn record_fates_while_shown(
     mut fates: ResMut<Fates>,
     mut shown: Local<bool>,
 ) {
-    let now = settings.overlay == Overlay::Fates;
+    let now = settings.overlay == Overlay::FateView;
     if now != *shown {
         fates.record = now;
         *shown = now;

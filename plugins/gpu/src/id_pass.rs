@@ -13,10 +13,12 @@ use bytemuck::{Pod, Zeroable};
 use close2gl_core::{Mesh, Scene, Viewport};
 use wgpu::util::DeviceExt;
 
+use crate::gpu::Gpu;
 use crate::readback::Mapping;
 use crate::reference::{PipelineKey, has_area, primitive_state, relative_matrices};
+use crate::texture::DEPTH_FORMAT;
 use crate::texture::texture_2d;
-use crate::{DEPTH_FORMAT, Gpu, UniformSetup};
+use crate::uniforms::UniformSetup;
 
 /// The GPU's answer for one pixel of the reference view.
 #[derive(Clone, Copy, Debug, PartialEq)]

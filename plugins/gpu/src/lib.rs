@@ -4,7 +4,7 @@
 //! rasterizer's image drawn as one textured triangle, or in the fate view each triangle in its
 //! fate's colour, or in the live difference where the two views differ), both held in [`Views`],
 //! with the selected triangle's highlight. [`GpuPlugin`] adds
-//! the `Render` systems that read `Camera`, `Mesh`, `RenderSettings`, `Lighting`,
+//! the systems (in `FrameSet::Output`) that read `Camera`, `Mesh`, `RenderSettings`, `Lighting`,
 //! `Texture`, `Close2glFrame`, `SoftwareFrame`, `SelectedTriangle`, `Viewport` and `Fates` (asking
 //! for it to be recorded while the fate view is shown) and upload what changed into `Views`; whoever
 //! owns the target (a window, or [`render_offscreen`]) records the draws.
@@ -28,125 +28,85 @@ mod highlight;
 mod id_pass;
 mod offscreen;
 pub mod outside;
+mod pass;
 mod readback;
 mod reference;
 mod reference_texture;
 mod software_view;
-mod systems;
 pub mod texture;
+mod uniforms;
+mod uploads;
 mod vertex_pipeline;
 mod views;
+
+use bevy_ecs::prelude::*;
+use close2gl_core::{
+    App, Close2glFrame, Fates, FrameSet, Lighting, Owner, Plugin, RenderSettings, SelectedTriangle,
+    Update, Viewport,
+};
+
+use fate_view::record_fates_while_shown;
+use uploads::{
+    render_difference, upload_close2gl, upload_fates, upload_highlight, upload_mesh,
+    upload_reference, upload_software, upload_texture,
+};
 
 pub use close2gl_core::Image;
 pub use close2gl_core::camera_matrices;
 pub use gpu::{Gpu, parse_backends};
 pub use id_pass::{ReferenceHit, ReferenceProbe, probe_reference, start_probe};
 pub use offscreen::{OFFSCREEN_FORMAT, OffscreenPlugin, Snapshot, render_offscreen};
+pub use pass::{submit_pass, submit_pass_timed};
 pub use readback::{Pending, Readback};
 pub use reference::clear_color;
-pub use systems::GpuPlugin;
+pub use texture::DEPTH_FORMAT;
 pub use views::Views;
 /// Re-exported so that users of this crate name the same wgpu types.
 pub use wgpu;
 
-/// The depth attachment format the reference view's pass must use.
-pub const DEPTH_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Depth32Float;
+/// Adds the systems that upload what changed, by bevy's change ticks as the pipeline
+/// watches its inputs: the `Mesh` again only when it changed, the `Texture` likewise; the
+/// reference uniforms from `Camera`, `RenderSettings` and `Lighting`; the Close2GL 2D buffer
+/// from `Close2glFrame`, or the software rasterizer's image from `SoftwareFrame`; in the fate
+/// view (`RenderSettings::overlay`), each triangle in its colour from `Fates`, which it asks
+/// Close2GL to record (`Fates::record`) while that view is shown (it inserts `Fates` if no one
+/// has); the selected triangle's highlight (`SelectedTriangle`); in the live difference, both
+/// views drawn again into textures of the `Viewport`'s size and compared. They run once
+/// the `Gpu` and `Views` resources exist (inserted by whoever owns the target), so a window may
+/// arrive late. It owns no resource: the model, settings and Close2GL plugins provide what it
+/// reads, the model plugin the texture (without one the reference draws untextured), and the
+/// raster plugin, when there is one, the software image.
+pub struct GpuPlugin;
 
-/// Records one pass into `target` (its depth, when given, cleared to the far plane) and submits
-/// it. The windows and the offscreen target draw every view through this, so they draw alike.
-pub fn submit_pass(
-    gpu: &Gpu,
-    target: &wgpu::TextureView,
-    depth: Option<&wgpu::TextureView>,
-    load: wgpu::LoadOp<wgpu::Color>,
-    record: impl FnOnce(&mut wgpu::RenderPass<'_>),
-) {
-    let mut encoder = gpu.device.create_command_encoder(&Default::default());
-    {
-        let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
-            label: Some("view"),
-            color_attachments: &[Some(texture::color_attachment(target, load))],
-            depth_stencil_attachment: depth.map(texture::depth_attachment),
-            timestamp_writes: None,
-            occlusion_query_set: None,
-            multiview_mask: None,
-        });
-        record(&mut pass);
-    }
-    gpu.queue.submit([encoder.finish()]);
-}
-
-/// [`submit_pass`], then waits for the GPU to finish it: a view's time is its own recording and
-/// the GPU's work on it. Returns the milliseconds it took. The windows and the offscreen target
-/// time every view this way.
-pub fn submit_pass_timed(
-    gpu: &Gpu,
-    target: &wgpu::TextureView,
-    depth: Option<&wgpu::TextureView>,
-    load: wgpu::LoadOp<wgpu::Color>,
-    record: impl FnOnce(&mut wgpu::RenderPass<'_>),
-) -> f64 {
-    let start = web_time::Instant::now();
-    submit_pass(gpu, target, depth, load, record);
-    // A failed wait means a lost device; the next acquire or readback reports it.
-    let _ = gpu.device.poll(wgpu::PollType::Wait {
-        submission_index: None,
-        timeout: Some(std::time::Duration::from_secs(30)),
-    });
-    start.elapsed().as_secs_f64() * 1e3
-}
-
-/// A view's uniform buffer (binding 0 of group 0, seen by both shader stages), its bind group
-/// and the pipeline layout every one of the view's pipelines shares.
-/// A uniform buffer at `binding`, seen by the `visibility` stages.
-fn uniform_entry(binding: u32, visibility: wgpu::ShaderStages) -> wgpu::BindGroupLayoutEntry {
-    wgpu::BindGroupLayoutEntry {
-        binding,
-        visibility,
-        ty: wgpu::BindingType::Buffer {
-            ty: wgpu::BufferBindingType::Uniform,
-            has_dynamic_offset: false,
-            min_binding_size: None,
-        },
-        count: None,
-    }
-}
-
-struct UniformSetup {
-    buffer: wgpu::Buffer,
-    bind_group: wgpu::BindGroup,
-    layout: wgpu::PipelineLayout,
-}
-
-impl UniformSetup {
-    fn new(device: &wgpu::Device, label: &str, size: usize) -> Self {
-        let buffer = device.create_buffer(&wgpu::BufferDescriptor {
-            label: Some(label),
-            size: size as u64,
-            usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
-            mapped_at_creation: false,
-        });
-        let bind_group_layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
-            label: Some(label),
-            entries: &[uniform_entry(0, wgpu::ShaderStages::VERTEX_FRAGMENT)],
-        });
-        let bind_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
-            label: Some(label),
-            layout: &bind_group_layout,
-            entries: &[wgpu::BindGroupEntry {
-                binding: 0,
-                resource: buffer.as_entire_binding(),
-            }],
-        });
-        let layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
-            label: Some(label),
-            bind_group_layouts: &[Some(&bind_group_layout)],
-            immediate_size: 0,
-        });
-        Self {
-            buffer,
-            bind_group,
-            layout,
-        }
+impl Plugin for GpuPlugin {
+    fn build(&self, app: &mut App) {
+        app.requires::<RenderSettings>(Owner::Settings)
+            .requires::<Lighting>(Owner::Settings)
+            .requires::<Close2glFrame>(Owner::Close2gl)
+            .requires::<Viewport>(Owner::Settings)
+            .requires::<SelectedTriangle>(Owner::Settings)
+            .init_resource::<Fates>()
+            .add_systems(
+                Update,
+                record_fates_while_shown
+                    .in_set(FrameSet::Close2gl)
+                    .before(close2gl_pipeline::close2gl_system),
+            )
+            .add_systems(
+                Update,
+                (
+                    upload_mesh,
+                    upload_texture,
+                    upload_reference,
+                    upload_close2gl,
+                    upload_software,
+                    upload_fates,
+                    upload_highlight,
+                    render_difference,
+                )
+                    .chain()
+                    .in_set(FrameSet::Output)
+                    .run_if(resource_exists::<Gpu>.and_then(resource_exists::<Views>)),
+            );
     }
 }

@@ -1,15 +1,20 @@
 //! Offscreen rendering with exactly the systems and draw calls a window uses: the same `Views`,
-//! the same `Render` schedule, a texture instead of a surface, and a readback to RGBA8.
+//! the same upload systems, a texture instead of a surface, and a readback to RGBA8.
 
 use bevy_ecs::prelude::*;
 use close2gl_core::{
     App, Close2glFrame, Plugin, Rasterizer, RenderSettings, SoftwareFrame, StageCounts, Viewport,
 };
 
+use crate::GpuPlugin;
+use crate::gpu::Gpu;
 use crate::outside::{OutsidePlugin, OutsideRenderer};
+use crate::pass::submit_pass_timed;
 use crate::readback::Readback;
+use crate::texture::DEPTH_FORMAT;
 use crate::texture::{READABLE_TARGET, texture_2d};
-use crate::{DEPTH_FORMAT, Gpu, GpuPlugin, Image, Views};
+use crate::views::Views;
+use close2gl_core::Image;
 use close2gl_core::parity::to_rgb8;
 
 /// The offscreen colour format: linear 8-bit, so an image's bytes are the colour values the
@@ -75,7 +80,7 @@ impl Target {
     }
 }
 
-/// Runs one frame of `app` (all schedules, `Render` included) and draws both views offscreen at
+/// Runs one frame of `app` (its uploads included) and draws both views offscreen at
 /// the `Viewport` size. The app needs [`OffscreenPlugin`] (or `Gpu`, `Views` in
 /// [`OFFSCREEN_FORMAT`] and [`GpuPlugin`]), a `Camera` and a `Mesh`.
 pub fn render_offscreen(app: &mut App) -> Result<Snapshot, String> {
@@ -108,7 +113,7 @@ pub fn render_offscreen(app: &mut App) -> Result<Snapshot, String> {
     let close2gl_draw_ms = draw(&gpu, views, &target.close2gl, None, |views, pass| {
         views.draw_close2gl(pass)
     });
-    let close2gl_ms = frame.stage_ms
+    let close2gl_ms = frame.geometry_ms
         + match world.get_resource::<SoftwareFrame>() {
             Some(image) if software => image.raster_ms,
             _ => close2gl_draw_ms,
@@ -154,7 +159,7 @@ fn draw(
     let color_view = color.create_view(&Default::default());
     let depth_view = depth.map(|d| d.create_view(&Default::default()));
     let clear = wgpu::LoadOp::Clear(views.clear_color());
-    crate::submit_pass_timed(gpu, &color_view, depth_view.as_ref(), clear, |pass| {
+    submit_pass_timed(gpu, &color_view, depth_view.as_ref(), clear, |pass| {
         record(views, pass)
     })
 }

@@ -3,7 +3,7 @@
 
 use std::sync::{Arc, Mutex};
 
-use crate::Gpu;
+use crate::gpu::Gpu;
 
 /// A mappable buffer for `layers` textures of `width` x `height` at 4 bytes a pixel, kept
 /// between frames by whoever reads back every frame.

@@ -1,6 +1,9 @@
 //! The texture and attachment descriptions every target shares: offscreen views, window depth
 //! buffers, screenshots, the panel's pass.
 
+/// The depth attachment format the reference view's pass must use.
+pub const DEPTH_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Depth32Float;
+
 /// A plain 2D texture (one mip level, one sample) of `width` x `height`.
 pub fn texture_2d(
     device: &wgpu::Device,

@@ -2,7 +2,8 @@
 
 use bevy_ecs::prelude::*;
 
-use crate::Gpu;
+use crate::gpu::Gpu;
+use crate::pass::submit_pass;
 use close2gl_core::{Overlay, Rasterizer};
 
 use crate::close2gl_view::Close2glView;
@@ -13,7 +14,7 @@ use crate::reference::{Reference, clear_color};
 use crate::software_view::SoftwareView;
 
 /// GPU state for both views (a Resource): the reference renderer and the Close2GL 2D renderer.
-/// The `Render` systems of [`crate::GpuPlugin`] keep it up to date; the owner of the target
+/// The upload systems of [`crate::GpuPlugin`] keep it up to date; the owner of the target
 /// records the draws.
 #[derive(Resource)]
 pub struct Views {
@@ -49,11 +50,11 @@ impl Views {
 
     /// Records the reference view into a pass that has a [`crate::DEPTH_FORMAT`] depth
     /// attachment (cleared to 1.0); the caller sets the pass viewport (the whole target, or the
-    /// left half in the split layout). Draws nothing before the first `Render` update. In the
+    /// left half in the split layout). Draws nothing before the first frame's uploads. In the
     /// fate view, the GPU's own facing and depth-test answers are drawn over the model; the
     /// selected triangle, if any, over everything.
     pub fn draw_reference(&self, pass: &mut wgpu::RenderPass<'_>) {
-        self.reference.draw(pass, self.overlay == Overlay::Fates);
+        self.reference.draw(pass, self.overlay == Overlay::FateView);
         self.highlight.draw_reference(pass);
     }
 
@@ -64,7 +65,7 @@ impl Views {
     /// any, over everything.
     pub fn draw_close2gl(&self, pass: &mut wgpu::RenderPass<'_>) {
         match self.overlay {
-            Overlay::Fates => self.fates.draw(pass),
+            Overlay::FateView => self.fates.draw(pass),
             Overlay::Difference => self.difference.draw(pass),
             Overlay::Off => self.draw_compared_close2gl(pass),
         }
@@ -90,10 +91,10 @@ impl Views {
         };
         let clear = wgpu::LoadOp::Clear(self.background);
         let depth = Some(&inputs.depth);
-        crate::submit_pass(gpu, &inputs.reference, depth, clear, |pass| {
+        submit_pass(gpu, &inputs.reference, depth, clear, |pass| {
             self.reference.draw(pass, false)
         });
-        crate::submit_pass(gpu, &inputs.close2gl, None, clear, |pass| {
+        submit_pass(gpu, &inputs.close2gl, None, clear, |pass| {
             self.draw_compared_close2gl(pass)
         });
     }

@@ -40,7 +40,7 @@ fn scene() -> Mesh {
 /// pipeline records; set here so that the view is tested on its own).
 fn render(kinds: [FateKind; 3]) -> (App, Snapshot) {
     let settings = RenderSettings {
-        overlay: Overlay::Fates,
+        overlay: Overlay::FateView,
         shading: Shading::None,
         ..Default::default()
     };

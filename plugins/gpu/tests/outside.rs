@@ -6,7 +6,7 @@ use close2gl_core::{App, Camera, OutsideView, RenderSettings, Viewport};
 use close2gl_gpu::outside::{OutsideRenderer, render_outside};
 use close2gl_gpu::{Image, OffscreenPlugin, render_offscreen};
 use close2gl_pipeline::Close2glPlugin;
-use close2gl_pipeline::morph::StageFrame;
+use close2gl_pipeline::morph::OutsideFraming;
 use close2gl_testkit::{gpu, sphere};
 
 const SIZE: Viewport = Viewport {
@@ -45,7 +45,7 @@ fn scene() -> (App, Camera) {
 
 /// The pixel the outside camera projects world point `p` onto.
 fn pixel_of(app: &App, camera: &Camera, p: Vec3) -> (u32, u32) {
-    let frame = StageFrame::new(camera, (Vec3::splat(-1.0), Vec3::splat(1.0)));
+    let frame = OutsideFraming::new(camera, (Vec3::splat(-1.0), Vec3::splat(1.0)));
     let outside = app
         .world()
         .resource::<OutsideRenderer>()
@@ -72,7 +72,7 @@ fn lit(app: &App, camera: &Camera, p: Vec3) -> Vec3 {
         .camera()
         .expect("drawn")
         .eye;
-    let frame = StageFrame::new(camera, (Vec3::splat(-1.0), Vec3::splat(1.0)));
+    let frame = OutsideFraming::new(camera, (Vec3::splat(-1.0), Vec3::splat(1.0)));
     let to_eye = (eye + frame.origin - p).normalize();
     MODEL * 255.0 * (0.35 + 0.65 * p.dot(to_eye).abs())
 }

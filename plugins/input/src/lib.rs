@@ -8,13 +8,13 @@
 //! `InputBindings` and `ToolRequests`; the camera plugin provides the actions and speeds, the core's
 //! `SettingsPlugin` the render settings. Its system runs in `FrameSet::Input`.
 
-mod outside;
+mod outside_keys;
 
 use bevy_ecs::prelude::*;
 use close2gl_core::Owner;
 use close2gl_core::{
     Action, App, CameraAction, CameraActions, CameraSpeeds, FrameSet, InputBindings, InputState,
-    Overlay, Plugin, PreUpdate, RenderSettings, Shading, ToolRequests,
+    Overlay, Plugin, RenderSettings, Shading, ToolRequests, Update,
 };
 
 pub struct InputPlugin;
@@ -28,8 +28,8 @@ impl Plugin for InputPlugin {
             .requires::<CameraSpeeds>(Owner::Camera)
             .requires::<RenderSettings>(Owner::Settings)
             .add_systems(
-                PreUpdate,
-                (map_input, outside::toggle_outside).in_set(FrameSet::Input),
+                Update,
+                (map_input, outside_keys::toggle_outside).in_set(FrameSet::Input),
             );
     }
 }
@@ -120,7 +120,7 @@ fn apply_press(
     } else if is(Action::CopyCommand) {
         tools.copy_command = true;
     } else if is(Action::FateView) {
-        settings.overlay = toggled(settings.overlay, Overlay::Fates);
+        settings.overlay = toggled(settings.overlay, Overlay::FateView);
     } else if is(Action::DifferenceView) {
         settings.overlay = toggled(settings.overlay, Overlay::Difference);
     }

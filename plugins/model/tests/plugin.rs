@@ -3,8 +3,8 @@
 
 use bevy_ecs::prelude::*;
 use close2gl_core::{
-    App, Mesh, ModelRequest, ModelSource, ModelStatus, PostUpdate, PrimitiveKind, PrimitiveParams,
-    Texture, TextureRequest,
+    App, FrameSet, Mesh, ModelRequest, ModelSource, ModelStatus, PrimitiveKind, PrimitiveParams,
+    Texture, TextureRequest, Update,
 };
 use close2gl_model::ModelPlugin;
 
@@ -20,7 +20,7 @@ fn app() -> App {
     let mut app = App::new();
     app.add_plugins(ModelPlugin)
         .init_resource::<MeshChanges>()
-        .add_systems(PostUpdate, count_mesh_changes);
+        .add_systems(Update, count_mesh_changes.in_set(FrameSet::Output));
     app
 }
 

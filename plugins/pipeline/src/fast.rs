@@ -1,4 +1,4 @@
-//! The Close2GL frame for big meshes. Same stage, same output as the textbook path, but each
+//! The Close2GL frame for big meshes. Same constants, same output as the textbook path, but each
 //! unique vertex is transformed once (the mesh is indexed), and both the vertices and the
 //! triangles are processed in parallel chunks whose outputs are joined in order, so the 2D buffer
 //! is the same whatever the thread count. All buffers live in [`FastPipeline`] and are reused:
@@ -16,7 +16,9 @@ use rayon::prelude::*;
 use crate::Tally;
 use crate::clip::Outcode;
 use crate::matrices::ClipTransform;
-use crate::stage::{CUT, Emit, RasterEmit, RasterOut, Stage, corner, process, to_window_depth};
+use crate::stage::{
+    CUT, Emit, FrameConstants, RasterEmit, RasterOut, corner, process, to_window_depth,
+};
 
 /// Vertices and triangles per parallel task: big enough to amortise scheduling, small enough to
 /// balance two cores when one side of the model is clipped away, and to split a cow-sized model
@@ -69,16 +71,16 @@ impl FastPipeline {
         fates: &mut Fates,
     ) {
         let transform = ClipTransform::new(camera);
-        let stage = Stage::new(settings, viewport);
+        let constants = FrameConstants::new(settings, viewport);
         let raster = settings.close2gl_raster == Rasterizer::Software;
-        self.transform_vertices(&mesh.positions, &transform, &stage);
+        self.transform_vertices(&mesh.positions, &transform, &constants);
         if raster {
-            raster_vertices(mesh, &transform, &stage, &mut frame.raster.vertices);
+            raster_vertices(mesh, &transform, &constants, &mut frame.raster.vertices);
             frame.raster.textured = !mesh.uvs.is_empty();
         }
-        let tasks = self.process_triangles(mesh, &transform, &stage, raster, fates);
+        let tasks = self.process_triangles(mesh, &transform, &constants, raster, fates);
         let total = self.join_into(tasks, raster, frame);
-        frame.topology = stage.topology();
+        frame.topology = constants.topology();
         frame.viewport = viewport;
         frame.counts = total.stage_counts();
         fates.counts = match fates.record {
@@ -94,7 +96,7 @@ impl FastPipeline {
         &mut self,
         mesh: &Mesh,
         transform: &ClipTransform,
-        stage: &Stage,
+        constants: &FrameConstants,
         raster: bool,
         fates: &mut Fates,
     ) -> usize {
@@ -127,10 +129,16 @@ impl FastPipeline {
                     raster: &mut chunk.raster,
                 };
                 chunk.counts = match (raster, record) {
-                    (true, true) => corners.process::<true>(triangles, stage, &mut out, fates),
-                    (true, false) => corners.process::<false>(triangles, stage, &mut out, fates),
-                    (false, true) => corners.process::<true>(triangles, stage, out.window, fates),
-                    (false, false) => corners.process::<false>(triangles, stage, out.window, fates),
+                    (true, true) => corners.process::<true>(triangles, constants, &mut out, fates),
+                    (true, false) => {
+                        corners.process::<false>(triangles, constants, &mut out, fates)
+                    }
+                    (false, true) => {
+                        corners.process::<true>(triangles, constants, out.window, fates)
+                    }
+                    (false, false) => {
+                        corners.process::<false>(triangles, constants, out.window, fates)
+                    }
                 };
             });
         tasks
@@ -156,7 +164,12 @@ impl FastPipeline {
     }
 
     /// Transforms every unique vertex once, into its outcode and window position.
-    fn transform_vertices(&mut self, positions: &[Vec3], transform: &ClipTransform, stage: &Stage) {
+    fn transform_vertices(
+        &mut self,
+        positions: &[Vec3],
+        transform: &ClipTransform,
+        constants: &FrameConstants,
+    ) {
         let vertices = positions.len();
         self.codes.resize(vertices, 0);
         self.window.resize(vertices, [0.0; 2]);
@@ -166,7 +179,7 @@ impl FastPipeline {
             .zip(positions.par_chunks(VERTEX_CHUNK))
             .for_each(|((codes, window), positions)| {
                 for (i, p) in positions.iter().enumerate() {
-                    (codes[i], window[i]) = corner(transform.apply(*p), stage);
+                    (codes[i], window[i]) = corner(transform.apply(*p), constants);
                 }
             });
     }
@@ -243,7 +256,7 @@ impl Corners<'_> {
     fn process<const RECORD: bool>(
         &self,
         triangles: &[[u32; 3]],
-        stage: &Stage,
+        constants: &FrameConstants,
         out: &mut impl Emit,
         fates: &mut [TriangleFate],
     ) -> Tally {
@@ -255,7 +268,7 @@ impl Corners<'_> {
                 [self.codes[a], self.codes[b], self.codes[c]],
                 [self.window[a], self.window[b], self.window[c]],
                 || [a, b, c].map(|i| self.transform.apply(self.positions[i])),
-                stage,
+                constants,
                 out,
             );
             counts.add(&fate);
@@ -276,17 +289,21 @@ impl Corners<'_> {
 /// Each mesh vertex as the rasterizer needs it: window position, depth and 1/w (for vertices
 /// inside the view volume; the others are only reached through clipping), eye-space position
 /// and normal, texture coordinates.
-/// The mesh's vertices as the software rasterizer takes them, for this camera and stage.
-pub(crate) fn raster_vertices_of(mesh: &Mesh, camera: &Camera, stage: &Stage) -> Vec<RasterVertex> {
+/// The mesh's vertices as the software rasterizer takes them, for this camera and these frame constants.
+pub(crate) fn raster_vertices_of(
+    mesh: &Mesh,
+    camera: &Camera,
+    constants: &FrameConstants,
+) -> Vec<RasterVertex> {
     let mut out = Vec::new();
-    raster_vertices(mesh, &ClipTransform::new(camera), stage, &mut out);
+    raster_vertices(mesh, &ClipTransform::new(camera), constants, &mut out);
     out
 }
 
 fn raster_vertices(
     mesh: &Mesh,
     transform: &ClipTransform,
-    stage: &Stage,
+    constants: &FrameConstants,
     out: &mut Vec<RasterVertex>,
 ) {
     out.resize(mesh.positions.len(), RasterVertex::default());
@@ -299,7 +316,7 @@ fn raster_vertices(
             let first = chunk * VERTEX_CHUNK;
             for (i, ((v, p), n)) in out.iter_mut().zip(positions).zip(normals).enumerate() {
                 *v = RasterVertex {
-                    window: to_window_depth(transform.apply(*p), &stage.viewport),
+                    window: to_window_depth(transform.apply(*p), &constants.viewport),
                     eye: transform.eye(*p).to_array(),
                     normal: transform.eye_normal(*n).to_array(),
                     uv: uvs.get(first + i).map_or([0.0; 2], |uv| uv.to_array()),

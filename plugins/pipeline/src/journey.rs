@@ -11,7 +11,7 @@ use glam::{Vec3, Vec4};
 
 use crate::clip::{Polygon, clip_step, outcode};
 use crate::matrices::ClipTransform;
-use crate::stage::{Stage, corner, face, process, to_window_depth};
+use crate::stage::{FrameConstants, corner, face, process, to_window_depth};
 
 /// The polygon after clipping by one plane.
 #[derive(Clone, Debug, PartialEq)]
@@ -62,14 +62,14 @@ pub fn journey(
     let corners = *mesh.triangles.get(index)?;
     let world = corners.map(|i| mesh.positions[i as usize]);
     let transform = ClipTransform::new(camera);
-    let stage = Stage::new(settings, viewport);
+    let constants = FrameConstants::new(settings, viewport);
     let clip = world.map(|p| transform.apply(p));
     let outcodes = clip.map(outcode);
-    // The fate is the pipeline's own decision, from the stage every frame runs.
-    let seen = clip.map(|c| corner(c, &stage));
+    // The fate is the pipeline's own decision, from the frame's constants.
+    let seen = clip.map(|c| corner(c, &constants));
     let (codes, window) = (seen.map(|(code, _)| code), seen.map(|(_, window)| window));
-    let fate = process::<true>(corners, codes, window, || clip, &stage, &mut Vec::new()).fate;
-    let clip_steps = clip_steps(clip, outcodes, &stage);
+    let fate = process::<true>(corners, codes, window, || clip, &constants, &mut Vec::new()).fate;
+    let clip_steps = clip_steps(clip, outcodes, &constants);
     let divided = match (&clip_steps.last(), fate.kind) {
         (_, FateKind::Clipped) => Vec::new(),
         (Some(last), _) => last.polygon.clone(),
@@ -78,13 +78,13 @@ pub fn journey(
     let ndc: Vec<Vec3> = divided.iter().map(|p| p.truncate() / p.w).collect();
     let window: Vec<Vec3> = divided
         .iter()
-        .map(|p| Vec3::from_slice(&to_window_depth(*p, &stage.viewport)[..3]))
+        .map(|p| Vec3::from_slice(&to_window_depth(*p, &constants.viewport)[..3]))
         .collect();
     let (signed_area, culling) = match window.is_empty() {
         true => (f32::NAN, None),
         false => face::<true>(
             &window.iter().map(|w| [w.x, w.y]).collect::<Vec<_>>(),
-            stage.culling,
+            constants.culling,
         ),
     };
     Some(Journey {
@@ -104,11 +104,11 @@ pub fn journey(
 
 /// The Sutherland–Hodgman steps the pipeline takes for a triangle that straddles the view
 /// volume: one per plane some corner lies outside of, stopping when the polygon vanishes.
-fn clip_steps(clip: [Vec4; 3], outcodes: [u8; 3], stage: &Stage) -> Vec<ClipStep> {
+fn clip_steps(clip: [Vec4; 3], outcodes: [u8; 3], constants: &FrameConstants) -> Vec<ClipStep> {
     let outside_any = outcodes[0] | outcodes[1] | outcodes[2];
     let outside_all = outcodes[0] & outcodes[1] & outcodes[2];
     let mut steps = Vec::new();
-    if outside_all != 0 || stage.clipping == Clipping::Simple {
+    if outside_all != 0 || constants.clipping == Clipping::Simple {
         return steps;
     }
     let mut polygon = Polygon::triangle(clip[0], clip[1], clip[2]);

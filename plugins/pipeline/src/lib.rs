@@ -29,13 +29,13 @@ use bevy_ecs::prelude::*;
 use close2gl_core::Owner;
 use close2gl_core::{
     App, Camera, Close2glFrame, FateCounts, FateKind, Fates, FrameSet, Mesh, Mistake, Plugin,
-    PostUpdate, RenderSettings, StageCounts, Viewport,
+    RenderSettings, StageCounts, Update, Viewport,
 };
 
 pub use fast::FastPipeline;
 use stage::Fate;
 
-/// Runs the Close2GL pipeline in `PostUpdate` (`FrameSet::Close2gl`), after the camera has moved.
+/// Runs the Close2GL pipeline in `FrameSet::Close2gl`, after the camera has moved.
 /// It owns `FastPipeline`, `Close2glFrame` and `Fates`; the core's `SettingsPlugin` provides the
 /// rest.
 pub struct Close2glPlugin;
@@ -47,7 +47,7 @@ impl Plugin for Close2glPlugin {
             .init_resource::<Fates>()
             .requires::<RenderSettings>(Owner::Settings)
             .requires::<Viewport>(Owner::Settings)
-            .add_systems(PostUpdate, close2gl_system.in_set(FrameSet::Close2gl));
+            .add_systems(Update, close2gl_system.in_set(FrameSet::Close2gl));
     }
 }
 
@@ -88,7 +88,7 @@ pub fn close2gl_system(
     } else {
         pipeline.run(&mesh, &camera, &settings, *viewport, &mut frame, &mut fates);
     }
-    frame.stage_ms = start.elapsed().as_secs_f64() * 1e3;
+    frame.geometry_ms = start.elapsed().as_secs_f64() * 1e3;
 }
 
 /// How many of some triangles met each fate, and how many primitives they were drawn as. The

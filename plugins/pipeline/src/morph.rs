@@ -58,7 +58,7 @@ pub struct StageMorph {
 }
 
 impl StageMorph {
-    pub fn new(camera: &Camera, frame: &StageFrame, stage: f32) -> Self {
+    pub fn new(camera: &Camera, frame: &OutsideFraming, stage: f32) -> Self {
         Self {
             transform: ClipTransform::new(camera),
             origin: frame.origin,
@@ -121,7 +121,7 @@ pub const FAR_FADED_BEYOND: f32 = 2.0;
 /// model to a dot there). At the eye stage it is the same sphere moved by M; at the NDC stage the
 /// cube is drawn to the same radius, so the framing never jumps.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct StageFrame {
+pub struct OutsideFraming {
     /// The model's centre: world positions are drawn relative to it.
     pub origin: Vec3,
     /// The sphere's centre at the world, eye and NDC stops, in drawn coordinates.
@@ -132,7 +132,7 @@ pub struct StageFrame {
     pub far_faded: bool,
 }
 
-impl StageFrame {
+impl OutsideFraming {
     /// The model, the eye and the near plane, seen by `camera`; the model's bounds `(lo, hi)`.
     pub fn new(camera: &Camera, bounds: (Vec3, Vec3)) -> Self {
         Self::framing(camera, bounds, false)
@@ -205,7 +205,7 @@ mod tests {
     #[test]
     fn at_the_ndc_stage_every_point_inside_the_view_volume_lands_inside_the_cube() {
         let (camera, bounds) = scene();
-        let frame = StageFrame::new(&camera, bounds);
+        let frame = OutsideFraming::new(&camera, bounds);
         let morph = StageMorph::new(&camera, &frame, 2.0);
         let half = frame.ndc_scale() * (1.0 + 1e-5);
         let (mut inside, mut outside) = (0, 0);
@@ -238,7 +238,7 @@ mod tests {
     #[test]
     fn the_volume_becomes_the_cube_with_its_near_face_towards_the_eye() {
         let (camera, bounds) = scene();
-        let frame = StageFrame::new(&camera, bounds);
+        let frame = OutsideFraming::new(&camera, bounds);
         let morph = StageMorph::new(&camera, &frame, 2.0);
         for (corner, [x, y, z]) in world_corners(&camera).iter().zip(NDC_CORNERS) {
             let drawn = morph.place(*corner).position / frame.ndc_scale();
@@ -253,7 +253,7 @@ mod tests {
     #[test]
     fn the_stops_are_world_eye_and_ndc_and_the_morph_is_continuous() {
         let (camera, bounds) = scene();
-        let frame = StageFrame::new(&camera, bounds);
+        let frame = OutsideFraming::new(&camera, bounds);
         let transform = ClipTransform::new(&camera);
         let p = bounds.0 + Vec3::new(100.0, 700.0, 300.0);
         let at = |stage| StageMorph::new(&camera, &frame, stage).place(p).position;
@@ -276,13 +276,13 @@ mod tests {
             far: 3000.0,
             ..camera
         };
-        let inside = |frame: &StageFrame, p: Vec3| {
+        let inside = |frame: &OutsideFraming, p: Vec3| {
             (p - frame.origin - frame.centres[0]).length() <= frame.radius * 1.0001
         };
         let corners = world_corners(&camera);
         for (frame, framed) in [
-            (StageFrame::new(&camera, bounds), &corners[..4]),
-            (StageFrame::whole_volume(&camera, bounds), &corners[..]),
+            (OutsideFraming::new(&camera, bounds), &corners[..4]),
+            (OutsideFraming::whole_volume(&camera, bounds), &corners[..]),
         ] {
             assert!(framed.iter().all(|c| inside(&frame, *c)));
             assert!([camera.position, bounds.0, bounds.1].map(|p| inside(&frame, p)) == [true; 3]);
@@ -298,8 +298,8 @@ mod tests {
             far: camera.far * 100.0,
             ..camera
         };
-        let frame = StageFrame::new(&far_away, bounds);
-        let inside = |frame: &StageFrame, p: Vec3| {
+        let frame = OutsideFraming::new(&far_away, bounds);
+        let inside = |frame: &OutsideFraming, p: Vec3| {
             (p - frame.origin - frame.centres[0]).length() <= frame.radius * 1.0001
         };
         let corners = world_corners(&far_away);
@@ -313,13 +313,13 @@ mod tests {
             "the model is a third of the frame or more: {} vs {model}",
             frame.radius
         );
-        let nearer = StageFrame::new(&camera, bounds);
+        let nearer = OutsideFraming::new(&camera, bounds);
         assert!(
             (frame.radius - nearer.radius).abs() < 1e-4 * frame.radius,
             "framed as with the scene's own far plane"
         );
         assert!(frame.far_faded);
-        let whole = StageFrame::whole_volume(&far_away, bounds);
+        let whole = OutsideFraming::whole_volume(&far_away, bounds);
         assert!(
             corners.iter().all(|c| inside(&whole, *c)),
             "the far face too"
@@ -329,7 +329,7 @@ mod tests {
     #[test]
     fn past_the_eye_stage_a_triangle_across_w_0_has_no_image() {
         let (camera, bounds) = scene();
-        let frame = StageFrame::new(&camera, bounds);
+        let frame = OutsideFraming::new(&camera, bounds);
         let target = frame.origin;
         let corners = [
             target,
@@ -353,7 +353,7 @@ mod tests {
     #[test]
     fn a_point_on_the_eye_plane_stays_finite() {
         let (camera, bounds) = scene();
-        let frame = StageFrame::new(&camera, bounds);
+        let frame = OutsideFraming::new(&camera, bounds);
         let morph = StageMorph::new(&camera, &frame, 2.0);
         let placed = morph.place(camera.position + camera.u * 10.0);
         assert!(placed.position.is_finite() && placed.behind_eye && placed.thrown_far);

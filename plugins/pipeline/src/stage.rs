@@ -14,7 +14,7 @@ use crate::matrices;
 
 /// What stays the same for every triangle of a frame.
 #[derive(Clone, Copy, Debug)]
-pub struct Stage {
+pub struct FrameConstants {
     pub mode: RenderMode,
     pub clipping: Clipping,
     /// The front face when backface culling is on.
@@ -22,7 +22,7 @@ pub struct Stage {
     pub viewport: Mat4,
 }
 
-impl Stage {
+impl FrameConstants {
     pub fn new(settings: &RenderSettings, viewport: Viewport) -> Self {
         Self {
             mode: settings.mode,
@@ -32,7 +32,7 @@ impl Stage {
         }
     }
 
-    /// How many vertices each primitive of [`Stage::topology`] has.
+    /// How many vertices each primitive of [`FrameConstants::topology`] has.
     pub fn topology_vertices(&self) -> usize {
         match self.mode {
             RenderMode::Points => 1,
@@ -52,10 +52,10 @@ impl Stage {
 
 /// A vertex after P·M: the planes it is outside of, and (only when it is inside, so the division
 /// is safe) its window position.
-pub fn corner(clip: Vec4, stage: &Stage) -> (Outcode, [f32; 2]) {
+pub fn corner(clip: Vec4, constants: &FrameConstants) -> (Outcode, [f32; 2]) {
     let code = outcode(clip);
     if code == 0 {
-        (code, to_window(clip, &stage.viewport))
+        (code, to_window(clip, &constants.viewport))
     } else {
         (code, [f32::NAN; 2])
     }
@@ -208,27 +208,27 @@ pub fn process<const RECORD: bool>(
     codes: [Outcode; 3],
     window: [[f32; 2]; 3],
     clip: impl FnOnce() -> [Vec4; 3],
-    stage: &Stage,
+    constants: &FrameConstants,
     out: &mut impl Emit,
 ) -> Fate {
     let outside_any = codes[0] | codes[1] | codes[2];
     if outside_any == 0 {
         // Trivially inside: the corners' window positions are already known.
-        let (area, culled) = face::<RECORD>(&window, stage.culling);
+        let (area, culled) = face::<RECORD>(&window, constants.culling);
         if let Some(kind) = culled {
             return Fate::culled(kind, 0, area);
         }
-        return Fate::drawn(0, area, emit_inside(&window, corners, stage.mode, out));
+        return Fate::drawn(0, area, emit_inside(&window, corners, constants.mode, out));
     }
     let outside_all = codes[0] & codes[1] & codes[2];
-    if stage.clipping == Clipping::Simple || outside_all != 0 {
-        let planes = match stage.clipping {
+    if constants.clipping == Clipping::Simple || outside_all != 0 {
+        let planes = match constants.clipping {
             Clipping::Simple => outside_any,
             _ => outside_all,
         };
         return Fate::clipped(planes, RECORD && behind_eye(outside_all, clip));
     }
-    cut::<RECORD>(corners, clip(), outside_any, stage, out)
+    cut::<RECORD>(corners, clip(), outside_any, constants, out)
 }
 
 /// Clip, divide, map, cull and emit a triangle that straddles the planes in `outside_any`. Kept
@@ -239,28 +239,32 @@ fn cut<const RECORD: bool>(
     corners: [u32; 3],
     clip: [Vec4; 3],
     outside_any: Outcode,
-    stage: &Stage,
+    constants: &FrameConstants,
     out: &mut impl Emit,
 ) -> Fate {
     let triangle = Polygon::triangle(clip[0], clip[1], clip[2]);
     let piece = clip_polygon(&triangle, outside_any);
     let mut piece_window = [[0.0; 2]; crate::clip::MAX_POLYGON];
     for (w, p) in piece_window.iter_mut().zip(piece.vertices()) {
-        *w = to_window(*p, &stage.viewport);
+        *w = to_window(*p, &constants.viewport);
     }
     let piece_window = &piece_window[..piece.len];
     if piece_window.is_empty() || piece_window.iter().flatten().any(|x| !x.is_finite()) {
         return Fate::clipped(outside_any, false);
     }
-    let (area, culled) = face::<RECORD>(piece_window, stage.culling);
+    let (area, culled) = face::<RECORD>(piece_window, constants.culling);
     if let Some(kind) = culled {
         return Fate::culled(kind, outside_any, area);
     }
-    if stage.mode == RenderMode::Points {
+    if constants.mode == RenderMode::Points {
         let points = clip_polygon(&triangle, outside_any & NEAR);
-        return Fate::drawn(outside_any, area, emit_points(&points, corners, stage, out));
+        return Fate::drawn(
+            outside_any,
+            area,
+            emit_points(&points, corners, constants, out),
+        );
     }
-    let ids = push_cuts(&piece, corners, stage, out);
+    let ids = push_cuts(&piece, corners, constants, out);
     let before = out.window().len();
     let mut emit = |i: usize| {
         out.window().push(piece_window[i]);
@@ -268,7 +272,7 @@ fn cut<const RECORD: bool>(
             raster.primitives.push(ids[i]);
         }
     };
-    if stage.mode == RenderMode::Solid {
+    if constants.mode == RenderMode::Solid {
         for i in 1..piece.len - 1 {
             [0, i, i + 1].into_iter().for_each(&mut emit);
         }
@@ -287,7 +291,7 @@ fn cut<const RECORD: bool>(
 fn push_cuts(
     piece: &Polygon,
     corners: [u32; 3],
-    stage: &Stage,
+    constants: &FrameConstants,
     out: &mut impl Emit,
 ) -> [u32; crate::clip::MAX_POLYGON] {
     let mut ids = [0; crate::clip::MAX_POLYGON];
@@ -295,7 +299,7 @@ fn push_cuts(
         for (i, (p, weights)) in piece.vertices().iter().zip(piece.weights).enumerate() {
             ids[i] = CUT | raster.cuts.len() as u32;
             raster.cuts.push(CutVertex {
-                window: to_window_depth(*p, &stage.viewport),
+                window: to_window_depth(*p, &constants.viewport),
                 corners,
                 weights: weights.to_array(),
             });
@@ -393,12 +397,17 @@ fn emit_inside(
 /// near plane has cut it (`near_cut`): its corners, and the points where an edge comes back in
 /// front of the near plane. Every other plane applies to each point alone (a point outside the
 /// viewport or the depth range is dropped), so no vertex is made on them.
-fn emit_points(near_cut: &Polygon, corners: [u32; 3], stage: &Stage, out: &mut impl Emit) -> usize {
+fn emit_points(
+    near_cut: &Polygon,
+    corners: [u32; 3],
+    constants: &FrameConstants,
+    out: &mut impl Emit,
+) -> usize {
     let before = out.window().len();
     for (i, p) in near_cut.vertices().iter().enumerate() {
         // Points made on the near plane are inside it by construction, whatever the rounding.
         if near_cut.original[i] && outcode(*p) & !NEAR == 0 {
-            let window = to_window_depth(*p, &stage.viewport);
+            let window = to_window_depth(*p, &constants.viewport);
             out.window().push([window[0], window[1]]);
             if let Some(raster) = out.raster() {
                 raster.primitives.push(CUT | raster.cuts.len() as u32);

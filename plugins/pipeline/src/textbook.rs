@@ -1,5 +1,5 @@
 //! The straightforward Close2GL frame: for each triangle, transform its three vertices by P·M and
-//! send it down the stage. Slow (shared vertices are transformed once per triangle) and easy to
+//! send it down the stages. Slow (shared vertices are transformed once per triangle) and easy to
 //! check; the fast path must produce exactly its output.
 
 use close2gl_core::{
@@ -9,7 +9,7 @@ use close2gl_core::{
 use crate::Tally;
 use crate::matrices::ClipTransform;
 use crate::mistakes::{Mistakes, Outcome, Program};
-use crate::stage::{Fate, Stage, corner, process};
+use crate::stage::{Fate, FrameConstants, corner, process};
 
 /// The 2D buffer and counts for this camera, mesh, settings and viewport, in a new frame (the
 /// fast path reuses one instead).
@@ -30,9 +30,9 @@ pub fn run_recording(
     viewport: Viewport,
 ) -> (Close2glFrame, Fates) {
     let transform = ClipTransform::new(camera);
-    let stage = Stage::new(settings, viewport);
+    let constants = FrameConstants::new(settings, viewport);
     let mut frame = Close2glFrame {
-        topology: stage.topology(),
+        topology: constants.topology(),
         viewport,
         ..Close2glFrame::default()
     };
@@ -43,7 +43,7 @@ pub fn run_recording(
     let mut counts = Tally::default();
     for triangle in &mesh.triangles {
         let clip = triangle.map(|i| transform.apply(mesh.positions[i as usize]));
-        let corners = clip.map(|c| corner(c, &stage));
+        let corners = clip.map(|c| corner(c, &constants));
         let codes = corners.map(|(code, _)| code);
         let window = corners.map(|(_, window)| window);
         let fate = process::<true>(
@@ -51,7 +51,7 @@ pub fn run_recording(
             codes,
             window,
             || clip,
-            &stage,
+            &constants,
             &mut frame.vertices,
         );
         counts.add(&fate);
@@ -74,15 +74,15 @@ pub fn run_mistaken(
     mistakes: Mistakes,
 ) -> (Close2glFrame, Fates) {
     let program = Program::for_view(camera, settings, viewport, mistakes);
-    let stage = Stage::new(settings, viewport);
+    let constants = FrameConstants::new(settings, viewport);
     let raster = settings.close2gl_raster == Rasterizer::Software;
     let mut frame = Close2glFrame {
-        topology: stage.topology(),
+        topology: constants.topology(),
         viewport,
         ..Close2glFrame::default()
     };
     if raster {
-        frame.raster.vertices = crate::fast::raster_vertices_of(mesh, camera, &stage);
+        frame.raster.vertices = crate::fast::raster_vertices_of(mesh, camera, &constants);
         frame.raster.textured = !mesh.uvs.is_empty();
     }
     let mut fates = Fates {
@@ -115,7 +115,7 @@ pub fn run_mistaken(
                 frame.raster.triangles.push(index as u32);
             }
         }
-        let primitives = (frame.vertices.len() - before) / stage.topology_vertices();
+        let primitives = (frame.vertices.len() - before) / constants.topology_vertices();
         counts.add(&Fate {
             fate: outcome.fate,
             primitives,
@@ -124,7 +124,7 @@ pub fn run_mistaken(
     }
     if raster {
         // One triangle index per primitive, not per vertex.
-        let step = stage.topology_vertices();
+        let step = constants.topology_vertices();
         frame.raster.triangles = frame
             .raster
             .triangles

@@ -68,13 +68,13 @@ use web_time::Instant;
 use bevy_ecs::prelude::*;
 use close2gl_core::Owner;
 use close2gl_core::{
-    App, Camera, Close2glFrame, Fates, FrameSet, Lighting, Plugin, PostUpdate, Rasterizer,
-    RenderSettings, SoftwareFrame, Texture,
+    App, Camera, Close2glFrame, Fates, FrameSet, Lighting, Plugin, Rasterizer, RenderSettings,
+    SoftwareFrame, Texture, Update,
 };
 
 pub use rasterizer::SoftwareRasterizer;
 
-/// Runs the software rasterizer in `PostUpdate`, after the Close2GL pipeline.
+/// Runs the software rasterizer in `FrameSet::Close2gl`, after the Close2GL pipeline.
 pub struct RasterPlugin;
 
 impl Plugin for RasterPlugin {
@@ -86,7 +86,7 @@ impl Plugin for RasterPlugin {
             .requires::<Lighting>(Owner::Settings)
             .requires::<Fates>(Owner::Close2gl)
             .add_systems(
-                PostUpdate,
+                Update,
                 raster_system
                     .after(close2gl_pipeline::close2gl_system)
                     .in_set(FrameSet::Close2gl),

@@ -39,8 +39,8 @@ pub struct SoftwareRasterizer {
     flags: Vec<u8>,
 }
 
-/// A frame's constants.
-struct Frame<'a> {
+/// What stays the same for every triangle of a frame.
+struct RasterConstants<'a> {
     geometry: &'a Close2glFrame,
     shading: Shading,
     light: Light,
@@ -88,7 +88,7 @@ impl SoftwareRasterizer {
             Shading::Phong => light.reaching(farthest),
             _ => light,
         };
-        let frame = Frame {
+        let constants = RasterConstants {
             geometry,
             shading: settings.shading,
             light,
@@ -96,8 +96,8 @@ impl SoftwareRasterizer {
         };
         let size = geometry.viewport;
         self.target.resize(size.width, size.height, fates.record);
-        self.setup(&frame);
-        self.shade(&frame, settings);
+        self.setup(&constants);
+        self.shade(&constants, settings);
         self.target.resolve(&mut out.image.pixels);
         (out.image.width, out.image.height) = (size.width, size.height);
         if fates.record {
@@ -118,16 +118,16 @@ impl SoftwareRasterizer {
     }
 
     /// Every primitive to its triangles (two for a line or a point), binned, in order.
-    fn setup(&mut self, frame: &Frame<'_>) {
-        let geometry = frame.geometry;
+    fn setup(&mut self, constants: &RasterConstants<'_>) {
+        let geometry = constants.geometry;
         let params = SetupParams {
             size: [
                 geometry.viewport.width as i32,
                 geometry.viewport.height as i32,
             ],
             used: Used {
-                shading: varyings_used(frame.shading),
-                textured: frame.textured,
+                shading: varyings_used(constants.shading),
+                textured: constants.textured,
             },
             drop_uncovered: true,
         };
@@ -140,17 +140,17 @@ impl SoftwareRasterizer {
     }
 
     /// The tiles drawn with the frame's shading.
-    fn shade(&mut self, frame: &Frame<'_>, settings: &RenderSettings) {
+    fn shade(&mut self, constants: &RasterConstants<'_>, settings: &RenderSettings) {
         let background = pack(settings.background);
         let color = settings.color;
         match settings.shading {
-            Shading::None => self.shade_tiles(background, Flat(color), frame, settings),
+            Shading::None => self.shade_tiles(background, Flat(color), constants, settings),
             Shading::GouraudAd | Shading::GouraudAds => {
-                self.shade_tiles(background, Gouraud { color }, frame, settings)
+                self.shade_tiles(background, Gouraud { color }, constants, settings)
             }
             Shading::Phong => {
-                let light = frame.light;
-                self.shade_tiles(background, Phong { color, light }, frame, settings)
+                let light = constants.light;
+                self.shade_tiles(background, Phong { color, light }, constants, settings)
             }
         }
     }
@@ -171,7 +171,7 @@ impl SoftwareRasterizer {
         &mut self,
         background: u32,
         colour: C,
-        frame: &Frame<'_>,
+        constants: &RasterConstants<'_>,
         settings: &RenderSettings,
     ) {
         let tiles = Tiles {
@@ -181,7 +181,7 @@ impl SoftwareRasterizer {
             background,
             defer_from: DEFER_FROM,
         };
-        if frame.textured {
+        if constants.textured {
             let mips = &self.mips;
             match settings.texture_filter {
                 TextureFilter::Nearest => tiles.draw_textured(colour, mips, Nearest),
@@ -196,7 +196,7 @@ impl SoftwareRasterizer {
             // Only Phong's lighting at every pixel costs more than a second pass over the tile
             // or queueing partial blocks (measured: Gouraud's interpolated colour, on a million
             // small triangles, is 9 % slower deferred; on the knot, 15 % slower queued).
-            match frame.shading {
+            match constants.shading {
                 Shading::Phong => tiles.draw_deferred(&shader),
                 _ => tiles.draw(&shader),
             }

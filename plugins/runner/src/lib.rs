@@ -22,23 +22,23 @@
 
 #![cfg(target_os = "linux")]
 
+mod command_words;
 mod disk;
 mod interrupt;
-mod limits;
 mod outcome;
-mod output;
+mod output_tail;
 mod proc_table;
 mod reap;
+mod resource_limits;
 mod run;
 mod signals;
 mod spawn;
-mod words;
 mod workspace;
 
+pub use command_words::{split_words, substitute};
 pub use interrupt::{install_interrupt_handler, interrupted, request_interrupt};
-pub use limits::Limits;
 pub use outcome::{Ending, Outcome};
 pub use reap::reap_everything;
+pub use resource_limits::Limits;
 pub use run::run;
-pub use words::{split_words, substitute};
 pub use workspace::Workspace;

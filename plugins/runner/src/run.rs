@@ -9,10 +9,10 @@ use std::process::{Child, ExitStatus};
 use std::time::{Duration, Instant};
 
 use crate::interrupt::interrupted;
-use crate::limits::Limits;
 use crate::outcome::{Ending, Outcome};
-use crate::output::Output;
+use crate::output_tail::Output;
 use crate::reap::Registration;
+use crate::resource_limits::Limits;
 use crate::signals::signal_name;
 use crate::{disk, spawn};
 

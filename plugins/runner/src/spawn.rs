@@ -8,8 +8,8 @@ use std::path::Path;
 use std::process::{Child, Command, Stdio};
 use std::time::Duration;
 
-use crate::limits::Limits;
 use crate::reap::{self, Registration};
+use crate::resource_limits::Limits;
 
 /// The kernel-enforced limits, computed before the fork (the child must not allocate).
 #[derive(Clone, Copy)]

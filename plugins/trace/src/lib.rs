@@ -5,14 +5,42 @@
 //! both into plain values, with every fault a one-line [`FormatError`] naming the file and line,
 //! and writing them back as text that reads back the same; [`check`] compares a trace with the
 //! pipeline, and [`rubric`] makes the assignment's rubric into scenes and judges a program's
-//! traces of them, for `close2gl grade`. It owns no ECS resource.
+//! traces of them, for `close2gl grade`. Its plugin, [`TracePlugin`], shows a trace in the viewer
+//! ([`view`]) and owns the two resources that hold it.
 
 pub mod check;
 pub mod format;
 pub mod rubric;
 pub mod view;
 
+use bevy_ecs::prelude::*;
+use close2gl_core::{App, FrameSet, Owner, Plugin, RenderSettings, Update, Viewport};
+use view::{TraceRequest, TraceView, load_requested_trace, show_trace};
+
 pub use format::{
     Axis, CameraLines, ClipLine, Culling, FormatError, Motion, Ortho2d, Piece, Scene, SceneCamera,
     Trace, TraceClipping, parse_scene, parse_trace, read_scene, read_trace,
 };
+
+/// Reads requested traces (in `FrameSet::Close2gl`, before the pipeline: after the framing of a
+/// new model, whose camera the trace's replaces) and shows the current one's 2D output (after
+/// the pipeline's own frame). Owns `TraceRequest` and `TraceView`;
+/// reads the mesh and `Viewport`, writes the `Camera`, `RenderSettings` and `Close2glFrame`.
+pub struct TracePlugin;
+
+impl Plugin for TracePlugin {
+    fn build(&self, app: &mut App) {
+        app.init_resource::<TraceRequest>()
+            .init_resource::<TraceView>()
+            .requires::<RenderSettings>(Owner::Settings)
+            .requires::<Viewport>(Owner::Settings)
+            .add_systems(
+                Update,
+                (
+                    load_requested_trace.before(close2gl_pipeline::close2gl_system),
+                    show_trace.after(close2gl_pipeline::close2gl_system),
+                )
+                    .in_set(FrameSet::Close2gl),
+            );
+    }
+}

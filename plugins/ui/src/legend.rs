@@ -48,15 +48,15 @@ pub fn swatch(ui: &mut egui::Ui, [r, g, b]: [u8; 3]) {
 fn rows(view: View, overlay: Overlay) -> Option<(&'static str, Vec<Row>)> {
     let fates = || FateKind::ALL.iter().map(|k| (k.color(), k.name()));
     match (view, overlay) {
-        (View::Reference, Overlay::Fates) => Some((
+        (View::Reference, Overlay::FateView) => Some((
             "The GPU's answers",
             REFERENCE.iter().map(|(k, m)| (k.color(), *m)).collect(),
         )),
-        (View::Close2gl, Overlay::Fates) => Some(("Close2GL's fates", fates().collect())),
+        (View::Close2gl, Overlay::FateView) => Some(("Close2GL's fates", fates().collect())),
         (View::Close2gl, Overlay::Difference) => {
             Some(("Where the views differ", difference().to_vec()))
         }
-        (View::Outside, Overlay::Fates) => {
+        (View::Outside, Overlay::FateView) => {
             Some(("Outside view: fates", fates().chain(OUTSIDE).collect()))
         }
         _ => None,

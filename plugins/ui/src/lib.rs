@@ -37,7 +37,7 @@ mod views;
 
 use close2gl_core::{
     App, CameraActions, CameraSpeeds, Close2glFrame, FrameSet, ModelRequest, ModelStatus, Owner,
-    Plugin, PreUpdate, RenderSettings, TextureRequest, ToolRequests,
+    Plugin, RenderSettings, TextureRequest, ToolRequests, Update,
 };
 
 pub use inspector::ProbeAnswer;
@@ -64,6 +64,6 @@ impl Plugin for UiPlugin {
             .requires::<CameraSpeeds>(Owner::Camera)
             .requires::<Close2glFrame>(Owner::Close2gl)
             .requires::<ToolRequests>(Owner::Input)
-            .add_systems(PreUpdate, panel_system.in_set(FrameSet::Panel));
+            .add_systems(Update, panel_system.in_set(FrameSet::Panel));
     }
 }

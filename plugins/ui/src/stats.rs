@@ -74,7 +74,7 @@ pub fn section(
         let raster_ms = software
             .filter(|_| timed && drawn_in_software)
             .map(|image| image.raster_ms);
-        counts(ui, &frame, timed.then_some(frame.stage_ms), raster_ms);
+        counts(ui, &frame, timed.then_some(frame.geometry_ms), raster_ms);
     }
     ui.label(format!("Adapter: {}", stats.adapter));
     if let Some(limits) = &stats.limitations {

@@ -1,4 +1,4 @@
-//! The control panel as a system: an exclusive system in `PreUpdate`'s `FrameSet::Panel`, after
+//! The control panel as a system: an exclusive system in `FrameSet::Panel`, after
 //! the keys were mapped and before a model loads, the camera moves and the pipeline runs, so that
 //! what the panel changes (and the tools the keys asked for) lands in this same frame. The window's
 //! owner hands it the frame's input ([`PanelInput`]) and takes what egui painted ([`PanelOutput`]);

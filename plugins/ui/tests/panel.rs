@@ -239,10 +239,10 @@ fn the_inspector_switches_the_fate_view_and_shows_the_picked_triangles_fate_and_
     let mut h = Harness::new();
     // The GPU plugin asks for fates while the fate view is shown; the harness has no GPU.
     h.world().resource_mut::<Fates>().record = true;
-    h.click(Role::Button, "fates");
+    h.click(Role::Button, "fate_view");
     assert_eq!(
         h.world().resource::<RenderSettings>().overlay,
-        Overlay::Fates
+        Overlay::FateView
     );
     // The real pipeline recorded the harness's back face.
     let fate = *h.world().resource::<Fates>().of(0).expect("recorded");
@@ -338,7 +338,7 @@ fn the_views_show_the_legend_of_their_overlay_until_hidden() {
     let shown = |h: &Harness| titles.map(|t| h.shows(t));
     assert_eq!(shown(&h), [false; 4], "no overlay, no legend");
 
-    h.click(Role::Button, "fates");
+    h.click(Role::Button, "fate_view");
     h.frame(Vec::new());
     assert_eq!(shown(&h), [true, true, false, false]);
     h.world().insert_resource(OutsideView {
@@ -375,7 +375,7 @@ fn the_views_show_the_legend_of_their_overlay_until_hidden() {
 fn a_probe_opens_its_answer_beside_the_click_until_escape() {
     let mut h = Harness::new();
     h.world().resource_mut::<Fates>().record = true;
-    h.click(Role::Button, "fates");
+    h.click(Role::Button, "fate_view");
     let camera = h.camera();
     let world = h.world();
     let mesh = world

@@ -57,7 +57,7 @@ pub struct WebPlugin {
 #[cfg(target_arch = "wasm32")]
 mod plugin {
     use bevy_ecs::prelude::*;
-    use close2gl_core::{App, FrameSet, Plugin, PreUpdate, Render, Wake};
+    use close2gl_core::{App, FrameSet, Plugin, Update, Wake};
     use close2gl_ui::PanelState;
 
     use crate::{WebPlugin, address, arrivals, status};
@@ -78,13 +78,13 @@ mod plugin {
             app.insert_resource(arrivals)
                 .init_resource::<address::Address>()
                 .add_systems(
-                    PreUpdate,
+                    Update,
                     (arrivals::hand_over, arrivals::open_picker).in_set(FrameSet::Input),
                 )
-                .add_systems(Render, address::write_link.in_set(FrameSet::Output));
+                .add_systems(Update, address::write_link.in_set(FrameSet::Output));
             if self.test {
                 app.init_resource::<status::Status>()
-                    .add_systems(Render, status::write_status.in_set(FrameSet::Output));
+                    .add_systems(Update, status::write_status.in_set(FrameSet::Output));
             }
         }
     }

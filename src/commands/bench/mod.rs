@@ -21,7 +21,7 @@ use close2gl_pipeline::FastPipeline;
 use serde_json::json;
 
 use super::CliError;
-use super::scene::{SceneArgs, viewport};
+use super::scene_args::{SceneArgs, viewport};
 
 /// `--raster`, `--fill` and `--load` time different things: at most one of them (clap says so,
 /// with exit code 2, before anything runs).

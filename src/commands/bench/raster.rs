@@ -14,7 +14,7 @@ use serde_json::{Value, json};
 
 use super::{BenchArgs, median_ms, scene, scene_config};
 use crate::commands::CliError;
-use crate::commands::scene::viewport;
+use crate::commands::scene_args::viewport;
 
 /// Geometry and raster, start to finish, on the configured scene.
 pub fn frame(args: &BenchArgs, pool: &rayon::ThreadPool) -> Result<Value, CliError> {

@@ -24,7 +24,7 @@ use close2gl_runner::Limits;
 use close2gl_trace::rubric::{self, RubricScene};
 
 use super::CliError;
-use crate::progress::TerminalProgress;
+use crate::progress_bar::TerminalProgress;
 use run::SceneResult;
 use score::Grade;
 

@@ -3,26 +3,26 @@
 //! gizmo, at a stage between world, eye and normalised device coordinates. It is an
 //! illustration, not one of the two pipelines compared.
 
-mod camera;
-mod offscreen;
+mod outside_camera;
+mod outside_scene;
+mod render_outside;
 mod renderer;
-mod scene;
 
 use bevy_ecs::prelude::*;
 use close2gl_core::{
-    App, Camera, Fates, FrameSet, Mesh, OutsideOrbit, OutsideView, Plugin, Render, RenderSettings,
+    App, Camera, Fates, FrameSet, Mesh, OutsideOrbit, OutsideView, Plugin, RenderSettings, Update,
     Viewport,
 };
-use close2gl_pipeline::morph::{StageFrame, StageMorph};
+use close2gl_pipeline::morph::{OutsideFraming, StageMorph};
 
-pub use camera::OutsideCamera;
-pub use offscreen::render_outside;
+pub use outside_camera::OutsideCamera;
+use outside_scene::SceneInput;
+pub use render_outside::render_outside;
 pub use renderer::OutsideRenderer;
-use scene::SceneInput;
 
-use crate::Gpu;
+use crate::gpu::Gpu;
 
-/// Adds the outside view's system: in `Render`, placing the scene at the stage (in the fate
+/// Adds the outside view's system: in `FrameSet::Output`, placing the scene at the stage (in the fate
 /// colours while the fate view, which has the pipeline record them, is on) and uploading it
 /// into [`OutsideRenderer`] (inserted by whoever owns the target). Nothing runs while
 /// `OutsideView::show` is off (or missing: it and `OutsideOrbit` are the settings plugin's, and
@@ -34,7 +34,7 @@ pub struct OutsidePlugin;
 impl Plugin for OutsidePlugin {
     fn build(&self, app: &mut App) {
         app.init_resource::<Fates>().add_systems(
-            Render,
+            Update,
             upload_outside.in_set(FrameSet::Output).run_if(
                 outside_shown
                     .and_then(resource_exists::<OutsideOrbit>)
@@ -68,8 +68,8 @@ fn upload_outside(
         return;
     }
     let frame = match orbit.whole_volume {
-        true => StageFrame::whole_volume(&camera, mesh.bounds()),
-        false => StageFrame::new(&camera, mesh.bounds()),
+        true => OutsideFraming::whole_volume(&camera, mesh.bounds()),
+        false => OutsideFraming::new(&camera, mesh.bounds()),
     };
     let morph = StageMorph::new(&camera, &frame, outside.stage);
     let aspect = viewport.width.max(1) as f32 / viewport.height.max(1) as f32;

@@ -4,10 +4,12 @@
 use bevy_ecs::prelude::*;
 use bytemuck::{Pod, Zeroable};
 
-use super::camera::OutsideCamera;
-use super::scene::{OutsideScene, OutsideVertex};
+use super::outside_camera::OutsideCamera;
+use super::outside_scene::{OutsideScene, OutsideVertex};
+use crate::gpu::Gpu;
+use crate::texture::DEPTH_FORMAT;
+use crate::uniforms::UniformSetup;
 use crate::vertex_pipeline::VertexPipeline;
-use crate::{DEPTH_FORMAT, Gpu, UniformSetup};
 
 /// The uniform block of outside.wgsl.
 #[repr(C)]
@@ -53,7 +55,7 @@ impl Vertices {
 }
 
 /// The outside view's GPU state (a Resource, inserted beside `Views` by whoever owns the
-/// target): the `Render` systems of [`super::OutsidePlugin`] fill it while the view shows; the
+/// target): the upload system of [`super::OutsidePlugin`] fills it while the view shows; the
 /// owner of the target calls [`OutsideRenderer::draw`].
 #[derive(Resource)]
 pub struct OutsideRenderer {

@@ -5,10 +5,10 @@
 use close2gl_core::limits::MAX_PIXELS;
 use close2gl_core::{NamedEnum, RenderMode};
 
-use super::camera::CameraSlots;
-use super::lines::{FormatError, Line, Slot, set_once};
+use super::camera_lines::CameraSlots;
 use super::magic::Format;
 use super::names::choices;
+use super::syntax::{FormatError, Line, Slot, set_once};
 use super::{Culling, TraceClipping};
 
 /// What both formats read alike, as the lines come.

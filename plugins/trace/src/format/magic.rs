@@ -1,6 +1,6 @@
 //! The first line of either file: which of the two formats it is, and which version.
 
-use super::lines::{FormatError, Line};
+use super::syntax::{FormatError, Line};
 
 /// The version of both formats this crate reads and writes.
 const VERSION: &str = "1";

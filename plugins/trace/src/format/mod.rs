@@ -3,20 +3,20 @@
 //! required lines); whether a trace's triangle indices fit its model is for whoever has the
 //! model.
 
-mod camera;
+mod camera_lines;
 mod common;
-mod lines;
 mod magic;
 mod names;
 mod output;
 mod read;
 mod scene;
+mod syntax;
 mod trace;
 mod write;
 
-pub use lines::FormatError;
 pub use output::{ClipLine, Piece};
 pub use scene::{Motion, Scene, SceneCamera, parse_scene, read_scene};
+pub use syntax::FormatError;
 pub use trace::{Trace, parse_trace, read_trace};
 
 /// The most `clip`, `tri` and `poly` lines one trace may hold, together: a mesh of millions of

@@ -4,7 +4,7 @@
 use glam::{DMat4, DVec2, DVec4};
 
 use super::MAX_POLY_CORNERS;
-use super::lines::{FormatError, Line};
+use super::syntax::{FormatError, Line};
 
 /// `clip T`: mesh triangle T's corners in clip coordinates, before clipping.
 #[derive(Clone, Debug, PartialEq)]

@@ -6,7 +6,7 @@ use std::io::Read;
 use std::path::Path;
 
 use super::MAX_FILE_BYTES;
-use super::lines::FormatError;
+use super::syntax::FormatError;
 
 /// The text of the file at `path` and the label its errors use: the path as given.
 pub(crate) fn text(path: &Path) -> Result<(String, String), FormatError> {

@@ -6,10 +6,10 @@ use std::path::{Path, PathBuf};
 use close2gl_core::{NamedEnum, RenderMode};
 use glam::DVec3;
 
-use super::camera::shape;
+use super::camera_lines::shape;
 use super::common::{Common, Ends};
-use super::lines::{FormatError, Line, Slot, last_line, records, set_once};
 use super::magic::{Format, check_magic};
+use super::syntax::{FormatError, Line, Slot, last_line, records, set_once};
 use super::{Axis, CameraLines, Culling, MAX_RECORDS, TraceClipping, read};
 
 /// Where the camera starts.

@@ -7,11 +7,11 @@ use std::path::Path;
 use close2gl_core::RenderMode;
 use glam::DMat4;
 
-use super::camera::shape;
+use super::camera_lines::shape;
 use super::common::{Common, Ends};
-use super::lines::{FormatError, Line, Slot, last_line, records, set_once};
 use super::magic::{Format, check_magic};
 use super::output::{self, ClipLine, MATRIX_NAMES, Piece};
+use super::syntax::{FormatError, Line, Slot, last_line, records, set_once};
 use super::{CameraLines, Culling, MAX_RECORDS, Ortho2d, TraceClipping, read};
 
 /// One trace file. What the file leaves out is `None` (or empty), so that a checker can say

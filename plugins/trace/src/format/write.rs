@@ -10,7 +10,7 @@ use std::fmt::Write;
 
 use close2gl_core::{NamedEnum, RenderMode};
 
-use super::camera::LINES;
+use super::camera_lines::LINES;
 use super::magic::Format;
 use super::output::MATRIX_NAMES;
 use super::{CameraLines, Culling, Motion, Piece, Scene, SceneCamera, Trace, TraceClipping};

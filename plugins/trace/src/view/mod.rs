@@ -1,5 +1,5 @@
 //! A trace in the viewer: `close2gl MODEL --trace FILE`, a trace file dropped on the window, and
-//! with `--watch` the same file written again. [`TracePlugin`] reads the requested trace, checks
+//! with `--watch` the same file written again. [`crate::TracePlugin`] reads the requested trace, checks
 //! it against the shown mesh, takes its camera and settings (so that the reference shows the
 //! frame the program drew), and puts the trace's own 2D output in the Close2GL view in place of
 //! close2gl's, for the GPU to draw as the assignment's 2D output is drawn. The live difference
@@ -12,7 +12,6 @@ mod show;
 use std::path::PathBuf;
 
 use bevy_ecs::prelude::*;
-use close2gl_core::{App, FrameSet, Owner, Plugin, PostUpdate, RenderSettings, Viewport};
 
 use crate::check::Report;
 use crate::format::Trace;
@@ -41,28 +40,4 @@ pub struct TraceView {
 pub struct Shown {
     pub trace: Trace,
     pub report: Report,
-}
-
-/// Reads requested traces (in `PostUpdate`, `FrameSet::Camera`: after the framing of a new
-/// model, whose camera the trace's replaces) and shows the current one's 2D output
-/// (`FrameSet::Close2gl`, after the pipeline's own frame). Owns `TraceRequest` and `TraceView`;
-/// reads the mesh and `Viewport`, writes the `Camera`, `RenderSettings` and `Close2glFrame`.
-pub struct TracePlugin;
-
-impl Plugin for TracePlugin {
-    fn build(&self, app: &mut App) {
-        app.init_resource::<TraceRequest>()
-            .init_resource::<TraceView>()
-            .requires::<RenderSettings>(Owner::Settings)
-            .requires::<Viewport>(Owner::Settings)
-            .add_systems(
-                PostUpdate,
-                (
-                    load_requested_trace.in_set(FrameSet::Camera),
-                    show_trace
-                        .in_set(FrameSet::Close2gl)
-                        .after(close2gl_pipeline::close2gl_system),
-                ),
-            );
-    }
 }

@@ -19,8 +19,8 @@
 //!
 //! The motion lines' judgments are in `camera.rs`, those on the frame in `frame.rs`.
 
-mod camera;
-mod frame;
+mod drawn;
+mod final_camera;
 
 use close2gl_core::Mesh;
 use close2gl_pipeline::mistakes::{Outcome, Program};
@@ -31,7 +31,7 @@ use super::scenes::RubricScene;
 use crate::check::compare::{Comparison, Stage, StageResult, Status, number};
 use crate::check::{Report, program_for};
 use crate::format::{CameraLines, Scene, SceneCamera, Trace, TraceClipping};
-pub use camera::{Turn, settle_rotations};
+pub use final_camera::{Turn, settle_rotations};
 
 /// How far a unit axis may be from the expected one: far above float32 rounding, far below
 /// any real mistake.

@@ -3,12 +3,12 @@
 //! from glam: the outside view is an illustration, not one of the two pipelines compared.
 
 use close2gl_core::OutsideOrbit;
-use close2gl_pipeline::morph::StageFrame;
+use close2gl_pipeline::morph::OutsideFraming;
 use glam::camera::rh::proj::directx::perspective;
 use glam::camera::rh::view::look_at_mat4;
 use glam::{Mat4, Vec3};
 
-use super::scene::Billboard;
+use super::outside_scene::Billboard;
 
 /// The outside camera's vertical field of view.
 const FOV_DEGREES: f32 = 40.0;
@@ -26,7 +26,7 @@ impl OutsideCamera {
     /// The camera for `orbit` around the stage's framing centre `target` (the frame's centres
     /// blended as the stage blends them), for a view `aspect` (width / height) wide: the frame's
     /// sphere just fits at zoom 1.
-    pub fn new(orbit: &OutsideOrbit, frame: &StageFrame, target: Vec3, aspect: f32) -> Self {
+    pub fn new(orbit: &OutsideOrbit, frame: &OutsideFraming, target: Vec3, aspect: f32) -> Self {
         let half = (FOV_DEGREES.to_radians() * 0.5).tan();
         let narrowest = half.min(half * aspect);
         let distance = frame.radius / narrowest.atan().sin() * orbit.zoom;
@@ -75,7 +75,7 @@ mod tests {
 
     /// How much of the outside view's height the model's bounding box covers, as the default
     /// orbit and `frame` see it at the world stage, in a view `aspect` wide.
-    fn box_height(frame: &StageFrame, (lo, hi): (Vec3, Vec3), aspect: f32) -> f32 {
+    fn box_height(frame: &OutsideFraming, (lo, hi): (Vec3, Vec3), aspect: f32) -> f32 {
         let outside = OutsideCamera::new(&OutsideOrbit::default(), frame, frame.centres[0], aspect);
         let ys = (0..8).map(|i| {
             let corner = Vec3::select(glam::BVec3::new(i & 1 != 0, i & 2 != 0, i & 4 != 0), hi, lo);
@@ -117,9 +117,13 @@ mod tests {
         for (bounds, camera) in [(cow, cow_camera), (far_away, far_away_camera)] {
             let camera = camera.expect("a valid pose");
             for aspect in [4.0 / 3.0, 16.0 / 9.0] {
-                let framed = box_height(&StageFrame::new(&camera, bounds), bounds, aspect);
+                let framed = box_height(&OutsideFraming::new(&camera, bounds), bounds, aspect);
                 assert!(framed >= 0.25, "{framed} of the height at aspect {aspect}");
-                let whole = box_height(&StageFrame::whole_volume(&camera, bounds), bounds, aspect);
+                let whole = box_height(
+                    &OutsideFraming::whole_volume(&camera, bounds),
+                    bounds,
+                    aspect,
+                );
                 assert!(whole < framed, "{whole} vs {framed}");
             }
         }

@@ -8,7 +8,12 @@ use super::OutsideRenderer;
 use crate::readback::Readback;
 use crate::reference::clear_color;
 use crate::texture::{READABLE_TARGET, texture_2d};
-use crate::{DEPTH_FORMAT, Gpu, Image, OFFSCREEN_FORMAT};
+use close2gl_core::Image;
+
+use crate::gpu::Gpu;
+use crate::offscreen::OFFSCREEN_FORMAT;
+use crate::pass::submit_pass;
+use crate::texture::DEPTH_FORMAT;
 
 /// The outside view's textures for one size, kept between frames.
 #[derive(Resource)]
@@ -19,7 +24,7 @@ struct OutsideTarget {
     readback: Readback,
 }
 
-/// Draws the outside view as the last frame's `Render` systems left it (after
+/// Draws the outside view as the last frame's uploads left it (after
 /// [`crate::render_offscreen`], say) at the `Viewport` size, and reads it back. The app needs
 /// `Gpu`, an [`OutsideRenderer`] in [`OFFSCREEN_FORMAT`] and `OutsideView::show` set when the
 /// frame ran (the [`crate::OffscreenPlugin`] inserts the renderer).
@@ -56,7 +61,7 @@ pub fn render_outside(app: &mut App) -> Result<Image, String> {
     let color = target.color.create_view(&Default::default());
     let depth = target.depth.create_view(&Default::default());
     let clear = wgpu::LoadOp::Clear(clear_color(background));
-    crate::submit_pass(&gpu, &color, Some(&depth), clear, |pass| {
+    submit_pass(&gpu, &color, Some(&depth), clear, |pass| {
         renderer.draw(pass)
     });
     let pixels = target

@@ -17,8 +17,8 @@ use close2gl_core::{
 use glam::{Mat4, Vec3};
 use wgpu::util::DeviceExt;
 
-use crate::DEPTH_FORMAT;
 use crate::reference_texture::ReferenceBindings;
+use crate::texture::DEPTH_FORMAT;
 use overlay::OverlayPipelines;
 
 /// [`camera_matrices`] for a mesh uploaded relative to `origin` (see [`GpuMesh::origin`]): the
@@ -247,7 +247,7 @@ impl Reference {
             let pipeline = self.create_pipeline(device, key);
             self.pipelines.insert(key, pipeline);
         }
-        if settings.overlay == Overlay::Fates && !self.overlays.contains_key(&key) {
+        if settings.overlay == Overlay::FateView && !self.overlays.contains_key(&key) {
             let overlays = self.create_overlays(device, key);
             self.overlays.insert(key, overlays);
         }

@@ -1,3 +1,5 @@
+//! The outside view's keys: show it or hide it, and switch what its orbit camera frames.
+
 use bevy_ecs::prelude::*;
 use close2gl_core::{Action, InputBindings, InputState, OutsideOrbit, OutsideView};
 

@@ -1,72 +1,31 @@
-//! The `Render` systems: upload what changed from the ECS world into [`Views`].
+//! The [`crate::GpuPlugin`]'s systems (in `FrameSet::Output`): upload what changed from the ECS
+//! world into [`Views`].
 
 use bevy_ecs::prelude::*;
-use close2gl_core::Owner;
 use close2gl_core::{
-    App, Camera, Close2glFrame, Fates, FrameSet, Lighting, Mesh, Overlay, Plugin, PostUpdate,
-    Render, RenderSettings, SelectedTriangle, SoftwareFrame, Texture, Viewport,
+    Camera, Close2glFrame, Fates, Lighting, Mesh, Overlay, RenderSettings, SelectedTriangle,
+    SoftwareFrame, Texture, Viewport,
 };
 
-use crate::fate_view::record_fates_while_shown;
+use crate::gpu::Gpu;
 use crate::reference::clear_color;
-use crate::{Gpu, Views};
+use crate::views::Views;
 use close2gl_core::parity::to_rgb8;
-
-/// Adds the `Render` systems that upload what changed, by bevy's change ticks as the pipeline
-/// watches its inputs: the `Mesh` again only when it changed, the `Texture` likewise; the
-/// reference uniforms from `Camera`, `RenderSettings` and `Lighting`; the Close2GL 2D buffer
-/// from `Close2glFrame`, or the software rasterizer's image from `SoftwareFrame`; in the fate
-/// view (`RenderSettings::overlay`), each triangle in its colour from `Fates`, which it asks
-/// Close2GL to record (`Fates::record`) while that view is shown (it inserts `Fates` if no one
-/// has); the selected triangle's highlight (`SelectedTriangle`); in the live difference, both
-/// views drawn again into textures of the `Viewport`'s size and compared. They run once
-/// the `Gpu` and `Views` resources exist (inserted by whoever owns the target), so a window may
-/// arrive late. It owns no resource: the model, settings and Close2GL plugins provide what it
-/// reads, the model plugin the texture (without one the reference draws untextured), and the
-/// raster plugin, when there is one, the software image.
-pub struct GpuPlugin;
-
-impl Plugin for GpuPlugin {
-    fn build(&self, app: &mut App) {
-        app.requires::<RenderSettings>(Owner::Settings)
-            .requires::<Lighting>(Owner::Settings)
-            .requires::<Close2glFrame>(Owner::Close2gl)
-            .requires::<Viewport>(Owner::Settings)
-            .requires::<SelectedTriangle>(Owner::Settings)
-            .init_resource::<Fates>()
-            .add_systems(
-                PostUpdate,
-                record_fates_while_shown.in_set(FrameSet::Camera),
-            )
-            .add_systems(
-                Render,
-                (
-                    upload_mesh,
-                    upload_texture,
-                    upload_reference,
-                    upload_close2gl,
-                    upload_software,
-                    upload_fates,
-                    upload_highlight,
-                    render_difference,
-                )
-                    .chain()
-                    .in_set(FrameSet::Output)
-                    .run_if(resource_exists::<Gpu>.and_then(resource_exists::<Views>)),
-            );
-    }
-}
 
 /// The mesh again when it changed (bevy's change ticks, as the pipeline watches it), or when
 /// the views are new.
-fn upload_mesh(gpu: Res<Gpu>, mesh: Single<Ref<Mesh>>, mut views: ResMut<Views>) {
+pub(crate) fn upload_mesh(gpu: Res<Gpu>, mesh: Single<Ref<Mesh>>, mut views: ResMut<Views>) {
     if mesh.is_changed() || views.is_added() {
         views.reference.upload_mesh(&gpu.device, &mesh);
     }
 }
 
 /// The texture again when it changed, appeared or went, or when the views are new.
-fn upload_texture(gpu: Res<Gpu>, texture: Option<Res<Texture>>, mut views: ResMut<Views>) {
+pub(crate) fn upload_texture(
+    gpu: Res<Gpu>,
+    texture: Option<Res<Texture>>,
+    mut views: ResMut<Views>,
+) {
     let changed = texture.as_ref().is_some_and(|t| t.is_changed());
     let gone = texture.is_none() && views.reference.is_textured();
     if changed || gone || views.is_added() {
@@ -77,7 +36,7 @@ fn upload_texture(gpu: Res<Gpu>, texture: Option<Res<Texture>>, mut views: ResMu
 }
 
 /// Every frame: the uniforms are a few hundred bytes, cheaper than tracking what moved.
-fn upload_reference(
+pub(crate) fn upload_reference(
     gpu: Res<Gpu>,
     camera: Single<&Camera>,
     settings: Res<RenderSettings>,
@@ -91,7 +50,7 @@ fn upload_reference(
 }
 
 /// Only when the frame, the colour or the views changed: the 2D buffer can be megabytes.
-fn upload_close2gl(
+pub(crate) fn upload_close2gl(
     gpu: Res<Gpu>,
     frame: Res<Close2glFrame>,
     settings: Res<RenderSettings>,
@@ -106,7 +65,7 @@ fn upload_close2gl(
 
 /// The software rasterizer's image, when it is the one shown and it is new. Without the raster
 /// plugin there is no image, and the view stays empty.
-fn upload_software(
+pub(crate) fn upload_software(
     gpu: Res<Gpu>,
     image: Option<Res<SoftwareFrame>>,
     settings: Res<RenderSettings>,
@@ -121,7 +80,7 @@ fn upload_software(
 }
 
 /// The fate view, every frame while it is shown: the fates change with every Close2GL frame.
-fn upload_fates(
+pub(crate) fn upload_fates(
     gpu: Res<Gpu>,
     mesh: Single<&Mesh>,
     camera: Single<&Camera>,
@@ -130,7 +89,7 @@ fn upload_fates(
     mut views: ResMut<Views>,
 ) {
     views.overlay = settings.overlay;
-    if settings.overlay == Overlay::Fates {
+    if settings.overlay == Overlay::FateView {
         views
             .fates
             .update(&gpu.device, &gpu.queue, &mesh, &camera, &fates);
@@ -138,7 +97,7 @@ fn upload_fates(
 }
 
 /// The selected triangle's corners and marker in both views, every frame: seventeen vertices.
-fn upload_highlight(
+pub(crate) fn upload_highlight(
     gpu: Res<Gpu>,
     mesh: Single<&Mesh>,
     camera: Single<&Camera>,
@@ -154,7 +113,7 @@ fn upload_highlight(
 
 /// The live difference, every frame while it is shown: both views drawn again, after every
 /// upload, into the textures it compares.
-fn render_difference(
+pub(crate) fn render_difference(
     gpu: Res<Gpu>,
     viewport: Res<Viewport>,
     settings: Res<RenderSettings>,

@@ -5,7 +5,7 @@
 use glam::DVec3;
 
 use super::CameraLines;
-use super::lines::{FormatError, Line, Slot, set_once};
+use super::syntax::{FormatError, Line, Slot, set_once};
 
 /// Every camera line's key and what its numbers are called, in the order the writer writes
 /// them and an error about a missing one names them.

@@ -8,7 +8,7 @@
 use bytemuck::{Pod, Zeroable};
 use close2gl_core::{Camera, FateKind, Fates, Mesh, Overlay, RenderSettings};
 use close2gl_pipeline::frustum::{EDGES, world_corners};
-use close2gl_pipeline::morph::{Placed, StageFrame, StageMorph, has_image};
+use close2gl_pipeline::morph::{OutsideFraming, Placed, StageMorph, has_image};
 use glam::Vec3;
 
 use close2gl_core::parity::to_rgb8;
@@ -92,7 +92,7 @@ pub(crate) struct SceneInput<'a> {
     pub mesh: &'a Mesh,
     pub settings: &'a RenderSettings,
     pub fates: &'a Fates,
-    pub frame: &'a StageFrame,
+    pub frame: &'a OutsideFraming,
     pub stage: f32,
     pub billboard: Billboard,
 }
@@ -113,7 +113,7 @@ impl OutsideScene {
         self.placed
             .extend(mesh.positions.iter().map(|p| morph.place(*p)));
         let fates = Some(input.fates).filter(|f| {
-            input.settings.overlay == Overlay::Fates && f.triangles.len() == mesh.triangles.len()
+            input.settings.overlay == Overlay::FateView && f.triangles.len() == mesh.triangles.len()
         });
         let model = rgba(input.settings.color);
         self.mesh.clear();
