@@ -20,7 +20,7 @@ use crate::lanes::{F8, LANES, with_avx2};
 use crate::queue::Unqueued;
 use crate::shading::{LaneShader, PixelShader};
 use crate::target::{NO_TRIANGLE, ROW, TILE_PIXELS, TileRect};
-use crate::tile::{Rows, TileBuffers, TileJob, draw_rows, for_each_binned};
+use crate::tile::{Rows, TileJob, draw_rows, for_each_binned};
 use crate::varyings::{AT_PIXEL, AtPixels, Planes};
 
 /// The visibility buffer's mark where a small triangle's fragment won: its values at the pixel
@@ -43,7 +43,9 @@ pub(crate) fn draw_tile_deferred<S: PixelShader + LaneShader>(mut job: TileJob<'
         job.buffers.clear(job.background);
         job.buffers.visible.fill(NO_TRIANGLE);
         depth_pass(&mut job, won);
-        shade_visible(job.rect, &mut job.buffers, won, job.bins, shader);
+        let (color, _) = job.buffers.color.as_chunks_mut::<ROW>();
+        let (visible, _) = job.buffers.visible.as_chunks::<ROW>();
+        shade_visible(job.rect, color, visible, won, job.bins, shader);
     });
 }
 
@@ -98,7 +100,8 @@ with_avx2! {
     #[inline(always)]
     fn shade_visible[S: LaneShader + PixelShader](
         rect: TileRect,
-        buffers: &mut TileBuffers<'_>,
+        color: &mut [[u32; ROW]],
+        visible: &[[u32; ROW]],
         won: &[[f32; TILE_PIXELS]],
         bins: &Bins,
         shader: &S,
@@ -109,13 +112,12 @@ with_avx2! {
 #[inline(always)]
 fn shade_visible_portable<S: LaneShader + PixelShader>(
     rect: TileRect,
-    buffers: &mut TileBuffers<'_>,
+    color: &mut [[u32; ROW]],
+    visible: &[[u32; ROW]],
     won: &[[f32; TILE_PIXELS]],
     bins: &Bins,
     shader: &S,
 ) {
-    let (color, _) = buffers.color.as_chunks_mut::<ROW>();
-    let (visible, _) = buffers.visible.as_chunks::<ROW>();
     let rows = (rect.y1 - rect.y0 + 1) as usize;
     let blocks = ((rect.x1 - rect.x0 + 1) as usize).div_ceil(LANES);
     // The planes of the triangle shown last: a large triangle's blocks follow one another.
