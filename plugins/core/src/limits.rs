@@ -27,9 +27,9 @@ pub const MAX_SEGMENTS: u32 = 4096;
 pub const MAX_PIXELS: u32 = 16384;
 
 /// Model files larger than this, bytes, load on a worker thread with progress while the last
-/// model stays shown; smaller ones load within the frame that asks (the course's cow is 1.3 MB
-/// and parses in about 20 ms: a frame or two, not worth a bar). 4 MiB parses in well under a
-/// second even in a debug build.
+/// model stays shown; smaller ones load within the frame that asks: a course model parses in a
+/// frame or two, not worth a bar, and this size in well under a second even in a debug build
+/// (measured: docs/performance.md#loading).
 pub const BACKGROUND_LOAD_BYTES: u64 = 4 << 20;
 
 /// The longest line a model file may have, bytes. A `.in` record is under a hundred bytes and

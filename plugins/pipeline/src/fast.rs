@@ -22,8 +22,8 @@ use crate::stage::{
 
 /// Vertices and triangles per parallel task: big enough to amortise scheduling, small enough to
 /// balance two cores when one side of the model is clipped away, and to split a cow-sized model
-/// (8,192 triangles, 4,096 vertices) across them (measured on 2 cores, from 16 Ki each: the
-/// knot's software frame at 640×480 4 % faster, a million triangles' geometry 2 %).
+/// (8,192 triangles, 4,096 vertices) across them (measured faster than 16 Ki each, for the knot
+/// and for a million triangles: docs/performance.md#big-models-a-million-sub-pixel-triangles).
 const VERTEX_CHUNK: usize = 2 * 1024;
 const TRIANGLE_CHUNK: usize = 4 * 1024;
 
@@ -198,8 +198,9 @@ fn join<T: Copy + Default + Send + Sync>(
 
 /// Copies one part of every chunk (`part`) into `out`, in mesh order, by `copy(cuts_before,
 /// part, out)`, where `cuts_before` counts the cut vertices of the chunks before its own. The
-/// work is split in halves across threads: a million triangles' primitives copied on one
-/// thread took a third of the frame's geometry stage.
+/// work is split in halves across threads: copied on one thread, a million triangles'
+/// primitives took much of the geometry stage (measured:
+/// docs/performance.md#snapping-each-vertex-once-setup-inlined-the-geometrys-join-in-parallel).
 fn join_mapped<T: Copy + Default + Send + Sync>(
     chunks: &[Chunk],
     cuts_before: u32,

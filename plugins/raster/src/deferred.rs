@@ -8,18 +8,19 @@
 //! values (`AtPixels`), read from that buffer or worked out from the lane's triangle's planes.
 //! A one-pixel triangle then costs a lane, not a block of eight, a pixel covered many times is
 //! shaded once, and the shading reads no triangle from memory for a small triangle's pixel (on
-//! a million of them, that reading was 60 % of this pass). The colours are those of shading
+//! a million of them, that reading was most of this pass, measured:
+//! docs/performance.md#fragments-that-carry-their-values). The colours are those of shading
 //! each fragment as it passes, bit for bit: the depth test's winner is the fragment written
 //! last, and each lane's arithmetic is the same.
 
 use std::cell::RefCell;
 
 use crate::bin::{Bins, ROWS};
-use crate::lanes::{F8, LANES};
+use crate::lanes::{F8, LANES, with_avx2};
 use crate::queue::Unqueued;
 use crate::shading::{LaneShader, PixelShader};
 use crate::target::{NO_TRIANGLE, ROW, TILE_PIXELS, TileRect};
-use crate::tile::{Rows, TileBuffers, draw_rows, for_each_binned};
+use crate::tile::{Rows, TileJob, draw_rows, for_each_binned};
 use crate::varyings::{AT_PIXEL, AtPixels, Planes};
 
 /// The visibility buffer's mark where a small triangle's fragment won: its values at the pixel
@@ -34,38 +35,26 @@ thread_local! {
     static WON: RefCell<Vec<f32>> = const { RefCell::new(Vec::new()) };
 }
 
-/// Draws tile number `tile` as [`crate::tile::draw_tile`] does, shading after the depth test.
-pub(crate) fn draw_tile_deferred<S: PixelShader + LaneShader>(
-    rect: TileRect,
-    mut buffers: TileBuffers<'_>,
-    background: u32,
-    bins: &Bins,
-    tile: usize,
-    shader: &S,
-) {
+/// Draws the tile as [`crate::tile::draw_tile`] does, shading after the depth test.
+pub(crate) fn draw_tile_deferred<S: PixelShader + LaneShader>(mut job: TileJob<'_>, shader: &S) {
     WON.with_borrow_mut(|won| {
         won.resize(AT_PIXEL * TILE_PIXELS, 0.0);
         let won = won.as_chunks_mut::<TILE_PIXELS>().0;
-        buffers.clear(background);
-        buffers.visible.fill(NO_TRIANGLE);
-        depth_pass(rect, &mut buffers, bins, tile, won);
-        let (color, _) = buffers.color.as_chunks_mut::<ROW>();
-        let (visible, _) = buffers.visible.as_chunks::<ROW>();
-        shade_visible(rect, color, visible, won, bins, shader);
+        job.buffers.clear(job.background);
+        job.buffers.visible.fill(NO_TRIANGLE);
+        depth_pass(&mut job, won);
+        let (color, _) = job.buffers.color.as_chunks_mut::<ROW>();
+        let (visible, _) = job.buffers.visible.as_chunks::<ROW>();
+        shade_visible(job.rect, color, visible, won, job.bins, shader);
     });
 }
 
 /// The first pass: the visibility buffer takes the colour buffer's place, each triangle
 /// "shading" its number, each fragment its mark, with its values put in `won`.
 #[inline(always)]
-fn depth_pass(
-    rect: TileRect,
-    buffers: &mut TileBuffers<'_>,
-    bins: &Bins,
-    tile: usize,
-    won: &mut [[f32; TILE_PIXELS]],
-) {
-    let mut rows = Rows::new(buffers.visible, buffers.depth, buffers.ids);
+fn depth_pass(job: &mut TileJob<'_>, won: &mut [[f32; TILE_PIXELS]]) {
+    let (rect, bins, tile) = (job.rect, job.bins, job.tile);
+    let mut rows = Rows::new(job.buffers.visible, job.buffers.depth, job.buffers.ids);
     for_each_binned(bins, tile, |number, batch, binned, at| {
         let index = binned.index as usize;
         let set_up = || batch.set_up[index];
@@ -106,38 +95,17 @@ impl PixelShader for Number {
     }
 }
 
-/// The second pass, compiled twice as `row::draw_span` is: for the baseline x86-64 and, chosen
-/// at run time, for AVX2 and FMA.
-#[inline(always)]
-fn shade_visible<S: LaneShader + PixelShader>(
-    rect: TileRect,
-    color: &mut [[u32; ROW]],
-    visible: &[[u32; ROW]],
-    won: &[[f32; TILE_PIXELS]],
-    bins: &Bins,
-    shader: &S,
-) {
-    #[cfg(target_arch = "x86_64")]
-    if std::arch::is_x86_feature_detected!("avx2") && std::arch::is_x86_feature_detected!("fma") {
-        // SAFETY: the CPU has the features the function is compiled for, checked just above.
-        unsafe { shade_visible_avx2(rect, color, visible, won, bins, shader) };
-        return;
-    }
-    shade_visible_portable(rect, color, visible, won, bins, shader);
-}
-
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx2,fma")]
-#[inline(never)]
-fn shade_visible_avx2<S: LaneShader + PixelShader>(
-    rect: TileRect,
-    color: &mut [[u32; ROW]],
-    visible: &[[u32; ROW]],
-    won: &[[f32; TILE_PIXELS]],
-    bins: &Bins,
-    shader: &S,
-) {
-    shade_visible_portable(rect, color, visible, won, bins, shader);
+with_avx2! {
+    /// The second pass, compiled for the baseline x86-64 and for AVX2 and FMA.
+    #[inline(always)]
+    fn shade_visible[S: LaneShader + PixelShader](
+        rect: TileRect,
+        color: &mut [[u32; ROW]],
+        visible: &[[u32; ROW]],
+        won: &[[f32; TILE_PIXELS]],
+        bins: &Bins,
+        shader: &S,
+    ) => shade_visible_portable;
 }
 
 /// Each block of eight pixels that shows a triangle, coloured once.

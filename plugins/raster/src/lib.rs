@@ -15,18 +15,18 @@
 //!
 //! Read [`textbook`] first: the rasterizer as the textbook writes it, in one short file, each
 //! triangle and each pixel of its bounding box one at a time (edge functions with the top-left
-//! rule, the depth test, then the shading and the texture). The fast rasterizer draws exactly
-//! its pixels and depths (`tests/golden.rs` holds it to them, on one thread and on two), from
-//! the same building blocks: the vertex stage's work on one vertex, the setup (`setup`: the
-//! snapping, the edge functions, the bounding box and the planes, which both evaluate at a
-//! pixel centre by the same formulas in the same order, so that every bit agrees), the
-//! lighting and the texture sampling. What it adds is how the work is shared out and batched:
-//! every primitive set up and binned into 64×64 tiles in one parallel pass (those that cover no
-//! pixel centre dropped before their planes are built), the tiles drawn by the threads, each
-//! triangle's covered rows solved rather than tested pixel by pixel, eight pixels at a time in
-//! SIMD lanes, small triangles listed as their fragments, Phong's attenuation skipped when it
-//! is 1 everywhere, and Phong shaded once per pixel after the depth test where a tile's
-//! triangles are small, their partial blocks queued where they are not.
+//! rule, the depth test, then the shading and the texture). The fast rasterizer, to read next,
+//! draws exactly its pixels and depths (`tests/golden.rs` holds it to them, on one thread and on
+//! two), from the same building blocks: the vertex stage's work on one vertex, the setup (`setup`:
+//! the snapping, the edge functions, the bounding box and the planes, which both evaluate at a
+//! pixel centre by the same formulas in the same order, so that every bit agrees), the lighting and
+//! the texture sampling. What it adds, to get those pixels faster, is how the work is shared out
+//! and batched: every primitive set up and binned into 64×64 tiles in one parallel pass (those that
+//! cover no pixel centre dropped before their planes are built), the tiles drawn by the threads,
+//! each triangle's covered rows solved rather than tested pixel by pixel, eight pixels at a time in
+//! SIMD lanes, small triangles listed as their fragments, Phong's attenuation skipped when it is 1
+//! everywhere, and Phong shaded once per pixel after the depth test where a tile's triangles are
+//! small, their partial blocks queued where they are not.
 //!
 //! Its files follow one frame, in the order `rasterizer` runs them: `vertex` (each vertex's
 //! varyings, lit by `lighting` for Gouraud) → `bin` (setup and binning in one parallel pass, in
@@ -34,13 +34,14 @@
 //! fixed-point edge functions and `varyings`' planes, those that cover no pixel centre dropped
 //! before their planes are built, the rest listed in the 64×64 tiles they touch, a small one
 //! as its fragments, each pixel with its depth and, for Phong, its values there) → the tiles
-//! shared out between the threads by `schedule` → `tile` (a
-//! narrow triangle's rows found pixel by pixel, a wide one's solved; or `deferred`, a tile of
-//! small Phong-shaded triangles depth-tested first and shaded once per pixel after) → `row` →
-//! `lanes`, the hierarchy tile → rows
-//! → blocks of eight lanes (llvmpipe's is tile → block → quad): each block depth-tested, then
-//! coloured by `shading` (with `texture`'s level of detail and sampling) into `target`'s
-//! buffers, which are then copied out as the image. `fates` and `probe` read what a frame left.
+//! shared out between the threads by `tile_runs` → `tile` (a narrow triangle's rows found pixel
+//! by pixel, a wide one's solved; or `deferred`, a tile of small Phong-shaded triangles
+//! depth-tested first and shaded once per pixel after) → `row` → `lanes`, the hierarchy tile →
+//! rows → blocks of eight lanes (llvmpipe's is tile → block → quad): each block depth-tested,
+//! then coloured by `shading` (with `texture`'s level of detail and sampling) into `target`'s
+//! buffers, or, for Phong, a small triangle's partial blocks left in `queue` and shaded eight
+//! pixels together when the triangle is done in the tile. The tiles are then copied out as the
+//! image. `fates` and `probe` read what a frame left.
 
 mod bin;
 mod deferred;
@@ -53,13 +54,13 @@ pub mod probe;
 mod queue;
 mod rasterizer;
 mod row;
-mod schedule;
 mod setup;
 mod shading;
 mod target;
 pub mod textbook;
 mod texture;
 mod tile;
+mod tile_runs;
 mod varyings;
 mod vertex;
 

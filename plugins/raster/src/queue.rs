@@ -6,7 +6,7 @@
 //! (`AtPoints`). The colours are those of shading each block where it passed, bit for bit,
 //! and a triangle's pixels are all written before the next triangle's.
 
-use crate::lanes::{F8, LANES, Mask};
+use crate::lanes::{F8, LANES, Mask, with_avx2};
 use crate::shading::{LaneShader, PixelShader};
 use crate::target::{ROW, TILE_PIXELS, TileRect};
 use crate::varyings::{AtPoints, Planes};
@@ -80,34 +80,16 @@ impl<S: PixelShader + LaneShader> Queue<S> for Pending {
     }
 }
 
-/// [`Pending::shade`]'s work, compiled twice as `row::draw_span` is: for the baseline x86-64
-/// and, chosen at run time, for AVX2 and FMA. Once per triangle and tile, not per row, so that
-/// the triangle's planes are set out once for all its groups.
-fn shade_pending<S: LaneShader>(
-    shader: &S,
-    planes: &Planes,
-    color: &mut [[u32; ROW]],
-    pending: &mut Pending,
-) {
-    #[cfg(target_arch = "x86_64")]
-    if std::arch::is_x86_feature_detected!("avx2") && std::arch::is_x86_feature_detected!("fma") {
-        // SAFETY: the CPU has the features the function is compiled for, checked just above.
-        unsafe { shade_pending_avx2(shader, planes, color, pending) };
-        return;
-    }
-    shade_pending_portable(shader, planes, color, pending);
-}
-
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx2,fma")]
-#[inline(never)]
-fn shade_pending_avx2<S: LaneShader>(
-    shader: &S,
-    planes: &Planes,
-    color: &mut [[u32; ROW]],
-    pending: &mut Pending,
-) {
-    shade_pending_portable(shader, planes, color, pending);
+with_avx2! {
+    /// [`Pending::shade`]'s work, compiled for the baseline x86-64 and for AVX2 and FMA. Once
+    /// per triangle and tile, not per row, so that the triangle's planes are set out once for
+    /// all its groups.
+    fn shade_pending[S: LaneShader](
+        shader: &S,
+        planes: &Planes,
+        color: &mut [[u32; ROW]],
+        pending: &mut Pending,
+    ) => shade_pending_portable;
 }
 
 #[inline(always)]

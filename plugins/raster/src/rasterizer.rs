@@ -1,8 +1,12 @@
 //! One software frame, top to bottom: the vertex stage (`vertex`), setup of every primitive to
-//! triangles binned into tiles in one pass (`bin`, with `primitives` and `setup`), the tiles drawn in parallel
-//! (`tile`: clear, then each triangle's rows, depth-tested and shaded in blocks of eight lanes),
-//! and the tiles copied out as an image (`target`); while fates are recorded, which triangles
-//! covered no pixel centre and which won none (`fates`).
+//! triangles binned into tiles in one pass (`bin`, with `primitives` and `setup`), the tiles
+//! shared out between the threads (`tile_runs`) and drawn in parallel, each one of three ways:
+//! cleared, then each triangle's rows depth-tested and shaded in blocks of eight lanes as they
+//! pass (`tile`); the same with a small triangle's partial blocks queued and shaded eight
+//! pixels together (`queue`, Phong); or every triangle depth-tested first and each pixel shaded
+//! once after (`deferred`, Phong in tiles of small triangles). Then the tiles are copied out as
+//! an image (`target`); while fates are recorded, which triangles covered no pixel centre and
+//! which won none (`fates`).
 
 use bevy_ecs::prelude::Resource;
 use close2gl_core::{
@@ -17,13 +21,13 @@ use crate::fates::Rasterized;
 use crate::lighting::Light;
 use crate::primitives::{SetupParams, triangles_per_primitive};
 use crate::queue::Pending;
-use crate::schedule::Schedule;
 use crate::shading::{
     Colour, Flat, Gouraud, LaneShader, Phong, PixelShader, Shaded, Textured, Untextured,
 };
-use crate::target::{NO_TRIANGLE, Target, TileRect, pack};
+use crate::target::{NO_TRIANGLE, Target, pack};
 use crate::texture::{Bilinear, Filter, Mips, Nearest, Trilinear};
-use crate::tile::{TileBuffers, draw_tile, draw_tile_unqueued};
+use crate::tile::{TileJob, draw_tile, draw_tile_unqueued};
+use crate::tile_runs::TileRuns;
 use crate::varyings::{Used, varyings_used};
 use crate::vertex::{Vertex, vertex_stage};
 
@@ -33,7 +37,7 @@ pub struct SoftwareRasterizer {
     vertices: Vec<Vertex>,
     bins: Bins,
     target: Target,
-    schedule: Schedule,
+    runs: TileRuns,
     mips: Mips,
     /// Scratch space for recording fates.
     flags: Vec<u8>,
@@ -176,7 +180,7 @@ impl SoftwareRasterizer {
     ) {
         let tiles = Tiles {
             target: &mut self.target,
-            schedule: &mut self.schedule,
+            runs: &mut self.runs,
             bins: &self.bins,
             background,
             defer_from: DEFER_FROM,
@@ -194,8 +198,8 @@ impl SoftwareRasterizer {
                 texturing: Untextured,
             };
             // Only Phong's lighting at every pixel costs more than a second pass over the tile
-            // or queueing partial blocks (measured: Gouraud's interpolated colour, on a million
-            // small triangles, is 9 % slower deferred; on the knot, 15 % slower queued).
+            // or queueing partial blocks (Gouraud's interpolated colour measured slower either
+            // way: docs/performance.md#big-models-a-million-sub-pixel-triangles).
             match constants.shading {
                 Shading::Phong => tiles.draw_deferred(&shader),
                 _ => tiles.draw(&shader),
@@ -207,13 +211,14 @@ impl SoftwareRasterizer {
 /// Triangles binned in a tile from which it is shaded after its depth test: a whole tile
 /// (4,096 pixels) of them would average 8 pixels or less. Larger triangles fill whole blocks
 /// of eight lanes as they pass, or their partial blocks are queued, and the second pass over
-/// the tile would only add work (measured on the knot at 640×480, from 256: 9 % slower).
+/// the tile would only add work (from 256, the knot measured slower:
+/// docs/performance.md#big-models-a-million-sub-pixel-triangles).
 const DEFER_FROM: usize = 512;
 
 /// What every tile is drawn from, and into.
 struct Tiles<'a> {
     target: &'a mut Target,
-    schedule: &'a mut Schedule,
+    runs: &'a mut TileRuns,
     bins: &'a Bins,
     background: u32,
     /// Triangles binned in a tile from which `draw_deferred` defers it ([`DEFER_FROM`]).
@@ -231,9 +236,7 @@ impl Tiles<'_> {
 
     /// Every tile, in parallel, drawn with `shader` as each fragment passes the depth test.
     fn draw<S: PixelShader>(self, shader: &S) {
-        self.each(|rect, buffers, background, bins, tile| {
-            draw_tile_unqueued(rect, buffers, background, bins, tile, shader)
-        });
+        self.each(|job| draw_tile_unqueued(job, shader));
     }
 
     /// Every tile, in parallel, shaded with `shader` once per pixel after the depth test where
@@ -241,27 +244,33 @@ impl Tiles<'_> {
     /// `queue`): the same pixels either way.
     fn draw_deferred<S: PixelShader + LaneShader>(self, shader: &S) {
         let defer_from = self.defer_from;
-        self.each(
-            |rect, buffers, background, bins, tile| match bins.binned(tile) >= defer_from {
-                true => draw_tile_deferred(rect, buffers, background, bins, tile, shader),
-                false => {
-                    let mut queue = Pending::new(rect);
-                    draw_tile(rect, buffers, background, bins, tile, shader, &mut queue)
-                }
-            },
-        );
+        self.each(|job| match job.bins.binned(job.tile) >= defer_from {
+            true => draw_tile_deferred(job, shader),
+            false => {
+                let mut queue = Pending::new(job.rect);
+                draw_tile(job, shader, &mut queue)
+            }
+        });
     }
 
-    /// `draw(rect, buffers, background, bins, tile)` for every tile, in parallel, shared
-    /// between the threads by what is binned in each (see `schedule`). Each tile gets its own
-    /// piece of the id buffer, or an empty one when it is not recorded.
-    fn each(self, draw: impl Fn(TileRect, TileBuffers<'_>, u32, &Bins, usize) + Sync) {
+    /// `draw(job)` for every tile, in parallel, shared between the threads by what is binned
+    /// in each (see `tile_runs`). Each tile gets its own piece of the id buffer, or an empty one
+    /// when it is not recorded.
+    fn each(self, draw: impl Fn(TileJob<'_>) + Sync) {
         let grid = self.target.grid;
         let (bins, background) = (self.bins, self.background);
-        self.schedule.run(
+        self.runs.draw(
             self.target,
             |tile| bins.binned(tile),
-            |tile, buffers| draw(grid.tile_rect(tile), buffers, background, bins, tile),
+            |tile, buffers| {
+                draw(TileJob {
+                    tile,
+                    rect: grid.tile_rect(tile),
+                    buffers,
+                    background,
+                    bins,
+                })
+            },
         );
     }
 }
@@ -377,7 +386,7 @@ mod tests {
         for way in ["deferred", "queued", "unqueued"] {
             let tiles = Tiles {
                 target: &mut rasterizer.target,
-                schedule: &mut rasterizer.schedule,
+                runs: &mut rasterizer.runs,
                 bins: &rasterizer.bins,
                 background,
                 defer_from: if way == "deferred" { 0 } else { usize::MAX },

@@ -2,7 +2,7 @@
 //! eight lanes at a time (the hierarchy is tile → rows → blocks of eight lanes), with the lanes
 //! outside the span masked off; while fates are recorded, the winner's index in the id buffer.
 
-use crate::lanes::{F8, LANES, Mask};
+use crate::lanes::{F8, LANES, Mask, with_avx2};
 use crate::queue::Queue;
 use crate::shading::PixelShader;
 use crate::target::ROW;
@@ -25,8 +25,7 @@ pub(crate) struct RowBuffers<'a> {
     pub ids: Option<(u32, &'a mut [u32; ROW])>,
 }
 
-/// The depth test and the shader over a span, or the `queue` for blocks it takes. Compiled
-/// twice: for the baseline x86-64 and, chosen at run time, for AVX2 and FMA.
+/// The depth test and the shader over a span, or the `queue` for blocks it takes.
 #[inline(always)]
 pub(crate) fn draw_span<S: PixelShader, Q: Queue<S>>(
     shader: &S,
@@ -38,28 +37,21 @@ pub(crate) fn draw_span<S: PixelShader, Q: Queue<S>>(
     // The row's buffers go apart, as separate arguments in registers, to the function that is
     // not inlined.
     let RowBuffers { color, depth, ids } = row;
-    #[cfg(target_arch = "x86_64")]
-    if std::arch::is_x86_feature_detected!("avx2") && std::arch::is_x86_feature_detected!("fma") {
-        // SAFETY: the CPU has the features the function is compiled for, checked just above.
-        unsafe { draw_span_avx2(shader, planes, span, color, depth, ids, queue) };
-        return;
-    }
-    draw_span_portable(shader, planes, span, color, depth, ids, queue);
+    draw_span_parts(shader, planes, span, color, depth, ids, queue);
 }
 
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx2,fma")]
-#[inline(never)]
-fn draw_span_avx2<S: PixelShader, Q: Queue<S>>(
-    shader: &S,
-    planes: &Planes,
-    span: Span,
-    color: &mut [u32; ROW],
-    depth: &mut [f32; ROW],
-    ids: Option<(u32, &mut [u32; ROW])>,
-    queue: &mut Q,
-) {
-    draw_span_portable(shader, planes, span, color, depth, ids, queue);
+with_avx2! {
+    /// [`draw_span`]'s work, compiled for the baseline x86-64 and for AVX2 and FMA.
+    #[inline(always)]
+    fn draw_span_parts[S: PixelShader, Q: Queue<S>](
+        shader: &S,
+        planes: &Planes,
+        span: Span,
+        color: &mut [u32; ROW],
+        depth: &mut [f32; ROW],
+        ids: Option<(u32, &mut [u32; ROW])>,
+        queue: &mut Q,
+    ) => draw_span_portable;
 }
 
 /// Works on whole blocks of eight pixels of the tile's row (the row is 64 wide, so they always

@@ -202,6 +202,8 @@ fn bounds(fixed: [[i64; 2]; 3], size: [i32; 2]) -> [i32; 4] {
 
 #[cfg(test)]
 mod tests {
+    use std::ops::RangeInclusive;
+
     use super::*;
     use crate::edge::snap;
 
@@ -222,55 +224,39 @@ mod tests {
         pixels
     }
 
+    /// The pixels covered by the square from corner (x0, y0) to (x1, y1), drawn as the two
+    /// triangles either side of its diagonal, in order (a pixel drawn twice is there twice).
+    fn square(x0: f32, y0: f32, x1: f32, y1: f32) -> Vec<(i32, i32)> {
+        let halves = [
+            [corner(x0, y0), corner(x1, y0), corner(x1, y1)],
+            [corner(x0, y0), corner(x1, y1), corner(x0, y1)],
+        ];
+        let mut pixels: Vec<_> = halves
+            .into_iter()
+            .flat_map(|half| covered(&setup(half, [16, 16], Used::default(), false)))
+            .collect();
+        pixels.sort();
+        pixels
+    }
+
+    /// Columns `xs` of rows `ys`, in order.
+    fn block(xs: RangeInclusive<i32>, ys: RangeInclusive<i32>) -> Vec<(i32, i32)> {
+        xs.flat_map(|x| ys.clone().map(move |y| (x, y))).collect()
+    }
+
     #[test]
     fn an_axis_aligned_square_covers_the_pixels_whose_centres_it_holds() {
         // Corners on pixel boundaries: the left and top edges pass exactly through no centre,
         // so the square [2, 6] x [1, 3] covers columns 2..=5 and rows 1..=2.
-        let size = [16, 16];
-        let a = setup(
-            [corner(2.0, 1.0), corner(6.0, 1.0), corner(6.0, 3.0)],
-            size,
-            Used::default(),
-            false,
-        );
-        let b = setup(
-            [corner(2.0, 1.0), corner(6.0, 3.0), corner(2.0, 3.0)],
-            size,
-            Used::default(),
-            false,
-        );
-        let mut pixels = covered(&a);
-        pixels.extend(covered(&b));
-        pixels.sort();
-        let mut expected: Vec<_> = (1..=2).flat_map(|y| (2..=5).map(move |x| (x, y))).collect();
-        expected.sort();
-        assert_eq!(pixels, expected);
+        assert_eq!(square(2.0, 1.0, 6.0, 3.0), block(2..=5, 1..=2));
     }
 
     #[test]
     fn centres_on_an_edge_go_to_the_left_and_top_edges_only() {
         // A square whose edges pass through pixel centres (x = 2.5 and 5.5, y = 1.5 and 3.5).
-        let size = [16, 16];
-        let a = setup(
-            [corner(2.5, 1.5), corner(5.5, 1.5), corner(5.5, 3.5)],
-            size,
-            Used::default(),
-            false,
-        );
-        let b = setup(
-            [corner(2.5, 1.5), corner(5.5, 3.5), corner(2.5, 3.5)],
-            size,
-            Used::default(),
-            false,
-        );
-        let mut pixels = covered(&a);
-        pixels.extend(covered(&b));
-        pixels.sort();
         // Left column 2 and top row 1 are in; right column 5 and bottom row 3 are out; the
         // diagonal's centres are drawn once.
-        let mut expected: Vec<_> = (1..=2).flat_map(|y| (2..=4).map(move |x| (x, y))).collect();
-        expected.sort();
-        assert_eq!(pixels, expected);
+        assert_eq!(square(2.5, 1.5, 5.5, 3.5), block(2..=4, 1..=2));
     }
 
     /// A small xorshift generator: the same numbers on every run.

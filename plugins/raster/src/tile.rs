@@ -34,18 +34,22 @@ impl TileBuffers<'_> {
     }
 }
 
-/// Clears tile number `tile` to `background`, the far plane and no triangle, then draws the
-/// triangles binned there, batch after batch, partial blocks shaded through `queue`.
-pub(crate) fn draw_tile<S: PixelShader, Q: Queue<S>>(
-    rect: TileRect,
-    mut buffers: TileBuffers<'_>,
-    background: u32,
-    bins: &Bins,
-    tile: usize,
-    shader: &S,
-    queue: &mut Q,
-) {
-    buffers.clear(background);
+/// One tile to draw: its number, where it lies, its buffers, what it is cleared to and what is
+/// binned there.
+pub(crate) struct TileJob<'a> {
+    pub tile: usize,
+    pub rect: TileRect,
+    pub buffers: TileBuffers<'a>,
+    pub background: u32,
+    pub bins: &'a Bins,
+}
+
+/// Clears the tile to its background, the far plane and no triangle, then draws the triangles
+/// binned there, batch after batch, partial blocks shaded through `queue`.
+pub(crate) fn draw_tile<S: PixelShader, Q: Queue<S>>(job: TileJob<'_>, shader: &S, queue: &mut Q) {
+    let (tile, rect, bins) = (job.tile, job.rect, job.bins);
+    let mut buffers = job.buffers;
+    buffers.clear(job.background);
     let mut rows = Rows::new(buffers.color, buffers.depth, buffers.ids);
     let uniform = shader.uniform();
     // The small triangle whose fragments in this tile its rows have drawn.
@@ -76,20 +80,14 @@ pub(crate) fn draw_tile<S: PixelShader, Q: Queue<S>>(
     });
 }
 
-/// [`draw_tile`] with no queue, not inlined. Inlined into `schedule`'s loop, the row loop it
-/// calls ran the flat fill 15 % slower (one thread, AMD EPYC) with the same instructions to
-/// the one (callgrind): where the stack or the code fell, not anything done. The queued
-/// Phong tiles are the other way round: 3 % faster inlined.
+/// [`draw_tile`] with no queue, not inlined. Inlined into the tile runs' loop, the row loop it
+/// calls ran the flat fill slower with the same instructions to the one (callgrind): where the
+/// stack or the code fell, not anything done. The queued Phong tiles are the other way round,
+/// faster inlined. Measured:
+/// docs/performance.md#the-lightings-attenuation-and-sharing-the-tiles-between-the-threads
 #[inline(never)]
-pub(crate) fn draw_tile_unqueued<S: PixelShader>(
-    rect: TileRect,
-    buffers: TileBuffers<'_>,
-    background: u32,
-    bins: &Bins,
-    tile: usize,
-    shader: &S,
-) {
-    draw_tile(rect, buffers, background, bins, tile, shader, &mut Unqueued);
+pub(crate) fn draw_tile_unqueued<S: PixelShader>(job: TileJob<'_>, shader: &S) {
+    draw_tile(job, shader, &mut Unqueued);
 }
 
 /// Each triangle or fragment binned in tile number `tile`, in submission order:

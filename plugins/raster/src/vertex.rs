@@ -15,7 +15,8 @@ use crate::varyings::{EYE, INTENSITY, NORMAL, UV, VARYINGS};
 
 /// Mesh vertices per parallel task: few enough that a cow-sized model's (4,096 in the knot)
 /// are shared by two cores. At 16 Ki, one core took them all while the other waited, and the
-/// knot's whole frame at 640×480 was 4 % slower (AMD EPYC, 0.916–0.923 against 0.876–0.888 ms).
+/// knot's whole frame was slower (measured:
+/// docs/performance.md#the-lightings-attenuation-and-sharing-the-tiles-between-the-threads).
 const CHUNK: usize = 2048;
 
 /// A vertex as the pipeline and the vertex stage left it.

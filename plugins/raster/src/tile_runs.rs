@@ -1,12 +1,12 @@
 //! Which thread draws which tile. A model lands in a few tiles, so tiles' costs differ by two
 //! orders of magnitude, and a thread left drawing a heavy tile at the end keeps the others
-//! idle: with the tile range halved between the threads (rayon's way), the knot at 640×480
-//! lost 12 % of its two cores so. Handing the tiles out one at a time, costliest first, to
-//! whichever thread is free fixed that but made 1920×1080 5 % slower: each frame moved tiles'
-//! memory to another core's cache. So each thread owns a run of tiles of about equal cost,
-//! the same from frame to frame while the costs are, and draws it in order (sorting a run by
-//! cost made the million-triangle grid 7 % slower); a thread done with its run takes tiles
-//! from the far end of the others'.
+//! idle, as it did with the tile range halved between the threads (rayon's way). Handing the
+//! tiles out one at a time, costliest first, to whichever thread is free fixed that but was
+//! slower at 1920×1080: each frame moved tiles' memory to another core's cache. So each thread
+//! owns a run of tiles of about equal cost, the same from frame to frame while the costs are,
+//! and draws it in order (sorting a run by cost was slower too); a thread done with its run
+//! takes tiles from the far end of the others'. Measured:
+//! docs/performance.md#the-lightings-attenuation-and-sharing-the-tiles-between-the-threads
 
 use std::marker::PhantomData;
 use std::sync::atomic::{AtomicU64, Ordering};
@@ -19,15 +19,15 @@ use crate::tile::TileBuffers;
 /// Each thread's run of tiles, kept from frame to frame so that a steady frame allocates
 /// nothing.
 #[derive(Debug, Default)]
-pub(crate) struct Schedule {
+pub(crate) struct TileRuns {
     /// The tiles of each run not yet taken (see [`Share`]).
     shares: Vec<AtomicU64>,
 }
 
-impl Schedule {
+impl TileRuns {
     /// Draws every tile of `target` with `draw(tile, buffers)`, on every thread of the pool.
     /// A tile's `cost` need only be proportional to its drawing time.
-    pub(crate) fn run(
+    pub(crate) fn draw(
         &mut self,
         target: &mut Target,
         cost: impl Fn(usize) -> usize,
@@ -121,7 +121,7 @@ struct Handout<'a> {
 unsafe impl Sync for Handout<'_> {}
 
 impl<'a> Handout<'a> {
-    /// `shares` are runs of `target`'s tiles that do not overlap (`Schedule::plan` makes them
+    /// `shares` are runs of `target`'s tiles that do not overlap (`TileRuns::plan` makes them
     /// so).
     fn new(target: &'a mut Target, shares: &'a [AtomicU64]) -> Handout<'a> {
         let pixels = target.grid.tiles() * TILE_PIXELS;
@@ -217,8 +217,8 @@ mod tests {
         target.resize(64 * 5, 64 * 3, true);
         let tiles = target.grid.tiles();
         let drawn = std::sync::Mutex::new(Vec::new());
-        let mut schedule = Schedule::default();
-        schedule.run(
+        let mut runs = TileRuns::default();
+        runs.draw(
             &mut target,
             |tile| (tile * 7) % 5,
             |tile, buffers| {
@@ -240,9 +240,9 @@ mod tests {
     fn shares_are_runs_of_about_equal_cost() {
         // Costs (plus 1 for clearing) 1, 1, 9, 1, 5, 1, 1, 2: a total of 21, 10.5 per share.
         let costs = [0, 0, 8, 0, 4, 0, 0, 1];
-        let mut schedule = Schedule::default();
-        schedule.plan(costs.len(), 2, |tile| costs[tile]);
-        let shares: Vec<Share> = schedule
+        let mut runs = TileRuns::default();
+        runs.plan(costs.len(), 2, |tile| costs[tile]);
+        let shares: Vec<Share> = runs
             .shares
             .iter()
             .map(|s| Share::unpack(s.load(Ordering::Relaxed)))
@@ -252,8 +252,8 @@ mod tests {
             [Share { front: 0, back: 3 }, Share { front: 3, back: 8 }]
         );
         // Three threads on one costly tile: the shares after it are empty, not missing.
-        schedule.plan(2, 3, |tile| [100, 0][tile]);
-        let shares: Vec<Share> = schedule
+        runs.plan(2, 3, |tile| [100, 0][tile]);
+        let shares: Vec<Share> = runs
             .shares
             .iter()
             .map(|s| Share::unpack(s.load(Ordering::Relaxed)))
@@ -266,9 +266,9 @@ mod tests {
     fn a_run_taken_from_both_ends_gives_each_tile_once() {
         let mut target = Target::default();
         target.resize(64 * 4, 64, false);
-        let mut schedule = Schedule::default();
-        schedule.plan(4, 1, |_| 0);
-        let handout = Handout::new(&mut target, &schedule.shares);
+        let mut runs = TileRuns::default();
+        runs.plan(4, 1, |_| 0);
+        let handout = Handout::new(&mut target, &runs.shares);
         let mut taken = Vec::new();
         for end in [
             End::Front,
