@@ -17,7 +17,7 @@ use crate::input::InputTracker;
 use crate::layout::PixelRect;
 use crate::orbit_input::OrbitInput;
 use crate::pacing::Pacing;
-use crate::present::{Capture, PendingShot, Shot};
+use crate::present::{self, Capture, PendingShot, Shot};
 use crate::routing::{apply_input, offer_to_panel};
 use crate::session::Session;
 use crate::surface_source::Connections;
@@ -140,7 +140,13 @@ impl Viewer {
         let probing = false;
 
         let capture = capture(&self.options, self.frames, self.app.world_mut());
-        let drawn = windows.draw(self.app.world_mut(), &gui_frame, &placement, capture);
+        let drawn = present::draw(
+            windows,
+            self.app.world_mut(),
+            &gui_frame,
+            &placement,
+            capture,
+        );
         windows.gui.free_textures(&mut gui_frame);
         let held = end_input_frame(self.app.world_mut());
         let shot = drawn.and_then(|pending| arrived_shot(&mut self.shot, pending, &windows.gpu));

@@ -1,5 +1,6 @@
-//! Drawing every window for one frame, and the captures of what they show: the whole window
-//! (`--screenshot`) or each view alone (the screenshot key).
+//! Drawing every window for one frame (`draw`, over the `Windows`, whose own file opens and
+//! places them), and the captures of what they show: the whole window (`--screenshot`) or each
+//! view alone (the screenshot key, comparing the views), on their way back from the GPU.
 
 use bevy_ecs::world::World;
 use close2gl_gpu::outside::OutsideRenderer;
@@ -73,78 +74,76 @@ struct Pass {
     panel: bool,
 }
 
-impl Windows {
-    /// Draws every window, and returns what `capture` asks to keep.
-    pub fn draw(
-        &mut self,
-        world: &mut World,
-        gui: &GuiFrame,
-        placement: &Placement,
-        capture: Capture,
-    ) -> Result<Option<PendingShot>, String> {
-        // A lost device draws nothing and reports nothing: stop with its reason instead.
-        if let Some(lost) = self.gpu.lost() {
-            return Err(lost);
-        }
-        let mut times = ViewTimes::default();
-        let outside = world.get_resource::<OutsideRenderer>();
-        let result = match world.get_resource::<Views>() {
-            Some(views) => {
-                let all = AllViews { views, outside };
-                self.draw_with(all, &mut times, gui, placement, capture)
-            }
-            None => Err("the GPU views are gone".into()),
-        };
-        if let Some(mut stats) = world.get_resource_mut::<ViewStats>() {
-            record_times(&mut stats, &times);
-        }
-        result
+/// Draws every window, and returns what `capture` asks to keep.
+pub fn draw(
+    windows: &mut Windows,
+    world: &mut World,
+    gui: &GuiFrame,
+    placement: &Placement,
+    capture: Capture,
+) -> Result<Option<PendingShot>, String> {
+    // A lost device draws nothing and reports nothing: stop with its reason instead.
+    if let Some(lost) = windows.gpu.lost() {
+        return Err(lost);
     }
+    let mut times = ViewTimes::default();
+    let outside = world.get_resource::<OutsideRenderer>();
+    let result = match world.get_resource::<Views>() {
+        Some(views) => {
+            let all = AllViews { views, outside };
+            draw_with(windows, all, &mut times, gui, placement, capture)
+        }
+        None => Err("the GPU views are gone".into()),
+    };
+    if let Some(mut stats) = world.get_resource_mut::<ViewStats>() {
+        record_times(&mut stats, &times);
+    }
+    result
+}
 
-    fn draw_with(
-        &mut self,
-        views: AllViews<'_>,
-        times: &mut ViewTimes,
-        gui_frame: &GuiFrame,
-        placement: &Placement,
-        capture: Capture,
-    ) -> Result<Option<PendingShot>, String> {
-        let Windows {
-            gpu,
-            main,
-            close2gl,
-            outside,
-            gui,
-            ..
-        } = self;
-        let mut shots = Vec::new();
-        let main_shot = draw_window(gpu, main, capture, |target, depth, pass| {
-            let times = pass.timed.then_some(&mut *times);
-            draw_views(gpu, views, target, depth, &placement.main, times);
-            if pass.panel {
-                gui.paint(gpu, gui_frame, target);
-            }
-        })?;
-        shots.extend(main_shot.map(|shot| (shot, placement.main.clone())));
-        for (window, placed) in [
-            (close2gl, &placement.close2gl),
-            (outside, &placement.outside),
-        ] {
-            let Some(window) = window else {
-                continue;
-            };
-            let shot = draw_window(gpu, window, capture, |target, depth, pass| {
-                let times = pass.timed.then_some(&mut *times);
-                draw_views(gpu, views, target, depth, placed, times);
-            })?;
-            shots.extend(shot.map(|shot| (shot, placed.clone())));
+fn draw_with(
+    windows: &mut Windows,
+    views: AllViews<'_>,
+    times: &mut ViewTimes,
+    gui_frame: &GuiFrame,
+    placement: &Placement,
+    capture: Capture,
+) -> Result<Option<PendingShot>, String> {
+    let Windows {
+        gpu,
+        main,
+        close2gl,
+        outside,
+        gui,
+        ..
+    } = windows;
+    let mut shots = Vec::new();
+    let main_shot = draw_window(gpu, main, capture, |target, depth, pass| {
+        let times = pass.timed.then_some(&mut *times);
+        draw_views(gpu, views, target, depth, &placement.main, times);
+        if pass.panel {
+            gui.paint(gpu, gui_frame, target);
         }
-        Ok((capture != Capture::Nothing).then(|| PendingShot {
-            capture,
-            arrived: shots.iter().map(|_| None).collect(),
-            windows: shots,
-        }))
+    })?;
+    shots.extend(main_shot.map(|shot| (shot, placement.main.clone())));
+    for (window, placed) in [
+        (close2gl, &placement.close2gl),
+        (outside, &placement.outside),
+    ] {
+        let Some(window) = window else {
+            continue;
+        };
+        let shot = draw_window(gpu, window, capture, |target, depth, pass| {
+            let times = pass.timed.then_some(&mut *times);
+            draw_views(gpu, views, target, depth, placed, times);
+        })?;
+        shots.extend(shot.map(|shot| (shot, placed.clone())));
     }
+    Ok((capture != Capture::Nothing).then(|| PendingShot {
+        capture,
+        arrived: shots.iter().map(|_| None).collect(),
+        windows: shots,
+    }))
 }
 
 /// What `capture` keeps of the windows drawn (each with the views placed in it).
