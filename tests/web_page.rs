@@ -88,12 +88,21 @@ fn content_type(file: &Path) -> &'static str {
 /// Opens `page` (a path and query on the site, with its fragment) and returns what page.mjs
 /// reports: the app's status, the page's fragment afterwards and any errors.
 fn open(page: &str, screenshot: &str) -> Value {
+    open_and_pick(page, screenshot, None)
+}
+
+/// [`open`], then `pick` chosen with the page's file input.
+fn open_and_pick(page: &str, screenshot: &str, pick: Option<&Path>) -> Value {
     let url = format!("{}/{page}", server());
     let shot = root().join("target/web-test").join(screenshot);
-    let output = Command::new("node")
-        .arg(root().join("tests/web/page.mjs"))
+    let mut node = Command::new("node");
+    node.arg(root().join("tests/web/page.mjs"))
         .arg(&url)
-        .arg(&shot)
+        .arg(&shot);
+    if let Some(pick) = pick {
+        node.arg("90000").arg(pick);
+    }
+    let output = node
         .output()
         .expect("node runs (apt-get install nodejs; npm ci in tests/web)");
     let stdout = String::from_utf8_lossy(&output.stdout);
@@ -194,4 +203,15 @@ fn a_broken_link_shows_the_default_view_and_says_why() {
     );
     let status = &report["status"];
     assert_eq!(status["model"], "knot.obj", "{status}");
+}
+
+#[test]
+fn a_picked_file_becomes_the_model() {
+    let picked = root().join("target/web-test/picked_cube.in");
+    std::fs::create_dir_all(picked.parent().unwrap()).unwrap();
+    std::fs::copy(root().join("assets/cube.in"), &picked).unwrap();
+    let report = open_and_pick("?test=1", "picked.png", Some(&picked));
+    let status = &report["status"];
+    assert_eq!(status["model"], "picked_cube.in", "{status}");
+    assert_eq!(status["triangles"], 12, "{status}");
 }

@@ -1,11 +1,14 @@
 // Opens one close2gl page in Debian's Chromium, headless (WebGL2 on SwiftShader), waits until
 // the app's status (?test=1) says the views have been compared, takes a screenshot, and prints
-// {"status", "hash", "errors"} as one JSON line for tests/web_page.rs to judge.
+// {"status", "hash", "errors"} as one JSON line for tests/web_page.rs to judge. With PICK, it
+// then picks that file with the page's file input (the panel's "Open a file…") and waits until
+// the status shows it as the model.
 //
-//   node page.mjs URL SCREENSHOT.png [TIMEOUT_MS]
+//   node page.mjs URL SCREENSHOT.png [TIMEOUT_MS [PICK]]
+import { basename } from "node:path";
 import { chromium } from "playwright-core";
 
-const [url, screenshot, timeout = "90000"] = process.argv.slice(2);
+const [url, screenshot, timeout = "90000", pick] = process.argv.slice(2);
 const browser = await chromium.launch({
   executablePath: process.env.CHROMIUM ?? "/usr/bin/chromium",
   args: [
@@ -34,6 +37,14 @@ try {
     null,
     { timeout: Number(timeout), polling: 100 },
   );
+  if (pick) {
+    await page.setInputFiles("#close2gl-file", pick);
+    await page.waitForFunction(
+      (name) => JSON.parse(document.getElementById("status").textContent).model === name,
+      basename(pick),
+      { timeout: Number(timeout), polling: 100 },
+    );
+  }
   // The link follows the view within its throttle (250 ms).
   await page.waitForTimeout(600);
   await page.screenshot({ path: screenshot });
