@@ -19,20 +19,20 @@
 //! the whole world, runs the layout with the frame's [`PanelInput`], which the viewer gives, and
 //! leaves egui's [`PanelOutput`] for it to paint. It knows no window system or GPU.
 
-mod camera;
+mod camera_panel;
 mod inspector;
-mod layout;
 mod legend;
-mod model;
-mod outside;
+mod model_panel;
+mod outside_panel;
+mod panel_layout;
 mod parts;
-mod render;
+mod render_panel;
 mod state;
-mod stats;
+mod stats_panel;
 mod system;
-mod texture;
-mod tools;
-mod trace;
+mod texture_panel;
+mod tools_panel;
+mod trace_panel;
 mod views;
 
 use close2gl_core::{
@@ -41,11 +41,11 @@ use close2gl_core::{
 };
 
 pub use inspector::ProbeAnswer;
-pub use layout::{PANEL_WIDTH, views_area};
+pub use panel_layout::{PANEL_WIDTH, views_area};
 pub use state::PanelState;
-pub use stats::{FrameTimer, ViewStats};
+pub use stats_panel::{FrameTimer, ViewStats};
 pub use system::{PanelInput, PanelOutput, panel_system};
-pub use tools::{Notice, REPRO_OUT};
+pub use tools_panel::{Notice, REPRO_OUT};
 
 use bevy_ecs::prelude::*;
 

@@ -7,7 +7,7 @@
 
 use bevy_ecs::prelude::*;
 
-use crate::layout;
+use crate::panel_layout;
 use crate::parts::Parts;
 
 /// This frame's input for the panel, from the window's owner.
@@ -33,7 +33,7 @@ pub fn panel_system(world: &mut World) {
     };
     let (ctx, both_views) = (input.ctx.clone(), input.both_views);
     let output = ctx.run_ui(raw, |ui| {
-        layout::show(ui, &mut Parts(&mut *world), both_views);
+        panel_layout::show(ui, &mut Parts(&mut *world), both_views);
     });
     world.insert_resource(PanelOutput(output));
 }

@@ -7,7 +7,10 @@ use bevy_ecs::prelude::*;
 use crate::parts::Parts;
 use crate::state::PanelState;
 use crate::views::{self, Views};
-use crate::{camera, inspector, legend, model, outside, render, stats, texture, tools, trace};
+use crate::{
+    camera_panel, inspector, legend, model_panel, outside_panel, render_panel, stats_panel,
+    texture_panel, tools_panel, trace_panel,
+};
 
 /// Width of the side panel, its margins included, in points.
 pub const PANEL_WIDTH: f32 = 290.0;
@@ -44,29 +47,29 @@ pub fn show(ui: &mut egui::Ui, parts: &mut Parts, shared: bool) {
         shared,
     };
     // After the panel, so that its buttons take effect in the frame they are clicked in.
-    if parts.run(tools::take_requests, ()) == Some(true) {
-        let command = parts.command(tools::REPRO_OUT);
-        parts.run(tools::copied, (ui.ctx().clone(), command));
+    if parts.run(tools_panel::take_requests, ()) == Some(true) {
+        let command = parts.command(tools_panel::REPRO_OUT);
+        parts.run(tools_panel::copied, (ui.ctx().clone(), command));
     }
-    parts.run(tools::show_notice, (ui, views));
-    parts.run(tools::cheat_sheet, ui);
+    parts.run(tools_panel::show_notice, (ui, views));
+    parts.run(tools_panel::cheat_sheet, ui);
     parts.run(views::labels, (ui, views));
     parts.run(legend::show, (ui, views));
     parts.run(inspector::probe_window, (ui, views));
 }
 
 fn sections(ui: &mut egui::Ui, parts: &mut Parts) {
-    section(ui, parts, "Model", model::section);
-    if parts.run(trace::shown, ()) == Some(true) {
-        section(ui, parts, "Trace", trace::section);
+    section(ui, parts, "Model", model_panel::section);
+    if parts.run(trace_panel::shown, ()) == Some(true) {
+        section(ui, parts, "Trace", trace_panel::section);
     }
-    section(ui, parts, "Render", render::section);
-    section(ui, parts, "Texture", texture::section);
-    section(ui, parts, "Camera", camera::section);
-    section(ui, parts, "Outside view", outside::section);
-    section(ui, parts, "Tools", tools::section);
+    section(ui, parts, "Render", render_panel::section);
+    section(ui, parts, "Texture", texture_panel::section);
+    section(ui, parts, "Camera", camera_panel::section);
+    section(ui, parts, "Outside view", outside_panel::section);
+    section(ui, parts, "Tools", tools_panel::section);
     section(ui, parts, "Inspector", inspector::section);
-    section(ui, parts, "Stats", stats::section);
+    section(ui, parts, "Stats", stats_panel::section);
 }
 
 /// One section under its title, open at first.

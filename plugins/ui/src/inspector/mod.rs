@@ -18,10 +18,10 @@ use close2gl_pipeline::matrices;
 use crate::legend::{self, swatch};
 use crate::state::PanelState;
 
-mod probe;
+mod probe_window;
 mod table;
 
-pub use probe::{ProbeAnswer, probe_window};
+pub use probe_window::{ProbeAnswer, probe_window};
 
 /// What the inspector reads of the frame: the mesh and camera the pipeline drew, its viewport,
 /// and the fates it recorded.
@@ -47,7 +47,7 @@ pub fn section(
         Overlay::Difference => difference_legend(ui),
         _ => fates_legend(ui, frame.fates.as_deref()),
     }
-    probe::record(ui, answer.as_deref());
+    probe_window::record(ui, answer.as_deref());
     let camera = frame.cameras.iter().next();
     if let (Some(mesh), Some(camera), Some(selected)) =
         (frame.meshes.iter().next(), camera, selected.as_mut())
