@@ -125,7 +125,7 @@ impl Gui {
             return GuiFrame::empty(size);
         };
         #[cfg(target_arch = "wasm32")]
-        crate::browser::copy_to_clipboard(&output.platform_output);
+        copy_to_clipboard(&output.platform_output);
         self.state
             .handle_platform_output(window, output.platform_output);
         let repaint_delay = output
@@ -187,6 +187,22 @@ impl Gui {
     pub fn free_textures(&mut self, frame: &mut GuiFrame) {
         for id in frame.textures.free.drain() {
             self.renderer.free_texture(&id);
+        }
+    }
+}
+
+#[cfg(target_arch = "wasm32")]
+/// What the panel copied (copy as command, copy link), put on the page's clipboard: egui's own
+/// clipboard has no browser backend.
+pub fn copy_to_clipboard(output: &egui::PlatformOutput) {
+    let Some(clipboard) = web_sys::window().map(|w| w.navigator().clipboard()) else {
+        return;
+    };
+    for command in &output.commands {
+        if let egui::OutputCommand::CopyText(text) = command {
+            // A promise the page does not wait for: a browser that refuses (no permission)
+            // leaves the clipboard as it was.
+            let _ = clipboard.write_text(text);
         }
     }
 }

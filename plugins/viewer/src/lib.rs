@@ -43,7 +43,6 @@ use close2gl_core::Owner;
 use close2gl_core::{App, InputState, ModelRequest, Plugin, Viewport, Wake};
 pub use recording::Recording;
 pub use routing::drop_file;
-#[cfg(not(target_arch = "wasm32"))]
 use winit::event_loop::{ControlFlow, EventLoop};
 
 #[derive(Clone, Debug, PartialEq)]
@@ -85,10 +84,7 @@ impl Plugin for ViewerPlugin {
             .requires::<Viewport>(Owner::Settings)
             .requires::<Wake>(Owner::Settings);
         let options = self.0.clone();
-        #[cfg(not(target_arch = "wasm32"))]
         app.set_runner(move |app| run(app, options));
-        #[cfg(target_arch = "wasm32")]
-        app.set_runner(move |app| browser::run(app, options));
     }
 }
 
@@ -106,4 +102,27 @@ pub fn run(app: App, options: ViewerOptions) -> Result<(), String> {
         .run_app(&mut viewer)
         .map_err(|e| format!("the window system failed: {e}"))?;
     viewer.finish()
+}
+
+/// Starts the viewer on the page's canvas; it runs after this returns, for as long as the page
+/// lives (the event loop is the browser's, which winit hands the viewer to).
+#[cfg(target_arch = "wasm32")]
+pub fn run(app: App, options: ViewerOptions) -> Result<(), String> {
+    use winit::platform::web::EventLoopExtWebSys;
+    wasm_bindgen_futures::spawn_local(async move {
+        let instance = browser::instance().await;
+        let event_loop = match EventLoop::new() {
+            Ok(event_loop) => event_loop,
+            Err(e) => return browser::report(&format!("cannot start the page's event loop: {e}")),
+        };
+        event_loop.set_control_flow(ControlFlow::Wait);
+        let session = match session::Session::for_options(&options) {
+            Ok(session) => session,
+            Err(e) => return browser::report(&e),
+        };
+        let connections = surface_source::Connections::Winit;
+        let viewer = handler::Viewer::new(app, options, session, (instance, connections));
+        event_loop.spawn_app(viewer);
+    });
+    Ok(())
 }
