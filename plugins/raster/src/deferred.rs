@@ -97,6 +97,8 @@ impl PixelShader for Number {
 
 with_avx2! {
     /// The second pass, compiled for the baseline x86-64 and for AVX2 and FMA.
+    ///
+    /// Each block of eight pixels that shows a triangle, coloured once.
     #[inline(always)]
     fn shade_visible[S: LaneShader + PixelShader](
         rect: TileRect,
@@ -105,60 +107,49 @@ with_avx2! {
         won: &[[f32; TILE_PIXELS]],
         bins: &Bins,
         shader: &S,
-    ) => shade_visible_portable;
-}
-
-/// Each block of eight pixels that shows a triangle, coloured once.
-#[inline(always)]
-fn shade_visible_portable<S: LaneShader + PixelShader>(
-    rect: TileRect,
-    color: &mut [[u32; ROW]],
-    visible: &[[u32; ROW]],
-    won: &[[f32; TILE_PIXELS]],
-    bins: &Bins,
-    shader: &S,
-) {
-    let rows = (rect.y1 - rect.y0 + 1) as usize;
-    let blocks = ((rect.x1 - rect.x0 + 1) as usize).div_ceil(LANES);
-    // The planes of the triangle shown last: a large triangle's blocks follow one another.
-    let mut last = (NO_TRIANGLE, Planes::ZERO);
-    for (row, (color, visible)) in color.iter_mut().zip(visible).take(rows).enumerate() {
-        let y = rect.y0 + row as i32;
-        let fy = y as f32 + 0.5;
-        let (color, _) = color.as_chunks_mut::<LANES>();
-        let (visible, _) = visible.as_chunks::<LANES>();
-        let blocks = color.iter_mut().zip(visible).take(blocks).enumerate();
-        for (block, (color, shown)) in blocks {
-            let Some(&first) = shown.iter().find(|&&n| n != NO_TRIANGLE) else {
-                continue;
-            };
-            let x0 = rect.x0 + (block * LANES) as i32;
-            let x = F8::ramp(x0 as f32 + 0.5);
-            let one = shown.iter().all(|&n| n == first || n == NO_TRIANGLE);
-            let shaded = match one && first != FRAGMENT {
-                true => {
-                    if last.0 != first {
-                        last = (first, Planes::unpack(bins.packed(first), bins.used));
-                    }
-                    shader.shade(&last.1, x, fy)
-                }
-                false => {
-                    let at = row * ROW + block * LANES;
-                    let mut values = AtPixels::new(std::array::from_fn(|k| {
-                        won[k][at..at + LANES].as_array().expect("a block of eight")
-                    }));
-                    for (lane, &n) in shown.iter().enumerate() {
-                        if n != FRAGMENT && n != NO_TRIANGLE {
-                            let planes = Planes::unpack(bins.packed(n), bins.used);
-                            values.set_lane(lane, &planes.at_pixel(x0 + lane as i32, y));
+    ) {
+        let rows = (rect.y1 - rect.y0 + 1) as usize;
+        let blocks = ((rect.x1 - rect.x0 + 1) as usize).div_ceil(LANES);
+        // The planes of the triangle shown last: a large triangle's blocks follow one another.
+        let mut last = (NO_TRIANGLE, Planes::ZERO);
+        for (row, (color, visible)) in color.iter_mut().zip(visible).take(rows).enumerate() {
+            let y = rect.y0 + row as i32;
+            let fy = y as f32 + 0.5;
+            let (color, _) = color.as_chunks_mut::<LANES>();
+            let (visible, _) = visible.as_chunks::<LANES>();
+            let blocks = color.iter_mut().zip(visible).take(blocks).enumerate();
+            for (block, (color, shown)) in blocks {
+                let Some(&first) = shown.iter().find(|&&n| n != NO_TRIANGLE) else {
+                    continue;
+                };
+                let x0 = rect.x0 + (block * LANES) as i32;
+                let x = F8::ramp(x0 as f32 + 0.5);
+                let one = shown.iter().all(|&n| n == first || n == NO_TRIANGLE);
+                let shaded = match one && first != FRAGMENT {
+                    true => {
+                        if last.0 != first {
+                            last = (first, Planes::unpack(bins.packed(first), bins.used));
                         }
+                        shader.shade(&last.1, x, fy)
                     }
-                    shader.shade_lanes(&values, x, fy)
-                }
-            };
-            for (c, (s, &n)) in color.iter_mut().zip(shaded.into_iter().zip(shown)) {
-                if n != NO_TRIANGLE {
-                    *c = s;
+                    false => {
+                        let at = row * ROW + block * LANES;
+                        let mut values = AtPixels::new(std::array::from_fn(|k| {
+                            won[k][at..at + LANES].as_array().expect("a block of eight")
+                        }));
+                        for (lane, &n) in shown.iter().enumerate() {
+                            if n != FRAGMENT && n != NO_TRIANGLE {
+                                let planes = Planes::unpack(bins.packed(n), bins.used);
+                                values.set_lane(lane, &planes.at_pixel(x0 + lane as i32, y));
+                            }
+                        }
+                        shader.shade_lanes(&values, x, fy)
+                    }
+                };
+                for (c, (s, &n)) in color.iter_mut().zip(shaded.into_iter().zip(shown)) {
+                    if n != NO_TRIANGLE {
+                        *c = s;
+                    }
                 }
             }
         }

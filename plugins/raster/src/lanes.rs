@@ -16,24 +16,26 @@ pub(crate) fn map3<T, U>(a: &[T; 3], f: impl Fn(&T) -> U) -> [U; 3] {
     [f(&a[0]), f(&a[1]), f(&a[2])]
 }
 
-/// Defines `fn $name[generics](args) => $portable;`: a function that runs `$portable` (an
-/// `#[inline(always)]` function of the same arguments) compiled twice, for the baseline x86-64
-/// and, chosen at run time, for AVX2 and FMA, where eight lanes are one instruction rather than
-/// two. The AVX2 copy is not inlined, so that everything `$portable` inlines is compiled with
-/// those features; the attributes given (`#[inline(always)]` or none) are the dispatcher's.
+/// Defines `fn $name[generics](args) { body }`: a function whose body is compiled twice, for
+/// the baseline x86-64 and, chosen at run time, for AVX2 and FMA, where eight lanes are one
+/// instruction rather than two. The AVX2 copy is not inlined, so that everything the body
+/// inlines is compiled with those features; the attributes given (`#[inline(always)]` or none)
+/// are the dispatcher's.
 macro_rules! with_avx2 {
     (
         $(#[$attr:meta])*
-        $vis:vis fn $name:ident[$($generics:tt)*]($($arg:ident: $ty:ty),* $(,)?) => $portable:ident;
+        $vis:vis fn $name:ident[$($generics:tt)*]($($arg:ident: $ty:ty),* $(,)?) $body:block
     ) => {
         $(#[$attr])*
         $vis fn $name<$($generics)*>($($arg: $ty),*) {
+            #[inline(always)]
+            fn portable<$($generics)*>($($arg: $ty),*) $body
             #[cfg(target_arch = "x86_64")]
             {
                 #[target_feature(enable = "avx2,fma")]
                 #[inline(never)]
                 fn avx2<$($generics)*>($($arg: $ty),*) {
-                    $portable($($arg),*)
+                    portable($($arg),*)
                 }
                 if std::arch::is_x86_feature_detected!("avx2")
                     && std::arch::is_x86_feature_detected!("fma")
@@ -43,7 +45,7 @@ macro_rules! with_avx2 {
                     return;
                 }
             }
-            $portable($($arg),*)
+            portable($($arg),*)
         }
     };
 }

@@ -89,28 +89,20 @@ with_avx2! {
         planes: &Planes,
         color: &mut [[u32; ROW]],
         pending: &mut Pending,
-    ) => shade_pending_portable;
-}
-
-#[inline(always)]
-fn shade_pending_portable<S: LaneShader>(
-    shader: &S,
-    planes: &Planes,
-    color: &mut [[u32; ROW]],
-    pending: &mut Pending,
-) {
-    let queued = &pending.pixels[..pending.len];
-    let (groups, rest) = queued.as_chunks::<LANES>();
-    for group in groups {
-        shade_group(shader, planes, color, pending.rect, group, LANES);
+    ) {
+        let queued = &pending.pixels[..pending.len];
+        let (groups, rest) = queued.as_chunks::<LANES>();
+        for group in groups {
+            shade_group(shader, planes, color, pending.rect, group, LANES);
+        }
+        if let Some(&first) = rest.first() {
+            // The last few, with their first pixel again in the spare lanes.
+            let mut group = [first; LANES];
+            group[..rest.len()].copy_from_slice(rest);
+            shade_group(shader, planes, color, pending.rect, &group, rest.len());
+        }
+        pending.len = 0;
     }
-    if let Some(&first) = rest.first() {
-        // The last few, with their first pixel again in the spare lanes.
-        let mut group = [first; LANES];
-        group[..rest.len()].copy_from_slice(rest);
-        shade_group(shader, planes, color, pending.rect, &group, rest.len());
-    }
-    pending.len = 0;
 }
 
 /// The first `count` pixels of `group`, shaded, into the tile `rect`'s rows of `color`.

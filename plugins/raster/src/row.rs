@@ -42,6 +42,10 @@ pub(crate) fn draw_span<S: PixelShader, Q: Queue<S>>(
 
 with_avx2! {
     /// [`draw_span`]'s work, compiled for the baseline x86-64 and for AVX2 and FMA.
+    ///
+    /// Works on whole blocks of eight pixels of the tile's row (the row is 64 wide, so they always
+    /// exist), with lanes outside the span masked off: fixed-size, branch-free code is what the
+    /// compiler vectorises.
     #[inline(always)]
     fn draw_span_parts[S: PixelShader, Q: Queue<S>](
         shader: &S,
@@ -51,50 +55,37 @@ with_avx2! {
         depth: &mut [f32; ROW],
         ids: Option<(u32, &mut [u32; ROW])>,
         queue: &mut Q,
-    ) => draw_span_portable;
-}
-
-/// Works on whole blocks of eight pixels of the tile's row (the row is 64 wide, so they always
-/// exist), with lanes outside the span masked off: fixed-size, branch-free code is what the
-/// compiler vectorises.
-#[inline(always)]
-fn draw_span_portable<S: PixelShader, Q: Queue<S>>(
-    shader: &S,
-    planes: &Planes,
-    span: Span,
-    color: &mut [u32; ROW],
-    depth: &mut [f32; ROW],
-    mut ids: Option<(u32, &mut [u32; ROW])>,
-    queue: &mut Q,
-) {
-    let fy = span.y as f32 + 0.5;
-    let z_row = planes.depth_at(span.x0 as f32 + 0.5, fy);
-    let (color, _) = color.as_chunks_mut::<LANES>();
-    let (depth, _) = depth.as_chunks_mut::<LANES>();
-    let first = span.lo as usize / LANES;
-    let last = span.hi as usize / LANES;
-    for block in first..=last {
-        let base = block * LANES;
-        let lanes = F8::ramp(base as f32);
-        let z = lanes.mul_add(F8::splat(planes.depth.dadx), F8::splat(z_row));
-        let pass = depth_test(span, base, z, &mut depth[block]);
-        if pass == [0; LANES] {
-            continue;
-        }
-        if let Some((index, ids)) = ids.as_mut() {
-            let ids = &mut ids[base..base + LANES];
-            for (id, p) in ids.iter_mut().zip(pass) {
-                *id = (*index & p) | (*id & !p);
+    ) {
+        let mut ids = ids;
+        let fy = span.y as f32 + 0.5;
+        let z_row = planes.depth_at(span.x0 as f32 + 0.5, fy);
+        let (color, _) = color.as_chunks_mut::<LANES>();
+        let (depth, _) = depth.as_chunks_mut::<LANES>();
+        let first = span.lo as usize / LANES;
+        let last = span.hi as usize / LANES;
+        for block in first..=last {
+            let base = block * LANES;
+            let lanes = F8::ramp(base as f32);
+            let z = lanes.mul_add(F8::splat(planes.depth.dadx), F8::splat(z_row));
+            let pass = depth_test(span, base, z, &mut depth[block]);
+            if pass == [0; LANES] {
+                continue;
             }
-        }
-        if queue.take(span.y, base, &pass) {
-            continue;
-        }
-        let x = F8::ramp((span.x0 + base as i32) as f32 + 0.5);
-        let shaded = shader.shade(planes, x, fy);
-        let color = &mut color[block];
-        for (c, (s, p)) in color.iter_mut().zip(shaded.into_iter().zip(pass)) {
-            *c = (s & p) | (*c & !p);
+            if let Some((index, ids)) = ids.as_mut() {
+                let ids = &mut ids[base..base + LANES];
+                for (id, p) in ids.iter_mut().zip(pass) {
+                    *id = (*index & p) | (*id & !p);
+                }
+            }
+            if queue.take(span.y, base, &pass) {
+                continue;
+            }
+            let x = F8::ramp((span.x0 + base as i32) as f32 + 0.5);
+            let shaded = shader.shade(planes, x, fy);
+            let color = &mut color[block];
+            for (c, (s, p)) in color.iter_mut().zip(shaded.into_iter().zip(pass)) {
+                *c = (s & p) | (*c & !p);
+            }
         }
     }
 }
