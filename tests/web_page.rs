@@ -175,7 +175,7 @@ fn a_links_model_and_settings_are_applied_and_the_link_follows_the_view() {
     for item in [
         "#model=cube.in&",
         "camera.hfov=45",
-        "render.clipping=%22simple%22",
+        "render.clipping=simple",
     ] {
         assert!(hash.contains(item), "the link lacks {item}: {hash}");
     }
