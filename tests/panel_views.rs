@@ -45,7 +45,7 @@ fn panel_changes_reach_both_gpu_views() {
 #[test]
 fn a_recorded_ctrl_click_opens_the_probe_window_with_both_answers() {
     use close2gl_core::InputState;
-    use close2gl_viewer::layout::{self, PixelRect};
+    use close2gl_viewer::view_layout::{self, PixelRect};
 
     let mut h = Harness::new();
     h.click(Role::CheckBox, "Backface culling");
@@ -64,8 +64,8 @@ fn a_recorded_ctrl_click_opens_the_probe_window_with_both_answers() {
     let mut input = InputState::default();
     recording.frames[0].apply(&mut input);
     h.world().insert_resource(input);
-    let placement = layout::split(PixelRect::whole(400, 100), false);
-    close2gl_viewer::probe::answer(h.world(), &gpu(), &placement);
+    let placement = view_layout::split(PixelRect::whole(400, 100), false);
+    close2gl_viewer::pixel_probe::answer(h.world(), &gpu(), &placement);
     // A new egui window sizes itself unseen in its first frame.
     h.frame(Vec::new());
     h.frame(Vec::new());

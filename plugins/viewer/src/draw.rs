@@ -6,7 +6,7 @@ use close2gl_gpu::outside::OutsideRenderer;
 use close2gl_gpu::{Gpu, Views, submit_pass_timed};
 use close2gl_ui::ViewStats;
 
-use crate::layout::{Placed, View};
+use crate::view_layout::{Placed, View};
 
 /// The GPU state of every view: the two compared, and the outside view when there is one.
 #[derive(Clone, Copy)]

@@ -13,14 +13,14 @@ use winit::event_loop::{ActiveEventLoop, ControlFlow};
 use winit::window::WindowId;
 
 use crate::ViewerOptions;
-use crate::input::InputTracker;
-use crate::layout::PixelRect;
+use crate::input_tracker::InputTracker;
 use crate::orbit_input::OrbitInput;
 use crate::pacing::Pacing;
 use crate::present::{self, Capture, PendingShot, Shot};
 use crate::routing::{apply_input, offer_to_panel};
 use crate::session::Session;
 use crate::surface_source::Connections;
+use crate::view_layout::PixelRect;
 use crate::windows::{Created, Windows, create_windows};
 
 pub struct Viewer {
@@ -133,9 +133,9 @@ impl Viewer {
         windows.gui.upload_textures(&windows.gpu, &mut gui_frame);
         // The panel showed or hid the outside view this frame: lay the views out again at once.
         let relayout = world.get_resource::<OutsideView>().is_some_and(|o| o.show) != outside;
-        crate::probe::answer(self.app.world_mut(), &windows.gpu, &placement);
+        crate::pixel_probe::answer(self.app.world_mut(), &windows.gpu, &placement);
         #[cfg(target_arch = "wasm32")]
-        let probing = crate::probe::arrive(self.app.world_mut(), &windows.gpu);
+        let probing = crate::pixel_probe::arrive(self.app.world_mut(), &windows.gpu);
         #[cfg(not(target_arch = "wasm32"))]
         let probing = false;
 

@@ -7,8 +7,8 @@ use close2gl_core::OutsideOrbit;
 use winit::dpi::PhysicalPosition;
 use winit::event::{ElementState, MouseButton, MouseScrollDelta, WindowEvent};
 
-use crate::layout::PixelRect;
 use crate::routing::PanelTook;
+use crate::view_layout::PixelRect;
 
 /// Pixels of a touchpad's smooth scroll that count as one wheel line (as for the main camera).
 const PIXELS_PER_LINE: f32 = 40.0;

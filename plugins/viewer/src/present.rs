@@ -9,9 +9,9 @@ use close2gl_ui::ViewStats;
 
 use crate::draw::{AllViews, ViewTimes, draw_views, record_times};
 use crate::gui::GuiFrame;
-use crate::layout::{Placed, Placement, View};
 use crate::screenshot::{self, PendingImage};
 use crate::surface::WindowSurface;
+use crate::view_layout::{Placed, Placement, View};
 use crate::windows::Windows;
 
 /// What a frame keeps of itself besides showing it.

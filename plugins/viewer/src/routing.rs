@@ -7,7 +7,7 @@ use winit::event::{ElementState, MouseButton, WindowEvent};
 use winit::window::{Window, WindowId};
 
 use crate::gui::Gui;
-use crate::input::InputTracker;
+use crate::input_tracker::InputTracker;
 
 /// What the panel has taken: the keyboard (a text field has focus) and this pointer event (the
 /// pointer is over the panel).

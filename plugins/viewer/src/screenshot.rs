@@ -10,7 +10,7 @@ use std::path::Path;
 use bevy_ecs::world::World;
 use close2gl_core::CommandLine;
 
-use crate::layout::PixelRect;
+use crate::view_layout::PixelRect;
 
 /// Saves the two views as `close2gl-NNN-reference.png` and `close2gl-NNN-close2gl.png` in `dir`
 /// (the first number not taken), with `close2gl-NNN-command.txt`: the `close2gl render` line

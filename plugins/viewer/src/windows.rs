@@ -14,9 +14,9 @@ use winit::window::{Window, WindowId};
 
 use crate::ViewerOptions;
 use crate::gui::Gui;
-use crate::layout::{self, PixelRect, Placement};
 use crate::surface::{NewWindow, WindowSurface};
 use crate::surface_source::{Connections, SurfaceSource};
+use crate::view_layout::{self, PixelRect, Placement};
 
 /// Everything that exists once the windows do.
 pub struct Windows {
@@ -139,17 +139,17 @@ impl Windows {
         let area = PixelRect::from_points(views, pixels_per_point, width, height);
         self.panel_width = width.saturating_sub(area.width);
         let placement = match &self.close2gl {
-            None => layout::split(area, outside),
+            None => view_layout::split(area, outside),
             Some(close2gl) => {
                 let (w, h) = close2gl.size();
                 let outside = self.outside.as_ref().map(WindowSurface::size);
-                layout::two_windows(area, w, h, outside)
+                view_layout::two_windows(area, w, h, outside)
             }
         };
         self.outside_area = placement
             .main
             .iter()
-            .find(|p| p.view == layout::View::Outside)
+            .find(|p| p.view == view_layout::View::Outside)
             .map(|p| p.rect);
         placement
     }
@@ -184,7 +184,7 @@ impl Windows {
         let main_resized = id == self.main.window.id();
         let other = if main_resized { close2gl } else { &self.main };
         let (width, height) =
-            layout::matching_size(main_resized, size.width, size.height, self.panel_width);
+            view_layout::matching_size(main_resized, size.width, size.height, self.panel_width);
         let wanted = PhysicalSize::new(width, height);
         if other.window_size() != wanted {
             self.asked.insert(other.window.id(), wanted);

@@ -16,7 +16,7 @@ use close2gl_trace::view::TraceView;
 use close2gl_trace::view::probe::probe as trace_probe;
 use close2gl_ui::ProbeAnswer;
 
-use crate::layout::{Placed, Placement, View};
+use crate::view_layout::{Placed, Placement, View};
 
 /// Every triangle's fate in `scene`, as Close2GL's pipeline (with its mistake, if one is set)
 /// records them.
