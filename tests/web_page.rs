@@ -215,3 +215,26 @@ fn a_picked_file_becomes_the_model() {
     assert_eq!(status["model"], "picked_cube.in", "{status}");
     assert_eq!(status["triangles"], 12, "{status}");
 }
+
+#[test]
+fn a_picked_trace_is_shown_with_checks_verdict() {
+    // The assignment's program of examples/trace, built here, writes a trace of the cube.
+    let dir = root().join("target/web-test/trace");
+    std::fs::create_dir_all(&dir).unwrap();
+    std::fs::copy(root().join("assets/cube.in"), dir.join("cube.in")).unwrap();
+    let scene = "close2gl-scene 1\nmodel cube.in\nwindow 640 480\ncamera framed\nrotate v 20\n\
+                 move n -1\nculling ccw\nclipping full\n";
+    std::fs::write(dir.join("view.scene"), scene).unwrap();
+    let program = close2gl_testkit::student::compile_pipeline(&dir, "pipeline", &[]);
+    let trace = dir.join("cube_frame.trace");
+    let status = Command::new(&program)
+        .arg(dir.join("view.scene"))
+        .arg(&trace)
+        .status()
+        .expect("the student program runs");
+    assert!(status.success(), "{status}");
+    let report = open_and_pick("?test=1#model=cube.in", "trace.png", Some(&trace));
+    let shown = &report["status"]["trace"];
+    assert_eq!(shown["file"], "cube_frame.trace", "{report}");
+    assert_eq!(shown["agrees"], true, "{report}");
+}

@@ -2,7 +2,7 @@
 // the app's status (?test=1) says the views have been compared, takes a screenshot, and prints
 // {"status", "hash", "errors"} as one JSON line for tests/web_page.rs to judge. With PICK, it
 // then picks that file with the page's file input (the panel's "Open a file…") and waits until
-// the status shows it as the model.
+// the status shows it as the model or the trace.
 //
 //   node page.mjs URL SCREENSHOT.png [TIMEOUT_MS [PICK]]
 import { basename } from "node:path";
@@ -40,7 +40,10 @@ try {
   if (pick) {
     await page.setInputFiles("#close2gl-file", pick);
     await page.waitForFunction(
-      (name) => JSON.parse(document.getElementById("status").textContent).model === name,
+      (name) => {
+        const status = JSON.parse(document.getElementById("status").textContent);
+        return status.model === name || status.trace?.file === name;
+      },
       basename(pick),
       { timeout: Number(timeout), polling: 100 },
     );

@@ -1,12 +1,13 @@
 //! `?test=1`: the page keeps a JSON status in its `#status` element, for a test in a real browser
 //! to read: how many frames were drawn, when the first was (milliseconds since navigation
 //! started), the backend and adapter, the model and its triangles, the two views' coverage
-//! agreement as `close2gl render` computes it, the settings shown (as the link writes them) and
-//! whether the panel is.
+//! agreement as `close2gl render` computes it, the settings shown (as the link writes them),
+//! whether the panel is, and the trace shown in Close2GL's place with check's verdict on it.
 
 use bevy_ecs::prelude::*;
 use close2gl_core::{Mesh, ModelSource, ModelStatus, ToolRequests, Wake};
 use close2gl_gpu::Gpu;
+use close2gl_trace::view::TraceView;
 use close2gl_ui::{PanelState, ViewStats};
 use serde_json::{Map, Value, json};
 
@@ -89,6 +90,16 @@ fn status_json(world: &mut World, gpu: &Gpu, agreement: Option<f64>) -> Value {
         .map(|config| settings_json(&close2gl::config::keys::pixel_keys(&config)))
         .unwrap_or_default();
     let panel = !world.resource::<PanelState>().hidden;
+    let trace = world.get_resource::<TraceView>().and_then(|view| {
+        let file = view
+            .path
+            .as_ref()?
+            .file_name()?
+            .to_string_lossy()
+            .into_owned();
+        let agrees = view.shown.as_ref().map(|shown| shown.report.agrees());
+        Some(json!({"file": file, "agrees": agrees, "error": view.error}))
+    });
     let status = world.resource::<Status>();
     let backend = match gpu.adapter.get_info().backend {
         close2gl_gpu::wgpu::Backend::BrowserWebGpu => "webgpu",
@@ -104,5 +115,6 @@ fn status_json(world: &mut World, gpu: &Gpu, agreement: Option<f64>) -> Value {
         "coverage_agreement": agreement,
         "settings": settings,
         "panel": panel,
+        "trace": trace,
     })
 }
