@@ -37,6 +37,22 @@ impl Readback {
         self.padded_row as usize * self.height as usize
     }
 
+    /// The first `layers` layers of the mapped `bytes`, each row without its padding.
+    fn unpad(&self, bytes: &[u8], layers: usize) -> Vec<Vec<[u8; 4]>> {
+        let row = self.width as usize * 4;
+        bytes
+            .chunks_exact(self.layer_bytes())
+            .take(layers)
+            .map(|layer| {
+                layer
+                    .chunks_exact(self.padded_row as usize)
+                    .flat_map(|padded| padded[..row].chunks_exact(4))
+                    .map(|p| [p[0], p[1], p[2], p[3]])
+                    .collect()
+            })
+            .collect()
+    }
+
     /// Copies each texture (of this size, 4 bytes a pixel, at most as many as the layers) into
     /// the buffer, waits for the GPU, and returns each one's pixels, rows from the top, as stored
     /// (BGRA textures come back BGRA).
@@ -147,24 +163,6 @@ impl Mapping {
             .map_err(|e| failed(what, &e))?;
         self.finish(gpu, what, read)
             .unwrap_or_else(|| Err(failed(what, &"the GPU never finished the copy")))
-    }
-}
-
-impl Readback {
-    /// The first `layers` layers of the mapped `bytes`, each row without its padding.
-    fn unpad(&self, bytes: &[u8], layers: usize) -> Vec<Vec<[u8; 4]>> {
-        let row = self.width as usize * 4;
-        bytes
-            .chunks_exact(self.layer_bytes())
-            .take(layers)
-            .map(|layer| {
-                layer
-                    .chunks_exact(self.padded_row as usize)
-                    .flat_map(|padded| padded[..row].chunks_exact(4))
-                    .map(|p| [p[0], p[1], p[2], p[3]])
-                    .collect()
-            })
-            .collect()
     }
 }
 
