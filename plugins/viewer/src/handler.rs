@@ -40,6 +40,8 @@ pub struct Viewer {
     /// A frame's capture still on its way back from the GPU (in a browser, where it cannot be
     /// waited for).
     shot: Option<PendingShot>,
+    /// The screenshot key asked for the views being captured: they are saved when they arrive.
+    save_views: bool,
     /// In a browser: the windows waiting for their GPU, which arrives later.
     #[cfg(target_arch = "wasm32")]
     arriving: Option<crate::browser::Arriving>,
@@ -78,6 +80,7 @@ impl Viewer {
             session,
             opening: None,
             shot: None,
+            save_views: false,
             #[cfg(target_arch = "wasm32")]
             arriving: None,
         }
@@ -139,7 +142,8 @@ impl Viewer {
         #[cfg(not(target_arch = "wasm32"))]
         let probing = false;
 
-        let capture = capture(&self.options, self.frames, self.app.world_mut());
+        let (capture, key) = capture(&self.options, self.frames, self.app.world_mut());
+        self.save_views |= key && capture == Capture::Views;
         let drawn = present::draw(
             windows,
             self.app.world_mut(),
@@ -150,7 +154,11 @@ impl Viewer {
         windows.gui.free_textures(&mut gui_frame);
         let held = end_input_frame(self.app.world_mut());
         let shot = drawn.and_then(|pending| arrived_shot(&mut self.shot, pending, &windows.gpu));
-        let saved = shot.and_then(|shot| save(&self.options, self.app.world_mut(), shot));
+        let saved = shot.and_then(|shot| {
+            let views = matches!(shot, Some(Shot::Views { .. }));
+            let save_views = views && std::mem::take(&mut self.save_views);
+            save(&self.options, self.app.world_mut(), shot, save_views)
+        });
         // In a browser a shot or a probe arrives frames later: draw until it has.
         let held = held || self.shot.is_some() || probing;
         if let Err(e) =
@@ -237,22 +245,24 @@ fn is_close(event: &WindowEvent) -> bool {
 }
 
 /// What frame number `frame` keeps of itself: the window for `--screenshot` on its frame, each
-/// view when the screenshot key (or button) asked, or a comparison of the views.
-fn capture(options: &ViewerOptions, frame: u32, world: &mut World) -> Capture {
-    let views = match world.get_resource_mut::<ToolRequests>() {
-        Some(mut tools) if tools.screenshot || tools.compare_views => {
-            tools.compare_views = false;
-            true
-        }
-        _ => false,
+/// view when the screenshot key (or button) asked, or a comparison of the views; and whether
+/// the screenshot key asked (the views are saved then, once they arrive).
+fn capture(options: &ViewerOptions, frame: u32, world: &mut World) -> (Capture, bool) {
+    let (key, compare) = match world.get_resource_mut::<ToolRequests>() {
+        Some(mut tools) => (
+            std::mem::take(&mut tools.screenshot),
+            std::mem::take(&mut tools.compare_views),
+        ),
+        None => (false, false),
     };
-    if options.screenshot.is_some() && options.screenshot_frame == Some(frame + 1) {
+    let capture = if options.screenshot.is_some() && options.screenshot_frame == Some(frame + 1) {
         Capture::Window
-    } else if views {
+    } else if key || compare {
         Capture::Views
     } else {
         Capture::Nothing
-    }
+    };
+    (capture, key)
 }
 
 /// The frame's shot, or in a browser one captured before that has now arrived (`waiting` holds
@@ -306,7 +316,12 @@ fn end_input_frame(world: &mut World) -> bool {
 
 /// Writes what the frame captured: the window where `--screenshot` says, or both views (the
 /// screenshot key) beside the command that renders them again, with a notice naming the files.
-fn save(options: &ViewerOptions, world: &mut World, shot: Option<Shot>) -> Result<(), String> {
+fn save(
+    options: &ViewerOptions,
+    world: &mut World,
+    shot: Option<Shot>,
+    save_views: bool,
+) -> Result<(), String> {
     match (shot, &options.screenshot) {
         (Some(Shot::Window(image)), Some(path)) => image.write_png(path),
         (
@@ -320,10 +335,7 @@ fn save(options: &ViewerOptions, world: &mut World, shot: Option<Shot>) -> Resul
             let compared = Comparison::of_images(&reference, &close2gl, background);
             world.resource_mut::<ViewStats>().coverage_agreement =
                 Some(compared.coverage_agreement);
-            let asked = world
-                .get_resource_mut::<ToolRequests>()
-                .map(|mut tools| std::mem::take(&mut tools.screenshot));
-            if asked != Some(true) {
+            if !save_views {
                 return Ok(());
             }
             let notice = match crate::screenshot::save_views(
