@@ -1,7 +1,7 @@
 //! Reading textures back from the GPU: wgpu copies rows padded to its copy alignment into a
 //! mappable buffer, which is mapped once the copy is done and unpadded into pixels.
 
-use std::sync::{Arc, Mutex};
+use std::sync::{Arc, Condvar, Mutex};
 
 use crate::gpu::Gpu;
 
@@ -115,19 +115,28 @@ impl Pending {
 /// frame in a browser (where nothing can wait for the GPU), waited for elsewhere.
 pub(crate) struct Mapping {
     buffer: wgpu::Buffer,
-    mapped: Arc<Mutex<Option<Result<(), wgpu::BufferAsyncError>>>>,
+    mapped: Arc<MapSlot>,
+}
+
+/// Where wgpu's callback leaves the mapping's outcome, and the signal that it has: the callback
+/// may run on another thread's poll of the shared device, after this thread's poll has returned.
+#[derive(Default)]
+struct MapSlot {
+    outcome: Mutex<Option<Result<(), wgpu::BufferAsyncError>>>,
+    arrived: Condvar,
 }
 
 impl Mapping {
     /// Asks for `buffer` (its copies already submitted) to be mapped.
     pub(crate) fn start(buffer: wgpu::Buffer) -> Mapping {
-        let mapped = Arc::new(Mutex::new(None));
+        let mapped = Arc::new(MapSlot::default());
         let slot = Arc::clone(&mapped);
         buffer
             .slice(..)
             .map_async(wgpu::MapMode::Read, move |result| {
-                if let Ok(mut slot) = slot.lock() {
-                    *slot = Some(result);
+                if let Ok(mut outcome) = slot.outcome.lock() {
+                    *outcome = Some(result);
+                    slot.arrived.notify_all();
                 }
             });
         Mapping { buffer, mapped }
@@ -142,16 +151,11 @@ impl Mapping {
         read: impl FnOnce(&[u8]) -> T,
     ) -> Option<Result<T, String>> {
         let _ = gpu.device.poll(wgpu::PollType::Poll);
-        let mapped = self.mapped.lock().ok()?.take()?;
-        let value = mapped.map_err(|e| failed(what, &e)).and_then(|()| {
-            let bytes = self.buffer.slice(..).get_mapped_range();
-            Ok(read(&bytes.map_err(|e| failed(what, &e))?))
-        });
-        self.buffer.unmap();
-        Some(value)
+        let outcome = self.mapped.outcome.lock().ok()?.take()?;
+        Some(self.read(outcome, what, read))
     }
 
-    /// [`Self::finish`], waiting for the GPU.
+    /// [`Self::finish`], waiting for the GPU and then for the callback, wherever it runs.
     pub(crate) fn wait<T>(
         &self,
         gpu: &Gpu,
@@ -161,8 +165,28 @@ impl Mapping {
         gpu.device
             .poll(wgpu::PollType::wait_indefinitely())
             .map_err(|e| failed(what, &e))?;
-        self.finish(gpu, what, read)
-            .unwrap_or_else(|| Err(failed(what, &"the GPU never finished the copy")))
+        let lock = self.mapped.outcome.lock().map_err(|e| failed(what, &e))?;
+        let mut outcome = self
+            .mapped
+            .arrived
+            .wait_while(lock, |outcome| outcome.is_none())
+            .map_err(|e| failed(what, &e))?;
+        let outcome = outcome.take().unwrap_or(Ok(()));
+        self.read(outcome, what, read)
+    }
+
+    fn read<T>(
+        &self,
+        outcome: Result<(), wgpu::BufferAsyncError>,
+        what: &str,
+        read: impl FnOnce(&[u8]) -> T,
+    ) -> Result<T, String> {
+        let value = outcome.map_err(|e| failed(what, &e)).and_then(|()| {
+            let bytes = self.buffer.slice(..).get_mapped_range();
+            Ok(read(&bytes.map_err(|e| failed(what, &e))?))
+        });
+        self.buffer.unmap();
+        value
     }
 }
 
