@@ -9,7 +9,7 @@ use std::sync::OnceLock;
 
 use close2gl::core::{Camera, Fates, Mesh, RenderSettings, Scene, SoftwareFrame, Viewport};
 use close2gl::raster::SoftwareRasterizer;
-use close2gl::raster::probe::{self, Drawn, Outcome};
+use close2gl::raster::coverage_probe::{Drawn, Outcome, PixelProbe, probe};
 use close2gl_gpu::{Gpu, OffscreenPlugin, probe_reference, render_offscreen};
 use serde_json::Value;
 
@@ -274,13 +274,13 @@ fn probed(extra: &[&str]) -> Probed {
 
 impl Probed {
     /// Close2GL's probe, its winner from the software rasterizer's id buffer.
-    fn close2gl(&self, x: u32, y: u32) -> probe::PixelProbe {
+    fn close2gl(&self, x: u32, y: u32) -> PixelProbe {
         self.close2gl_probe(x, y, true)
     }
 
     /// Close2GL's probe; with `from_rasterizer` false, its winner worked out by the probe
     /// itself (as when the GPU draws Close2GL's 2D buffer).
-    fn close2gl_probe(&self, x: u32, y: u32, from_rasterizer: bool) -> probe::PixelProbe {
+    fn close2gl_probe(&self, x: u32, y: u32, from_rasterizer: bool) -> PixelProbe {
         let world = self.app.world();
         let scene = Scene {
             mesh: &self.mesh,
@@ -293,7 +293,7 @@ impl Probed {
             image: world.resource::<SoftwareFrame>(),
         };
         let fates = world.resource::<Fates>();
-        probe::probe(scene, fates, (x, y), from_rasterizer.then_some(drawn))
+        probe(scene, fates, (x, y), from_rasterizer.then_some(drawn))
     }
 
     fn reference(&self, x: u32, y: u32) -> Option<u32> {

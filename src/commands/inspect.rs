@@ -9,7 +9,7 @@ use close2gl_gpu::{Gpu, ReferenceHit, probe_reference};
 use close2gl_pipeline::journey::{Journey, journey};
 use close2gl_pipeline::matrices;
 use close2gl_pipeline::mistakes::{Mistakes, Program};
-use close2gl_raster::probe::{self, Drawn, PixelProbe};
+use close2gl_raster::coverage_probe::{Drawn, PixelProbe, probe};
 use glam::{Mat4, Vec3, Vec4};
 use serde_json::{Value, json};
 
@@ -228,7 +228,7 @@ fn pixel_report(app: &mut App, (x, y): (u32, u32), viewport: Viewport) -> Result
         settings: &settings,
         viewport,
     };
-    let close2gl = probe::probe(scene, fates, (x, y), drawn);
+    let close2gl = probe(scene, fates, (x, y), drawn);
     let reference = reference_probe(&mesh, &camera, &settings, viewport, (x, y))?;
     let agree = reference.as_ref().map(|r| r.triangle) == close2gl.triangle;
     Ok(json!({

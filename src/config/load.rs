@@ -1,3 +1,6 @@
+//! Reading a config file and the `--set` overrides into a checked [`Config`](super::Config):
+//! errors name the file and line, or the key, and what was expected.
+
 use std::path::{Path, PathBuf};
 
 use close2gl_core::limits::MAX_PIXELS;

@@ -1,3 +1,6 @@
+//! The app: a bevy_ecs world and its one frame schedule, the `Plugin` trait, and `requires`
+//! with `Owner`, which say which plugin provides what another one needs.
+
 use std::any::TypeId;
 use std::collections::HashSet;
 

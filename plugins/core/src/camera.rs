@@ -1,3 +1,6 @@
+//! The assignment's camera (u, v, n, hfov, vfov, near, far), its mode and speeds, and the
+//! actions that move it.
+
 use bevy_ecs::prelude::*;
 use glam::Vec3;
 
@@ -42,7 +45,7 @@ impl Default for Camera {
 
 impl Camera {
     /// Re-aims the camera at `target` from `position`, keeping `up` as close to v as it can.
-    /// An `up` within [`PARALLEL_UP`] of the view direction (or zero) gives no sideways
+    /// An `up` within `PARALLEL_UP` of the view direction (or zero) gives no sideways
     /// direction, so +y stands in for it, or -z when the view itself is along y (looking down,
     /// the top of the image points to -z): the frame is always orthonormal. Returns `None` only
     /// when there is no view direction: the target on the camera, or a coordinate not finite.

@@ -1,3 +1,6 @@
+//! What one Close2GL frame hands on: the viewport, the 2D vertex buffer with its stage counts,
+//! and the software rasterizer's image.
+
 use crate::Image;
 use bevy_ecs::prelude::*;
 use serde::Serialize;

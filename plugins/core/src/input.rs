@@ -1,3 +1,6 @@
+//! The input that reaches systems: held and pressed actions, drags, the wheel and the probe's
+//! click, and the bindings from keys to actions.
+
 use std::collections::{BTreeSet, HashMap};
 
 use bevy_ecs::prelude::*;
@@ -39,70 +42,61 @@ impl InputState {
     }
 }
 
-named_enum!(
-    /// Everything a key can be bound to, by the name the config's `[input]` table uses: a typo
-    /// is an unknown name there and a compile error in code.
-    Action {
-        Forward = "forward",
-        Back = "back",
-        Left = "left",
-        Right = "right",
-        Up = "up",
-        Down = "down",
-        RollLeft = "roll_left",
-        RollRight = "roll_right",
-        PitchUp = "pitch_up",
-        PitchDown = "pitch_down",
-        YawLeft = "yaw_left",
-        YawRight = "yaw_right",
-        Reset = "reset",
-        ToggleMode = "toggle_mode",
-        OriginalColor = "original_color",
-        Phong = "phong",
-        Gouraud = "gouraud",
-        Help = "help",
-        Screenshot = "screenshot",
-        CopyCommand = "copy_command",
-        FateView = "fate_view",
-        DifferenceView = "difference_view",
-        OutsideView = "outside_view",
-        OutsideWholeVolume = "outside_whole_volume"
-    }
-);
+/// Declares [`Action`] and [`InputBindings::DEFAULTS`] from one list, so that an action and its
+/// default key are written once, side by side.
+macro_rules! actions {
+    ($($variant:ident = $name:literal => $key:literal,)+) => {
+        named_enum!(
+            /// Everything a key can be bound to, by the name the config's `[input]` table uses: a
+            /// typo is an unknown name there and a compile error in code.
+            Action { $($variant = $name),+ }
+        );
+
+        impl InputBindings {
+            /// Every bindable action with its default key, in the cheat sheet's order.
+            pub const DEFAULTS: &'static [(Action, &'static str)] = &[$((Action::$variant, $key)),+];
+        }
+    };
+}
+
+// The cheat sheet's order: moves, turns, the camera's mode, shading, tools, the overlays.
+actions! {
+    Forward = "forward" => "w",
+    Back = "back" => "s",
+    Left = "left" => "a",
+    Right = "right" => "d",
+    Up = "up" => "r",
+    Down = "down" => "f",
+
+    RollLeft = "roll_left" => "z",
+    RollRight = "roll_right" => "x",
+    PitchUp = "pitch_up" => "up",
+    PitchDown = "pitch_down" => "down",
+    YawLeft = "yaw_left" => "left",
+    YawRight = "yaw_right" => "right",
+
+    Reset = "reset" => "space",
+    ToggleMode = "toggle_mode" => "tab",
+
+    OriginalColor = "original_color" => "shift+d",
+    Phong = "phong" => "shift+p",
+    Gouraud = "gouraud" => "shift+g",
+
+    Help = "help" => "f1 ?",
+    Screenshot = "screenshot" => "f12",
+    CopyCommand = "copy_command" => "c",
+
+    FateView = "fate_view" => "i",
+    DifferenceView = "difference_view" => "v",
+    OutsideView = "outside_view" => "o",
+    OutsideWholeVolume = "outside_whole_volume" => "shift+o",
+}
 
 /// Which key does what: action → key name (e.g. `Forward → "w"`, `Phong → "shift+p"`).
 #[derive(Resource, Clone, Debug, PartialEq, Eq)]
 pub struct InputBindings(pub HashMap<Action, String>);
 
 impl InputBindings {
-    /// Every bindable action with its default key, in the cheat sheet's order.
-    pub const DEFAULTS: [(Action, &'static str); 24] = [
-        (Action::Forward, "w"),
-        (Action::Back, "s"),
-        (Action::Left, "a"),
-        (Action::Right, "d"),
-        (Action::Up, "r"),
-        (Action::Down, "f"),
-        (Action::RollLeft, "z"),
-        (Action::RollRight, "x"),
-        (Action::PitchUp, "up"),
-        (Action::PitchDown, "down"),
-        (Action::YawLeft, "left"),
-        (Action::YawRight, "right"),
-        (Action::Reset, "space"),
-        (Action::ToggleMode, "tab"),
-        (Action::OriginalColor, "shift+d"),
-        (Action::Phong, "shift+p"),
-        (Action::Gouraud, "shift+g"),
-        (Action::Help, "f1 ?"),
-        (Action::Screenshot, "f12"),
-        (Action::CopyCommand, "c"),
-        (Action::FateView, "i"),
-        (Action::DifferenceView, "v"),
-        (Action::OutsideView, "o"),
-        (Action::OutsideWholeVolume, "shift+o"),
-    ];
-
     /// The binding as written: one key, or several separated by spaces (`"f1 ?"`).
     pub fn key(&self, action: Action) -> Option<&str> {
         self.0.get(&action).map(String::as_str)

@@ -1,3 +1,5 @@
+//! The model as Close2GL and the reference both read it: an indexed triangle mesh.
+
 use bevy_ecs::prelude::*;
 use glam::{Vec2, Vec3};
 

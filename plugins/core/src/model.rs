@@ -1,3 +1,6 @@
+//! Which model is shown and how it is being loaded: the file or primitive asked for, the
+//! texture asked for, and the loading's progress.
+
 use std::path::PathBuf;
 
 use bevy_ecs::prelude::*;

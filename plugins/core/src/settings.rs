@@ -1,3 +1,6 @@
+//! The render settings both views share, and the named choices in them (shading, clipping,
+//! overlay, the injected mistake, ...).
+
 use bevy_ecs::prelude::*;
 use glam::Vec3;
 
@@ -66,25 +69,44 @@ named_enum!(
 
 named_enum!(
     /// A classic mistake of the assignment, injected into Close2GL so that its symptom shows
-    /// beside the reference (the pipeline's `mistakes` module says what each one does).
+    /// beside the reference: one line each here, every choice pinned in the pipeline's
+    /// `mistakes` module and `trace-format.md`.
     Mistake {
+        /// Close2GL as the textbook has it.
         None = "none",
+        /// right = near·tan(hfov), top = near·tan(vfov).
         FovNotHalved = "fov_not_halved",
+        /// The tangent of half the angle's number of degrees, taken as radians.
         FovInDegrees = "fov_in_degrees",
+        /// The vertical extent from hfov, the horizontal from vfov.
         FovsSwapped = "fovs_swapped",
+        /// right = top·hfov/vfov.
         AspectFromAngles = "aspect_from_angles",
+        /// M transposed.
         ModelviewTransposed = "modelview_transposed",
+        /// M's translation is −c.
         TranslationUnrotated = "translation_unrotated",
+        /// M's translation is (+c·u, +c·v, +c·n).
         TranslationSign = "translation_sign",
+        /// u = n × v.
         LeftHanded = "left_handed",
+        /// clip = (M·P)·p.
         ProductOrder = "product_order",
+        /// Divide first; drop a triangle with w = 0 or |x/w| > 1 or |y/w| > 1 at a corner.
         DivideBeforeClip = "divide_before_clip",
+        /// Every triangle drawn whole, except one with a corner at w = 0.
         NoClipping = "no_clipping",
+        /// P's third row negated.
         DepthRowSign = "depth_row_sign",
+        /// V's y scale negated.
         ViewportYFlipped = "viewport_y_flipped",
+        /// V scales by R−L and T−B instead of their halves.
         ViewportFullScale = "viewport_full_scale",
+        /// The opposite winding is front.
         CullingInverted = "culling_inverted",
+        /// Back when N·(c − p0) < 0, N the file's face normal.
         CullingByFileNormals = "culling_by_file_normals",
+        /// Back when ((p1 − p0) × (p2 − p0))·n < 0.
         CullingByViewAxis = "culling_by_view_axis"
     }
 );

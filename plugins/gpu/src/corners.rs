@@ -5,7 +5,7 @@
 use bytemuck::{Pod, Zeroable};
 use glam::Vec4;
 
-use crate::texture::DEPTH_FORMAT;
+use crate::attachments::DEPTH_FORMAT;
 use crate::vertex_pipeline::VertexPipeline;
 
 /// One corner: clip coordinates in wgpu's depth convention (z in 0..w) and a colour.

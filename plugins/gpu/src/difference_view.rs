@@ -5,9 +5,9 @@
 
 use wgpu::util::DeviceExt;
 
+use crate::attachments::DEPTH_FORMAT;
+use crate::attachments::texture_2d;
 use crate::fullscreen;
-use crate::texture::DEPTH_FORMAT;
-use crate::texture::texture_2d;
 use crate::uniforms::uniform_entry;
 
 /// The two views' images for one viewport size, and the bind group that compares them.

@@ -73,8 +73,7 @@ impl FateView {
         &mut self,
         device: &wgpu::Device,
         queue: &wgpu::Queue,
-        mesh: &Mesh,
-        camera: &Camera,
+        (mesh, camera): (&Mesh, &Camera),
         fates: &Fates,
     ) {
         let transform = ClipTransform::new(camera);

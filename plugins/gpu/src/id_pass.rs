@@ -13,11 +13,11 @@ use bytemuck::{Pod, Zeroable};
 use close2gl_core::{Mesh, Scene, Viewport};
 use wgpu::util::DeviceExt;
 
+use crate::attachments::DEPTH_FORMAT;
+use crate::attachments::texture_2d;
 use crate::gpu::Gpu;
 use crate::readback::Mapping;
 use crate::reference::{PipelineKey, has_area, primitive_state, relative_matrices};
-use crate::texture::DEPTH_FORMAT;
-use crate::texture::texture_2d;
 use crate::uniforms::UniformSetup;
 
 /// The GPU's answer for one pixel of the reference view.
@@ -135,7 +135,7 @@ struct Targets {
 
 impl Targets {
     fn new(device: &wgpu::Device, size: (u32, u32)) -> Targets {
-        let readable = crate::texture::READABLE_TARGET;
+        let readable = crate::attachments::READABLE_TARGET;
         Targets {
             id: texture_2d(device, "probe ids", size, ID_FORMAT, readable),
             depth_out: texture_2d(device, "probe depth", size, DEPTH_OUT_FORMAT, readable),
@@ -175,16 +175,16 @@ fn draw(gpu: &Gpu, scene: Scene<'_>, vertices: &[IdVertex], targets: &Targets) {
         let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
             label: Some("probe"),
             color_attachments: &[
-                Some(crate::texture::color_attachment(
+                Some(crate::attachments::color_attachment(
                     &id_view,
                     wgpu::LoadOp::Clear(wgpu::Color::TRANSPARENT),
                 )),
-                Some(crate::texture::color_attachment(
+                Some(crate::attachments::color_attachment(
                     &depth_out_view,
                     wgpu::LoadOp::Clear(far),
                 )),
             ],
-            depth_stencil_attachment: Some(crate::texture::depth_attachment(&depth_view)),
+            depth_stencil_attachment: Some(crate::attachments::depth_attachment(&depth_view)),
             timestamp_writes: None,
             occlusion_query_set: None,
             multiview_mask: None,

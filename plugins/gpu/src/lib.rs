@@ -9,7 +9,7 @@
 //! for it to be recorded while the fate view is shown) and upload what changed into `Views`; whoever
 //! owns the target (a window, or [`render_offscreen`]) records the draws.
 //! Offscreen rendering, reading textures back ([`Readback`]), the texture and attachment
-//! descriptions every target shares ([`texture`]), the reference probe (an ID pass that says which
+//! descriptions every target shares ([`attachments`]), the reference probe (an ID pass that says which
 //! mesh triangle the GPU drew at a pixel, [`probe_reference`]) and the timed submission every
 //! view is drawn with ([`submit_pass_timed`]) live here too (images and their comparison are the
 //! core's: `close2gl_core::Image`, `close2gl_core::parity`). [`outside`] is the
@@ -17,6 +17,7 @@
 //! the mesh, the settings, `OutsideView`, `OutsideOrbit` and `Fates`, and fills
 //! [`outside::OutsideRenderer`]. No window or UI crate is a dependency.
 
+pub mod attachments;
 mod close2gl_view;
 mod corners;
 mod difference_view;
@@ -33,7 +34,6 @@ mod readback;
 mod reference;
 mod reference_texture;
 mod software_view;
-pub mod texture;
 mod uniforms;
 mod uploads;
 mod vertex_pipeline;
@@ -51,6 +51,7 @@ use uploads::{
     upload_reference, upload_software, upload_texture,
 };
 
+pub use attachments::DEPTH_FORMAT;
 pub use close2gl_core::Image;
 pub use close2gl_core::camera_matrices;
 pub use gpu::{Gpu, parse_backends};
@@ -59,7 +60,6 @@ pub use offscreen::{OFFSCREEN_FORMAT, OffscreenPlugin, Snapshot, render_offscree
 pub use pass::{submit_pass, submit_pass_timed};
 pub use readback::{Pending, Readback};
 pub use reference::clear_color;
-pub use texture::DEPTH_FORMAT;
 pub use views::Views;
 /// Re-exported so that users of this crate name the same wgpu types.
 pub use wgpu;

@@ -7,12 +7,12 @@ use close2gl_core::{
 };
 
 use crate::GpuPlugin;
+use crate::attachments::DEPTH_FORMAT;
+use crate::attachments::{READABLE_TARGET, texture_2d};
 use crate::gpu::Gpu;
 use crate::outside::{OutsidePlugin, OutsideRenderer};
 use crate::pass::submit_pass_timed;
 use crate::readback::Readback;
-use crate::texture::DEPTH_FORMAT;
-use crate::texture::{READABLE_TARGET, texture_2d};
 use crate::views::Views;
 use close2gl_core::Image;
 use close2gl_core::parity::to_rgb8;

@@ -1,8 +1,8 @@
 //! How every view is drawn: one pass recorded and submitted, timed where a view's time is
 //! reported. The windows and the offscreen target both go through here, so they draw alike.
 
+use crate::attachments;
 use crate::gpu::Gpu;
-use crate::texture;
 
 /// Records one pass into `target` (its depth, when given, cleared to the far plane) and submits
 /// it. The windows and the offscreen target draw every view through this, so they draw alike.
@@ -17,8 +17,8 @@ pub fn submit_pass(
     {
         let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
             label: Some("view"),
-            color_attachments: &[Some(texture::color_attachment(target, load))],
-            depth_stencil_attachment: depth.map(texture::depth_attachment),
+            color_attachments: &[Some(attachments::color_attachment(target, load))],
+            depth_stencil_attachment: depth.map(attachments::depth_attachment),
             timestamp_writes: None,
             occlusion_query_set: None,
             multiview_mask: None,

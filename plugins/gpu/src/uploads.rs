@@ -2,6 +2,7 @@
 //! world into [`Views`].
 
 use bevy_ecs::prelude::*;
+use bevy_ecs::system::SystemParam;
 use close2gl_core::{
     Camera, Close2glFrame, Fates, Lighting, Mesh, Overlay, RenderSettings, SelectedTriangle,
     SoftwareFrame, Texture, Viewport,
@@ -79,11 +80,23 @@ pub(crate) fn upload_software(
     }
 }
 
+/// The mesh and the camera the overlays draw their lines over.
+#[derive(SystemParam)]
+pub(crate) struct Scene<'w, 's> {
+    mesh: Single<'w, 's, &'static Mesh>,
+    camera: Single<'w, 's, &'static Camera>,
+}
+
+impl Scene<'_, '_> {
+    fn get(&self) -> (&Mesh, &Camera) {
+        (&self.mesh, &self.camera)
+    }
+}
+
 /// The fate view, every frame while it is shown: the fates change with every Close2GL frame.
 pub(crate) fn upload_fates(
     gpu: Res<Gpu>,
-    mesh: Single<&Mesh>,
-    camera: Single<&Camera>,
+    scene: Scene,
     fates: Res<Fates>,
     settings: Res<RenderSettings>,
     mut views: ResMut<Views>,
@@ -92,23 +105,21 @@ pub(crate) fn upload_fates(
     if settings.overlay == Overlay::FateView {
         views
             .fates
-            .update(&gpu.device, &gpu.queue, &mesh, &camera, &fates);
+            .update(&gpu.device, &gpu.queue, scene.get(), &fates);
     }
 }
 
 /// The selected triangle's corners and marker in both views, every frame: seventeen vertices.
 pub(crate) fn upload_highlight(
     gpu: Res<Gpu>,
-    mesh: Single<&Mesh>,
-    camera: Single<&Camera>,
+    scene: Scene,
     selected: Res<SelectedTriangle>,
     viewport: Res<Viewport>,
     mut views: ResMut<Views>,
 ) {
-    let scene = (&**mesh, &**camera);
     views
         .highlight
-        .update(&gpu.queue, scene, selected.0, *viewport);
+        .update(&gpu.queue, scene.get(), selected.0, *viewport);
 }
 
 /// The live difference, every frame while it is shown: both views drawn again, after every

@@ -8,7 +8,7 @@ use std::io::{self, BufRead, BufReader, Read};
 use crate::diagnostics::expected;
 use crate::in_parallel;
 use crate::in_triangles::{Body, FileTriangle, VERTEX_TAGS, VertexLayout};
-use crate::lines::Lines;
+use crate::line_reader::Lines;
 use crate::mesh_builder::MeshBuilder;
 use crate::{LoadedModel, file_stem};
 

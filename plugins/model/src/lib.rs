@@ -19,15 +19,15 @@ mod corner_index;
 mod damage;
 mod decimal;
 mod diagnostics;
+mod image_file;
 mod in_format;
 mod in_parallel;
 mod in_triangles;
-mod lines;
+mod line_reader;
 mod mesh_builder;
 mod obj;
 mod primitives;
 mod progress;
-mod texture;
 mod words;
 
 use std::path::Path;
@@ -39,10 +39,10 @@ use close2gl_core::{
 };
 
 pub use background::BackgroundLoad;
+pub use image_file::load_texture;
 pub use in_format::parse_in;
 pub use obj::parse_obj;
 pub use primitives::primitive;
-pub use texture::load_texture;
 
 use background::Poll;
 use progress::{Counted, LoadProgress};

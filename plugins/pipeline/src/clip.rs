@@ -23,7 +23,7 @@ pub const NEAR: Outcode = 1 << 4;
 
 /// Which planes `p` is outside of; 0 means inside the view volume. A point with w <= 0 is
 /// always outside (it is at or behind the centre of projection), even where every plane test
-/// would pass for w = 0. Written out plane by plane (rather than looping over [`PLANES`]) because
+/// would pass for w = 0. Written out plane by plane (rather than looping over `PLANES`) because
 /// it runs once per vertex of every frame.
 pub fn outcode(p: Vec4) -> Outcode {
     (p.w + p.x < 0.0) as Outcode

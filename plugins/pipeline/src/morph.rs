@@ -88,7 +88,7 @@ impl StageMorph {
     }
 
     /// The divided point (x, y, -z)/w, scaled to the drawn cube. A w of exactly 0 divides as the
-    /// smallest positive w, and the result is kept within [`NDC_LIMIT`] cube half-widths.
+    /// smallest positive w, and the result is kept within `NDC_LIMIT` cube half-widths.
     pub fn ndc(&self, clip: Vec4) -> Vec3 {
         let w = if clip.w == 0.0 {
             f32::MIN_POSITIVE

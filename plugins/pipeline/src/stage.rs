@@ -195,7 +195,7 @@ impl Emit for RasterEmit<'_> {
 /// Clip, divide, map, cull and emit one triangle (mesh vertices `corners`) into `out`, given its
 /// corners' outcodes and window positions (from [`corner`]). The clip coordinates are asked for
 /// only when the triangle straddles the view volume's border: most triangles of a big mesh never
-/// need them. Inlined into the callers' loops; the cutting is not (see [`cut`]).
+/// need them. Inlined into the callers' loops; the cutting is not (see `cut`).
 ///
 /// `RECORD` says whether someone will read the fate's details (the inspector). Without it, a
 /// back face is culled without asking whether it also has no area, and a clipped triangle

@@ -38,27 +38,27 @@
 //! by pixel, a wide one's solved; or `deferred`, a tile of small Phong-shaded triangles
 //! depth-tested first and shaded once per pixel after) → `row` → `lanes`, the hierarchy tile →
 //! rows → blocks of eight lanes (llvmpipe's is tile → block → quad): each block depth-tested,
-//! then coloured by `shading` (with `texture`'s level of detail and sampling) into `target`'s
+//! then coloured by `shading` (with `sampling`'s level of detail and filters) into `target`'s
 //! buffers, or, for Phong, a small triangle's partial blocks left in `queue` and shaded eight
 //! pixels together when the triangle is done in the tile. The tiles are then copied out as the
-//! image. `fates` and `probe` read what a frame left.
+//! image. `pixel_fates` and `coverage_probe` read what a frame left.
 
 mod bin;
+pub mod coverage_probe;
 mod deferred;
 mod edge;
-mod fates;
 mod lanes;
 mod lighting;
+mod pixel_fates;
 mod primitives;
-pub mod probe;
 mod queue;
 mod rasterizer;
 mod row;
+mod sampling;
 mod setup;
 mod shading;
 mod target;
 pub mod textbook;
-mod texture;
 mod tile;
 mod tile_runs;
 mod varyings;

@@ -17,15 +17,15 @@ use close2gl_pipeline::matrices::ClipTransform;
 
 use crate::bin::{Bins, Primitives};
 use crate::deferred::draw_tile_deferred;
-use crate::fates::Rasterized;
 use crate::lighting::Light;
+use crate::pixel_fates::Rasterized;
 use crate::primitives::{SetupParams, triangles_per_primitive};
 use crate::queue::Pending;
+use crate::sampling::{Bilinear, Filter, Mips, Nearest, Trilinear};
 use crate::shading::{
     Colour, Flat, Gouraud, LaneShader, Phong, PixelShader, Shaded, Textured, Untextured,
 };
 use crate::target::{NO_TRIANGLE, Target, pack};
-use crate::texture::{Bilinear, Filter, Mips, Nearest, Trilinear};
 use crate::tile::{TileJob, draw_tile, draw_tile_unqueued};
 use crate::tile_runs::TileRuns;
 use crate::varyings::{Used, varyings_used};

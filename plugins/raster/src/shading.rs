@@ -7,8 +7,8 @@ use glam::Vec3;
 
 use crate::lanes::{F8, LANES, V8};
 use crate::lighting::Light;
+use crate::sampling::{Filter, Mips};
 use crate::target::{pack, pack8};
-use crate::texture::{Filter, Mips};
 use crate::varyings::{AT_PIXEL, AtPixels, EYE, INTENSITY, Interpolant, NORMAL, Planes};
 
 /// The colours of eight pixels of a triangle (its `planes`), centred at (x, y). Inlined into

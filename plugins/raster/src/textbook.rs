@@ -28,9 +28,9 @@ use glam::Vec3;
 use crate::lanes::{F8, V8};
 use crate::lighting::Light;
 use crate::primitives::{SetupParams, set_up, triangles_per_primitive};
+use crate::sampling::{Bilinear, Filter, Mips, Nearest, Trilinear};
 use crate::setup::Triangle;
 use crate::target::{TILE, pack};
-use crate::texture::{Bilinear, Filter, Mips, Nearest, Trilinear};
 use crate::varyings::{EYE, INTENSITY, NORMAL, Planes, UV, Used, varyings_used};
 use crate::vertex::Vertex;
 

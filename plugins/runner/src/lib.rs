@@ -30,9 +30,9 @@ mod output_tail;
 mod proc_table;
 mod reap;
 mod resource_limits;
-mod run;
 mod signals;
 mod spawn;
+mod supervise;
 mod workspace;
 
 pub use command_words::{split_words, substitute};
@@ -40,5 +40,5 @@ pub use interrupt::{install_interrupt_handler, interrupted, request_interrupt};
 pub use outcome::{Ending, Outcome};
 pub use reap::reap_everything;
 pub use resource_limits::Limits;
-pub use run::run;
+pub use supervise::run;
 pub use workspace::Workspace;

@@ -1,8 +1,8 @@
 //! What close2gl's test suites share, so that no test file keeps its own copy: meshes built by
 //! hand ([`cube`], [`sphere`]), big model files written on the spot ([`write_grid_in`],
 //! [`write_grid_obj`]), the world a test starts from ([`world_with`], [`camera`],
-//! [`mesh`]), with feature `gpu` the one headless GPU adapter a test binary uses ([`gpu`]), and
-//! with feature `panel` the egui control panel driven headless ([`panel::Harness`]), and the
+//! [`mesh`]), with feature `gpu` the one headless GPU adapter a test binary uses (`gpu`), and
+//! with feature `panel` the egui control panel driven headless (`panel::Harness`), and the
 //! student program of `examples/trace/` compiled with the C compiler ([`student`]). Used as a
 //! dev-dependency only.
 

@@ -9,7 +9,7 @@ use close2gl_core::parity::{ONLY_CLOSE2GL, ONLY_REFERENCE};
 use close2gl_core::{FateKind, OutsideView, Overlay, RenderSettings};
 
 use crate::state::PanelState;
-use crate::views::{View, Views, view_rects};
+use crate::view_areas::{View, Views, view_rects};
 
 /// What the GPU paints over the reference in the fate view: its own answers.
 pub const REFERENCE: [(FateKind, &str); 3] = [

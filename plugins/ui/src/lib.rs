@@ -33,7 +33,7 @@ mod system;
 mod texture_panel;
 mod tools_panel;
 mod trace_panel;
-mod views;
+mod view_areas;
 
 use close2gl_core::{
     App, CameraActions, CameraSpeeds, Close2glFrame, FrameSet, ModelRequest, ModelStatus, Owner,

@@ -6,7 +6,7 @@ use bevy_ecs::prelude::*;
 
 use crate::parts::Parts;
 use crate::state::PanelState;
-use crate::views::{self, Views};
+use crate::view_areas::{self, Views};
 use crate::{
     camera_panel, inspector, legend, model_panel, outside_panel, render_panel, stats_panel,
     texture_panel, tools_panel, trace_panel,
@@ -53,7 +53,7 @@ pub fn show(ui: &mut egui::Ui, parts: &mut Parts, shared: bool) {
     }
     parts.run(tools_panel::show_notice, (ui, views));
     parts.run(tools_panel::cheat_sheet, ui);
-    parts.run(views::labels, (ui, views));
+    parts.run(view_areas::labels, (ui, views));
     parts.run(legend::show, (ui, views));
     parts.run(inspector::probe_window, (ui, views));
 }

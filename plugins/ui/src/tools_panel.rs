@@ -8,7 +8,7 @@ use close2gl_core::{Action, InputBindings, PageLink, ToolRequests};
 
 use crate::ViewStats;
 use crate::state::PanelState;
-use crate::views::Views;
+use crate::view_areas::Views;
 
 /// How long a notice stays, in seconds.
 const NOTICE_SECONDS: f64 = 6.0;

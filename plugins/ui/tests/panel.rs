@@ -11,7 +11,7 @@ use close2gl_core::{
     Topology,
 };
 use close2gl_core::{Camera, Mesh, ProbeClick, Scene, Viewport};
-use close2gl_raster::probe::probe;
+use close2gl_raster::coverage_probe::probe;
 use close2gl_testkit::panel::Harness;
 use close2gl_ui::{Notice, PanelState, ProbeAnswer};
 use egui::accesskit::Role;

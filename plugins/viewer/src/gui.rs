@@ -167,7 +167,7 @@ impl Gui {
             let mut pass = encoder
                 .begin_render_pass(&wgpu::RenderPassDescriptor {
                     label: Some("panel"),
-                    color_attachments: &[Some(close2gl_gpu::texture::color_attachment(
+                    color_attachments: &[Some(close2gl_gpu::attachments::color_attachment(
                         target,
                         wgpu::LoadOp::Load,
                     ))],

@@ -11,7 +11,7 @@ use close2gl_core::{Camera, Fates, InputState, Mesh, RenderSettings, Scene, Sele
 use close2gl_gpu::{Gpu, ReferenceHit};
 use close2gl_pipeline::mistakes::Mistakes;
 use close2gl_pipeline::textbook;
-use close2gl_raster::probe::{Drawn, probe};
+use close2gl_raster::coverage_probe::{Drawn, probe};
 use close2gl_trace::view::TraceView;
 use close2gl_trace::view::probe::probe as trace_probe;
 use close2gl_ui::ProbeAnswer;

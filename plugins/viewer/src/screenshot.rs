@@ -2,7 +2,7 @@
 //! surface texture may not allow copies), with the same calls, then saved as PNG: the whole
 //! window for `--screenshot`, each view alone for the screenshot key.
 
-use close2gl_gpu::texture::{READABLE_TARGET, texture_2d};
+use close2gl_gpu::attachments::{READABLE_TARGET, texture_2d};
 use close2gl_gpu::{Gpu, Image, Pending, Readback};
 
 use std::path::Path;

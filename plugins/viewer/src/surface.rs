@@ -6,7 +6,7 @@
 
 use std::sync::Arc;
 
-use close2gl_gpu::texture::texture_2d;
+use close2gl_gpu::attachments::texture_2d;
 use close2gl_gpu::{DEPTH_FORMAT, Gpu};
 use winit::dpi::PhysicalSize;
 use winit::window::Window;

@@ -1,5 +1,5 @@
 //! close2gl in a browser page: the same app, compiled to WebAssembly (`scripts/build-web`
-//! writes the static site). The page ([`page`]) fetches the bundled models into the app's file
+//! writes the static site). The page (`page.rs`) fetches the bundled models into the app's file
 //! table (`close2gl_core::files`), reads the view from its link ([`link`]) and builds the app as
 //! `close2gl MODEL --set ...` does, on the page's canvas. Its plugin, [`WebPlugin`], owns the
 //! page's side of the world: it reads the camera, the model and the settings and writes them

@@ -6,7 +6,7 @@
 
 pub mod baseline;
 pub mod grid;
-pub mod load;
+pub mod model_load;
 pub mod raster;
 
 use std::path::PathBuf;
@@ -67,7 +67,7 @@ pub fn run(args: BenchArgs) -> Result<(), CliError> {
     }
     let pool = thread_pool(args.threads)?;
     let report = if let Some(path) = &args.load {
-        load::load(&args, path, &pool)?
+        model_load::load(&args, path, &pool)?
     } else if args.fill {
         raster::fill(&args, &pool)?
     } else if args.raster {

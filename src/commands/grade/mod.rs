@@ -3,14 +3,14 @@
 //! evidence (docs/grading.md). One program (`--run`), or a class (`--submissions DIR`).
 //!
 //! The files follow a grading: `mod.rs` the arguments, the models and the scenes' workers;
-//! `run.rs` one scene through the runner and the judges; `score.rs` the scenes' verdicts added
+//! `scene_run.rs` one scene through the runner and the judges; `score.rs` the scenes' verdicts added
 //! up into the rubric's lines; `report.rs` the terminal table and the JSON; `html.rs` the page;
 //! `class.rs` a folder of submissions and its CSV.
 
 mod class;
 mod html;
 mod report;
-mod run;
+mod scene_run;
 mod score;
 
 use std::panic::AssertUnwindSafe;
@@ -25,7 +25,7 @@ use close2gl_trace::rubric::{self, RubricScene};
 
 use super::CliError;
 use crate::progress_bar::TerminalProgress;
-use run::SceneResult;
+use scene_run::SceneResult;
 use score::Grade;
 
 #[derive(clap::Args, Debug)]
@@ -167,7 +167,7 @@ fn run_tasks(
                     let model = &rubric.models[*model];
                     // A bug of ours on one program's trace must not stop a class's grading.
                     let result = std::panic::catch_unwind(AssertUnwindSafe(|| {
-                        run::run_scene(plan.words, dir, model, scene, &plan.limits)
+                        scene_run::run_scene(plan.words, dir, model, scene, &plan.limits)
                     }))
                     .unwrap_or_else(|_| SceneResult::failed(scene, BUG.into()));
                     let i = task.submission * rubric.scenes.len() + task.scene;

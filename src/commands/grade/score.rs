@@ -3,7 +3,7 @@
 
 use close2gl_trace::rubric::{LineId, Verdict, settle_rotations};
 
-use super::run::SceneResult;
+use super::scene_run::SceneResult;
 
 /// One line's score.
 pub struct LineScore {

@@ -5,15 +5,15 @@ use bevy_ecs::prelude::*;
 use close2gl_core::{App, RenderSettings, Viewport};
 
 use super::OutsideRenderer;
+use crate::attachments::{READABLE_TARGET, texture_2d};
 use crate::readback::Readback;
 use crate::reference::clear_color;
-use crate::texture::{READABLE_TARGET, texture_2d};
 use close2gl_core::Image;
 
+use crate::attachments::DEPTH_FORMAT;
 use crate::gpu::Gpu;
 use crate::offscreen::OFFSCREEN_FORMAT;
 use crate::pass::submit_pass;
-use crate::texture::DEPTH_FORMAT;
 
 /// The outside view's textures for one size, kept between frames.
 #[derive(Resource)]

@@ -6,8 +6,8 @@ use bytemuck::{Pod, Zeroable};
 
 use super::outside_camera::OutsideCamera;
 use super::outside_scene::{OutsideScene, OutsideVertex};
+use crate::attachments::DEPTH_FORMAT;
 use crate::gpu::Gpu;
-use crate::texture::DEPTH_FORMAT;
 use crate::uniforms::UniformSetup;
 use crate::vertex_pipeline::VertexPipeline;
 

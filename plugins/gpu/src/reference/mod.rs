@@ -17,8 +17,8 @@ use close2gl_core::{
 use glam::{Mat4, Vec3};
 use wgpu::util::DeviceExt;
 
+use crate::attachments::DEPTH_FORMAT;
 use crate::reference_texture::ReferenceBindings;
-use crate::texture::DEPTH_FORMAT;
 use overlay::OverlayPipelines;
 
 /// [`camera_matrices`] for a mesh uploaded relative to `origin` (see [`GpuMesh::origin`]): the

@@ -11,7 +11,7 @@ use crate::damage::{cuts, damaged};
 
 use crate::LoadedModel;
 use crate::in_format::{read_in_blocks, read_in_lines};
-use crate::lines::Lines;
+use crate::line_reader::Lines;
 use crate::progress::{Counted, LoadProgress};
 
 /// What a load gives, with every number's bits (`Debug` tells -0.0 from 0.0).

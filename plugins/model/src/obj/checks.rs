@@ -10,7 +10,7 @@
 use std::io::{self, BufRead, Read};
 
 use crate::diagnostics::expected;
-use crate::lines::Lines;
+use crate::line_reader::Lines;
 
 /// The form a face must have, as errors quote it.
 const FACE: &str = "f v[/vt][/vn] v[/vt][/vn] v[/vt][/vn] ...";

@@ -8,11 +8,11 @@
 //! Materials, groups, lines and points are skipped: the app draws triangles in one chosen colour.
 
 mod checks;
-mod mesh;
+mod merge;
 
 use std::io::{BufReader, Read};
 
-use crate::lines::Lines;
+use crate::line_reader::Lines;
 use crate::{LoadedModel, file_stem};
 use checks::Checked;
 
@@ -40,7 +40,7 @@ pub(crate) fn read_obj<R: Read>(reader: R, label: &str) -> Result<LoadedModel, S
     }
     let (models, _) =
         loaded.map_err(|e| format!("{label}: not a readable .obj file: tobj says {e}"))?;
-    let mesh = mesh::build(&models, file_stem(label)).map_err(|e| format!("{label}: {e}"))?;
+    let mesh = merge::build(&models, file_stem(label)).map_err(|e| format!("{label}: {e}"))?;
     // A `v x y z w` with a tiny w can push a finite position to infinity.
     mesh.validate().map_err(|e| format!("{label}: {e}"))?;
     Ok(LoadedModel {

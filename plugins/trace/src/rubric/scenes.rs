@@ -13,8 +13,8 @@
 use close2gl_core::{Mesh, RenderMode};
 use glam::DVec3;
 
+use super::expected_motion::Pose;
 use super::lines::LineId;
-use super::motion::Pose;
 use crate::format::{Axis, CameraLines, Culling, Motion, Scene, SceneCamera, TraceClipping};
 
 /// One scene of the rubric: its id (`cube/translation-move-u+`), the lines it counts for

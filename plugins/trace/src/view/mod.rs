@@ -5,7 +5,7 @@
 //! close2gl's, for the GPU to draw as the assignment's 2D output is drawn. The live difference
 //! and the probe then work on it; [`probe`] answers a probe from the trace's side.
 
-mod load;
+mod open;
 pub mod probe;
 mod show;
 
@@ -16,7 +16,7 @@ use bevy_ecs::prelude::*;
 use crate::check::Report;
 use crate::format::Trace;
 
-pub use load::{load_requested_trace, trace_camera, trace_settings};
+pub use open::{load_requested_trace, trace_camera, trace_settings};
 pub use show::show_trace;
 
 /// A trace file to read (replacing the one shown), set by the command line, a dropped file or

@@ -6,11 +6,11 @@
 
 use bevy_ecs::prelude::*;
 use close2gl_core::{Camera, InputState, ProbeClick, SelectedTriangle};
-use close2gl_raster::probe::{Outcome, PixelProbe};
+use close2gl_raster::coverage_probe::{Outcome, PixelProbe};
 
 use crate::legend::swatch;
 use crate::state::PanelState;
-use crate::views::Views;
+use crate::view_areas::Views;
 
 /// The last pixel probe (a Ctrl+click on a view), answered by both sides: the viewer fills it.
 #[derive(Resource, Clone, Debug)]

@@ -7,7 +7,7 @@ use glam::DVec3;
 use super::{AXIS, Judge, POSITION, Verdict, stages_agree, vec3};
 use crate::check::compare::{Stage, number};
 use crate::format::{Axis, Motion};
-use crate::rubric::motion::Pose;
+use crate::rubric::expected_motion::Pose;
 use crate::rubric::scenes::default_lookat;
 
 /// "About the asked amount": an orbit may land this fraction of its length from a straight
