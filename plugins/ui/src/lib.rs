@@ -14,7 +14,7 @@
 //! pixel (Esc, from egui or `InputState`, closes it; its button selects the triangle). It owns
 //! [`PanelState`], `ViewStats` and `Notice`; the other plugins provide what it reads.
 //!
-//! Each section is a system of its own file, its parameters saying what it touches; `layout.rs`
+//! Each section is a system of its own file, its parameters saying what it touches; `panel_layout.rs`
 //! places them, and [`panel_system`] (`system.rs`, in `FrameSet::Panel`), the one function over
 //! the whole world, runs the layout with the frame's [`PanelInput`], which the viewer gives, and
 //! leaves egui's [`PanelOutput`] for it to paint. It knows no window system or GPU.
