@@ -82,12 +82,12 @@ pub(crate) fn upload_software(
 
 /// The mesh and the camera the overlays draw their lines over.
 #[derive(SystemParam)]
-pub(crate) struct Scene<'w, 's> {
+pub(crate) struct MeshAndCamera<'w, 's> {
     mesh: Single<'w, 's, &'static Mesh>,
     camera: Single<'w, 's, &'static Camera>,
 }
 
-impl Scene<'_, '_> {
+impl MeshAndCamera<'_, '_> {
     fn get(&self) -> (&Mesh, &Camera) {
         (&self.mesh, &self.camera)
     }
@@ -96,7 +96,7 @@ impl Scene<'_, '_> {
 /// The fate view, every frame while it is shown: the fates change with every Close2GL frame.
 pub(crate) fn upload_fates(
     gpu: Res<Gpu>,
-    scene: Scene,
+    scene: MeshAndCamera,
     fates: Res<Fates>,
     settings: Res<RenderSettings>,
     mut views: ResMut<Views>,
@@ -112,7 +112,7 @@ pub(crate) fn upload_fates(
 /// The selected triangle's corners and marker in both views, every frame: seventeen vertices.
 pub(crate) fn upload_highlight(
     gpu: Res<Gpu>,
-    scene: Scene,
+    scene: MeshAndCamera,
     selected: Res<SelectedTriangle>,
     viewport: Res<Viewport>,
     mut views: ResMut<Views>,
