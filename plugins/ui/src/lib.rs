@@ -26,6 +26,7 @@ mod model_panel;
 mod outside_panel;
 mod panel_layout;
 mod parts;
+mod path_entry;
 mod render_panel;
 mod state;
 mod stats_panel;

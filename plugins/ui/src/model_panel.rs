@@ -3,6 +3,7 @@ use std::time::Duration;
 use bevy_ecs::prelude::*;
 use close2gl_core::{Loading, Mesh, ModelRequest, ModelSource, ModelStatus, PrimitiveKind};
 
+use crate::path_entry::path_entry;
 use crate::state::PanelState;
 
 /// The path being typed and its Load button; a new model (dropped, picked, reloaded) shows its
@@ -18,17 +19,8 @@ fn path_field(
             state.path = path.display().to_string();
         }
     }
-    let mut request = None;
-    ui.horizontal(|ui| {
-        let field = egui::TextEdit::singleline(&mut state.path)
-            .hint_text(".in or .obj file, or drop one here")
-            .desired_width(ui.available_width() - 50.0);
-        let entered = ui.add(field).lost_focus() && ui.input(|i| i.key_pressed(egui::Key::Enter));
-        if (ui.button("Load").clicked() || entered) && !state.path.trim().is_empty() {
-            request = Some(ModelSource::parse(state.path.trim()));
-        }
-    });
-    request
+    let hint = ".in or .obj file, or drop one here";
+    path_entry(ui, &mut state.path, hint, "Load", 50.0).map(ModelSource::parse)
 }
 
 /// How often the panel asks to be drawn while a model loads: the viewer otherwise sleeps until

@@ -1,6 +1,9 @@
+use std::path::PathBuf;
+
 use bevy_ecs::prelude::*;
 use close2gl_core::{Mesh, RenderSettings, Texture, TextureFilter, TextureRequest};
 
+use crate::path_entry::path_entry;
 use crate::state::PanelState;
 
 /// Texturing on or off, the filter, and the image: a path field with Load (or drop a PNG or JPEG
@@ -24,17 +27,9 @@ pub fn section(
     });
     current.set_if_neq(settings);
 
-    let mut request = None;
-    ui.horizontal(|ui| {
-        let field = egui::TextEdit::singleline(&mut state.texture_path)
-            .hint_text("PNG or JPEG image, or drop one here")
-            .desired_width(ui.available_width() - 100.0);
-        let entered = ui.add(field).lost_focus() && ui.input(|i| i.key_pressed(egui::Key::Enter));
-        let path = state.texture_path.trim();
-        if (ui.button("Load image").clicked() || entered) && !path.is_empty() {
-            request = Some(path.into());
-        }
-    });
+    let hint = "PNG or JPEG image, or drop one here";
+    let request =
+        path_entry(ui, &mut state.texture_path, hint, "Load image", 100.0).map(PathBuf::from);
     let shown = match texture.as_deref() {
         Some(Texture {
             source: Some(path), ..

@@ -63,6 +63,22 @@ fn a_primitive_button_requests_that_primitive() {
 }
 
 #[test]
+fn a_typed_path_is_requested_trimmed_and_an_empty_one_is_not() {
+    let mut h = Harness::new();
+    // The first frame shows the current model's path in the field.
+    h.frame(Vec::new());
+    h.world().resource_mut::<PanelState>().path = "   ".into();
+    h.click(Role::Button, "Load");
+    assert_eq!(h.world().resource::<ModelRequest>().0, None);
+    h.world().resource_mut::<PanelState>().path = " models/cube.in ".into();
+    h.click(Role::Button, "Load");
+    assert_eq!(
+        h.world().resource::<ModelRequest>().0,
+        Some(ModelSource::File("models/cube.in".into()))
+    );
+}
+
+#[test]
 fn reload_requests_the_current_model_again() {
     let mut h = Harness::new();
     h.click(Role::Button, "Reload");
