@@ -3,6 +3,7 @@
 
 use bevy_ecs::prelude::*;
 use bevy_ecs::system::SystemParam;
+use close2gl_core::parity::to_rgb8;
 use close2gl_core::{
     Camera, Close2glFrame, Fates, Lighting, Mesh, Overlay, RenderSettings, SelectedTriangle,
     SoftwareFrame, Texture, Viewport,
@@ -11,7 +12,6 @@ use close2gl_core::{
 use crate::gpu::Gpu;
 use crate::reference::clear_color;
 use crate::views::Views;
-use close2gl_core::parity::to_rgb8;
 
 /// The mesh again when it changed (bevy's change ticks, as the pipeline watches it), or when
 /// the views are new.
