@@ -578,8 +578,14 @@ static int culled(const c2g_scene *s, const camera *cam, const triangle *t, cons
     int front_ccw = s->culling == C2G_CULL_CCW, i;
     real area = 0, facing;
     if (s->culling == C2G_CULL_OFF) return 0;
+#ifdef MISTAKE_NEVER_CULLS
+    return 0;                          /* MISTAKE: culling declared, nothing culled */
+#endif
 #ifdef MISTAKE_CULLING_INVERTED
     front_ccw = !front_ccw;            /* MISTAKE: the opposite winding taken as front */
+#endif
+#ifdef MISTAKE_CULLING_IGNORES_FRONT_FACE
+    front_ccw = 1;                     /* MISTAKE: counter-clockwise front, whatever is declared */
 #endif
     if (CULLING_TEST == BY_FILE_NORMALS) {
         /* MISTAKE: the file's normal against the direction to the eye */

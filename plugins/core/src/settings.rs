@@ -107,7 +107,11 @@ named_enum!(
         /// Back when N·(c − p0) < 0, N the file's face normal.
         CullingByFileNormals = "culling_by_file_normals",
         /// Back when ((p1 − p0) × (p2 − p0))·n < 0.
-        CullingByViewAxis = "culling_by_view_axis"
+        CullingByViewAxis = "culling_by_view_axis",
+        /// Culling declared, nothing culled.
+        NeverCulls = "never_culls",
+        /// Counter-clockwise is front, whatever is declared.
+        CullingIgnoresFrontFace = "culling_ignores_front_face"
     }
 );
 

@@ -21,6 +21,9 @@ const PLANES: [fn(Vec4) -> f32; 6] = [
 /// w > 0 (the others it may apply per pixel: the viewport's edges and the depth range).
 pub const NEAR: Outcode = 1 << 4;
 
+/// The far plane's bit.
+pub const FAR: Outcode = 1 << 5;
+
 /// Which planes `p` is outside of; 0 means inside the view volume. A point with w <= 0 is
 /// always outside (it is at or behind the centre of projection), even where every plane test
 /// would pass for w = 0. Written out plane by plane (rather than looping over `PLANES`) because

@@ -20,6 +20,7 @@ pub mod mistakes;
 pub mod morph;
 #[cfg(test)]
 mod random_triangles;
+pub mod rounding;
 pub mod stage;
 pub mod textbook;
 

@@ -14,10 +14,11 @@ use close2gl_core::{
     Camera, Clipping, FateKind, FrontFace, Mesh, Mistake, RenderMode, RenderSettings, TriangleFate,
     Viewport,
 };
-use glam::{DMat4, DVec2, DVec3, DVec4};
+use glam::{DMat3, DMat4, DVec2, DVec3, DVec4};
 
-use crate::clip::{NEAR, Polygon, clip_polygon, outcode};
-use crate::stage::{face, longest_edge_squared};
+use crate::clip::{FAR, NEAR, Outcode, Polygon, clip_polygon, outcode};
+use crate::rounding;
+use crate::stage::face;
 
 /// A set of mistakes (at most a few at once: diagnosis tries each one and each pair).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
@@ -76,15 +77,24 @@ impl Mistakes {
     }
 }
 
-/// Two mistakes that each replace the same decision, so that no program makes both.
+/// Two mistakes that each replace the same decision, so that no program makes both: the test
+/// that decides a back face, the front winding, or the clipping rule. A program that never
+/// culls makes no other culling mistake.
 fn excludes(a: Mistake, b: Mistake) -> bool {
-    use Mistake::{CullingByFileNormals, CullingByViewAxis, DivideBeforeClip, NoClipping};
+    use Mistake::{
+        CullingByFileNormals, CullingByViewAxis, CullingIgnoresFrontFace, CullingInverted,
+        DivideBeforeClip, NeverCulls, NoClipping,
+    };
     let replaces = |m: Mistake| match m {
         CullingByFileNormals | CullingByViewAxis => 1,
         DivideBeforeClip | NoClipping => 2,
+        CullingInverted | CullingIgnoresFrontFace => 3,
         _ => 0,
     };
-    replaces(a) != 0 && replaces(a) == replaces(b)
+    let culling = |m: Mistake| replaces(m) == 1 || replaces(m) == 3;
+    (replaces(a) != 0 && replaces(a) == replaces(b))
+        || (a == NeverCulls && culling(b))
+        || (b == NeverCulls && culling(a))
 }
 
 /// The 2D system the program draws in: the arguments it gave `gluOrtho2D`.
@@ -181,15 +191,78 @@ pub enum CullRule {
     ViewAxis(FrontFace),
 }
 
-/// What the program is told to do: the settings a scene or a trace declares.
+/// Where a program tests a triangle's winding (`trace-format.md`, culling's space).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum WindingSpace {
+    /// As seen on screen (version 1's `culling ccw`): the 2D output mapped to the window.
+    Screen,
+    /// NDC x, y, y up, before V: a mistake in V does not change it.
+    Ndc,
+    /// The 2D output's own numbers (x right, y growing upward in the numbers): with a y-down
+    /// system, the mirror of the screen.
+    Window,
+}
+
+impl WindingSpace {
+    pub const ALL: [WindingSpace; 3] = [Self::Screen, Self::Ndc, Self::Window];
+}
+
+/// Which planes the program clips against itself.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum ClipPlanes {
+    /// All six.
+    #[default]
+    All,
+    /// Near and far only: x and y are left to the 2D rasteriser, which cuts at the window.
+    NearFar,
+}
+
+impl ClipPlanes {
+    fn mask(self) -> Outcode {
+        match self {
+            ClipPlanes::All => 0x3f,
+            ClipPlanes::NearFar => NEAR | FAR,
+        }
+    }
+}
+
+/// What the program is told to do, or says it did: the settings a scene or a trace declares.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Declared {
     pub window: (u32, u32),
     pub system: System2d,
     /// None: culling off.
     pub culling: Option<FrontFace>,
+    /// Where the winding is tested.
+    pub winding: WindingSpace,
     pub clip: ClipRule,
+    pub planes: ClipPlanes,
     pub mode: RenderMode,
+    /// The model matrix the program applies before M: world = model·p.
+    pub model: DMat4,
+}
+
+impl Declared {
+    /// What a program is told when only these are said: winding as seen on screen, all six
+    /// planes clipped, no model matrix.
+    pub fn new(
+        window: (u32, u32),
+        system: System2d,
+        culling: Option<FrontFace>,
+        clip: ClipRule,
+        mode: RenderMode,
+    ) -> Self {
+        Self {
+            window,
+            system,
+            culling,
+            winding: WindingSpace::Screen,
+            clip,
+            planes: ClipPlanes::All,
+            mode,
+            model: DMat4::IDENTITY,
+        }
+    }
 }
 
 /// A program's Close2GL: what it computes from a camera, with its mistakes.
@@ -217,8 +290,8 @@ pub fn from_rows(rows: [[f64; 4]; 4]) -> DMat4 {
 impl Program {
     pub fn new(camera: &ProgramCamera, declared: Declared, mistakes: Mistakes) -> Self {
         use Mistake::{
-            CullingByFileNormals, CullingByViewAxis, CullingInverted, DivideBeforeClip, LeftHanded,
-            NoClipping, ProductOrder,
+            CullingByFileNormals, CullingByViewAxis, CullingIgnoresFrontFace, CullingInverted,
+            DivideBeforeClip, LeftHanded, NeverCulls, NoClipping, ProductOrder,
         };
         let mut camera = *camera;
         if mistakes.has(LeftHanded) {
@@ -238,10 +311,12 @@ impl Program {
         };
         let cull = match declared.culling {
             None => CullRule::Off,
+            Some(_) if mistakes.has(NeverCulls) => CullRule::Off,
             Some(front) => {
-                let front = match mistakes.has(CullingInverted) {
-                    true => opposite(front),
-                    false => front,
+                let front = match () {
+                    _ if mistakes.has(CullingInverted) => opposite(front),
+                    _ if mistakes.has(CullingIgnoresFrontFace) => FrontFace::Ccw,
+                    _ => front,
                 };
                 match () {
                     _ if mistakes.has(CullingByFileNormals) => CullRule::FileNormals(front),
@@ -271,16 +346,16 @@ impl Program {
         viewport: Viewport,
         mistakes: Mistakes,
     ) -> Self {
-        let declared = Declared {
-            window: (viewport.width, viewport.height),
-            system: System2d::pixels(viewport.width, viewport.height),
-            culling: settings.backface_culling.then_some(settings.front_face),
-            clip: match settings.clipping {
+        let declared = Declared::new(
+            (viewport.width, viewport.height),
+            System2d::pixels(viewport.width, viewport.height),
+            settings.backface_culling.then_some(settings.front_face),
+            match settings.clipping {
                 Clipping::Simple => ClipRule::Simple,
                 Clipping::Full => ClipRule::Full,
             },
-            mode: settings.mode,
-        };
+            settings.mode,
+        );
         Program::new(&ProgramCamera::from(camera), declared, mistakes)
     }
 
@@ -288,14 +363,9 @@ impl Program {
     /// None when the mesh has no such triangle.
     pub fn triangle(&self, mesh: &Mesh, index: usize) -> Option<Outcome> {
         let corners = *mesh.triangles.get(index)?;
-        let world = corners.map(|i| mesh.positions[i as usize].as_dvec3());
+        let world = corners.map(|i| self.world(mesh, i));
         let clip = world.map(|p| self.clip_matrix * p.extend(1.0));
-        let w_row = self.clip_matrix.row(3).abs();
-        let conditioning = world
-            .iter()
-            .zip(&clip)
-            .map(|(p, c)| w_row.dot(p.extend(1.0).abs()) / c.w.abs())
-            .fold(1.0, f64::max);
+        let terms = rounding::clip_terms(self.clip_matrix, self.camera.position, &world);
         let mut outcome = Outcome {
             clip,
             fate: TriangleFate::default(),
@@ -304,9 +374,11 @@ impl Program {
             edges: Vec::new(),
             weights: Vec::new(),
             inv_w: Vec::new(),
-            near_a_plane: near_a_plane(&clip),
-            conditioning,
+            near_a_plane: rounding::near_a_plane(&clip, terms),
             near_edge_on: false,
+            terms,
+            errors: Vec::new(),
+            depth_errors: Vec::new(),
         };
         let Some(piece) = self.clipped(&clip, &mut outcome) else {
             return Some(outcome);
@@ -328,7 +400,20 @@ impl Program {
                 [px.x as f32, px.y as f32]
             })
             .collect();
-        let (area, culled) = self.cull(mesh, index, &world, &pixels, &mut outcome);
+        let tested: Vec<[f32; 2]> = match self.declared.winding {
+            WindingSpace::Screen => pixels.clone(),
+            // The facing test reads y down, as the window's pixels: y up is negated for it.
+            WindingSpace::Ndc => ndc.iter().map(|p| [p.x as f32, -p.y as f32]).collect(),
+            WindingSpace::Window => system.iter().map(|p| [p.x as f32, -p.y as f32]).collect(),
+        };
+        outcome.errors = piece
+            .iter()
+            .zip(&system)
+            .map(|(&c, &p)| rounding::window_error(self.v, terms, c, p))
+            .collect();
+        let (area, culled) = self.cull(mesh, index, &world, [&pixels, &tested], &mut outcome);
+        let uncertain = rounding::twice_area_error(&system, &outcome.errors);
+        outcome.near_edge_on |= rounding::twice_area(&system).abs() <= uncertain;
         outcome.fate.signed_area = area;
         if let Some(kind) = culled {
             outcome.fate.kind = kind;
@@ -339,9 +424,22 @@ impl Program {
             _ => FateKind::Cut,
         };
         outcome.depths = ndc.iter().map(|p| p.z).collect();
+        outcome.depth_errors = piece
+            .iter()
+            .map(|&c| rounding::depth_error(terms, c))
+            .collect();
         outcome.inv_w = piece.iter().map(|p| 1.0 / p.w).collect();
         outcome.polygon = system;
         Some(outcome)
+    }
+
+    /// Mesh vertex `i` in world coordinates: the model matrix applied to the file's position.
+    pub fn world(&self, mesh: &Mesh, i: u32) -> DVec3 {
+        let p = mesh.positions[i as usize].as_dvec3();
+        match self.declared.model == DMat4::IDENTITY {
+            true => p,
+            false => self.declared.model.transform_point3(p),
+        }
     }
 
     /// Every triangle of `mesh`, in order.
@@ -356,7 +454,8 @@ impl Program {
     /// whole (its fate then says why).
     fn clipped(&self, clip: &[DVec4; 3], outcome: &mut Outcome) -> Option<Vec<DVec4>> {
         let single = clip.map(|c| c.as_vec4());
-        let codes = single.map(outcode);
+        let mask = self.declared.planes.mask();
+        let codes = single.map(|c| outcode(c) & mask);
         let (any, all) = (
             codes[0] | codes[1] | codes[2],
             codes[0] & codes[1] & codes[2],
@@ -403,27 +502,27 @@ impl Program {
     }
 
     /// The cull rule: twice the signed window area (y down, as the pipeline's) and, when the
-    /// triangle is culled, why.
+    /// triangle is culled, why. `tested`: the piece's corners where the program tests the
+    /// winding (y down), `pixels` on screen.
     fn cull(
         &self,
         mesh: &Mesh,
         index: usize,
         world: &[DVec3; 3],
-        pixels: &[[f32; 2]],
+        [pixels, tested]: [&[[f32; 2]]; 2],
         outcome: &mut Outcome,
     ) -> (f32, Option<FateKind>) {
-        let (area, winding) = face::<true>(
-            pixels,
+        let (_, winding) = face::<true>(
+            tested,
             match self.cull {
                 CullRule::Winding(front) => Some(front),
                 _ => None,
             },
         );
-        let longest = longest_edge_squared(pixels);
-        outcome.near_edge_on = f64::from(area.abs()) <= EDGE_ON * f64::from(longest);
+        let area = face::<true>(pixels, None).0;
         let mut side = |normal: DVec3, towards: DVec3, front: FrontFace| {
             let dot = normal.dot(towards);
-            outcome.near_edge_on = dot.abs() <= EDGE_ON * normal.length() * towards.length();
+            outcome.near_edge_on = dot.abs() <= rounding::dot_error(normal, towards);
             let back = match front {
                 FrontFace::Ccw => dot < 0.0,
                 FrontFace::Cw => dot > 0.0,
@@ -434,7 +533,7 @@ impl Program {
             CullRule::Off => None,
             CullRule::Winding(_) => winding,
             CullRule::FileNormals(front) => {
-                let normal = file_normal(mesh, index);
+                let normal = file_normal(mesh, index, self.declared.model);
                 side(normal, self.camera.position - world[0], front)
             }
             CullRule::ViewAxis(front) => {
@@ -445,14 +544,6 @@ impl Program {
         (area, culled)
     }
 }
-
-/// Below this fraction, a facing test's value is rounding: a program in float32 may decide it
-/// either way ([`Outcome::near_edge_on`]).
-const EDGE_ON: f64 = 1e-4;
-
-/// Below this fraction of a corner's size, its distance to a plane is rounding
-/// ([`Outcome::near_a_plane`]).
-const ON_A_PLANE: f64 = 1e-5;
 
 /// What one mesh triangle became in a program's Close2GL.
 #[derive(Clone, Debug, PartialEq)]
@@ -479,10 +570,14 @@ pub struct Outcome {
     pub near_a_plane: bool,
     /// The facing test's value is rounding (seen edge-on): either culling decision is right.
     pub near_edge_on: bool,
-    /// How much the division magnifies rounding in w: the largest, over the corners, of the
-    /// sum of w's terms over w (1 for w computed without cancellation; large for a corner near
-    /// the eye's plane, whose window position a float32 program knows only roughly).
-    pub conditioning: f64,
+    /// The magnitude of the terms each row of its clip coordinates sums
+    /// ([`rounding::clip_terms`]): what a float32 program's rounding scales with.
+    pub terms: DVec4,
+    /// How far a float32 program may put each vertex of `polygon`, in the 2D system's units
+    /// ([`rounding::window_error`]).
+    pub errors: Vec<f64>,
+    /// How far its NDC depth at each vertex of `polygon` may be off.
+    pub depth_errors: Vec<f64>,
 }
 
 impl Outcome {
@@ -492,25 +587,18 @@ impl Outcome {
     }
 }
 
-fn near_a_plane(clip: &[DVec4; 3]) -> bool {
-    clip.iter().any(|c| {
-        let size = c.abs().element_sum();
-        let distances = [
-            c.w + c.x,
-            c.w - c.x,
-            c.w + c.y,
-            c.w - c.y,
-            c.w + c.z,
-            c.w - c.z,
-            c.w,
-        ];
-        distances.iter().any(|d| d.abs() <= ON_A_PLANE * size)
-    })
+/// The file's face normal of triangle `index`; for a model without them (an OBJ), the mean of
+/// its three corner normals, as `trace-format.md` pins it. A model matrix turns it by its
+/// inverse transpose, as normals turn.
+fn file_normal(mesh: &Mesh, index: usize, model: DMat4) -> DVec3 {
+    let normal = file_normal_as_read(mesh, index);
+    match model == DMat4::IDENTITY {
+        true => normal,
+        false => DMat3::from_mat4(model).inverse().transpose() * normal,
+    }
 }
 
-/// The file's face normal of triangle `index`; for a model without them (an OBJ), the mean of
-/// its three corner normals, as `trace-format.md` pins it.
-fn file_normal(mesh: &Mesh, index: usize) -> DVec3 {
+fn file_normal_as_read(mesh: &Mesh, index: usize) -> DVec3 {
     match mesh.face_normals.get(index) {
         Some(normal) => normal.as_dvec3(),
         None => {
@@ -677,7 +765,10 @@ mod tests {
             Mistake::CullingByFileNormals,
             Mistake::CullingByViewAxis
         )));
+        assert!(!sets.contains(&both(Mistake::NeverCulls, Mistake::CullingInverted)));
         assert!(sets.contains(&both(Mistake::FovNotHalved, Mistake::CullingInverted)));
-        assert_eq!(sets.len(), singles + singles * (singles - 1) / 2 - 2);
+        assert!(sets.contains(&both(Mistake::NeverCulls, Mistake::LeftHanded)));
+        // Three pairs of rules for one decision, and never culling with four culling rules.
+        assert_eq!(sets.len(), singles + singles * (singles - 1) / 2 - 3 - 4);
     }
 }

@@ -3,6 +3,7 @@
 //! settings become the viewer's.
 
 use close2gl_core::{Camera, Clipping, RenderMode, RenderSettings, Viewport};
+use close2gl_pipeline::mistakes::ClipPlanes;
 use close2gl_pipeline::mistakes::Mistakes;
 use close2gl_trace::check::{self, program_for};
 use close2gl_trace::view::probe::probe;
@@ -35,13 +36,17 @@ fn trace(mesh: &close2gl_core::Mesh, moved: usize) -> Trace {
             far: 10.0,
         },
         culling: Culling::Ccw,
+        winding: None,
         clipping: TraceClipping::Full,
+        planes: ClipPlanes::All,
         mode: Some(RenderMode::Solid),
         m: None,
         p: None,
         v: None,
+        model_matrix: None,
         clip: Vec::new(),
         pieces: Vec::new(),
+        drawn: None,
         ended: true,
     };
     let frame = program_for(&trace, Mistakes::NONE).frame(mesh);

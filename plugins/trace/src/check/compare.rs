@@ -6,7 +6,9 @@ use close2gl_core::{FateKind, Mesh, Mistake};
 use close2gl_pipeline::mistakes::{Outcome, Program};
 use glam::{DMat4, DVec2, DVec4};
 
-use super::region::{self, Tolerance};
+use close2gl_pipeline::rounding::{self, BOUND, PRINTED, clip_error, clip_terms};
+
+use super::region;
 use crate::format::Trace;
 
 /// The stages, in the pipeline's order, by the names scripts read.
@@ -197,17 +199,10 @@ impl Comparison {
     }
 }
 
-/// How far apart unit axes may be from unit length or square to each other.
+/// How far apart unit axes may be from unit length or square to each other: a float32
+/// program's axes after many turns drift by far less (it renormalises, or the camera stage
+/// is where it shows).
 const AXES: f64 = 1e-3;
-
-/// The tolerances of the window stage: a fraction of the 2D system's larger side, and of each
-/// number's size.
-pub const WINDOW_ABSOLUTE: f64 = 2e-4;
-pub const RELATIVE: f64 = 1e-5;
-/// Matrix entries and clip coordinates: a fraction of each dot product's terms.
-pub const TERMS: f64 = 1e-4;
-/// NDC depth, absolute.
-pub const DEPTH: f64 = 1e-3;
 
 /// Compares `trace` with what `program` computes for `mesh` (`expected`: its frame).
 /// The trace's triangle indices must be the mesh's (checked when the trace was read).
@@ -264,8 +259,8 @@ pub(super) fn camera(program: &Program, trace: &Trace) -> StageResult {
     result.finish()
 }
 
-/// A matrix stage: entries of the given rows, each within [`TERMS`] of its size and of the
-/// matrix's (rounding in float32 scales with both).
+/// A matrix stage: entries of the given rows, each within [`BOUND`] of its size and of the
+/// matrix's (rounding in float32 scales with both), and what printing it adds.
 pub fn matrix(stage: Stage, expected: DMat4, found: Option<DMat4>, rows: &[usize]) -> StageResult {
     let Some(found) = found else {
         let note = format!("the trace has no 'matrix {}' line", stage.name());
@@ -280,7 +275,9 @@ pub fn matrix(stage: Stage, expected: DMat4, found: Option<DMat4>, rows: &[usize
         for column in 0..4 {
             let (e, f) = (expected.col(column)[row], found.col(column)[row]);
             result.checked += 1;
-            let tolerance = TERMS * e.abs() + 1e-6 * largest + 1e-9;
+            // An entry is computed from numbers as large as the matrix's largest (M's
+            // translation sums c's terms), and printed.
+            let tolerance = BOUND * (e.abs() + largest) + PRINTED;
             if !within((e - f).abs(), tolerance) {
                 result.differ(|| {
                     format!(
@@ -314,12 +311,12 @@ pub(super) fn clip(
     for line in &trace.clip {
         result.checked += 1;
         let t = line.triangle;
-        let corners = mesh.triangles[t].map(|i| mesh.positions[i as usize].as_dvec3().extend(1.0));
+        let corners = mesh.triangles[t].map(|i| program.world(mesh, i));
         for (k, (&found, &corner)) in line.corners.iter().zip(&corners).enumerate() {
-            let want = a * corner;
-            let terms = terms(a, corner);
+            let want = a * corner.extend(1.0);
+            let error = clip_error(clip_terms(a, program.camera.position, &[corner]));
             let off = (found - want).abs();
-            if (0..4).any(|i| !within(off[i], TERMS * terms + 1e-9)) {
+            if (0..4).any(|i| !within(off[i], error[i] + PRINTED)) {
                 mark(Kind::ClipCoordinates, t);
                 result.differ(|| {
                     format!(
@@ -336,13 +333,6 @@ pub(super) fn clip(
     result.finish()
 }
 
-/// The largest sum of |a_ij·p_j| over the rows: what rounding in a product scales with.
-fn terms(a: DMat4, p: DVec4) -> f64 {
-    (0..4)
-        .map(|row| (0..4).map(|j| (a.col(j)[row] * p[j]).abs()).sum::<f64>())
-        .fold(0.0, f64::max)
-}
-
 /// What the trace drew, by mesh triangle (indices into `trace.pieces`).
 pub fn pieces_by_triangle(trace: &Trace, triangles: usize) -> Vec<Vec<usize>> {
     let mut pieces: Vec<Vec<usize>> = vec![Vec::new(); triangles];
@@ -350,18 +340,6 @@ pub fn pieces_by_triangle(trace: &Trace, triangles: usize) -> Vec<Vec<usize>> {
         pieces[piece.triangle].push(i);
     }
     pieces
-}
-
-/// The window stage's tolerance for a program's 2D system.
-pub fn window_tolerance(program: &Program) -> Tolerance {
-    let system = program.declared.system;
-    let side = (system.right - system.left)
-        .abs()
-        .max((system.top - system.bottom).abs());
-    Tolerance {
-        absolute: WINDOW_ABSOLUTE * side,
-        relative: RELATIVE,
-    }
 }
 
 /// What one mesh triangle's comparison found.
@@ -384,31 +362,29 @@ pub fn judge(
     t: usize,
     ours: &Outcome,
     pieces: &[usize],
-    tolerance: Tolerance,
 ) -> Verdict {
     let theirs: Vec<&[DVec2]> = pieces
         .iter()
         .map(|&i| trace.pieces[i].corners.as_slice())
         .collect();
-    let tolerance = Tolerance {
-        relative: tolerance.relative * ours.conditioning,
-        ..tolerance
-    };
     let differs = |kind, detail, window, depths| Verdict::Differs {
         kind,
         detail,
         window,
         depths,
     };
-    let ours_visible = ours.drawn() && !region::negligible(&ours.polygon, tolerance);
-    let theirs_visible = theirs.iter().any(|q| !region::negligible(q, tolerance));
+    let ours_visible = ours.drawn() && !region::negligible(&ours.polygon, &ours.errors);
+    let theirs_visible = theirs.iter().any(|q| {
+        let error = corner_error(program, ours);
+        !region::negligible(q, &vec![error; q.len()])
+    });
     let line = || pieces.first().map_or(0, |&i| trace.pieces[i].line);
     match (ours.drawn(), !theirs.is_empty()) {
         (true, true) => {
-            if let Some(d) = region::compare(&ours.polygon, &theirs, tolerance) {
+            if let Some(d) = region::compare(&ours.polygon, &ours.errors, &theirs) {
                 return differs(Kind::Moved, moved(t, &d, line()), true, 0);
             }
-            let (checked, off) = depths(ours, pieces, trace, tolerance);
+            let (checked, off) = depths(ours, pieces, trace);
             match off {
                 Some((found, want, line)) => differs(
                     Kind::Depth,
@@ -483,19 +459,25 @@ fn drawn(
     expected: &[Outcome],
     mark: &mut impl FnMut(Kind, usize),
 ) -> [StageResult; 4] {
-    if trace.pieces.is_empty() {
-        let note = "the trace has no 'tri' or 'poly' lines";
+    if !trace.gives_output() {
+        let note = "the trace has no 'tri', 'poly', 'drawn' or 'clip' lines";
         return [Stage::Clipping, Stage::Culling, Stage::Window, Stage::Depth]
             .map(|s| StageResult::not_checked(s, note));
     }
     let pieces = pieces_by_triangle(trace, expected.len());
-    let tolerance = window_tolerance(program);
     let mut stages =
         [Stage::Clipping, Stage::Culling, Stage::Window, Stage::Depth].map(StageResult::new);
     stages[0].checked = expected.len();
     stages[1].checked = expected.len();
+    if trace.pieces.is_empty() && trace.drawn.is_none() {
+        stages[0].note = Some(
+            "the trace gives clip coordinates and no 'tri' or 'poly' line: compared as a \
+             program that drew nothing ('drawn 0' says so)"
+                .into(),
+        );
+    }
     for (t, ours) in expected.iter().enumerate() {
-        let (window, depths) = match judge(program, trace, t, ours, &pieces[t], tolerance) {
+        let (window, depths) = match judge(program, trace, t, ours, &pieces[t]) {
             Verdict::Agree { window, depths } => (window, depths),
             Verdict::Differs {
                 kind,
@@ -527,14 +509,22 @@ fn drawn(
     ]
 }
 
+/// How far a float32 program may put the corners of a triangle close2gl did not draw: the
+/// largest error of its corners in front of the eye (those behind it are not placed at all).
+fn corner_error(program: &Program, ours: &Outcome) -> f64 {
+    ours.clip
+        .iter()
+        .filter(|c| c.w > 0.0)
+        .map(|&c| {
+            let p = (program.v * (c / c.w)).truncate().truncate();
+            rounding::window_error(program.v, ours.terms, c, p)
+        })
+        .fold(rounding::PRINTED, f64::max)
+}
+
 /// How many of the trace's pieces for this triangle give depths, and the first depth that is
 /// off, with close2gl's depth at that corner and the trace's line.
-fn depths(
-    ours: &Outcome,
-    pieces: &[usize],
-    trace: &Trace,
-    tolerance: Tolerance,
-) -> (usize, Option<(f64, f64, usize)>) {
+fn depths(ours: &Outcome, pieces: &[usize], trace: &Trace) -> (usize, Option<(f64, f64, usize)>) {
     let (mut checked, mut first) = (0, None);
     for &i in pieces {
         let piece = &trace.pieces[i];
@@ -543,17 +533,16 @@ fn depths(
         };
         checked += 1;
         for (q, &z) in piece.corners.iter().zip(found) {
-            let nearest = ours
-                .polygon
-                .iter()
-                .zip(&ours.depths)
-                .min_by(|a, b| a.0.distance(*q).total_cmp(&b.0.distance(*q)));
-            if let Some((p, &want)) = nearest
-                && p.distance(*q) <= tolerance.absolute + tolerance.relative * p.length()
-                && !within((z - want).abs(), DEPTH + tolerance.relative * want.abs())
+            let nearest = (0..ours.polygon.len()).min_by(|&a, &b| {
+                let d = |i: usize| ours.polygon[i].distance(*q);
+                d(a).total_cmp(&d(b))
+            });
+            if let Some(i) = nearest
+                && ours.polygon[i].distance(*q) <= ours.errors[i]
+                && !within((z - ours.depths[i]).abs(), ours.depth_errors[i])
                 && first.is_none()
             {
-                first = Some((z, want, piece.line));
+                first = Some((z, ours.depths[i], piece.line));
             }
         }
     }

@@ -2,6 +2,7 @@
 //! ([`compare`]), and, when it differs, the catalogue mistakes that reproduce it
 //! ([`diagnose`]).
 
+pub mod apart;
 pub mod compare;
 pub mod diagnose;
 pub mod picture;
@@ -9,7 +10,10 @@ pub mod region;
 pub mod report;
 
 use close2gl_core::{FrontFace, Mesh, RenderMode};
-use close2gl_pipeline::mistakes::{ClipRule, Declared, Mistakes, Outcome, Program, System2d};
+use close2gl_pipeline::mistakes::{
+    ClipRule, Declared, Mistakes, Outcome, Program, System2d, WindingSpace,
+};
+use glam::DMat4;
 
 use crate::format::{Culling, FormatError, Trace, TraceClipping};
 pub use compare::{Comparison, Kind, Stage, StageResult, Status};
@@ -24,6 +28,8 @@ pub struct Report {
     /// When the trace differs and no mistake reproduces it: the first difference, as precisely
     /// as the data allows.
     pub unexplained: Option<String>,
+    /// When several sets reproduce the trace: what would tell them apart.
+    pub apart: Vec<String>,
 }
 
 impl Report {
@@ -41,28 +47,37 @@ impl Report {
 }
 
 /// The program close2gl runs for this trace: its camera, window, 2D system and settings, with
-/// `mistakes`.
+/// `mistakes`, testing the winding where the trace says (on screen when it does not).
 pub fn program_for(trace: &Trace, mistakes: Mistakes) -> Program {
+    let winding = trace.winding.unwrap_or(WindingSpace::Screen);
+    program_winding(trace, mistakes, winding)
+}
+
+/// [`program_for`] testing the winding in `winding`.
+pub fn program_winding(trace: &Trace, mistakes: Mistakes, winding: WindingSpace) -> Program {
     let o = trace.ortho2d;
+    let system = System2d {
+        left: o.left,
+        right: o.right,
+        bottom: o.bottom,
+        top: o.top,
+    };
+    let culling = match trace.culling {
+        Culling::Off => None,
+        Culling::Ccw => Some(FrontFace::Ccw),
+        Culling::Cw => Some(FrontFace::Cw),
+    };
+    let clip = match trace.clipping {
+        TraceClipping::Simple => ClipRule::Simple,
+        TraceClipping::Full => ClipRule::Full,
+        TraceClipping::None => ClipRule::Nothing,
+    };
+    let mode = trace.mode.unwrap_or(RenderMode::Solid);
     let declared = Declared {
-        window: trace.window,
-        system: System2d {
-            left: o.left,
-            right: o.right,
-            bottom: o.bottom,
-            top: o.top,
-        },
-        culling: match trace.culling {
-            Culling::Off => None,
-            Culling::Ccw => Some(FrontFace::Ccw),
-            Culling::Cw => Some(FrontFace::Cw),
-        },
-        clip: match trace.clipping {
-            TraceClipping::Simple => ClipRule::Simple,
-            TraceClipping::Full => ClipRule::Full,
-            TraceClipping::None => ClipRule::Nothing,
-        },
-        mode: trace.mode.unwrap_or(RenderMode::Solid),
+        winding,
+        planes: trace.planes,
+        model: trace.model_matrix.unwrap_or(DMat4::IDENTITY),
+        ..Declared::new(trace.window, system, culling, clip, mode)
     };
     Program::new(&trace.camera, declared, mistakes)
 }
@@ -139,6 +154,7 @@ pub fn compare_only(mesh: &Mesh, trace: &Trace) -> Result<Report, FormatError> {
         expected,
         diagnoses: Vec::new(),
         unexplained: None,
+        apart: Vec::new(),
     })
 }
 
@@ -149,6 +165,7 @@ pub fn explain(report: &mut Report, mesh: &Mesh, trace: &Trace) {
         return;
     }
     report.diagnoses = diagnose::diagnose(mesh, trace);
+    report.apart = apart::tell_apart(trace, &report.diagnoses);
     if report.diagnoses.is_empty() {
         let program = program_for(trace, Mistakes::NONE);
         report.unexplained = Some(diagnose::unexplained(

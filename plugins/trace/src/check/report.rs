@@ -58,6 +58,10 @@ pub fn text(report: &Report, trace_name: &str) -> String {
                     "mistakes (the trace cannot tell them apart): {}\n",
                     names.join(", ")
                 ));
+                let hints = &report.apart;
+                if !hints.is_empty() {
+                    out.push_str(&format!("  to tell them apart: {}\n", hints.join("; ")));
+                }
             }
         }
         if let Some(unexplained) = &report.unexplained {
@@ -113,6 +117,7 @@ pub fn json(report: &Report) -> Value {
         "first_difference": first_difference,
         "mistakes": report.mistakes(),
         "diagnoses": diagnoses,
+        "tell_apart": report.apart,
         "unexplained": report.unexplained,
         "stages": stages,
         "triangles": triangles,

@@ -4,6 +4,7 @@
 
 use close2gl_core::limits::MAX_PIXELS;
 use close2gl_core::{NamedEnum, RenderMode};
+use close2gl_pipeline::mistakes::{ClipPlanes, WindingSpace};
 
 use super::camera_lines::CameraSlots;
 use super::magic::Format;
@@ -18,7 +19,13 @@ pub(crate) struct Common {
     pub(crate) window: Slot<(u32, u32)>,
     pub(crate) camera: CameraSlots,
     pub(crate) culling: Slot<Culling>,
+    /// Where the `culling` line says the winding is tested (a trace's addition).
+    pub(crate) winding: Option<WindingSpace>,
     pub(crate) clipping: Slot<TraceClipping>,
+    /// The planes the `clipping` line says the program clipped against (a trace's addition).
+    pub(crate) planes: ClipPlanes,
+    /// Whether the additions only a trace may say are read: a culling space, `near_far`.
+    pub(crate) trace_additions: bool,
     pub(crate) mode: Slot<RenderMode>,
     /// The `end` line's number: nothing but comments may follow it.
     pub(crate) end: Option<usize>,
@@ -37,8 +44,16 @@ impl Common {
             }
             "window" => set_once(&mut self.window, window(line)?, line, "window")?,
             "camera" => self.camera.read(line)?,
-            "culling" => set_once(&mut self.culling, named(line)?, line, "culling")?,
-            "clipping" => set_once(&mut self.clipping, named(line)?, line, "clipping")?,
+            "culling" => {
+                let (culling, winding) = self.culling_line(line)?;
+                set_once(&mut self.culling, culling, line, "culling")?;
+                self.winding = winding;
+            }
+            "clipping" => {
+                let (clipping, planes) = self.clipping_line(line)?;
+                set_once(&mut self.clipping, clipping, line, "clipping")?;
+                self.planes = planes;
+            }
             "mode" => set_once(&mut self.mode, named(line)?, line, "mode")?,
             "end" => {
                 line.expect_fields(1, "end")?;
@@ -47,6 +62,37 @@ impl Common {
             _ => return Ok(false),
         }
         Ok(true)
+    }
+
+    /// `culling off|ccw|cw`, in a trace with an optional space: `culling ccw ndc`.
+    fn culling_line(&self, line: &Line) -> Result<(Culling, Option<WindingSpace>), FormatError> {
+        if !self.trace_additions || line.fields.len() != 3 {
+            return Ok((named(line)?, None));
+        }
+        const SHAPE: &str = "culling ccw|cw ndc|window";
+        let space = match line.fields[2] {
+            "ndc" => WindingSpace::Ndc,
+            "window" => WindingSpace::Window,
+            _ => return Err(line.wrong_shape(SHAPE)),
+        };
+        match Culling::from_name(line.fields[1]) {
+            Some(c @ (Culling::Ccw | Culling::Cw)) => Ok((c, Some(space))),
+            _ => Err(line.wrong_shape(SHAPE)),
+        }
+    }
+
+    /// `clipping simple|full|none`, in a trace with an optional `near_far`.
+    fn clipping_line(&self, line: &Line) -> Result<(TraceClipping, ClipPlanes), FormatError> {
+        if !self.trace_additions || line.fields.len() != 3 {
+            return Ok((named(line)?, ClipPlanes::All));
+        }
+        const SHAPE: &str = "clipping simple|full near_far";
+        match (TraceClipping::from_name(line.fields[1]), line.fields[2]) {
+            (Some(c @ (TraceClipping::Simple | TraceClipping::Full)), "near_far") => {
+                Ok((c, ClipPlanes::NearFar))
+            }
+            _ => Err(line.wrong_shape(SHAPE)),
+        }
     }
 
     /// Refuses any line after `end`.

@@ -26,14 +26,15 @@ pub struct Piece {
     pub line: usize,
 }
 
-const MATRIX: &str = "matrix M|P|V m00 m01 m02 m03 m10 … m33";
+const MATRIX: &str = "matrix M|P|V|model m00 m01 m02 m03 m10 … m33";
 const CLIP: &str = "clip T x0 y0 z0 w0 x1 y1 z1 w1 x2 y2 z2 w2";
 const TRI: &str = "tri T x0 y0 x1 y1 x2 y2";
 const TRI_DEPTHS: &str = "tri T x0 y0 z0 x1 y1 z1 x2 y2 z2";
 const POLY: &str = "poly T K x0 y0 x1 y1 …";
 
-/// The matrices a trace may give, in the order of [`matrix`]'s index.
-pub(crate) const MATRIX_NAMES: [&str; 3] = ["M", "P", "V"];
+/// The matrices a trace may give, in the order of [`matrix`]'s index (`model`: the model
+/// matrix applied before M, an addition within version 1).
+pub(crate) const MATRIX_NAMES: [&str; 4] = ["M", "P", "V", "model"];
 
 /// `matrix NAME` + 16 numbers, row by row: the index of NAME in [`MATRIX_NAMES`] and the
 /// matrix (glam's are column-major, so the rows are read as columns and transposed).

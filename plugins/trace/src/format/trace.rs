@@ -5,6 +5,7 @@ use std::collections::HashMap;
 use std::path::Path;
 
 use close2gl_core::RenderMode;
+use close2gl_pipeline::mistakes::{ClipPlanes, WindingSpace};
 use glam::DMat4;
 
 use super::camera_lines::shape;
@@ -30,14 +31,31 @@ pub struct Trace {
     pub culling: Culling,
     pub clipping: TraceClipping,
     pub mode: Option<RenderMode>,
+    /// Where the program tests the winding, when the trace says (`culling ccw ndc`).
+    pub winding: Option<WindingSpace>,
+    /// The planes the program clipped against (`clipping simple near_far`: near and far only).
+    pub planes: ClipPlanes,
     pub m: Option<DMat4>,
     pub p: Option<DMat4>,
     pub v: Option<DMat4>,
+    /// `matrix model`: what the program applied to the file's vertices before M.
+    pub model_matrix: Option<DMat4>,
     pub clip: Vec<ClipLine>,
     /// The `tri` and `poly` lines, in file order.
     pub pieces: Vec<Piece>,
+    /// `drawn N`: the count of `tri` and `poly` lines, said to be complete, and its line.
+    pub drawn: Option<(usize, usize)>,
     /// Whether an `end` line said the trace is complete.
     pub ended: bool,
+}
+
+impl Trace {
+    /// Whether the trace gives its 2D output: `tri` or `poly` lines, a `drawn` line, or `clip`
+    /// lines (a program that computed its triangles' clip coordinates and wrote no 2D triangle
+    /// drew nothing).
+    pub fn gives_output(&self) -> bool {
+        !self.pieces.is_empty() || self.drawn.is_some() || !self.clip.is_empty()
+    }
 }
 
 /// Reads a trace from `text`; `file` labels its errors.
@@ -64,6 +82,7 @@ pub(crate) fn parse_limited(text: &str, file: &str, limit: usize) -> Result<Trac
         limit,
         ..Reader::default()
     };
+    reader.common.trace_additions = true;
     for line in lines {
         reader.read(&line)?;
     }
@@ -76,7 +95,8 @@ struct Reader {
     common: Common,
     triangles: Slot<usize>,
     ortho2d: Slot<Ortho2d>,
-    matrices: [Slot<DMat4>; 3],
+    matrices: [Slot<DMat4>; 4],
+    drawn: Slot<usize>,
     clip: Vec<ClipLine>,
     /// The line of each triangle's `clip`, to refuse a second.
     clip_lines: HashMap<usize, usize>,
@@ -96,6 +116,11 @@ impl Reader {
                 set_once(&mut self.triangles, n, line, "triangles")
             }
             "ortho2d" => set_once(&mut self.ortho2d, ortho2d(line)?, line, "ortho2d"),
+            "drawn" => {
+                line.expect_fields(2, "drawn N")?;
+                let n = line.integer(1, "N", "drawn N")?;
+                set_once(&mut self.drawn, n, line, "drawn")
+            }
             "matrix" => {
                 let (i, m) = output::matrix(line)?;
                 let key = format!("matrix {}", MATRIX_NAMES[i]);
@@ -104,7 +129,7 @@ impl Reader {
             "clip" | "tri" | "poly" => self.read_output(line),
             _ => Err(line.expected(
                 "a trace line (model, triangles, window, ortho2d, camera, culling, clipping, \
-                 mode, matrix, clip, tri, poly or end)",
+                 mode, matrix, clip, tri, poly, drawn or end)",
             )),
         }
     }
@@ -140,7 +165,17 @@ impl Reader {
             .camera
             .lines()
             .map_err(|i| ends.without(&format!("'{}'", shape(i))))?;
-        let [m, p, v] = self.matrices.map(|slot| slot.map(|(m, _)| m));
+        if let Some((n, line)) = self.drawn
+            && n != self.pieces.len()
+        {
+            let pieces = self.pieces.len();
+            let message = format!(
+                "expected 'drawn {pieces}' (the trace has {pieces} 'tri' and 'poly' lines), \
+                 found 'drawn {n}'"
+            );
+            return Err(FormatError::new(ends.file, line, message));
+        }
+        let [m, p, v, model_matrix] = self.matrices.map(|slot| slot.map(|(m, _)| m));
         Ok(Trace {
             file: ends.file.to_string(),
             model: common.model.map(|(name, _)| name),
@@ -159,11 +194,15 @@ impl Reader {
             culling: common.culling.map(|(c, _)| c).unwrap_or_default(),
             clipping: common.clipping.map(|(c, _)| c).unwrap_or_default(),
             mode: common.mode.map(|(m, _)| m),
+            winding: common.winding,
+            planes: common.planes,
             m,
             p,
             v,
+            model_matrix,
             clip: self.clip,
             pieces: self.pieces,
+            drawn: self.drawn,
             ended: common.end.is_some(),
         })
     }

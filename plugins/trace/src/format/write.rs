@@ -9,6 +9,7 @@
 use std::fmt::Write;
 
 use close2gl_core::{NamedEnum, RenderMode};
+use close2gl_pipeline::mistakes::{ClipPlanes, WindingSpace};
 
 use super::camera_lines::LINES;
 use super::magic::Format;
@@ -30,8 +31,9 @@ impl Trace {
         let o = self.ortho2d;
         text.line("ortho2d", [o.left, o.right, o.bottom, o.top]);
         text.camera(&self.camera);
-        text.switches(self.culling, self.clipping, self.mode);
-        for (name, m) in MATRIX_NAMES.iter().zip([self.m, self.p, self.v]) {
+        text.trace_switches(self);
+        let matrices = [self.m, self.p, self.v, self.model_matrix];
+        for (name, m) in MATRIX_NAMES.iter().zip(matrices) {
             if let Some(m) = m {
                 // glam is column-major: the columns of the transpose are the rows.
                 text.line(&format!("matrix {name}"), m.transpose().to_cols_array());
@@ -43,6 +45,9 @@ impl Trace {
         }
         for piece in &self.pieces {
             text.piece(piece);
+        }
+        if let Some((n, _)) = self.drawn {
+            text.line(&format!("drawn {n}"), []);
         }
         if self.ended {
             text.line("end", []);
@@ -121,6 +126,24 @@ impl Text {
         self.line(&format!("culling {}", culling.name()), []);
         self.line(&format!("clipping {}", clipping.name()), []);
         if let Some(mode) = mode {
+            self.line(&format!("mode {}", mode.name()), []);
+        }
+    }
+
+    /// A trace's switches, with the culling space and the planes where it gives them.
+    fn trace_switches(&mut self, trace: &Trace) {
+        let space = match trace.winding {
+            None | Some(WindingSpace::Screen) => "",
+            Some(WindingSpace::Ndc) => " ndc",
+            Some(WindingSpace::Window) => " window",
+        };
+        let planes = match trace.planes {
+            ClipPlanes::All => "",
+            ClipPlanes::NearFar => " near_far",
+        };
+        self.line(&format!("culling {}{space}", trace.culling.name()), []);
+        self.line(&format!("clipping {}{planes}", trace.clipping.name()), []);
+        if let Some(mode) = trace.mode {
             self.line(&format!("mode {}", mode.name()), []);
         }
     }

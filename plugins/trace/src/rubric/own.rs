@@ -8,9 +8,9 @@
 
 use close2gl_core::Mesh;
 use close2gl_pipeline::mistakes::Program;
+use close2gl_pipeline::rounding::{BOUND, PRINTED};
 use glam::{DMat4, DVec3, DVec4};
 
-use crate::check::compare::TERMS;
 use crate::format::{ClipLine, Trace};
 
 /// `ours` with the program's own clip matrix and, with `own_viewport`, its own V (a V that is
@@ -19,7 +19,7 @@ use crate::format::{ClipLine, Trace};
 pub fn own_program(ours: &Program, mesh: &Mesh, trace: &Trace, own_viewport: bool) -> Program {
     let mut program = *ours;
     let product = trace.p.zip(trace.m).map(|(p, m)| p * m);
-    if let Some(matrix) = fitted_clip_matrix(mesh, trace).or(product) {
+    if let Some(matrix) = fitted_clip_matrix(ours, mesh, trace).or(product) {
         program.clip_matrix = matrix;
     }
     if let (true, Some(v)) = (own_viewport, trace.v) {
@@ -29,11 +29,11 @@ pub fn own_program(ours: &Program, mesh: &Mesh, trace: &Trace, own_viewport: boo
 }
 
 /// The matrix that takes the mesh's corners to the trace's clip coordinates, when one does.
-fn fitted_clip_matrix(mesh: &Mesh, trace: &Trace) -> Option<DMat4> {
+fn fitted_clip_matrix(ours: &Program, mesh: &Mesh, trace: &Trace) -> Option<DMat4> {
     if trace.clip.is_empty() {
         return None;
     }
-    let corners = |line: &ClipLine| corners(mesh, line);
+    let corners = |line: &ClipLine| corners(ours, mesh, line);
     // Centred and scaled corners keep the normal equations well conditioned far from the origin.
     let (low, high) = trace.clip.iter().flat_map(corners).fold(
         (DVec3::splat(f64::INFINITY), DVec3::splat(f64::NEG_INFINITY)),
@@ -75,20 +75,17 @@ fn fitted_clip_matrix(mesh: &Mesh, trace: &Trace) -> Option<DMat4> {
                     .sum::<f64>()
             })
             .fold(0.0, f64::max);
-        ((fitted * p) - clip).abs().max_element() <= TERMS * size + 1e-9
+        // The fit's own rounding comes on top of the program's: four times its bound.
+        ((fitted * p) - clip).abs().max_element() <= 4.0 * BOUND * size + PRINTED
     });
     reproduces.then_some(fitted)
 }
 
-/// A clip line's corners: the mesh's point and the trace's clip coordinates for it.
-fn corners(mesh: &Mesh, line: &ClipLine) -> [(DVec3, DVec4); 3] {
+/// A clip line's corners: the world point (the model matrix applied) and the trace's clip
+/// coordinates for it.
+fn corners(program: &Program, mesh: &Mesh, line: &ClipLine) -> [(DVec3, DVec4); 3] {
     let triangle = mesh.triangles[line.triangle];
-    [0, 1, 2].map(|k| {
-        (
-            mesh.positions[triangle[k] as usize].as_dvec3(),
-            line.corners[k],
-        )
-    })
+    [0, 1, 2].map(|k| (program.world(mesh, triangle[k]), line.corners[k]))
 }
 
 /// a·bᵀ.
@@ -151,7 +148,8 @@ mod tests {
             [0.0, 0.0, -1.0, 0.0],
         ]);
         for matrix in [p * m, m * p] {
-            let fitted = fitted_clip_matrix(&mesh, &trace_with_clip(&mesh, matrix));
+            let trace = trace_with_clip(&mesh, matrix);
+            let fitted = fitted_clip_matrix(&ours(&trace), &mesh, &trace);
             let error = fitted.map(|f| {
                 (f - matrix)
                     .to_cols_array()
@@ -168,6 +166,10 @@ mod tests {
         let mesh = tetrahedron();
         let mut trace = trace_with_clip(&mesh, DMat4::IDENTITY);
         trace.clip[2].corners[1].x += 50.0;
-        assert_eq!(fitted_clip_matrix(&mesh, &trace), None);
+        assert_eq!(fitted_clip_matrix(&ours(&trace), &mesh, &trace), None);
+    }
+
+    fn ours(trace: &Trace) -> Program {
+        crate::check::program_for(trace, close2gl_pipeline::mistakes::Mistakes::NONE)
     }
 }

@@ -7,6 +7,7 @@
 use std::collections::HashSet;
 
 use close2gl_core::{NamedEnum, RenderMode};
+use close2gl_pipeline::mistakes::{ClipPlanes, WindingSpace};
 use close2gl_trace::{
     Axis, CameraLines, ClipLine, Culling, Motion, Ortho2d, Piece, Scene, SceneCamera, Trace,
     TraceClipping, parse_scene, parse_trace,
@@ -61,6 +62,7 @@ pub fn scene_error(text: &str) -> String {
 /// `trace` with every `line` field 0: what stays the same when it is written and read back.
 pub fn without_lines(mut trace: Trace) -> Trace {
     trace.triangles = trace.triangles.map(|(n, _)| (n, 0));
+    trace.drawn = trace.drawn.map(|(n, _)| (n, 0));
     trace.clip.iter_mut().for_each(|c| c.line = 0);
     trace.pieces.iter_mut().for_each(|p| p.line = 0);
     trace
@@ -188,16 +190,30 @@ pub fn trace() -> impl Strategy<Value = Trace> {
         prop::option::of(one_of::<RenderMode>()),
     );
     let work = (
-        (matrix(), matrix(), matrix()),
+        (matrix(), matrix(), matrix(), matrix()),
         clip_lines(),
         prop::collection::vec(piece(), 0..5),
         any::<bool>(),
     );
-    (head, work).prop_map(
+    // The additions within version 1: a culling space, near_far, `drawn`.
+    let additions = (0..3u8, any::<bool>(), any::<bool>());
+    (head, work, additions).prop_map(
         |(
             (model, triangles, window, ortho2d, camera, culling, clipping, mode),
-            ((m, p, v), clip, pieces, ended),
+            ((m, p, v, model_matrix), clip, pieces, ended),
+            (space, near_far, drawn),
         )| Trace {
+            winding: match (culling, space) {
+                (Culling::Off, _) | (_, 0) => None,
+                (_, 1) => Some(WindingSpace::Ndc),
+                _ => Some(WindingSpace::Window),
+            },
+            planes: match (clipping, near_far) {
+                (TraceClipping::None, _) | (_, false) => ClipPlanes::All,
+                _ => ClipPlanes::NearFar,
+            },
+            model_matrix,
+            drawn: drawn.then_some((pieces.len(), 0)),
             file: "random.trace".to_string(),
             model,
             triangles,
