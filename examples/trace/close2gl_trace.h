@@ -106,14 +106,14 @@ void c2g_write_culling_in(FILE *f, int culling, int space);
 void c2g_write_clipping(FILE *f, int clipping);         /* C2G_CLIP_... */
 void c2g_write_mode(FILE *f, int mode);                 /* C2G_MODE_... */
 /* which is 'M', 'P' or 'V'. m is row by row: m[4*row + column]. */
-void c2g_write_matrix(FILE *f, char which, const c2g_real m[16]);
+void c2g_write_matrix(FILE *f, char which, const c2g_real *m);
 /* The same for a column-major array, as OpenGL and glm store matrices: m[4*column + row]. */
-void c2g_write_matrix_columns(FILE *f, char which, const c2g_real m[16]);
+void c2g_write_matrix_columns(FILE *f, char which, const c2g_real *m);
 /* The model matrix applied to the file's vertices before M (`matrix model`), rows or columns. */
-void c2g_write_model_matrix(FILE *f, const c2g_real m[16]);
-void c2g_write_model_matrix_columns(FILE *f, const c2g_real m[16]);
+void c2g_write_model_matrix(FILE *f, const c2g_real *m);
+void c2g_write_model_matrix_columns(FILE *f, const c2g_real *m);
 /* Mesh triangle t (0-based, in the model file's order) in clip coordinates: x y z w per corner. */
-void c2g_write_clip(FILE *f, int t, const c2g_real clip[12]);
+void c2g_write_clip(FILE *f, int t, const c2g_real *clip);
 /* A drawn 2D triangle for mesh triangle t: dims 2 (x y per corner) or 3 (x y and NDC depth z). */
 void c2g_write_tri(FILE *f, int t, const c2g_real *corners, int dims);
 /* A drawn polygon of k >= 3 corners for mesh triangle t (what full clipping leaves). */
@@ -662,7 +662,7 @@ void c2g_write_mode(FILE *f, int mode)
                             : mode == C2G_MODE_WIREFRAME ? "wireframe" : "solid");
 }
 
-static void c2g__matrix(FILE *f, const char *name, const c2g_real m[16], int columns)
+static void c2g__matrix(FILE *f, const char *name, const c2g_real *m, int columns)
 {
     c2g_real rows[16];
     int i;
@@ -671,28 +671,28 @@ static void c2g__matrix(FILE *f, const char *name, const c2g_real m[16], int col
     c2g__numbers(f, rows, 16);
 }
 
-void c2g_write_matrix(FILE *f, char which, const c2g_real m[16])
+void c2g_write_matrix(FILE *f, char which, const c2g_real *m)
 {
     char name[2];
     name[0] = which, name[1] = '\0';
     c2g__matrix(f, name, m, 0);
 }
 
-void c2g_write_matrix_columns(FILE *f, char which, const c2g_real m[16])
+void c2g_write_matrix_columns(FILE *f, char which, const c2g_real *m)
 {
     char name[2];
     name[0] = which, name[1] = '\0';
     c2g__matrix(f, name, m, 1);
 }
 
-void c2g_write_model_matrix(FILE *f, const c2g_real m[16]) { c2g__matrix(f, "model", m, 0); }
+void c2g_write_model_matrix(FILE *f, const c2g_real *m) { c2g__matrix(f, "model", m, 0); }
 
-void c2g_write_model_matrix_columns(FILE *f, const c2g_real m[16])
+void c2g_write_model_matrix_columns(FILE *f, const c2g_real *m)
 {
     c2g__matrix(f, "model", m, 1);
 }
 
-void c2g_write_clip(FILE *f, int t, const c2g_real clip[12])
+void c2g_write_clip(FILE *f, int t, const c2g_real *clip)
 {
     c2g__piece(f, 0);
     fprintf(f, "clip %d", t);
