@@ -2,9 +2,9 @@
 // and a pitch about the world's up (+y), and its axes are recomputed from the two angles each
 // frame, as games do (front from yaw and pitch, right = front x up, up = right x front). It can
 // turn only about the world's up and its own u, so it runs on scenes whose turns are `rotate v`
-// before `rotate u`, and starts from `camera framed` (yaw 0, pitch 0: looking along -z).
-// It draws in window pixels, y up; the assignment's simple
-// clipping; culling by the winding on screen.
+// before `rotate u`, and starts from `camera framed` (yaw 0, pitch 0: looking along -z). It
+// draws in window pixels, y up, with the assignment's simple clipping and culling by the winding
+// on screen.
 //
 //     cpp_fps SCENE TRACE
 //
