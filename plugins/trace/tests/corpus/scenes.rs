@@ -33,8 +33,8 @@ fn radius(mesh: &Mesh) -> f64 {
     f64::from((hi - lo).length()) / 2.0
 }
 
-/// The knot scaled to FAR_SIZE and centred at FAR_OFFSET, as an .obj in `dir` (its faces
-/// unchanged, so that triangle T is the knot's triangle T).
+/// The knot scaled to FAR_SIZE and centred at FAR_OFFSET, as an .obj in `dir` (its normals and
+/// faces unchanged, so that triangle T is the knot's triangle T).
 fn write_far_model(dir: &Path) -> PathBuf {
     let knot = std::fs::read_to_string(asset("knot.obj")).expect("read knot.obj");
     let vertices: Vec<[f64; 3]> = knot
@@ -68,7 +68,10 @@ fn write_far_model(dir: &Path) -> PathBuf {
             .collect();
         text += &format!("v {}\n", p.join(" "));
     }
-    for line in knot.lines().filter(|l| l.starts_with("f ")) {
+    for line in knot
+        .lines()
+        .filter(|l| l.starts_with("vn ") || l.starts_with("f "))
+    {
         text += line;
         text.push('\n');
     }
