@@ -16,8 +16,8 @@ The Python twin of close2gl_trace.h, standard library only: copy this file next 
         t.window(640, 480)
         t.camera(c, u, v, n, hfov, vfov, near, far)
         t.matrix("M", M)                # 16 numbers row by row, or 4 rows of 4
-        for t in range(len(triangles)):  # one call per mesh triangle: its clip line, and
-            t.triangle(t, clip[t], corners[t] if drawn[t] else None)  # what was drawn of it
+        for i in range(len(triangles)):  # one call per mesh triangle: its clip line, and
+            t.triangle(i, clip[i], corners[i] if drawn[i] else None)  # what was drawn of it
         t.end()                         # writes "drawn N" (the tri and poly lines), then "end"
 
 Numbers are written with repr(), the shortest text that reads back as the very same float.
