@@ -18,7 +18,16 @@
  *
  * Writing a trace: open a FILE, call c2g_write_header, then the c2g_write_* of whatever your
  * program computes (camera and window are required), then c2g_write_end. Numbers are printed with
- * %.17g (double) or %.9g (float), enough digits to read back the very same value.
+ * %.17g (double) or %.9g (float), enough digits to read back the very same value. In the loop
+ * that draws, one call per mesh triangle writes its clip coordinates and what was drawn of it:
+ *
+ *     c2g_write_triangle(f, t, clip, drawn ? corners : NULL, 3, 2);
+ *
+ * c2g_write_end writes `drawn N` (how many tri and poly lines the trace has) before `end`, so that
+ * a program that drew nothing says so. It counts the lines written to the FILE that the last
+ * c2g_write_header started: one trace at a time (a second header started before the first trace's
+ * end takes the count over, and the first trace then ends without a `drawn` line rather than
+ * with a wrong one).
  *
  * Both use the C library's number formats, which follow the locale: if your program (or its GUI
  * toolkit) calls setlocale, keep LC_NUMERIC at "C" or "0.5" becomes "0,5".
@@ -41,7 +50,13 @@ typedef double c2g_real;
 #endif
 
 enum { C2G_CULL_OFF, C2G_CULL_CCW, C2G_CULL_CW };
-enum { C2G_CLIP_SIMPLE, C2G_CLIP_FULL, C2G_CLIP_NONE };
+/* The last two are for trace lines only: near and far by the program, x and y by the 2D
+ * rasteriser (`clipping simple near_far`, `clipping full near_far`). */
+enum { C2G_CLIP_SIMPLE, C2G_CLIP_FULL, C2G_CLIP_NONE, C2G_CLIP_SIMPLE_NEAR_FAR,
+       C2G_CLIP_FULL_NEAR_FAR };
+/* Where the program tests the winding: as seen on screen (version 1's plain `culling ccw`), in
+ * NDC before V, or in its 2D output's own numbers. */
+enum { C2G_CULL_ON_SCREEN, C2G_CULL_IN_NDC, C2G_CULL_IN_WINDOW };
 enum { C2G_MODE_POINTS, C2G_MODE_WIREFRAME, C2G_MODE_SOLID };
 
 /* One camera motion of a scene, to apply in order: `move`, `rotate` or `orbit`. */
@@ -80,23 +95,37 @@ void c2g_write_model(FILE *f, const char *name);
 void c2g_write_triangles(FILE *f, int count);
 void c2g_write_window(FILE *f, int width, int height);
 void c2g_write_ortho2d(FILE *f, c2g_real left, c2g_real right, c2g_real bottom, c2g_real top);
+/* NDC output (the GPU does the viewport): ortho2d -1 1 -1 1. */
+void c2g_write_ortho2d_ndc(FILE *f);
 void c2g_write_camera(FILE *f, const c2g_real position[3], const c2g_real u[3],
                       const c2g_real v[3], const c2g_real n[3], c2g_real hfov, c2g_real vfov,
                       c2g_real znear, c2g_real zfar); /* the eight camera lines */
 void c2g_write_culling(FILE *f, int culling);           /* C2G_CULL_... */
+/* culling C2G_CULL_..., tested in space C2G_CULL_IN_NDC or C2G_CULL_IN_WINDOW ("culling ccw ndc"). */
+void c2g_write_culling_in(FILE *f, int culling, int space);
 void c2g_write_clipping(FILE *f, int clipping);         /* C2G_CLIP_... */
 void c2g_write_mode(FILE *f, int mode);                 /* C2G_MODE_... */
 /* which is 'M', 'P' or 'V'. m is row by row: m[4*row + column]. */
-void c2g_write_matrix(FILE *f, char which, const c2g_real m[16]);
+void c2g_write_matrix(FILE *f, char which, const c2g_real *m);
 /* The same for a column-major array, as OpenGL and glm store matrices: m[4*column + row]. */
-void c2g_write_matrix_columns(FILE *f, char which, const c2g_real m[16]);
+void c2g_write_matrix_columns(FILE *f, char which, const c2g_real *m);
+/* The model matrix applied to the file's vertices before M (`matrix model`), rows or columns. */
+void c2g_write_model_matrix(FILE *f, const c2g_real *m);
+void c2g_write_model_matrix_columns(FILE *f, const c2g_real *m);
 /* Mesh triangle t (0-based, in the model file's order) in clip coordinates: x y z w per corner. */
-void c2g_write_clip(FILE *f, int t, const c2g_real clip[12]);
+void c2g_write_clip(FILE *f, int t, const c2g_real *clip);
 /* A drawn 2D triangle for mesh triangle t: dims 2 (x y per corner) or 3 (x y and NDC depth z). */
 void c2g_write_tri(FILE *f, int t, const c2g_real *corners, int dims);
 /* A drawn polygon of k >= 3 corners for mesh triangle t (what full clipping leaves). */
 void c2g_write_poly(FILE *f, int t, int k, const c2g_real *corners, int dims);
-void c2g_write_end(FILE *f);                            /* end: nothing may follow */
+/* Mesh triangle t in one call: its `clip` line when clip (x y z w per corner) is not NULL, then,
+ * when corners is not NULL and k >= 3, what was drawn of it: a `tri` line for k = 3 corners, a
+ * `poly` line for more. dims 2 (x y) or 3 (x y and NDC depth). corners NULL: not drawn. */
+void c2g_write_triangle(FILE *f, int t, const c2g_real *clip, const c2g_real *corners, int k,
+                        int dims);
+/* `drawn N` when the trace has clip, tri or poly lines (a program that writes only matrices
+ * says nothing about its 2D output), then `end`: nothing may follow. */
+void c2g_write_end(FILE *f);
 
 /* Two helpers for your own loaders. c2g_split cuts line into fields at runs of spaces and tabs
  * (writing '\0's into it); returns the number of fields, at most max + 1 ("too many").
@@ -106,6 +135,26 @@ int c2g_split(char *line, char *fields[], int max);
 int c2g_parse_real(const char *field, c2g_real *out);
 
 #ifdef __cplusplus
+}
+
+/* C++: a matrix kept column by column and indexed m[column][row], as glm::mat4 and glm::dmat4
+ * are, written whatever its number type: c2g_write_glm(f, 'M', M). which 'M', 'P' or 'V';
+ * c2g_write_glm_model writes the model matrix. */
+template <class Matrix> void c2g__glm_rows(const Matrix &m, c2g_real rows[16])
+{
+    for (int i = 0; i < 16; i++) rows[i] = (c2g_real)m[i % 4][i / 4];
+}
+template <class Matrix> void c2g_write_glm(FILE *f, char which, const Matrix &m)
+{
+    c2g_real rows[16];
+    c2g__glm_rows(m, rows);
+    c2g_write_matrix(f, which, rows);
+}
+template <class Matrix> void c2g_write_glm_model(FILE *f, const Matrix &m)
+{
+    c2g_real rows[16];
+    c2g__glm_rows(m, rows);
+    c2g_write_model_matrix(f, rows);
 }
 #endif
 #endif /* CLOSE2GL_TRACE_H */
@@ -520,6 +569,21 @@ void c2g_free_scene(c2g_scene *scene)
 
 /* ---- writing ---- */
 
+/* The trace the last c2g_write_header started: its FILE, how many tri and poly lines it has, and
+ * whether it gave any 2D output at all (a clip, tri or poly line). One trace at a time keeps
+ * every write's signature a plain FILE *; a struct handle would change every call of every
+ * program already instrumented. */
+static FILE *c2g__trace;
+static long c2g__pieces;
+static int c2g__output;
+
+static void c2g__piece(FILE *f, int piece)
+{
+    if (f != c2g__trace) return;
+    c2g__output = 1;
+    c2g__pieces += piece;
+}
+
 static void c2g__numbers(FILE *f, const c2g_real *x, int count)
 {
     int i;
@@ -527,7 +591,13 @@ static void c2g__numbers(FILE *f, const c2g_real *x, int count)
     fputc('\n', f);
 }
 
-void c2g_write_header(FILE *f) { fputs("close2gl-trace 1\n", f); }
+void c2g_write_header(FILE *f)
+{
+    c2g__trace = f;
+    c2g__pieces = 0;
+    c2g__output = 0;
+    fputs("close2gl-trace 1\n", f);
+}
 
 void c2g_write_model(FILE *f, const char *name)
 {
@@ -552,6 +622,8 @@ void c2g_write_ortho2d(FILE *f, c2g_real left, c2g_real right, c2g_real bottom, 
     c2g__numbers(f, x, 4);
 }
 
+void c2g_write_ortho2d_ndc(FILE *f) { c2g_write_ortho2d(f, -1, 1, -1, 1); }
+
 void c2g_write_camera(FILE *f, const c2g_real position[3], const c2g_real u[3],
                       const c2g_real v[3], const c2g_real n[3], c2g_real hfov, c2g_real vfov,
                       c2g_real znear, c2g_real zfar)
@@ -566,16 +638,22 @@ void c2g_write_camera(FILE *f, const c2g_real position[3], const c2g_real u[3],
     fputs("camera far", f);      c2g__numbers(f, &zfar, 1);
 }
 
-void c2g_write_culling(FILE *f, int culling)
+void c2g_write_culling_in(FILE *f, int culling, int space)
 {
-    fprintf(f, "culling %s\n",
-            culling == C2G_CULL_CCW ? "ccw" : culling == C2G_CULL_CW ? "cw" : "off");
+    const char *in = space == C2G_CULL_IN_NDC ? " ndc" : space == C2G_CULL_IN_WINDOW ? " window" : "";
+    if (culling != C2G_CULL_CCW && culling != C2G_CULL_CW) in = ""; /* off has no space */
+    fprintf(f, "culling %s%s\n",
+            culling == C2G_CULL_CCW ? "ccw" : culling == C2G_CULL_CW ? "cw" : "off", in);
 }
+
+void c2g_write_culling(FILE *f, int culling) { c2g_write_culling_in(f, culling, C2G_CULL_ON_SCREEN); }
 
 void c2g_write_clipping(FILE *f, int clipping)
 {
     fprintf(f, "clipping %s\n", clipping == C2G_CLIP_FULL ? "full"
-                                : clipping == C2G_CLIP_NONE ? "none" : "simple");
+                                : clipping == C2G_CLIP_NONE ? "none"
+                                : clipping == C2G_CLIP_SIMPLE_NEAR_FAR ? "simple near_far"
+                                : clipping == C2G_CLIP_FULL_NEAR_FAR ? "full near_far" : "simple");
 }
 
 void c2g_write_mode(FILE *f, int mode)
@@ -584,39 +662,73 @@ void c2g_write_mode(FILE *f, int mode)
                             : mode == C2G_MODE_WIREFRAME ? "wireframe" : "solid");
 }
 
-void c2g_write_matrix(FILE *f, char which, const c2g_real m[16])
-{
-    fprintf(f, "matrix %c", which);
-    c2g__numbers(f, m, 16);
-}
-
-void c2g_write_matrix_columns(FILE *f, char which, const c2g_real m[16])
+static void c2g__matrix(FILE *f, const char *name, const c2g_real *m, int columns)
 {
     c2g_real rows[16];
     int i;
-    for (i = 0; i < 16; i++) rows[i] = m[4 * (i % 4) + i / 4];
-    c2g_write_matrix(f, which, rows);
+    for (i = 0; i < 16; i++) rows[i] = columns ? m[4 * (i % 4) + i / 4] : m[i];
+    fprintf(f, "matrix %s", name);
+    c2g__numbers(f, rows, 16);
 }
 
-void c2g_write_clip(FILE *f, int t, const c2g_real clip[12])
+void c2g_write_matrix(FILE *f, char which, const c2g_real *m)
 {
+    char name[2];
+    name[0] = which, name[1] = '\0';
+    c2g__matrix(f, name, m, 0);
+}
+
+void c2g_write_matrix_columns(FILE *f, char which, const c2g_real *m)
+{
+    char name[2];
+    name[0] = which, name[1] = '\0';
+    c2g__matrix(f, name, m, 1);
+}
+
+void c2g_write_model_matrix(FILE *f, const c2g_real *m) { c2g__matrix(f, "model", m, 0); }
+
+void c2g_write_model_matrix_columns(FILE *f, const c2g_real *m)
+{
+    c2g__matrix(f, "model", m, 1);
+}
+
+void c2g_write_clip(FILE *f, int t, const c2g_real *clip)
+{
+    c2g__piece(f, 0);
     fprintf(f, "clip %d", t);
     c2g__numbers(f, clip, 12);
 }
 
 void c2g_write_tri(FILE *f, int t, const c2g_real *corners, int dims)
 {
+    c2g__piece(f, 1);
     fprintf(f, "tri %d", t);
     c2g__numbers(f, corners, 3 * dims);
 }
 
 void c2g_write_poly(FILE *f, int t, int k, const c2g_real *corners, int dims)
 {
+    c2g__piece(f, 1);
     fprintf(f, "poly %d %d", t, k);
     c2g__numbers(f, corners, k * dims);
 }
 
-void c2g_write_end(FILE *f) { fputs("end\n", f); }
+void c2g_write_triangle(FILE *f, int t, const c2g_real *clip, const c2g_real *corners, int k,
+                        int dims)
+{
+    c2g__piece(f, 0);    /* the program handled this triangle: its 2D output is given */
+    if (clip) c2g_write_clip(f, t, clip);
+    if (!corners || k < 3) return;
+    if (k == 3) c2g_write_tri(f, t, corners, dims);
+    else c2g_write_poly(f, t, k, corners, dims);
+}
+
+void c2g_write_end(FILE *f)
+{
+    if (f == c2g__trace && c2g__output) fprintf(f, "drawn %ld\n", c2g__pieces);
+    if (f == c2g__trace) c2g__trace = NULL;
+    fputs("end\n", f);
+}
 
 #ifdef __cplusplus
 }

@@ -16,11 +16,12 @@ The Python twin of close2gl_trace.h, standard library only: copy this file next 
         t.window(640, 480)
         t.camera(c, u, v, n, hfov, vfov, near, far)
         t.matrix("M", M)                # 16 numbers row by row, or 4 rows of 4
-        t.clip(0, [(x0, y0, z0, w0), (x1, y1, z1, w1), (x2, y2, z2, w2)])
-        t.tri(0, [(x0, y0, z0), (x1, y1, z1), (x2, y2, z2)])
-        t.end()
+        for i in range(len(triangles)):  # one call per mesh triangle: its clip line, and
+            t.triangle(i, clip[i], corners[i] if drawn[i] else None)  # what was drawn of it
+        t.end()                         # writes "drawn N" (the tri and poly lines), then "end"
 
 Numbers are written with repr(), the shortest text that reads back as the very same float.
+Matrices and corners may be lists, tuples or numpy arrays.
 """
 
 import math
@@ -247,6 +248,8 @@ class TraceWriter:
 
     def __init__(self, file):
         self.file = file
+        self.pieces = 0  # the tri and poly lines written, for `drawn N`
+        self.output = False  # whether any clip, tri or poly line says the 2D output is given
         file.write("close2gl-trace 1\n")
 
     def _line(self, head, numbers=()):
@@ -266,45 +269,70 @@ class TraceWriter:
     def ortho2d(self, left, right, bottom, top):
         self._line("ortho2d", (left, right, bottom, top))
 
+    def ortho2d_ndc(self):
+        """NDC output (the GPU does the viewport): ortho2d -1 1 -1 1."""
+        self.ortho2d(-1, 1, -1, 1)
+
     def camera(self, position, u, v, n, hfov, vfov, near, far):
         """The eight camera lines."""
         for key, value in (("position", position), ("u", u), ("v", v), ("n", n), ("hfov", [hfov]),
                            ("vfov", [vfov]), ("near", [near]), ("far", [far])):
             self._line("camera " + key, value)
 
-    def culling(self, culling):
-        assert culling in _CHOICES["culling"]
-        self._line("culling " + culling)
+    def culling(self, culling, space=None):
+        """culling "off", "ccw" or "cw"; space None (as seen on screen), "ndc" or "window"."""
+        assert culling in _CHOICES["culling"] and space in (None, "ndc", "window")
+        self._line("culling " + culling + (f" {space}" if space and culling != "off" else ""))
 
     def clipping(self, clipping):
-        assert clipping in _CHOICES["clipping"]
+        """clipping "simple", "full", "none", "simple near_far" or "full near_far"."""
+        assert clipping in _CHOICES["clipping"] + ("simple near_far", "full near_far")
         self._line("clipping " + clipping)
 
     def mode(self, mode):
         assert mode in _CHOICES["mode"]
         self._line("mode " + mode)
 
-    def matrix(self, which, m):
-        """which: "M", "P" or "V"; m: 16 numbers row by row, or 4 rows of 4 (a 4x4 numpy array
-        is rows; a column-major one, as OpenGL and glm keep them, must be transposed first)."""
-        assert which in ("M", "P", "V") and len(_flat(m)) == 16
-        self._line("matrix " + which, m)
+    def matrix(self, which, m, columns=False):
+        """which: "M", "P", "V" or "model" (the model matrix, applied before M); m: 16 numbers or
+        4 rows of 4, row by row (a 4x4 numpy array is rows); columns=True for one kept column by
+        column, as OpenGL and glm keep them (PyGLM's matrices, a flat glGet array)."""
+        flat = _flat(m)
+        assert which in ("M", "P", "V", "model") and len(flat) == 16
+        if columns:
+            flat = [flat[4 * (i % 4) + i // 4] for i in range(16)]
+        self._line("matrix " + which, flat)
 
     def clip(self, t, corners):
         """Mesh triangle t's corners in clip coordinates: 12 numbers, or 3 (x, y, z, w)."""
         assert len(_flat(corners)) == 12
+        self.output = True
         self._line(f"clip {int(t)}", corners)
 
     def tri(self, t, corners):
         """A drawn 2D triangle: 3 corners (x, y) or (x, y, z NDC depth), or 6 or 9 numbers."""
         assert len(_flat(corners)) in (6, 9)
+        self.output, self.pieces = True, self.pieces + 1
         self._line(f"tri {int(t)}", corners)
 
     def poly(self, t, corners):
         """A drawn polygon: a list of K >= 3 corners (x, y) or (x, y, z)."""
         k, flat = len(corners), _flat(corners)
         assert k >= 3 and len(flat) in (2 * k, 3 * k)
+        self.output, self.pieces = True, self.pieces + 1
         self._line(f"poly {int(t)} {k}", flat)
 
+    def triangle(self, t, clip=None, corners=None):
+        """Mesh triangle t in one call: its clip line (when clip is given), then what was drawn
+        of it: corners None (not drawn), 3 corners (a tri line) or more (a poly line)."""
+        self.output = True
+        if clip is not None:
+            self.clip(t, clip)
+        if corners is not None:
+            (self.tri if len(corners) == 3 else self.poly)(t, corners)
+
     def end(self):
+        """`drawn N` when the trace gave its 2D output (any clip, tri or poly line), then `end`."""
+        if self.output:
+            self._line(f"drawn {self.pieces}")
         self._line("end")

@@ -1,6 +1,7 @@
 //! The student program of `examples/trace/` (`pipeline.c`: the assignment's pipeline writing a
 //! close2gl trace), compiled with the system's C compiler as a test needs it: correct, or with
-//! catalogue mistakes and variants switched on.
+//! catalogue mistakes and variants switched on; and the corpus's C and C++ programs
+//! (`examples/corpus/`), compiled the same way.
 
 use std::path::{Path, PathBuf};
 use std::process::Command;
@@ -31,18 +32,46 @@ pub fn compile_pipeline(dir: &Path, name: &str, flags: &[&str]) -> PathBuf {
 /// Compiles the C99 file `source` with `flags` into the program `out` (warnings are errors),
 /// as [`compile_pipeline`] does: for the programs a test writes itself (a hostile one, say).
 pub fn compile_c(source: &Path, out: &Path, flags: &[&str]) -> PathBuf {
-    let compiled = Command::new("cc")
-        .args(["-std=c99", "-O2", "-Wall", "-Wextra", "-Werror"])
+    compile(
+        "cc",
+        &["-std=c99", "-O2", "-Wall", "-Wextra", "-Werror"],
+        source,
+        out,
+        flags,
+    )
+}
+
+/// Compiles the C++17 file `source` with `flags` into the program `out` (warnings are errors),
+/// with the system's C++ compiler (`c++`; CI installs g++).
+pub fn compile_cpp(source: &Path, out: &Path, flags: &[&str]) -> PathBuf {
+    compile(
+        "c++",
+        &["-std=c++17", "-O2", "-Wall", "-Wextra", "-Werror"],
+        source,
+        out,
+        flags,
+    )
+}
+
+fn compile(
+    compiler: &str,
+    standard: &[&str],
+    source: &Path,
+    out: &Path,
+    flags: &[&str],
+) -> PathBuf {
+    let compiled = Command::new(compiler)
+        .args(standard)
         .args(flags)
         .arg("-o")
         .arg(out)
         .arg(source)
         .arg("-lm")
         .output()
-        .expect("a C compiler (cc) on PATH");
+        .unwrap_or_else(|e| panic!("a compiler ({compiler}) on PATH: {e}"));
     assert!(
         compiled.status.success(),
-        "cc {flags:?} {} failed:\n{}",
+        "{compiler} {flags:?} {} failed:\n{}",
         source.display(),
         String::from_utf8_lossy(&compiled.stderr)
     );
