@@ -60,12 +60,12 @@ fn unknown_keys_are_errors() {
         (
             plus("color 1 0 0"),
             "t.trace:11: expected a trace line (model, triangles, window, ortho2d, camera, \
-             culling, clipping, mode, matrix, clip, tri, poly or end), found 'color 1 0 0'",
+             culling, clipping, mode, matrix, clip, tri, poly, drawn or end), found 'color 1 0 0'",
         ),
         (
             plus("lookat 0 0 0"),
             "t.trace:11: expected a trace line (model, triangles, window, ortho2d, camera, \
-             culling, clipping, mode, matrix, clip, tri, poly or end), found 'lookat 0 0 0'",
+             culling, clipping, mode, matrix, clip, tri, poly, drawn or end), found 'lookat 0 0 0'",
         ),
         (
             plus("camera framed"),
@@ -129,12 +129,12 @@ fn missing_and_extra_fields_are_errors() {
         ),
         (
             plus("matrix Q 1 0 0 0 0 1 0 0 0 0 1 0 0 0 0 1"),
-            "t.trace:11: expected 'matrix M|P|V m00 m01 m02 m03 m10 … m33', \
+            "t.trace:11: expected 'matrix M|P|V|model m00 m01 m02 m03 m10 … m33', \
              found 'matrix Q 1 0 0 0 0 1 0 0 0 0 1 0 0 0 0 1'",
         ),
         (
             plus("matrix M 1 0 0 0 0 1 0 0 0 0 1 0 0 0 0"),
-            "t.trace:11: expected 'matrix M|P|V m00 m01 m02 m03 m10 … m33', \
+            "t.trace:11: expected 'matrix M|P|V|model m00 m01 m02 m03 m10 … m33', \
              found 'matrix M 1 0 0 0 0 1 0 0 0 0 1 0 0 0 0'",
         ),
         (
@@ -224,7 +224,7 @@ fn numbers_are_as_printf_prints_them() {
         ),
         (
             plus("matrix P 1 0 0 0 0 1 0 0 0 0 1 . 0 0 0 1"),
-            "t.trace:11: expected a number for m23 in 'matrix M|P|V m00 m01 m02 m03 m10 … m33', \
+            "t.trace:11: expected a number for m23 in 'matrix M|P|V|model m00 m01 m02 m03 m10 … m33', \
              found '.'",
         ),
         (
@@ -447,6 +447,44 @@ fn errors_quote_long_or_strange_lines_on_one_line() {
     assert_eq!(
         error,
         "t.trace:11: expected a trace line (model, triangles, window, ortho2d, camera, culling, \
-         clipping, mode, matrix, clip, tri, poly or end), found 'color??[31m red'"
+         clipping, mode, matrix, clip, tri, poly, drawn or end), found 'color??[31m red'"
     );
+}
+
+#[test]
+fn the_additions_within_version_1_are_read_and_their_faults_named() {
+    let read = |lines: &str| close2gl_trace::parse_trace(&plus(lines), "t.trace").unwrap();
+    let trace = read("culling cw ndc\nclipping full near_far\ndrawn 0");
+    assert_eq!(trace.drawn, Some((0, 13)));
+    assert!(trace.gives_output());
+    check(&[
+        (
+            plus("tri 0 0 0 1 0 0 1\ndrawn 2"),
+            "t.trace:12: expected 'drawn 1' (the trace has 1 'tri' and 'poly' lines), \
+             found 'drawn 2'",
+        ),
+        (
+            plus("culling off ndc"),
+            "t.trace:11: expected 'culling ccw|cw ndc|window', found 'culling off ndc'",
+        ),
+        (
+            plus("culling ccw screen"),
+            "t.trace:11: expected 'culling ccw|cw ndc|window', found 'culling ccw screen'",
+        ),
+        (
+            plus("clipping none near_far"),
+            "t.trace:11: expected 'clipping simple|full near_far', found 'clipping none near_far'",
+        ),
+        (
+            plus("drawn -1"),
+            "t.trace:11: expected a non-negative integer for N in 'drawn N', found '-1'",
+        ),
+    ]);
+}
+
+#[test]
+fn a_scene_does_not_say_where_a_program_culls() {
+    let scene = format!("{}culling ccw ndc\n", common::SCENE);
+    let error = common::scene_error(&scene);
+    assert!(error.contains("expected 'culling off|ccw|cw'"), "{error}");
 }

@@ -127,6 +127,7 @@ fn legend() -> String {
         Kind::NotDrawn,
         Kind::FrontCulled,
         Kind::BackDrawn,
+        Kind::InsideNotDrawn,
         Kind::Moved,
         Kind::Depth,
     ];

@@ -68,6 +68,9 @@ pub enum Kind {
     FrontCulled,
     /// Inside the volume and back-facing (culled by close2gl); the trace drew it.
     BackDrawn,
+    /// Inside the volume with culling off; the trace drew nothing (it culls anyway, or drops
+    /// triangles by a rule of its own).
+    InsideNotDrawn,
     /// Both drew it, in different places or shapes.
     Moved,
     /// Both drew it in the same place, at different depths.
@@ -83,6 +86,7 @@ impl Kind {
             Kind::NotDrawn => "not_drawn",
             Kind::FrontCulled => "front_culled",
             Kind::BackDrawn => "back_drawn",
+            Kind::InsideNotDrawn => "inside_not_drawn",
             Kind::Moved => "moved",
             Kind::Depth => "depth",
         }
@@ -92,7 +96,7 @@ impl Kind {
         match self {
             Kind::ClipCoordinates => Stage::Clip,
             Kind::DrawnBehindEye | Kind::DrawnOutside | Kind::NotDrawn => Stage::Clipping,
-            Kind::FrontCulled | Kind::BackDrawn => Stage::Culling,
+            Kind::FrontCulled | Kind::BackDrawn | Kind::InsideNotDrawn => Stage::Culling,
             Kind::Moved => Stage::Window,
             Kind::Depth => Stage::Depth,
         }
@@ -411,6 +415,12 @@ pub fn judge(
                      the trace drew nothing"
                 );
                 differs(Kind::FrontCulled, detail, false, 0)
+            } else if inside && !ours.near_edge_on {
+                let detail = format!(
+                    "triangle {t}: close2gl drew it (inside the view volume, culling off); the \
+                     trace drew nothing"
+                );
+                differs(Kind::InsideNotDrawn, detail, false, 0)
             } else if !(inside && ours.near_edge_on) {
                 let detail = format!(
                     "triangle {t}: close2gl {} it; the trace drew nothing",

@@ -3,8 +3,8 @@
 //! mistake is named only when it reproduces the trace; when none does, the first difference is
 //! stated as precisely as the data allows.
 
-use close2gl_core::Mesh;
-use close2gl_pipeline::mistakes::{Mistakes, Outcome, Program};
+use close2gl_core::{Mesh, Mistake};
+use close2gl_pipeline::mistakes::{ClipPlanes, Mistakes, Outcome, Program};
 use rayon::prelude::*;
 
 use super::compare::{self, Comparison, Kind, Stage, number};
@@ -16,7 +16,7 @@ use crate::format::Trace;
 pub fn diagnose(mesh: &Mesh, trace: &Trace) -> Vec<Mistakes> {
     let pieces = compare::pieces_by_triangle(trace, mesh.triangles.len());
     let reproduces = |set: &Mistakes| reproduces(&program_for(trace, *set), mesh, trace, &pieces);
-    let candidates = Mistakes::singles_and_pairs();
+    let candidates = candidates(trace);
     let (singles, pairs): (Vec<Mistakes>, Vec<Mistakes>) =
         candidates.into_iter().partition(|s| s.iter().count() == 1);
     let found: Vec<Mistakes> = singles.into_par_iter().filter(reproduces).collect();
@@ -24,6 +24,17 @@ pub fn diagnose(mesh: &Mesh, trace: &Trace) -> Vec<Mistakes> {
         return found;
     }
     pairs.into_par_iter().filter(reproduces).collect()
+}
+
+/// The sets a trace can be diagnosed with: every single and pair, but those that contradict
+/// what it declares. A program that says it leaves x and y to the rasteriser (`near_far`) does
+/// not test x/w and y/w (`divide_before_clip`).
+fn candidates(trace: &Trace) -> Vec<Mistakes> {
+    let near_far = trace.planes == ClipPlanes::NearFar;
+    Mistakes::singles_and_pairs()
+        .into_iter()
+        .filter(|set| !(near_far && set.has(Mistake::DivideBeforeClip)))
+        .collect()
 }
 
 /// Whether `program` reproduces the trace: what [`compare::compare`] would say agrees, found
@@ -50,14 +61,62 @@ fn reproduces(program: &Program, mesh: &Mesh, trace: &Trace, pieces: &[Vec<usize
     })
 }
 
-/// The first difference, in words a student can act on, for a trace no mistake explains.
+/// For a trace no set reproduces whole: the single mistakes that explain some of its differing
+/// stages (they agree there with the mistake made) and change nothing else, keeping only those
+/// whose stages no other explains more of.
+pub fn partial(mesh: &Mesh, trace: &Trace, comparison: &Comparison) -> Vec<(Mistakes, Vec<Stage>)> {
+    let differing: Vec<Stage> = comparison
+        .stages
+        .iter()
+        .filter(|s| s.status == compare::Status::Differs)
+        .map(|s| s.stage)
+        .collect();
+    let singles = candidates(trace)
+        .into_iter()
+        .filter(|s| s.iter().count() == 1);
+    let explaining: Vec<(Mistakes, Vec<Stage>)> = singles
+        .par_bridge()
+        .filter_map(|set| {
+            let program = program_for(trace, set);
+            let expected = program.frame(mesh);
+            let with = compare::compare(&program, mesh, trace, &expected);
+            let differs = |s: Stage| with.stage(s).status == compare::Status::Differs;
+            let new = with
+                .stages
+                .iter()
+                .any(|s| differs(s.stage) && !differing.contains(&s.stage));
+            let explained: Vec<Stage> =
+                differing.iter().copied().filter(|&s| !differs(s)).collect();
+            (!new && !explained.is_empty()).then_some((set, explained))
+        })
+        .collect();
+    let mut kept: Vec<(Mistakes, Vec<Stage>)> = explaining
+        .iter()
+        .filter(|(_, stages)| {
+            !explaining.iter().any(|(_, other)| {
+                other.len() > stages.len() && stages.iter().all(|s| other.contains(s))
+            })
+        })
+        .cloned()
+        .collect();
+    kept.sort_by_key(|(set, _)| set.iter().next().map(|m| m as usize));
+    kept
+}
+
+/// The first difference, in words a student can act on, for a trace no mistake explains;
+/// `explained`: stages a named mistake explains, left out.
 pub fn unexplained(
     program: &Program,
     mesh: &Mesh,
     comparison: &Comparison,
     expected: &[Outcome],
+    explained: &[Stage],
 ) -> String {
-    let Some(first) = comparison.first_difference() else {
+    let first = comparison
+        .stages
+        .iter()
+        .find(|s| s.status == compare::Status::Differs && !explained.contains(&s.stage));
+    let Some(first) = first else {
         return "the trace agrees".into();
     };
     let of_stage: Vec<(Kind, &[usize])> = comparison
@@ -98,6 +157,10 @@ pub fn unexplained(
         Kind::FrontCulled => (
             "front-facing, inside the view volume, was not drawn",
             "front-facing, inside the view volume, were not drawn",
+        ),
+        Kind::InsideNotDrawn => (
+            "inside the view volume, with culling off, was not drawn",
+            "inside the view volume, with culling off, were not drawn",
         ),
         Kind::BackDrawn => (
             "back-facing, inside the view volume, was drawn",

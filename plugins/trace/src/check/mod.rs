@@ -30,6 +30,9 @@ pub struct Report {
     pub unexplained: Option<String>,
     /// When several sets reproduce the trace: what would tell them apart.
     pub apart: Vec<String>,
+    /// When none reproduces it whole: the mistakes that explain some of its differing stages,
+    /// each with those stages.
+    pub partial: Vec<(Mistakes, Vec<Stage>)>,
 }
 
 impl Report {
@@ -39,9 +42,14 @@ impl Report {
 
     /// The catalogue ids named, each once, in the catalogue's order.
     pub fn mistakes(&self) -> Vec<&'static str> {
-        let all = self.diagnoses.iter().fold(Mistakes::NONE, |all, set| {
-            set.iter().fold(all, |a, m| a.with(m))
-        });
+        let partial = self.partial.iter().map(|(set, _)| set);
+        let all = self
+            .diagnoses
+            .iter()
+            .chain(partial)
+            .fold(Mistakes::NONE, |all, set| {
+                set.iter().fold(all, |a, m| a.with(m))
+            });
         all.iter().map(|m| m.name()).collect()
     }
 }
@@ -155,6 +163,7 @@ pub fn compare_only(mesh: &Mesh, trace: &Trace) -> Result<Report, FormatError> {
         diagnoses: Vec::new(),
         unexplained: None,
         apart: Vec::new(),
+        partial: Vec::new(),
     })
 }
 
@@ -167,12 +176,19 @@ pub fn explain(report: &mut Report, mesh: &Mesh, trace: &Trace) {
     report.diagnoses = diagnose::diagnose(mesh, trace);
     report.apart = apart::tell_apart(trace, &report.diagnoses);
     if report.diagnoses.is_empty() {
+        report.partial = diagnose::partial(mesh, trace, &report.comparison);
+        let explained: Vec<Stage> = report
+            .partial
+            .iter()
+            .flat_map(|(_, stages)| stages.iter().copied())
+            .collect();
         let program = program_for(trace, Mistakes::NONE);
         report.unexplained = Some(diagnose::unexplained(
             &program,
             mesh,
             &report.comparison,
             &report.expected,
+            &explained,
         ));
     }
 }

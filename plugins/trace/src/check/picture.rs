@@ -24,6 +24,7 @@ pub fn kind_color(kind: Kind) -> [u8; 4] {
         Kind::NotDrawn => [240, 200, 40, 255],
         Kind::FrontCulled => [80, 130, 240, 255],
         Kind::BackDrawn => [60, 210, 220, 255],
+        Kind::InsideNotDrawn => [40, 90, 200, 255],
         Kind::Moved => [240, 120, 30, 255],
         Kind::Depth => [150, 90, 220, 255],
     }

@@ -18,7 +18,6 @@ pub fn text(report: &Report, trace_name: &str) -> String {
         false => "differs from close2gl's pipeline",
     };
     out.push_str(&format!("{trace_name}: {verdict}\n"));
-    let first = c.first_difference().map(|s| s.stage);
     for s in &c.stages {
         let counts = match s.status {
             Status::NotChecked => s.note.clone().unwrap_or_default(),
@@ -29,7 +28,7 @@ pub fn text(report: &Report, trace_name: &str) -> String {
             s.stage.name(),
             s.status.name()
         ));
-        if Some(s.stage) == first {
+        if s.status == Status::Differs {
             for d in &s.details {
                 out.push_str(&format!("      {d}\n"));
             }
@@ -63,6 +62,14 @@ pub fn text(report: &Report, trace_name: &str) -> String {
                     out.push_str(&format!("  to tell them apart: {}\n", hints.join("; ")));
                 }
             }
+        }
+        for (set, stages) in &report.partial {
+            let stages: Vec<&str> = stages.iter().map(|s| s.name()).collect();
+            out.push_str(&format!(
+                "mistake: {} explains {}; the rest is unexplained\n",
+                set.names(),
+                stages.join(", ")
+            ));
         }
         if let Some(unexplained) = &report.unexplained {
             out.push_str(&format!("{unexplained}\n"));
@@ -118,6 +125,10 @@ pub fn json(report: &Report) -> Value {
         "mistakes": report.mistakes(),
         "diagnoses": diagnoses,
         "tell_apart": report.apart,
+        "explains": report.partial.iter().map(|(set, stages)| json!({
+            "mistakes": set.iter().map(|m| m.name()).collect::<Vec<_>>(),
+            "stages": stages.iter().map(|s| s.name()).collect::<Vec<_>>(),
+        })).collect::<Vec<_>>(),
         "unexplained": report.unexplained,
         "stages": stages,
         "triangles": triangles,
