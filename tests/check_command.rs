@@ -117,6 +117,8 @@ fn traces_that_lie_stop_with_a_line_numbered_error() {
     let repeated = |l: &mut Vec<String>| {
         let line = l[tri].clone();
         l.splice(tri..tri, std::iter::repeat_n(line, 64));
+        // The helper's count would no longer match: that is another error.
+        l.retain(|s| !s.starts_with("drawn "));
     };
     let cases: [(&str, String, &str); 8] = [
         ("truncated", with(&cut), "expected"),

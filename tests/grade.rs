@@ -108,7 +108,9 @@ fn fails_on_cube(m: Mistake, line: &str, name: &str) -> bool {
     };
     let inside = name.ends_with("-inside");
     let culling = match m {
-        CullingInverted => name.starts_with("culling-") && !name.contains("-off-"),
+        CullingInverted | NeverCulls => name.starts_with("culling-") && !name.contains("-off-"),
+        // Counter-clockwise front whatever is declared: wrong only where cw is.
+        CullingIgnoresFrontFace => name.starts_with("culling-cw-"),
         // Only a side face seen from outside has n square to its normal, which the view-axis
         // test keeps and ccw culls; with cw both keep it, and from inside it is clipped.
         CullingByViewAxis => name == "culling-ccw-outside",

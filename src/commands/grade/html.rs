@@ -10,6 +10,7 @@ use close2gl_trace::rubric::MAX_TOTAL;
 
 use super::report::failure_lines;
 use super::score::Grade;
+use super::to_fix;
 
 const STYLE: &str = "body{font:14px/1.4 system-ui,sans-serif;margin:2em;color:#222;max-width:1200px}\
 table{border-collapse:collapse}td,th{padding:.25em .8em;border-bottom:1px solid #ddd;text-align:left;vertical-align:top}\
@@ -30,6 +31,11 @@ pub fn page(grade: &Grade, title: &str, command: &str) -> String {
         escape(title),
         grade.total,
         escape(command)
+    );
+    let _ = write!(
+        out,
+        "<h2>To fix</h2><pre>{}</pre>",
+        escape(&to_fix::lines(grade).join("\n"))
     );
     rubric_table(&mut out, grade);
     let failing: Vec<_> = grade

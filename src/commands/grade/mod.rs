@@ -12,6 +12,7 @@ mod html;
 mod report;
 mod scene_run;
 mod score;
+mod to_fix;
 
 use std::panic::AssertUnwindSafe;
 use std::path::{Path, PathBuf};

@@ -8,6 +8,7 @@ use close2gl_trace::rubric::MAX_TOTAL;
 use serde_json::{Value, json};
 
 use super::score::{Grade, LineScore};
+use super::to_fix;
 
 /// The rubric table: each line's points of its points and scenes passed of its scenes; under
 /// a failing line, its first failing scene with why, check's first difference and the
@@ -16,6 +17,9 @@ pub fn table(grade: &Grade, command: &str) -> String {
     let mut out = String::new();
     // Writing to a String cannot fail.
     let _ = writeln!(out, "close2gl grade: {command}");
+    for line in to_fix::lines(grade) {
+        let _ = writeln!(out, "{line}");
+    }
     let _ = writeln!(out, "{:<40} {:>7} {:>9}", "line", "points", "scenes");
     for line in &grade.lines {
         let points = format!("{}/{}", line.points, line.line.max_points());
@@ -106,9 +110,18 @@ pub fn json(grade: &Grade) -> Value {
             })
         })
         .collect();
+    let bugs: Vec<Value> = to_fix::bugs(grade)
+        .iter()
+        .map(|bug| {
+            let lines: Vec<&str> = bug.lines.iter().map(|l| l.id()).collect();
+            json!({"cause": bug.cause, "lines": lines, "points_lost": bug.points_lost,
+                   "first_scene": bug.first_scene})
+        })
+        .collect();
     json!({
         "total": grade.total,
         "max": MAX_TOTAL,
+        "to_fix": bugs,
         "lines": lines,
         "scenes": scenes,
     })

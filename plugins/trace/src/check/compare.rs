@@ -8,6 +8,7 @@ use glam::{DMat4, DVec2, DVec4};
 
 use close2gl_pipeline::rounding::{self, BOUND, PRINTED, clip_error, clip_terms};
 
+use super::own_input::own_program;
 use super::region;
 use crate::format::Trace;
 
@@ -220,6 +221,30 @@ pub fn compare(program: &Program, mesh: &Mesh, trace: &Trace, expected: &[Outcom
     stages.extend(matrices(program, trace));
     stages.push(clip(program, mesh, trace, &mut mark));
     stages.extend(drawn(program, trace, expected, &mut mark));
+    triangles.sort_by_key(|(kind, _)| *kind);
+    Comparison { stages, triangles }
+}
+
+/// Compares `trace` with `program`, each stage on the program's own input to it: the clip
+/// coordinates against its own P·M (when it gives both), clipping, culling and the window from
+/// its own clip coordinates and V ([`own_program`]). Two independent bugs then show at once,
+/// each at its stage, rather than the first hiding the second under its consequences.
+pub fn compare_own_input(program: &Program, mesh: &Mesh, trace: &Trace) -> Comparison {
+    let own = own_program(program, mesh, trace, true);
+    let expected = own.frame(mesh);
+    let mut own_product = *program;
+    if let Some((p, m)) = trace.p.zip(trace.m) {
+        own_product.clip_matrix = p * m;
+    }
+    let mut triangles: Vec<(Kind, Vec<usize>)> = Vec::new();
+    let mut mark = |kind: Kind, t: usize| match triangles.iter_mut().find(|(k, _)| *k == kind) {
+        Some((_, list)) => list.push(t),
+        None => triangles.push((kind, vec![t])),
+    };
+    let mut stages = vec![camera(program, trace)];
+    stages.extend(matrices(program, trace));
+    stages.push(clip(&own_product, mesh, trace, &mut mark));
+    stages.extend(drawn(&own, trace, &expected, &mut mark));
     triangles.sort_by_key(|(kind, _)| *kind);
     Comparison { stages, triangles }
 }

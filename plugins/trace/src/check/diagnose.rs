@@ -77,9 +77,7 @@ pub fn partial(mesh: &Mesh, trace: &Trace, comparison: &Comparison) -> Vec<(Mist
     let explaining: Vec<(Mistakes, Vec<Stage>)> = singles
         .par_bridge()
         .filter_map(|set| {
-            let program = program_for(trace, set);
-            let expected = program.frame(mesh);
-            let with = compare::compare(&program, mesh, trace, &expected);
+            let with = compare::compare_own_input(&program_for(trace, set), mesh, trace);
             let differs = |s: Stage| with.stage(s).status == compare::Status::Differs;
             let new = with
                 .stages

@@ -5,6 +5,7 @@
 pub mod apart;
 pub mod compare;
 pub mod diagnose;
+pub mod own_input;
 pub mod picture;
 pub mod region;
 pub mod report;
@@ -156,7 +157,7 @@ pub fn compare_only(mesh: &Mesh, trace: &Trace) -> Result<Report, FormatError> {
     fits(trace, mesh)?;
     let program = program_for(trace, Mistakes::NONE);
     let expected = program.frame(mesh);
-    let comparison = compare::compare(&program, mesh, trace, &expected);
+    let comparison = compare::compare_own_input(&program, mesh, trace);
     Ok(Report {
         comparison,
         expected,

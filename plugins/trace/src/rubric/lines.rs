@@ -104,6 +104,8 @@ impl LineId {
                 M::CullingInverted,
                 M::CullingByFileNormals,
                 M::CullingByViewAxis,
+                M::NeverCulls,
+                M::CullingIgnoresFrontFace,
             ]),
             LineId::Hfov | LineId::Vfov => Some(&[
                 M::FovNotHalved,

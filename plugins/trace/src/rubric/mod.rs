@@ -8,7 +8,6 @@
 pub mod expected_motion;
 pub mod judge;
 pub mod lines;
-pub mod own;
 pub mod scenes;
 
 pub use judge::{Turn, Verdict, judge, settle_rotations};

@@ -6,13 +6,15 @@ use glam::{DMat4, DVec2};
 
 use super::{Judge, Verdict, drew_nothing, required, stage_verdict, stages_agree};
 use crate::check::compare::{self, Stage, number};
-use crate::rubric::own::own_program;
+use crate::check::own_input::own_program;
 
 /// How far a frame's width in NDC (where the window is 2 wide) may be off.
 const WIDTH: f64 = 1e-3;
 
 impl Judge<'_> {
-    /// The 2D output agrees with close2gl's: the camera, clipping, culling and window stages.
+    /// The 2D output agrees with close2gl's, as a picture: the camera, clipping, culling and
+    /// window stages of the whole chain from the camera (not on the program's own matrices,
+    /// which check's report judges by: a picture drawn with a wrong P is a wrong picture).
     pub(super) fn output_right(&self) -> Verdict {
         let stages = [
             Stage::Camera,
@@ -20,7 +22,8 @@ impl Judge<'_> {
             Stage::Culling,
             Stage::Window,
         ];
-        stages_agree(&self.report.comparison, &stages)
+        let whole = compare::compare(&self.ours, self.mesh, self.trace, &self.report.expected);
+        stages_agree(&whole, &stages)
     }
     /// Stages of check recomputed on the program's own geometry (own V: `own_viewport`).
     pub(super) fn own_stages(&self, stages: &[Stage], own_viewport: bool) -> Verdict {
@@ -82,10 +85,17 @@ impl Judge<'_> {
         }
     }
 
+    /// V, and where the 2D output lands through the declared viewport. A program whose output
+    /// is NDC (`ortho2d -1 1 -1 1`: the GPU does the viewport) has V the identity by its
+    /// declaration, and need not write it.
     pub(super) fn resize(&self) -> Verdict {
-        let v = required(self.report.comparison.stage(Stage::V));
-        if !v.passed {
-            return v;
+        let o = self.trace.ortho2d;
+        let ndc_output = [o.left, o.right, o.bottom, o.top] == [-1.0, 1.0, -1.0, 1.0];
+        if !(ndc_output && self.trace.v.is_none()) {
+            let v = required(self.report.comparison.stage(Stage::V));
+            if !v.passed {
+                return v;
+            }
         }
         self.own_stages(&[Stage::Window], false)
     }

@@ -1,8 +1,10 @@
 //! How each line judges one scene's trace, on what the line is about and nothing else:
 //!
-//! - every line: the trace declares what the scene set (window, view volume, culling, clipping
-//!   `simple` or the better `full`), and, in a scene without motions, the camera stands where
-//!   the scene put it (position, v and n: a left-handed u is the camera stage's to find);
+//! - every line: the trace declares what the scene set (window, culling, clipping `simple` or
+//!   the better `full`), and, in a scene without motions, the camera stands where the scene put
+//!   it (position, v and n: a left-handed u is the camera stage's to find); the view volume
+//!   only where a line is about it (hfov and vfov for the pictures and their lines, near and
+//!   far for clipping, all for `synchronized`): the camera a trace declares is the one judged;
 //! - `points`, `wireframe`, `solid`: the trace's mode, and its 2D output (check's camera,
 //!   clipping, culling and window stages);
 //! - `translation`: the final camera moved along its own axis by the amount, axes unchanged,
@@ -10,7 +12,8 @@
 //!   the asked way by about the amount (straight or along an arc); `rotation`: the final axes
 //!   turned by the angle, by the right-hand rule or the other way round;
 //! - `culling`, `simple_clipping`: check's stage recomputed on the program's own geometry
-//!   ([`own`](super::own)), so that a wrong matrix costs its own line, not these;
+//!   ([`own_input`](crate::check::own_input)), so that a wrong matrix costs its own line, not
+//!   these;
 //! - `hfov`, `vfov`: P's first (second) row, and the width (height) in NDC of what the program
 //!   drew against close2gl's with the program's own M;
 //! - `resize`: check's V, and where the 2D output lands (the window stage) from the program's
@@ -108,7 +111,10 @@ struct Judge<'a> {
 impl Judge<'_> {
     fn line(&self, line: LineId) -> Verdict {
         let mode = matches!(line, LineId::Points | LineId::Wireframe | LineId::Solid);
-        if let Err(why) = self.declared(mode) {
+        if let Err(why) = self
+            .declared(mode)
+            .and_then(|()| self.volume_declared(line))
+        {
             return Verdict::fail(why);
         }
         if self.scene.motions.is_empty()
@@ -139,21 +145,6 @@ impl Judge<'_> {
                 trace.window.0, trace.window.1, scene.window.0, scene.window.1
             ));
         }
-        let (s, t) = (&self.start, &trace.camera);
-        for (name, want, found) in [
-            ("hfov", s.hfov, t.hfov),
-            ("vfov", s.vfov, t.vfov),
-            ("near", s.near, t.near),
-            ("far", s.far, t.far),
-        ] {
-            if (want - found).abs() > POSITION * want.abs() {
-                return Err(format!(
-                    "its camera {name} is {}, the scene's {}",
-                    number(found),
-                    number(want)
-                ));
-            }
-        }
         if trace.culling != scene.culling {
             return Err(format!(
                 "it declares culling {}, the scene culling {}",
@@ -178,6 +169,38 @@ impl Judge<'_> {
                 name(trace.mode),
                 name(scene.mode)
             ));
+        }
+        Ok(())
+    }
+
+    /// The view volume the trace declares is the scene's, as far as `line` is about it: the
+    /// trace's camera is the one judged, so a program that says honestly which hfov it drew
+    /// with loses the lines about that hfov (hfov, the pictures, synchronized) and no more; one
+    /// that says the scene's and drew with another is caught by its P or its output.
+    fn volume_declared(&self, line: LineId) -> Result<(), String> {
+        let (s, t) = (&self.start, &self.trace.camera);
+        let all = [
+            ("hfov", s.hfov, t.hfov),
+            ("vfov", s.vfov, t.vfov),
+            ("near", s.near, t.near),
+            ("far", s.far, t.far),
+        ];
+        let about: &[usize] = match line {
+            LineId::Points | LineId::Wireframe | LineId::Solid => &[0, 1],
+            LineId::Hfov => &[0],
+            LineId::Vfov => &[1],
+            LineId::SimpleClipping => &[2, 3],
+            LineId::Synchronized => &[0, 1, 2, 3],
+            _ => &[],
+        };
+        for &(name, want, found) in about.iter().map(|&i| &all[i]) {
+            if (want - found).abs() > POSITION * want.abs() {
+                return Err(format!(
+                    "it drew with its camera's {name} {}, the scene asks {}",
+                    number(found),
+                    number(want)
+                ));
+            }
         }
         Ok(())
     }

@@ -1,6 +1,7 @@
 //! The program's own geometry: close2gl's pipeline run from the clip coordinates and the
 //! viewport the program itself computed, so that a stage after them (clipping, culling, the
-//! window) is judged on what it was given. A wrong P then costs the fov lines, not culling.
+//! window) is judged on what it was given: a wrong P shows at P, and a culling mistake beside
+//! it still shows at culling (check), and costs the fov lines, not culling (grade).
 //!
 //! The clip coordinates come as one matrix: fitted to the trace's `clip` lines (least squares on
 //! the mesh's corners, kept only when it reproduces every line), else the trace's own P·M, else
