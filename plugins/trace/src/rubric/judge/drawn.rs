@@ -85,14 +85,13 @@ impl Judge<'_> {
         }
     }
 
-    /// V, and where the 2D output lands through the declared viewport. A program whose output
-    /// is NDC (`ortho2d -1 1 -1 1`: the GPU does the viewport) has V the identity by its
-    /// declaration, and need not write it.
+    /// V where the trace gives it, and where the 2D output lands through the declared
+    /// viewport. V is optional: a program that does not write it (one whose output is NDC,
+    /// `ortho2d -1 1 -1 1`, where the GPU does the viewport, or one that never built a
+    /// matrix for it) is judged on where its output lands.
     pub(super) fn resize(&self) -> Verdict {
-        let o = self.trace.ortho2d;
-        let ndc_output = [o.left, o.right, o.bottom, o.top] == [-1.0, 1.0, -1.0, 1.0];
-        if !(ndc_output && self.trace.v.is_none()) {
-            let v = required(self.report.comparison.stage(Stage::V));
+        if self.trace.v.is_some() {
+            let v = stage_verdict(self.report.comparison.stage(Stage::V));
             if !v.passed {
                 return v;
             }
