@@ -7,12 +7,14 @@ mod camera_moves;
 mod matrix_ratio;
 mod triangle_sizes;
 
-use close2gl_pipeline::mistakes::ProgramCamera;
+use close2gl_pipeline::mistakes::{Program, ProgramCamera};
+use glam::DMat4;
 
-use super::compare::number;
+use super::compare::{ALL_ROWS, Stage, StageResult, Status, V_ROWS, number};
+use crate::format::Trace;
 pub use camera_moves::{axes_after_move, travel};
 pub use matrix_ratio::matrix;
-pub use triangle_sizes::{Seen, on_screen, triangles};
+pub use triangle_sizes::{Seen, on_screen, seen, triangles};
 
 /// A ratio matches a value within this fraction of the value.
 const MATCH: f64 = 1e-4;
@@ -95,7 +97,11 @@ impl Values {
             };
             values.push((f64::from(d).to_radians().cos(), Family::Degrees, name));
         }
-        values.retain(|(v, _, _)| v.is_finite() && v.abs() > 1e-6);
+        // A ratio of equal fields of view is 1, which the fraction names alone.
+        values.retain(|(v, family, _)| {
+            let one = *family != Family::Fraction && (v.abs() - 1.0).abs() <= SAME;
+            v.is_finite() && v.abs() > 1e-6 && !one
+        });
         Self(values)
     }
 
@@ -147,6 +153,39 @@ impl Values {
             Named::Ambiguous => format!("≈ {}{words}", number(ratio)),
             Named::Unknown => format!("{}{words}", number(ratio)),
         }
+    }
+}
+
+/// The matrix clue of each matrix stage among `stages` (`program`'s matrices against the
+/// trace's).
+pub fn add_matrix_clues(stages: &mut [StageResult], program: &Program, trace: &Trace) {
+    for result in stages {
+        let (expected, rows) = match result.stage {
+            Stage::M => (program.m, ALL_ROWS),
+            Stage::P => (program.p, ALL_ROWS),
+            Stage::V => (program.v, V_ROWS),
+            _ => continue,
+        };
+        add_matrix_clue(result, expected, trace, rows);
+    }
+}
+
+/// Puts the matrix clue first in `result`'s details when it differs: `result` compares
+/// `expected` with the trace's matrix of its stage over `rows`. The first detail is what a
+/// one-line summary quotes, and the clue says more than any one entry.
+pub fn add_matrix_clue(result: &mut StageResult, expected: DMat4, trace: &Trace, rows: &[usize]) {
+    let found = match result.stage {
+        Stage::M => trace.m,
+        Stage::P => trace.p,
+        Stage::V => trace.v,
+        _ => None,
+    };
+    let Some(found) = found.filter(|_| result.status == Status::Differs) else {
+        return;
+    };
+    let values = Values::new(&trace.camera, trace.window);
+    if let Some(clue) = matrix(result.stage.name(), expected, found, rows, &values) {
+        result.details.insert(0, clue);
     }
 }
 
@@ -230,7 +269,10 @@ mod tests {
             is("sin 20°, half the vfov")
         );
         assert_eq!(named(-c25), is("−cos 25°, the pitch"));
-        assert_eq!(named(28f64.to_radians().cos()), is("cos 28°, half the hfov"));
+        assert_eq!(
+            named(28f64.to_radians().cos()),
+            is("cos 28°, half the hfov")
+        );
     }
 
     #[test]
@@ -290,6 +332,13 @@ mod tests {
             Values::new(&camera, window).ratio(c25),
             "0.9063 (= cos 25°, the pitch)"
         );
+    }
+
+    #[test]
+    fn equal_fields_of_view_do_not_name_1() {
+        let (mut camera, window) = pitched();
+        camera.vfov = camera.hfov;
+        assert_eq!(Values::new(&camera, window).name(-1.0), is("−1"));
     }
 
     #[test]

@@ -6,6 +6,7 @@ use close2gl_core::{FateKind, Mesh, Mistake};
 use close2gl_pipeline::mistakes::{Outcome, Program};
 use glam::{DMat4, DVec2, DVec4};
 
+use super::clues;
 use super::region::{self, Tolerance};
 use crate::format::Trace;
 
@@ -219,6 +220,7 @@ pub fn compare(program: &Program, mesh: &Mesh, trace: &Trace, expected: &[Outcom
     };
     let mut stages = vec![camera(program, trace)];
     stages.extend(matrices(program, trace));
+    clues::add_matrix_clues(&mut stages, program, trace);
     stages.push(clip(program, mesh, trace, &mut mark));
     stages.extend(drawn(program, trace, expected, &mut mark));
     triangles.sort_by_key(|(kind, _)| *kind);
@@ -228,15 +230,20 @@ pub fn compare(program: &Program, mesh: &Mesh, trace: &Trace, expected: &[Outcom
 /// The M, P and V stages (V's depth row is not compared: the format leaves it to the program).
 pub(super) fn matrices(program: &Program, trace: &Trace) -> [StageResult; 3] {
     [
-        matrix(Stage::M, program.m, trace.m, &[0, 1, 2, 3]),
-        matrix(Stage::P, program.p, trace.p, &[0, 1, 2, 3]),
-        matrix(Stage::V, program.v, trace.v, &[0, 1, 3]),
+        matrix(Stage::M, program.m, trace.m, ALL_ROWS),
+        matrix(Stage::P, program.p, trace.p, ALL_ROWS),
+        matrix(Stage::V, program.v, trace.v, V_ROWS),
     ]
 }
 
+/// The rows of M and P compared, and of V (its third, for depth, is the program's own).
+pub(super) const ALL_ROWS: &[usize] = &[0, 1, 2, 3];
+pub(super) const V_ROWS: &[usize] = &[0, 1, 3];
+
 pub(super) fn camera(program: &Program, trace: &Trace) -> StageResult {
     let mut result = StageResult::new(Stage::Camera);
-    result.checked = 1;
+    // Three lengths, three right angles and the handedness: each can differ once.
+    result.checked = 7;
     let c = &trace.camera;
     for (name, axis) in [("u", c.u), ("v", c.v), ("n", c.n)] {
         let length = axis.length();

@@ -84,7 +84,9 @@ pub fn axes_after_move(
     (!said.is_empty()).then(|| said.join("; "))
 }
 
+/// A vector as the report shows it; adding 0 makes a −0 a 0.
 fn vec3(p: DVec3) -> String {
+    let p = p + DVec3::ZERO;
     format!("({}, {}, {})", number(p.x), number(p.y), number(p.z))
 }
 

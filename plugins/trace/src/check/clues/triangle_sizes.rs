@@ -3,6 +3,7 @@
 //! the view volume). A rule of the program's own that decides small or border triangles
 //! differently shows as sizes or places they share.
 
+use close2gl_core::Mesh;
 use close2gl_pipeline::mistakes::{Outcome, Program};
 use glam::DVec2;
 
@@ -16,6 +17,17 @@ pub struct Seen {
     pub distances: [f64; 3],
     /// It touches a plane of the view volume.
     pub touches: bool,
+}
+
+/// Mesh triangle `t` as `program` sees it (`outcome`: what the program did with it); touching
+/// the border is being cut or removed by a plane of the view volume.
+pub fn seen(program: &Program, mesh: &Mesh, t: usize, outcome: &Outcome) -> Seen {
+    let eye = |i: u32| -(program.m * mesh.positions[i as usize].as_dvec3().extend(1.0)).z;
+    Seen {
+        pixels: on_screen(program, outcome),
+        distances: mesh.triangles[t].map(eye),
+        touches: outcome.fate.planes != 0,
+    }
 }
 
 /// `outcome`'s shape on screen in window pixels (see [`Seen::pixels`]).
