@@ -1,7 +1,10 @@
 //! check's clues on whole traces: a trace whose M rows are close2gl's scaled by cos 25° (the
 //! camera's pitch) is told so; a trace that leaves out one triangle is told its size and place;
-//! the camera stage counts the seven facts it checks; the grader's translation line says how far
-//! the camera moved and what happened to its axes.
+//! the camera stage counts the seven facts it checks, and no stage of any trace says more differ
+//! than it checked; the grader's translation line says how far the camera moved and what
+//! happened to its axes.
+
+mod common;
 
 use close2gl_core::{Mesh, ModelSource, PrimitiveParams};
 use close2gl_pipeline::mistakes::{self, Mistakes, ProgramCamera, System2d};
@@ -10,6 +13,7 @@ use close2gl_trace::check::{self, Stage, Status, report};
 use close2gl_trace::rubric::{self, LineId};
 use close2gl_trace::{CameraLines, Motion, SceneCamera, parse_trace};
 use glam::{DMat4, DVec3};
+use proptest::prelude::*;
 
 fn cube() -> Mesh {
     let source = ModelSource::File(asset("cube.in"));
@@ -240,4 +244,24 @@ fn a_move_tells_how_far_it_went_and_what_its_axes_did() {
         back.detail
     );
     assert!(translation(1.0, |axes| axes).passed);
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(64))]
+
+    /// Any trace that fits the cube, its clues included: no panic, and no stage counts more
+    /// differences than checks (the camera's once said "1 checked, 2 differ").
+    #[test]
+    fn no_stage_differs_more_than_it_checked(trace in common::trace()) {
+        let mut trace = trace;
+        trace.triangles = None;
+        trace.clip.retain(|c| c.triangle < 12);
+        trace.pieces.retain(|p| p.triangle < 12);
+        let Ok(report) = check::check(&cube(), &trace) else {
+            return Ok(());
+        };
+        for stage in &report.comparison.stages {
+            prop_assert!(stage.differing <= stage.checked, "{stage:?}");
+        }
+    }
 }
