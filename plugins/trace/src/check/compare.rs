@@ -8,6 +8,7 @@ use glam::{DMat4, DVec2, DVec4};
 
 use close2gl_pipeline::rounding::{self, BOUND, PRINTED, clip_error, clip_terms};
 
+use super::clues;
 use super::own_input::own_program;
 use super::region;
 use crate::format::Trace;
@@ -209,20 +210,11 @@ impl Comparison {
 /// is where it shows).
 const AXES: f64 = 1e-3;
 
-/// Compares `trace` with what `program` computes for `mesh` (`expected`: its frame).
-/// The trace's triangle indices must be the mesh's (checked when the trace was read).
+/// Compares `trace` with what `program` computes for `mesh` (`expected`: its frame), the whole
+/// chain from the camera. The trace's triangle indices must be the mesh's (checked when the
+/// trace was read).
 pub fn compare(program: &Program, mesh: &Mesh, trace: &Trace, expected: &[Outcome]) -> Comparison {
-    let mut triangles: Vec<(Kind, Vec<usize>)> = Vec::new();
-    let mut mark = |kind: Kind, t: usize| match triangles.iter_mut().find(|(k, _)| *k == kind) {
-        Some((_, list)) => list.push(t),
-        None => triangles.push((kind, vec![t])),
-    };
-    let mut stages = vec![camera(program, trace)];
-    stages.extend(matrices(program, trace));
-    stages.push(clip(program, mesh, trace, &mut mark));
-    stages.extend(drawn(program, trace, expected, &mut mark));
-    triangles.sort_by_key(|(kind, _)| *kind);
-    Comparison { stages, triangles }
+    compare_stages([program, program, program], mesh, trace, expected)
 }
 
 /// Compares `trace` with `program`, each stage on the program's own input to it: the clip
@@ -236,15 +228,27 @@ pub fn compare_own_input(program: &Program, mesh: &Mesh, trace: &Trace) -> Compa
     if let Some((p, m)) = trace.p.zip(trace.m) {
         own_product.clip_matrix = p * m;
     }
+    compare_stages([program, &own_product, &own], mesh, trace, &expected)
+}
+
+/// The stages in order: the camera and the matrices against `matrices`, the clip coordinates
+/// against `clip`'s, the 2D output against `output`'s frame, `expected`.
+fn compare_stages(
+    [matrices_of, clip_of, output]: [&Program; 3],
+    mesh: &Mesh,
+    trace: &Trace,
+    expected: &[Outcome],
+) -> Comparison {
     let mut triangles: Vec<(Kind, Vec<usize>)> = Vec::new();
     let mut mark = |kind: Kind, t: usize| match triangles.iter_mut().find(|(k, _)| *k == kind) {
         Some((_, list)) => list.push(t),
         None => triangles.push((kind, vec![t])),
     };
-    let mut stages = vec![camera(program, trace)];
-    stages.extend(matrices(program, trace));
-    stages.push(clip(&own_product, mesh, trace, &mut mark));
-    stages.extend(drawn(&own, trace, &expected, &mut mark));
+    let mut stages = vec![camera(matrices_of, trace)];
+    stages.extend(matrices(matrices_of, trace));
+    clues::add_matrix_clues(&mut stages, matrices_of, trace);
+    stages.push(clip(clip_of, mesh, trace, &mut mark));
+    stages.extend(drawn(output, trace, expected, &mut mark));
     triangles.sort_by_key(|(kind, _)| *kind);
     Comparison { stages, triangles }
 }
@@ -252,15 +256,20 @@ pub fn compare_own_input(program: &Program, mesh: &Mesh, trace: &Trace) -> Compa
 /// The M, P and V stages (V's depth row is not compared: the format leaves it to the program).
 pub(super) fn matrices(program: &Program, trace: &Trace) -> [StageResult; 3] {
     [
-        matrix(Stage::M, program.m, trace.m, &[0, 1, 2, 3]),
-        matrix(Stage::P, program.p, trace.p, &[0, 1, 2, 3]),
-        matrix(Stage::V, program.v, trace.v, &[0, 1, 3]),
+        matrix(Stage::M, program.m, trace.m, ALL_ROWS),
+        matrix(Stage::P, program.p, trace.p, ALL_ROWS),
+        matrix(Stage::V, program.v, trace.v, V_ROWS),
     ]
 }
 
+/// The rows of M and P compared, and of V (its third, for depth, is the program's own).
+pub(super) const ALL_ROWS: &[usize] = &[0, 1, 2, 3];
+pub(super) const V_ROWS: &[usize] = &[0, 1, 3];
+
 pub(super) fn camera(program: &Program, trace: &Trace) -> StageResult {
     let mut result = StageResult::new(Stage::Camera);
-    result.checked = 1;
+    // Three lengths, three right angles and the handedness: each can differ once.
+    result.checked = 7;
     let c = &trace.camera;
     for (name, axis) in [("u", c.u), ("v", c.v), ("n", c.n)] {
         let length = axis.length();

@@ -7,7 +7,8 @@ use close2gl_core::{Mesh, Mistake};
 use close2gl_pipeline::mistakes::{ClipPlanes, Mistakes, Outcome, Program};
 use rayon::prelude::*;
 
-use super::compare::{self, Comparison, Kind, Stage, number};
+use super::clues;
+use super::compare::{self, Comparison, Kind, Stage};
 use super::program_for;
 use crate::format::Trace;
 
@@ -180,30 +181,16 @@ pub fn unexplained(
     )
 }
 
-/// Where some triangles lie: their distances in front of the eye, in multiples of near.
+/// Where some triangles lie and how big they are ([`clues::triangles`]).
 fn whereabouts(
     program: &Program,
     mesh: &Mesh,
     triangles: &[usize],
     expected: &[Outcome],
 ) -> String {
-    let near = program.camera.near;
-    let distances = triangles.iter().flat_map(|&t| {
-        mesh.triangles[t]
-            .map(|i| -(program.m * mesh.positions[i as usize].as_dvec3().extend(1.0)).z)
-    });
-    let (low, high) = distances.fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), d| {
-        (l.min(d), h.max(d))
-    });
-    let cut = triangles
+    let seen: Vec<clues::Seen> = triangles
         .iter()
-        .filter(|&&t| expected[t].fate.planes != 0)
-        .count();
-    format!(
-        "between {}·near and {}·near in front of the eye (near = {}); {cut} of them touch the \
-         view volume's border",
-        number(low / near),
-        number(high / near),
-        number(near)
-    )
+        .map(|&t| clues::seen(program, mesh, t, &expected[t]))
+        .collect();
+    clues::triangles(&seen, program.camera.near)
 }

@@ -1,8 +1,9 @@
 //! `close2gl check`: a program's trace against close2gl's pipeline, stage by stage
 //! ([`compare`]), and, when it differs, the catalogue mistakes that reproduce it
-//! ([`diagnose`]).
+//! ([`diagnose`]); when none does, [`clues`] say what the differences share.
 
 pub mod apart;
+pub mod clues;
 pub mod compare;
 pub mod diagnose;
 pub mod own_input;

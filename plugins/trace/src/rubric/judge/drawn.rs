@@ -5,6 +5,7 @@ use close2gl_pipeline::mistakes::Outcome;
 use glam::{DMat4, DVec2};
 
 use super::{Judge, Verdict, drew_nothing, required, stage_verdict, stages_agree};
+use crate::check::clues;
 use crate::check::compare::{self, Stage, number};
 use crate::check::own_input::own_program;
 
@@ -38,7 +39,8 @@ impl Judge<'_> {
 
     /// hfov (row 0) or vfov (row 1): P's row, and the frame's width (height) in NDC.
     pub(super) fn fov(&self, row: usize) -> Verdict {
-        let p = compare::matrix(Stage::P, self.ours.p, self.trace.p, &[row]);
+        let mut p = compare::matrix(Stage::P, self.ours.p, self.trace.p, &[row]);
+        clues::add_matrix_clue(&mut p, self.ours.p, self.trace, &[row]);
         let p = required(&p);
         if !p.passed {
             return p;

@@ -5,6 +5,7 @@
 use glam::DVec3;
 
 use super::{AXIS, Judge, POSITION, Verdict, stages_agree, vec3};
+use crate::check::clues::{self, Values};
 use crate::check::compare::{Stage, number};
 use crate::format::{Axis, Motion};
 use crate::rubric::expected_motion::Pose;
@@ -62,20 +63,34 @@ impl Judge<'_> {
                 vec3(expected.position),
                 vec3(found.position)
             );
-            if let Some(hint) = along_world_axis(
+            let (asked, moved) = (
+                expected.position - start.position,
+                found.position - start.position,
+            );
+            let hint = along_world_axis(
                 &self.scene.motions,
                 start.position,
                 found.position,
                 tolerance,
-            ) {
+            )
+            .or_else(|| clues::travel(asked, moved, tolerance, &self.values()));
+            if let Some(hint) = hint {
                 why.push_str(&format!(" ({hint})"));
             }
             return Verdict::fail(why);
         }
-        if let Some(why) = axes_differ(&expected, &found, "a move turned the camera") {
+        let axes = |pose: &Pose| [pose.u, pose.v, pose.n];
+        if let Some(why) =
+            clues::axes_after_move(axes(&expected), axes(&found), AXIS, &self.values())
+        {
             return Verdict::fail(why);
         }
         stages_agree(&self.report.comparison, &[Stage::M])
+    }
+
+    /// The values a clue may name for this trace's camera and window.
+    fn values(&self) -> Values {
+        Values::new(&self.trace.camera, self.trace.window)
     }
 
     pub(super) fn orbit(&self) -> Verdict {
@@ -138,13 +153,13 @@ impl Judge<'_> {
         }
         let right_hand = start.rotated(axis, degrees);
         let other_way = start.rotated(axis, -degrees);
-        if axes_differ(&right_hand, &found, "").is_none() {
+        if same_axes(&right_hand, &found) {
             return Verdict {
                 turn: Some(Turn::RightHand),
                 ..Verdict::pass("")
             };
         }
-        if axes_differ(&other_way, &found, "").is_none() {
+        if same_axes(&other_way, &found) {
             return Verdict {
                 turn: Some(Turn::OtherWay),
                 ..Verdict::pass("the other way round from the right-hand rule")
@@ -177,22 +192,15 @@ impl Judge<'_> {
     }
 }
 
-/// The first of u, v, n that is not where expected, in words.
-fn axes_differ(expected: &Pose, found: &Pose, what: &str) -> Option<String> {
+/// Whether u, v and n are each where expected.
+fn same_axes(expected: &Pose, found: &Pose) -> bool {
     [
-        ("u", expected.u, found.u),
-        ("v", expected.v, found.v),
-        ("n", expected.n, found.n),
+        (expected.u, found.u),
+        (expected.v, found.v),
+        (expected.n, found.n),
     ]
-    .into_iter()
-    .find(|(_, want, got)| want.distance(*got) > AXIS)
-    .map(|(name, want, got)| {
-        format!(
-            "{what}: {name} expected {}, found {}",
-            vec3(want),
-            vec3(got)
-        )
-    })
+    .iter()
+    .all(|(want, got)| want.distance(*got) <= AXIS)
 }
 
 /// When a move went along the world's axis instead of the camera's: says so.
