@@ -8,7 +8,8 @@ use close2gl_core::{App, Camera, Fates, Mesh, Mistake, RenderSettings, Scene, Vi
 use close2gl_gpu::{Gpu, ReferenceHit, probe_reference};
 use close2gl_pipeline::journey::{Journey, journey};
 use close2gl_pipeline::matrices;
-use close2gl_pipeline::mistakes::{Mistakes, Program};
+use close2gl_pipeline::mistakes::Mistakes;
+use close2gl_pipeline::program::Program;
 use close2gl_raster::coverage_probe::{Drawn, PixelProbe, probe};
 use glam::{Mat4, Vec3, Vec4};
 use serde_json::{Value, json};

@@ -18,6 +18,7 @@ pub mod journey;
 pub mod matrices;
 pub mod mistakes;
 pub mod morph;
+pub mod program;
 #[cfg(test)]
 mod random_triangles;
 pub mod rounding;

@@ -8,7 +8,8 @@ use close2gl_core::{
 
 use crate::Tally;
 use crate::matrices::ClipTransform;
-use crate::mistakes::{Mistakes, Outcome, Program};
+use crate::mistakes::Mistakes;
+use crate::program::{Outcome, Program};
 use crate::stage::{Fate, FrameConstants, corner, process};
 
 /// The 2D buffer and counts for this camera, mesh, settings and viewport, in a new frame (the

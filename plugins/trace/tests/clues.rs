@@ -7,7 +7,8 @@
 mod common;
 
 use close2gl_core::{Mesh, ModelSource, PrimitiveParams};
-use close2gl_pipeline::mistakes::{self, Mistakes, ProgramCamera, System2d};
+use close2gl_pipeline::mistakes::{self, Mistakes};
+use close2gl_pipeline::program::{ProgramCamera, System2d};
 use close2gl_testkit::student::asset;
 use close2gl_trace::check::{self, Stage, Status, report};
 use close2gl_trace::rubric::{self, LineId};
@@ -63,12 +64,20 @@ fn trace_text(camera: &ProgramCamera, [m, p, v]: [DMat4; 3], more: &str) -> Stri
     )
 }
 
+/// OpenGL's window coordinates of a 640 × 480 window: `ortho2d 0 640 0 480`.
+const GL_WINDOW: System2d = System2d {
+    left: 0.0,
+    right: 640.0,
+    bottom: 0.0,
+    top: 480.0,
+};
+
 /// close2gl's own M, P and V for `camera` in a 640 × 480 window with y up.
 fn ours(camera: &ProgramCamera) -> [DMat4; 3] {
     [
         mistakes::modelview(camera, Mistakes::NONE),
         mistakes::projection(camera, Mistakes::NONE),
-        mistakes::viewport(&System2d::gl_window(640, 480), Mistakes::NONE),
+        mistakes::viewport(&GL_WINDOW, Mistakes::NONE),
     ]
 }
 

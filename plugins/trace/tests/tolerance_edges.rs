@@ -3,7 +3,8 @@
 //! its own about small triangles, not rounding) or draws nothing at all.
 
 use close2gl_core::{Mesh, ModelSource, PrimitiveParams};
-use close2gl_pipeline::mistakes::{Mistakes, Outcome};
+use close2gl_pipeline::mistakes::Mistakes;
+use close2gl_pipeline::program::Outcome;
 use close2gl_pipeline::rounding::twice_area;
 use close2gl_testkit::student::asset;
 use close2gl_trace::check::{self, Report, compare::Kind};

@@ -3,8 +3,8 @@
 //! settings become the viewer's.
 
 use close2gl_core::{Camera, Clipping, RenderMode, RenderSettings, Viewport};
-use close2gl_pipeline::mistakes::ClipPlanes;
 use close2gl_pipeline::mistakes::Mistakes;
+use close2gl_pipeline::program::ClipPlanes;
 use close2gl_trace::check::{self, program_for};
 use close2gl_trace::view::probe::probe;
 use close2gl_trace::view::{Shown, TraceView};

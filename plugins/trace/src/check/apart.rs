@@ -2,7 +2,8 @@
 //! being likelier); this says what would tell them apart: a line the trace could give, or a
 //! frame in which they draw differently.
 
-use close2gl_pipeline::mistakes::{Mistakes, Program};
+use close2gl_pipeline::mistakes::Mistakes;
+use close2gl_pipeline::program::Program;
 use glam::DMat4;
 
 use super::program_for;

@@ -7,7 +7,7 @@ mod camera_moves;
 mod matrix_ratio;
 mod triangle_sizes;
 
-use close2gl_pipeline::mistakes::{Program, ProgramCamera};
+use close2gl_pipeline::program::{Program, ProgramCamera};
 use glam::DMat4;
 
 use super::compare::{ALL_ROWS, Stage, StageResult, Status, V_ROWS, number};

@@ -3,7 +3,7 @@
 //! within tolerances a float32 program meets (docs/checking.md, "Tolerances").
 
 use close2gl_core::{FateKind, Mesh, Mistake};
-use close2gl_pipeline::mistakes::{Outcome, Program};
+use close2gl_pipeline::program::{Outcome, Program};
 use glam::{DMat4, DVec2, DVec4};
 
 use close2gl_pipeline::rounding::{self, BOUND, PRINTED, clip_error, clip_terms};

@@ -4,7 +4,8 @@
 //! stated as precisely as the data allows.
 
 use close2gl_core::{Mesh, Mistake};
-use close2gl_pipeline::mistakes::{ClipPlanes, Mistakes, Outcome, Program};
+use close2gl_pipeline::mistakes::Mistakes;
+use close2gl_pipeline::program::{ClipPlanes, Outcome, Program};
 use rayon::prelude::*;
 
 use super::clues;

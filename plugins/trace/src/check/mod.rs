@@ -12,9 +12,8 @@ pub mod region;
 pub mod report;
 
 use close2gl_core::{FrontFace, Mesh, RenderMode};
-use close2gl_pipeline::mistakes::{
-    ClipRule, Declared, Mistakes, Outcome, Program, System2d, WindingSpace,
-};
+use close2gl_pipeline::mistakes::Mistakes;
+use close2gl_pipeline::program::{ClipRule, Declared, Outcome, Program, System2d, WindingSpace};
 use glam::DMat4;
 
 use crate::format::{Culling, FormatError, Trace, TraceClipping};

@@ -8,7 +8,7 @@
 //! close2gl's.
 
 use close2gl_core::Mesh;
-use close2gl_pipeline::mistakes::Program;
+use close2gl_pipeline::program::Program;
 use close2gl_pipeline::rounding::{BOUND, PRINTED};
 use glam::{DMat4, DVec3, DVec4};
 

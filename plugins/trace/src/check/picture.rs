@@ -2,7 +2,7 @@
 //! kind of disagreement, each filled into the trace's window as it shows on screen.
 
 use close2gl_core::Image;
-use close2gl_pipeline::mistakes::System2d;
+use close2gl_pipeline::program::System2d;
 use glam::DVec2;
 
 use super::Report;

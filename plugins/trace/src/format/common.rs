@@ -4,7 +4,7 @@
 
 use close2gl_core::limits::MAX_PIXELS;
 use close2gl_core::{NamedEnum, RenderMode};
-use close2gl_pipeline::mistakes::{ClipPlanes, WindingSpace};
+use close2gl_pipeline::program::{ClipPlanes, WindingSpace};
 
 use super::camera_lines::CameraSlots;
 use super::magic::Format;

@@ -33,7 +33,7 @@ pub const MAX_FILE_BYTES: u64 = 1 << 30;
 /// The eight `camera` lines, in the assignment's names: the centre of projection, the camera's
 /// axes (right-handed, looking along -n) and its view volume (angles in degrees). The camera a
 /// program holds, as the pipeline's mistakes module runs programs with it.
-pub type CameraLines = close2gl_pipeline::mistakes::ProgramCamera;
+pub type CameraLines = close2gl_pipeline::program::ProgramCamera;
 
 /// `culling`: backface culling off, or which on-screen winding is front (`glFrontFace`).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]

@@ -5,7 +5,7 @@ use std::collections::HashMap;
 use std::path::Path;
 
 use close2gl_core::RenderMode;
-use close2gl_pipeline::mistakes::{ClipPlanes, WindingSpace};
+use close2gl_pipeline::program::{ClipPlanes, WindingSpace};
 use glam::DMat4;
 
 use super::camera_lines::shape;

@@ -9,7 +9,7 @@
 use std::fmt::Write;
 
 use close2gl_core::{NamedEnum, RenderMode};
-use close2gl_pipeline::mistakes::{ClipPlanes, WindingSpace};
+use close2gl_pipeline::program::{ClipPlanes, WindingSpace};
 
 use super::camera_lines::LINES;
 use super::magic::Format;

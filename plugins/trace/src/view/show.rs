@@ -3,7 +3,7 @@
 
 use bevy_ecs::prelude::*;
 use close2gl_core::{Close2glFrame, Topology, Viewport};
-use close2gl_pipeline::mistakes::System2d;
+use close2gl_pipeline::program::System2d;
 use glam::DVec2;
 
 use super::TraceView;

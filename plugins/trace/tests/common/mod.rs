@@ -7,7 +7,7 @@
 use std::collections::HashSet;
 
 use close2gl_core::{NamedEnum, RenderMode};
-use close2gl_pipeline::mistakes::{ClipPlanes, WindingSpace};
+use close2gl_pipeline::program::{ClipPlanes, WindingSpace};
 use close2gl_trace::{
     Axis, CameraLines, ClipLine, Culling, Motion, Ortho2d, Piece, Scene, SceneCamera, Trace,
     TraceClipping, parse_scene, parse_trace,

@@ -4,7 +4,7 @@
 //! differently shows as sizes or places they share.
 
 use close2gl_core::Mesh;
-use close2gl_pipeline::mistakes::{Outcome, Program};
+use close2gl_pipeline::program::{Outcome, Program};
 use glam::DVec2;
 
 /// One triangle that differs, as the clue sees it.

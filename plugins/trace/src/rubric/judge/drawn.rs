@@ -1,7 +1,7 @@
 //! The lines judged on the frame: the modes' 2D output, culling and clipping on the program's
 //! own geometry, the fields of view, resizing, and the whole frame for `synchronized`.
 
-use close2gl_pipeline::mistakes::Outcome;
+use close2gl_pipeline::program::Outcome;
 use glam::{DMat4, DVec2};
 
 use super::{Judge, Verdict, drew_nothing, required, stage_verdict, stages_agree};

@@ -26,7 +26,7 @@ mod drawn;
 mod final_camera;
 
 use close2gl_core::Mesh;
-use close2gl_pipeline::mistakes::{Outcome, Program};
+use close2gl_pipeline::program::{Outcome, Program};
 use glam::DVec3;
 
 use super::lines::LineId;

@@ -1,0 +1,341 @@
+//! A student's Close2GL as data. A [`Program`] is what a program computes: its camera, its M, P
+//! and V, how it clips and how it culls, as it declares them ([`Declared`]) and as its mistakes
+//! change them ([`crate::mistakes`]; none: close2gl's own choices). [`Program::triangle`] then
+//! sends one mesh triangle down the textbook's stages with those choices, in double precision,
+//! into any 2D system (`gluOrtho2D`'s L R B T), reusing the pipeline's own clipping and culling,
+//! with what float32 rounding could make of each number ([`crate::rounding`]). The fast path
+//! never sees a mistake; a frame with one runs this, triangle by triangle (teaching models are
+//! small). `close2gl check` runs it to recompute a student's frame, and with each mistake to name
+//! the one that reproduces it.
+
+use close2gl_core::{
+    Camera, Clipping, FrontFace, Mesh, Mistake, RenderMode, RenderSettings, Viewport,
+};
+use glam::{DMat4, DVec2, DVec3};
+
+use crate::clip::{FAR, NEAR, Outcode};
+use crate::mistakes::{Mistakes, modelview, projection, viewport};
+
+mod triangle;
+
+pub use triangle::Outcome;
+
+/// The 2D system the program draws in: the arguments it gave `gluOrtho2D`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct System2d {
+    pub left: f64,
+    pub right: f64,
+    pub bottom: f64,
+    pub top: f64,
+}
+
+impl System2d {
+    /// Window pixels as close2gl's 2D buffer holds them, `0 W H 0`: the origin top-left, y down.
+    pub fn pixels(width: u32, height: u32) -> Self {
+        Self {
+            left: 0.0,
+            right: f64::from(width),
+            bottom: f64::from(height),
+            top: 0.0,
+        }
+    }
+
+    /// A point of this system in window pixels (origin top-left, y down) of a `width` ×
+    /// `height` window: where it shows on screen, whichever way the system's axes run.
+    pub fn to_pixels(&self, p: DVec2, width: u32, height: u32) -> DVec2 {
+        DVec2::new(
+            (p.x - self.left) / (self.right - self.left) * f64::from(width),
+            (self.top - p.y) / (self.top - self.bottom) * f64::from(height),
+        )
+    }
+}
+
+/// The camera as the program holds it, in double precision.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ProgramCamera {
+    pub position: DVec3,
+    pub u: DVec3,
+    pub v: DVec3,
+    pub n: DVec3,
+    pub hfov: f64,
+    pub vfov: f64,
+    pub near: f64,
+    pub far: f64,
+}
+
+impl From<&Camera> for ProgramCamera {
+    fn from(c: &Camera) -> Self {
+        Self {
+            position: c.position.as_dvec3(),
+            u: c.u.as_dvec3(),
+            v: c.v.as_dvec3(),
+            n: c.n.as_dvec3(),
+            hfov: f64::from(c.hfov),
+            vfov: f64::from(c.vfov),
+            near: f64::from(c.near),
+            far: f64::from(c.far),
+        }
+    }
+}
+
+/// How the program clips.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ClipRule {
+    /// The assignment's: drop a triangle with any corner outside the view volume.
+    Simple,
+    /// Cut against the six planes, as a GPU does.
+    Full,
+    /// Nothing clipped, but a corner at w = 0 exactly (no division is possible).
+    Nothing,
+    /// `divide_before_clip`: divide first, then drop a triangle with a corner at w = 0 or
+    /// |x/w| > 1 or |y/w| > 1; z is not tested, and what is kept is drawn whole.
+    DivideFirst,
+}
+
+/// How the program culls, and which winding (or side) is front.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum CullRule {
+    Off,
+    /// By the winding of its 2D output as seen on screen (close2gl's rule).
+    Winding(FrontFace),
+    /// `culling_by_file_normals`: back when N_T · (c − p0) < 0 (reversed for cw).
+    FileNormals(FrontFace),
+    /// `culling_by_view_axis`: back when ((p1 − p0) × (p2 − p0)) · n < 0 (reversed for cw).
+    ViewAxis(FrontFace),
+}
+
+/// Where a program tests a triangle's winding (`trace-format.md`, culling's space).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum WindingSpace {
+    /// As seen on screen (version 1's `culling ccw`): the 2D output mapped to the window.
+    Screen,
+    /// NDC x, y, y up, before V: a mistake in V does not change it.
+    Ndc,
+    /// The 2D output's own numbers (x right, y growing upward in the numbers): with a y-down
+    /// system, the mirror of the screen.
+    Window,
+}
+
+impl WindingSpace {
+    pub const ALL: [WindingSpace; 3] = [Self::Screen, Self::Ndc, Self::Window];
+}
+
+/// Which planes the program clips against itself.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum ClipPlanes {
+    /// All six.
+    #[default]
+    All,
+    /// Near and far only: x and y are left to the 2D rasteriser, which cuts at the window.
+    NearFar,
+}
+
+impl ClipPlanes {
+    fn mask(self) -> Outcode {
+        match self {
+            ClipPlanes::All => 0x3f,
+            ClipPlanes::NearFar => NEAR | FAR,
+        }
+    }
+}
+
+/// What the program is told to do, or says it did: the settings a scene or a trace declares.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Declared {
+    pub window: (u32, u32),
+    pub system: System2d,
+    /// None: culling off.
+    pub culling: Option<FrontFace>,
+    /// Where the winding is tested.
+    pub winding: WindingSpace,
+    pub clip: ClipRule,
+    pub planes: ClipPlanes,
+    pub mode: RenderMode,
+    /// The model matrix the program applies before M: world = model·p.
+    pub model: DMat4,
+}
+
+impl Declared {
+    /// What a program is told when only these are said: winding as seen on screen, all six
+    /// planes clipped, no model matrix.
+    pub fn new(
+        window: (u32, u32),
+        system: System2d,
+        culling: Option<FrontFace>,
+        clip: ClipRule,
+        mode: RenderMode,
+    ) -> Self {
+        Self {
+            window,
+            system,
+            culling,
+            winding: WindingSpace::Screen,
+            clip,
+            planes: ClipPlanes::All,
+            mode,
+            model: DMat4::IDENTITY,
+        }
+    }
+}
+
+/// A program's Close2GL: what it computes from a camera, with its mistakes.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Program {
+    pub mistakes: Mistakes,
+    /// The camera it uses (`left_handed` makes u = n × v).
+    pub camera: ProgramCamera,
+    pub m: DMat4,
+    pub p: DMat4,
+    /// V into the declared 2D system (its third row maps depth to 0..1).
+    pub v: DMat4,
+    /// What takes a world point to clip coordinates: P·M (or M·P, with `product_order`).
+    pub clip_matrix: DMat4,
+    pub clip: ClipRule,
+    pub cull: CullRule,
+    pub declared: Declared,
+}
+
+impl Program {
+    pub fn new(camera: &ProgramCamera, declared: Declared, mistakes: Mistakes) -> Self {
+        use Mistake::{
+            CullingByFileNormals, CullingByViewAxis, CullingIgnoresFrontFace, CullingInverted,
+            DivideBeforeClip, LeftHanded, NeverCulls, NoClipping, ProductOrder,
+        };
+        let mut camera = *camera;
+        if mistakes.has(LeftHanded) {
+            camera.u = camera.n.cross(camera.v);
+        }
+        let m = modelview(&camera, mistakes);
+        let p = projection(&camera, mistakes);
+        let v = viewport(&declared.system, mistakes);
+        let clip_matrix = match mistakes.has(ProductOrder) {
+            true => m * p,
+            false => p * m,
+        };
+        let clip = match () {
+            _ if mistakes.has(DivideBeforeClip) => ClipRule::DivideFirst,
+            _ if mistakes.has(NoClipping) => ClipRule::Nothing,
+            _ => declared.clip,
+        };
+        let cull = match declared.culling {
+            None => CullRule::Off,
+            Some(_) if mistakes.has(NeverCulls) => CullRule::Off,
+            Some(front) => {
+                let front = match () {
+                    _ if mistakes.has(CullingInverted) => opposite(front),
+                    _ if mistakes.has(CullingIgnoresFrontFace) => FrontFace::Ccw,
+                    _ => front,
+                };
+                match () {
+                    _ if mistakes.has(CullingByFileNormals) => CullRule::FileNormals(front),
+                    _ if mistakes.has(CullingByViewAxis) => CullRule::ViewAxis(front),
+                    _ => CullRule::Winding(front),
+                }
+            }
+        };
+        Self {
+            mistakes,
+            camera,
+            m,
+            p,
+            v,
+            clip_matrix,
+            clip,
+            cull,
+            declared,
+        }
+    }
+
+    /// The program that draws close2gl's own view with `mistakes`: this camera and these
+    /// settings, into the view's pixels (close2gl's 2D buffer: the origin top-left, y down).
+    pub fn for_view(
+        camera: &Camera,
+        settings: &RenderSettings,
+        viewport: Viewport,
+        mistakes: Mistakes,
+    ) -> Self {
+        let declared = Declared::new(
+            (viewport.width, viewport.height),
+            System2d::pixels(viewport.width, viewport.height),
+            settings.backface_culling.then_some(settings.front_face),
+            match settings.clipping {
+                Clipping::Simple => ClipRule::Simple,
+                Clipping::Full => ClipRule::Full,
+            },
+            settings.mode,
+        );
+        Program::new(&ProgramCamera::from(camera), declared, mistakes)
+    }
+
+    /// Mesh vertex `i` in world coordinates: the model matrix applied to the file's position.
+    pub fn world(&self, mesh: &Mesh, i: u32) -> DVec3 {
+        let p = mesh.positions[i as usize].as_dvec3();
+        match self.declared.model == DMat4::IDENTITY {
+            true => p,
+            false => self.declared.model.transform_point3(p),
+        }
+    }
+
+    /// Every triangle of `mesh`, in order.
+    pub fn frame(&self, mesh: &Mesh) -> Vec<Outcome> {
+        (0..mesh.triangles.len())
+            .filter_map(|t| self.triangle(mesh, t))
+            .collect()
+    }
+}
+
+fn opposite(front: FrontFace) -> FrontFace {
+    match front {
+        FrontFace::Ccw => FrontFace::Cw,
+        FrontFace::Cw => FrontFace::Ccw,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::{random_triangles, textbook};
+    use glam::Vec3;
+
+    /// Without mistakes, the program is close2gl's pipeline: for random triangles around a
+    /// camera (many cut by the near and side planes), the same fate as the textbook path, and
+    /// the same polygon to a hundredth of a pixel (the textbook path rounds P·M to float32),
+    /// wherever rounding cannot tell.
+    #[test]
+    fn without_mistakes_it_draws_what_the_textbook_path_draws() {
+        let camera = random_triangles::camera(Vec3::new(0.5, 0.2, 6.0));
+        let viewport = random_triangles::VIEWPORT;
+        for (i, mesh) in random_triangles::triangles(0x2545_f491_4f6c_dd1d, 3000).enumerate() {
+            let settings = RenderSettings {
+                backface_culling: i % 2 == 0,
+                clipping: if i % 3 == 0 {
+                    Clipping::Simple
+                } else {
+                    Clipping::Full
+                },
+                ..RenderSettings::default()
+            };
+            let (frame, fates) = textbook::run_recording(&mesh, &camera, &settings, viewport);
+            let program = Program::for_view(&camera, &settings, viewport, Mistakes::NONE);
+            let outcome = program.triangle(&mesh, 0).expect("triangle 0");
+            if outcome.near_a_plane || outcome.near_edge_on {
+                continue;
+            }
+            assert_eq!(outcome.fate.kind, fates.triangles[0].kind, "{i}");
+            let fan: Vec<[f32; 2]> = emitted_fan(&outcome);
+            assert_eq!(fan.len(), frame.vertices.len(), "{i}");
+            for (a, b) in fan.iter().zip(&frame.vertices) {
+                let close = |x: f32, y: f32| (x - y).abs() < 1e-2 + 1e-5 * y.abs();
+                assert!(close(a[0], b[0]) && close(a[1], b[1]), "{i}: {a:?} {b:?}");
+            }
+        }
+    }
+
+    fn emitted_fan(outcome: &Outcome) -> Vec<[f32; 2]> {
+        let p = &outcome.polygon;
+        (1..p.len().saturating_sub(1))
+            .flat_map(|i| [p[0], p[i], p[i + 1]])
+            .map(|q| [q.x as f32, q.y as f32])
+            .collect()
+    }
+}
