@@ -16,6 +16,8 @@
  * expect knot_turned: differs stage=P unexplained
  * expect cube_front -DWRITE_USED_HFOV: agree
  * expect knot_turned -DWRITE_USED_HFOV: agree
+ * expect-grade cube: points=0 wireframe=0 solid=0 hfov=0 synchronized=0
+ * expect-grade cube -DWRITE_USED_HFOV: points=0 wireframe=0 solid=0 hfov=0 synchronized=0
  */
 #define CLOSE2GL_FLOAT                /* [trace] */
 #define CLOSE2GL_TRACE_IMPLEMENTATION /* [trace] */

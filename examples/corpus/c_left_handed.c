@@ -9,6 +9,7 @@
  *
  * expect cube_front: differs stage=camera,window names=left_handed unexplained
  * expect far_away_turned: differs stage=camera,window names=left_handed unexplained
+ * expect-grade cube: points=0 wireframe=0 solid=0 translation=0 lookat_translation=0 rotation=0 resize=0 synchronized=0
  */
 #define CLOSE2GL_TRACE_IMPLEMENTATION /* [trace] */
 #include "close2gl_trace.h"

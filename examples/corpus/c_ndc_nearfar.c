@@ -17,6 +17,9 @@
  * expect knot_cw: agree
  * expect inside_cube: agree
  * expect knot_through -DDECLARE_SIMPLE: differs stage=clipping unexplained
+ * expect-grade cube: 200
+ * expect-grade cube -DIDENTITY_V: 200
+ * expect-grade cube -DDECLARE_SIMPLE: simple_clipping=3 synchronized=22
  */
 #define CLOSE2GL_TRACE_IMPLEMENTATION /* [trace] */
 #include "close2gl_trace.h"

@@ -19,6 +19,9 @@
  * expect knot_cw -DNEVER_CULLS: differs stage=culling names=never_culls
  * expect knot_small -DDROP_SMALL: differs stage=culling unexplained
  * expect knot_turned -DDROP_SMALL: differs stage=culling unexplained
+ * expect-grade cube: 200
+ * expect-grade cube -DNEVER_CULLS: culling=12 synchronized=23
+ * expect-grade cube -DDROP_SMALL: synchronized=24
  */
 #define CLOSE2GL_TRACE_IMPLEMENTATION /* [trace] */
 #include "close2gl_trace.h"

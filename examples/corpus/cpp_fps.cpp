@@ -19,6 +19,8 @@
 // expect far_offset_fps: agree
 // expect knot_fps -DRIGHT_NOT_NORMALIZED: differs stage=M unexplained
 // expect far_offset_fps -DRIGHT_NOT_NORMALIZED: differs stage=M unexplained
+// expect-grade cube: lookat_translation=0 rotation=10
+// expect-grade cube -DRIGHT_NOT_NORMALIZED: translation=0 lookat_translation=0 rotation=10 synchronized=14
 #define CLOSE2GL_FLOAT                // [trace]
 #define CLOSE2GL_TRACE_IMPLEMENTATION // [trace]
 #include "close2gl_trace.h"

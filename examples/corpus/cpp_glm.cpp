@@ -20,6 +20,8 @@
 // expect knot_turned -DYDOWN: agree
 // expect knot_cw -DYDOWN: agree
 // expect far_offset_turned -DYDOWN: agree
+// expect-grade cube: 200
+// expect-grade cube -DYDOWN: 200
 #define CLOSE2GL_FLOAT                // [trace]
 #define CLOSE2GL_TRACE_IMPLEMENTATION // [trace]
 #include "close2gl_trace.h"

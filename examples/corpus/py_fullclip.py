@@ -11,6 +11,7 @@ expect cube_front: agree
 expect knot_through: agree
 expect knot_cw: agree
 expect inside_cube: agree
+expect-grade cube: 200
 """
 import math
 import sys
