@@ -140,6 +140,7 @@ int main(int argc, char **argv)
     c2g_write_camera(out, c, u, v, n, s.hfov, s.vfov, znear, zfar);             /* [trace] */
     c2g_write_culling(out, s.culling);                                          /* [trace] */
     c2g_write_clipping(out, C2G_CLIP_SIMPLE);                                   /* [trace] */
+    c2g_write_mode(out, s.mode);                                                /* [trace] */
     c2g_write_matrix(out, 'M', M[0]);                                           /* [trace] */
     c2g_write_matrix(out, 'P', P[0]);                                           /* [trace] */
     c2g_write_matrix(out, 'V', V[0]);                                           /* [trace] */

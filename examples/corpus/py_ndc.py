@@ -109,6 +109,7 @@ def main(scene_path, trace_path):
         out.camera(pos, u, v, n, scene.hfov, scene.vfov, near, far)  # [trace]
         out.culling(scene.culling, "ndc")  # [trace]
         out.clipping("simple near_far")  # [trace]
+        out.mode(scene.mode)  # [trace]
         out.matrix("M", view)  # [trace]
         out.matrix("P", proj)  # [trace]
         for index, triangle in enumerate(mesh):
