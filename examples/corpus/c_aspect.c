@@ -16,6 +16,8 @@
  * expect knot_turned: differs stage=P unexplained
  * expect cube_front -DWRITE_USED_HFOV: agree
  * expect knot_turned -DWRITE_USED_HFOV: agree
+ * expect-grade cube: points=0 wireframe=0 solid=0 hfov=0 synchronized=0
+ * expect-grade cube -DWRITE_USED_HFOV: points=0 wireframe=0 solid=0 hfov=0 synchronized=0
  */
 #define CLOSE2GL_FLOAT                /* [trace] */
 #define CLOSE2GL_TRACE_IMPLEMENTATION /* [trace] */
@@ -132,6 +134,12 @@ int main(int argc, char **argv)
     c2g_write_culling(out, s.culling);                                          /* [trace] */
     c2g_write_matrix(out, 'M', &MV[0][0]);                                      /* [trace] */
     c2g_write_matrix(out, 'P', &P[0][0]);                                       /* [trace] */
+    c2g_write_mode(out, s.mode);                                                /* [trace] */
+    {   /* its viewport: (x/w + 1) W/2, (y/w + 1) H/2 */                        /* [trace] */
+        c2g_real Vw[16] = {s.width / 2.0, 0, 0, s.width / 2.0, 0, s.height / 2.0, 0, s.height / 2.0, /* [trace] */
+                           0, 0, 0.5, 0.5, 0, 0, 0, 1};                         /* [trace] */
+        c2g_write_matrix(out, 'V', Vw);                                         /* [trace] */
+    }                                                                           /* [trace] */
     for (t = 0; t < count; t++) {
         float c[3][4], xy[6], area;
         int in = 1;

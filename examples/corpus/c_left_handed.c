@@ -9,6 +9,7 @@
  *
  * expect cube_front: differs stage=camera,window names=left_handed unexplained
  * expect far_away_turned: differs stage=camera,window names=left_handed unexplained
+ * expect-grade cube: points=0 wireframe=0 solid=0 translation=0 lookat_translation=0 rotation=0 resize=0 synchronized=0
  */
 #define CLOSE2GL_TRACE_IMPLEMENTATION /* [trace] */
 #include "close2gl_trace.h"
@@ -120,6 +121,12 @@ int main(int argc, char **argv)
     c2g_write_culling(tf, s.culling);                                           /* [trace] */
     c2g_write_matrix(tf, 'M', mv);                                              /* [trace] */
     c2g_write_matrix(tf, 'P', pr);                                              /* [trace] */
+    c2g_write_mode(tf, s.mode);                                                 /* [trace] */
+    {   /* its viewport: (x/w + 1) W/2, (y/w + 1) H/2 */                        /* [trace] */
+        c2g_real Vw[16] = {s.width / 2.0, 0, 0, s.width / 2.0, 0, s.height / 2.0, 0, s.height / 2.0, /* [trace] */
+                           0, 0, 0.5, 0.5, 0, 0, 0, 1};                         /* [trace] */
+        c2g_write_matrix(tf, 'V', Vw);                                          /* [trace] */
+    }                                                                           /* [trace] */
     for (t = 0; t < ntri; t++) {
         double eyep[3][4], clip[12], px[6], a;
         int ok = 1;

@@ -17,6 +17,9 @@
  * expect knot_cw: agree
  * expect inside_cube: agree
  * expect knot_through -DDECLARE_SIMPLE: differs stage=clipping unexplained
+ * expect-grade cube: 200
+ * expect-grade cube -DIDENTITY_V: 200
+ * expect-grade cube -DDECLARE_SIMPLE: simple_clipping=3 synchronized=22
  */
 #define CLOSE2GL_TRACE_IMPLEMENTATION /* [trace] */
 #include "close2gl_trace.h"
@@ -141,8 +144,12 @@ int main(int argc, char **argv)
 #else
     c2g_write_clipping(f, C2G_CLIP_SIMPLE_NEAR_FAR);                            /* [trace] */
 #endif
+    c2g_write_mode(f, s.mode);                                                  /* [trace] */
     c2g_write_matrix_columns(f, 'M', view);                                     /* [trace] */
     c2g_write_matrix_columns(f, 'P', proj);                                     /* [trace] */
+#ifdef IDENTITY_V
+    c2g_write_matrix_columns(f, 'V', (double[16]){1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1}); /* [trace: variant] */
+#endif
     for (t = 0; t < count; t++) {
         vec4 clip[3];
         double ndc[9], area;

@@ -19,6 +19,9 @@
  * expect knot_cw -DNEVER_CULLS: differs stage=culling names=never_culls
  * expect knot_small -DDROP_SMALL: differs stage=culling unexplained
  * expect knot_turned -DDROP_SMALL: differs stage=culling unexplained
+ * expect-grade cube: 200
+ * expect-grade cube -DNEVER_CULLS: culling=12 synchronized=23
+ * expect-grade cube -DDROP_SMALL: synchronized=24
  */
 #define CLOSE2GL_TRACE_IMPLEMENTATION /* [trace] */
 #include "close2gl_trace.h"
@@ -137,6 +140,7 @@ int main(int argc, char **argv)
     c2g_write_camera(out, c, u, v, n, s.hfov, s.vfov, znear, zfar);             /* [trace] */
     c2g_write_culling(out, s.culling);                                          /* [trace] */
     c2g_write_clipping(out, C2G_CLIP_SIMPLE);                                   /* [trace] */
+    c2g_write_mode(out, s.mode);                                                /* [trace] */
     c2g_write_matrix(out, 'M', M[0]);                                           /* [trace] */
     c2g_write_matrix(out, 'P', P[0]);                                           /* [trace] */
     c2g_write_matrix(out, 'V', V[0]);                                           /* [trace] */

@@ -2,7 +2,8 @@
 // and a pitch about the world's up (+y), and its axes are recomputed from the two angles each
 // frame, as games do (front from yaw and pitch, right = front x up, up = right x front). It can
 // turn only about the world's up and its own u, so it runs on scenes whose turns are `rotate v`
-// before `rotate u`, and starts from `camera framed` (yaw 0, pitch 0: looking along -z). It
+// before `rotate u`; it starts from `camera framed` (yaw 0, pitch 0: looking along -z) or from a
+// given pose without roll (its yaw and pitch; `orbit` and `rotate n` it ignores). It
 // draws in window pixels, y up, with the assignment's simple clipping and culling by the winding
 // on screen.
 //
@@ -19,6 +20,8 @@
 // expect far_offset_fps: agree
 // expect knot_fps -DRIGHT_NOT_NORMALIZED: differs stage=M unexplained
 // expect far_offset_fps -DRIGHT_NOT_NORMALIZED: differs stage=M unexplained
+// expect-grade cube: lookat_translation=0 rotation=10
+// expect-grade cube -DRIGHT_NOT_NORMALIZED: translation=0 lookat_translation=0 rotation=10 synchronized=14
 #define CLOSE2GL_FLOAT                // [trace]
 #define CLOSE2GL_TRACE_IMPLEMENTATION // [trace]
 #include "close2gl_trace.h"
@@ -76,10 +79,6 @@ int main(int argc, char **argv) {
     double *raw;
     int count;
     if (!c2g_read_scene(argv[1], &s) || !(count = load_model(s.model, &raw))) return 1;
-    if (!s.framed) {
-        std::fprintf(stderr, "%s: this camera starts from 'camera framed'\n", argv[1]);
-        return 1;
-    }
     std::vector<glm::vec3> vertices;
     for (int i = 0; i < 3 * count; i++) vertices.emplace_back(raw[3 * i], raw[3 * i + 1], raw[3 * i + 2]);
     glm::vec3 lo(1e30f), hi(-1e30f);
@@ -91,6 +90,12 @@ int main(int argc, char **argv) {
     cam.fov_x = s.hfov, cam.fov_y = s.vfov;
     cam.near_plane = s.has_near ? s.znear : (distance - radius) / 2;
     cam.far_plane = s.has_far ? s.zfar : distance + 2 * radius;
+    if (!s.framed) {  // a given pose: its yaw and pitch from where it looks (a roll is lost)
+        cam.position = glm::vec3(s.position[0], s.position[1], s.position[2]);
+        cam.yaw = glm::degrees(std::atan2(s.n[0], s.n[2]));
+        cam.pitch = glm::degrees(std::asin(glm::clamp(-s.n[1], -1.0f, 1.0f)));
+        cam.near_plane = s.znear, cam.far_plane = s.zfar;
+    }
     for (int i = 0; i < s.motion_count; i++) {
         const c2g_motion &m = s.motions[i];
         glm::vec3 r, u, b;
@@ -115,6 +120,10 @@ int main(int argc, char **argv) {
     c2g_write_culling(out, s.culling);                                           // [trace]
     c2g_write_glm(out, 'M', M);                                                  // [trace]
     c2g_write_glm(out, 'P', P);                                                  // [trace]
+    c2g_real V[16] = {s.width / 2.0f, 0, 0, s.width / 2.0f, 0, s.height / 2.0f, 0, s.height / 2.0f, // [trace]
+                      0, 0, 0.5f, 0.5f, 0, 0, 0, 1};                             // [trace]
+    c2g_write_matrix(out, 'V', V);                                               // [trace]
+    c2g_write_mode(out, s.mode);                                                 // [trace]
     for (int t = 0; t < count; t++) {
         glm::vec4 c[3];
         float screen[6];

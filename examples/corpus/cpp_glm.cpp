@@ -20,6 +20,8 @@
 // expect knot_turned -DYDOWN: agree
 // expect knot_cw -DYDOWN: agree
 // expect far_offset_turned -DYDOWN: agree
+// expect-grade cube: 200
+// expect-grade cube -DYDOWN: 200
 #define CLOSE2GL_FLOAT                // [trace]
 #define CLOSE2GL_TRACE_IMPLEMENTATION // [trace]
 #include "close2gl_trace.h"
@@ -134,6 +136,10 @@ int main(int argc, char **argv) {
     c2g_write_culling_in(f, declared, flip > 0 ? C2G_CULL_ON_SCREEN : C2G_CULL_IN_WINDOW); // [trace]
     c2g_write_glm(f, 'M', M);                                                    // [trace]
     c2g_write_glm(f, 'P', P);                                                    // [trace]
+    c2g_real V[16] = {s.width / 2.0f, 0, 0, s.width / 2.0f, 0, flip * s.height / 2.0f, 0, s.height / 2.0f, // [trace]
+                      0, 0, 0.5f, 0.5f, 0, 0, 0, 1};                             // [trace]
+    c2g_write_matrix(f, 'V', V);                                                 // [trace]
+    c2g_write_mode(f, s.mode);                                                   // [trace]
     for (int tri = 0; tri < count; tri++) {
         glm::vec4 clip[3];
         glm::vec2 win[3];

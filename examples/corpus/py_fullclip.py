@@ -11,6 +11,7 @@ expect cube_front: agree
 expect knot_through: agree
 expect knot_cw: agree
 expect inside_cube: agree
+expect-grade cube: 200
 """
 import math
 import sys
@@ -124,6 +125,8 @@ def main(scene_path, trace_path):
         trace.clipping("full")  # [trace]
         trace.matrix("M", M)  # [trace]
         trace.matrix("P", P)  # [trace]
+        trace.matrix("V", [[0.5, 0, 0, 0.5], [0, 0.5, 0, 0.5], [0, 0, 0.5, 0.5], [0, 0, 0, 1]])  # [trace]
+        trace.mode(scene.mode)  # [trace]
         for t, tri in enumerate(triangles):
             clip = [[dot(row[:3], p) + row[3] for row in PM] for p in tri]
             poly = clip_polygon(clip)

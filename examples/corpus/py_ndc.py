@@ -19,6 +19,9 @@ expect knot_cw -DIGNORES_FRONT_FACE: differs stage=culling names=culling_inverte
 expect knot_turned -DIGNORES_FRONT_FACE: agree
 expect inside_cube -DALWAYS_CULLS: differs stage=culling unexplained
 expect cube_front -DALWAYS_CULLS: agree
+expect-grade cube: 200
+expect-grade cube -DIGNORES_FRONT_FACE: culling=16 synchronized=23
+expect-grade cube -DALWAYS_CULLS: points=0 wireframe=0 solid=0 culling=16 synchronized=2
 """
 import math
 import sys
@@ -106,6 +109,7 @@ def main(scene_path, trace_path):
         out.camera(pos, u, v, n, scene.hfov, scene.vfov, near, far)  # [trace]
         out.culling(scene.culling, "ndc")  # [trace]
         out.clipping("simple near_far")  # [trace]
+        out.mode(scene.mode)  # [trace]
         out.matrix("M", view)  # [trace]
         out.matrix("P", proj)  # [trace]
         for index, triangle in enumerate(mesh):
