@@ -37,7 +37,7 @@ pub fn bugs(grade: &Grade) -> Vec<Bug> {
             }),
         }
     }
-    bugs.sort_by(|a, b| b.points_lost.cmp(&a.points_lost));
+    bugs.sort_by_key(|bug| std::cmp::Reverse(bug.points_lost));
     bugs
 }
 

@@ -26,14 +26,14 @@ mod drawn;
 mod final_camera;
 
 use close2gl_core::Mesh;
-use close2gl_pipeline::program::{Outcome, Program};
+use close2gl_pipeline::program::{Outcome, Program, WindingSpace};
 use glam::DVec3;
 
 use super::lines::LineId;
 use super::scenes::RubricScene;
 use crate::check::compare::{Comparison, Stage, StageResult, Status, number};
 use crate::check::{Report, program_for};
-use crate::format::{CameraLines, Scene, SceneCamera, Trace, TraceClipping};
+use crate::format::{CameraLines, Culling, Scene, SceneCamera, Trace, TraceClipping};
 pub use final_camera::{Turn, settle_rotations};
 
 /// How far a unit axis may be from the expected one: far above float32 rounding, far below
@@ -145,7 +145,7 @@ impl Judge<'_> {
                 trace.window.0, trace.window.1, scene.window.0, scene.window.1
             ));
         }
-        if trace.culling != scene.culling {
+        if on_screen(trace) != scene.culling {
             return Err(format!(
                 "it declares culling {}, the scene culling {}",
                 close2gl_core::NamedEnum::name(trace.culling),
@@ -225,6 +225,18 @@ impl Judge<'_> {
             )),
             None => Ok(()),
         }
+    }
+}
+
+/// The front face a trace declares, as seen on screen: `culling cw window` in a 2D system whose
+/// numbers run mirrored on screen (y down: `ortho2d 0 W H 0`) is the scene's `ccw`.
+fn on_screen(trace: &Trace) -> Culling {
+    let o = trace.ortho2d;
+    let mirrored = (o.right - o.left) * (o.top - o.bottom) < 0.0;
+    match (trace.culling, trace.winding, mirrored) {
+        (Culling::Ccw, Some(WindingSpace::Window), true) => Culling::Cw,
+        (Culling::Cw, Some(WindingSpace::Window), true) => Culling::Ccw,
+        (culling, _, _) => culling,
     }
 }
 
