@@ -216,16 +216,13 @@ fn every_mode_agrees_with_both_rasterizers() {
 #[test]
 fn a_page_in_virtual_time_draws_its_first_frame() {
     let url = format!("{}/?test=1", server());
+    let flags = std::fs::read_to_string(root().join("tests/web/chromium-args.json"))
+        .expect("tests/web/chromium-args.json");
+    let flags: Vec<String> = serde_json::from_str(&flags).expect("a JSON list of flags");
     let output = Command::new(std::env::var("CHROMIUM").unwrap_or("/usr/bin/chromium".into()))
+        .args(flags)
         .args([
             "--headless",
-            "--no-sandbox",
-            "--enable-unsafe-swiftshader",
-            "--use-angle=swiftshader",
-            "--use-gl=angle",
-            "--disable-background-networking",
-            "--disable-component-update",
-            "--no-first-run",
             "--virtual-time-budget=20000",
             "--dump-dom",
             &url,

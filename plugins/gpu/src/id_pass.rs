@@ -18,7 +18,7 @@ use crate::attachments::DEPTH_FORMAT;
 use crate::attachments::texture_2d;
 use crate::gpu::Gpu;
 use crate::readback::Mapping;
-use crate::reference::{FaceDrawing, PipelineKey, has_area, relative_matrices};
+use crate::reference::{FaceDrawing, PipelineKey, has_area, relative_matrices, with_kept_faces};
 use crate::uniforms::UniformSetup;
 
 /// The GPU's answer for one pixel of the reference view.
@@ -205,16 +205,7 @@ fn create_pipeline(
     key: PipelineKey,
     drawing: FaceDrawing,
 ) -> wgpu::RenderPipeline {
-    let shader = device.create_shader_module(wgpu::ShaderModuleDescriptor {
-        label: Some("id_pass.wgsl"),
-        source: wgpu::ShaderSource::Wgsl(
-            concat!(
-                include_str!("id_pass.wgsl"),
-                include_str!("kept_faces.wgsl")
-            )
-            .into(),
-        ),
-    });
+    let shader = with_kept_faces(device, "id_pass.wgsl", include_str!("id_pass.wgsl"));
     let attributes =
         wgpu::vertex_attr_array![0 => Float32x3, 1 => Float32x3, 2 => Float32x3, 3 => Uint32];
     let constants = drawing.constants(key);

@@ -21,7 +21,7 @@ use wgpu::util::DeviceExt;
 use crate::attachments::DEPTH_FORMAT;
 use crate::reference_texture::ReferenceBindings;
 use overlay::OverlayPipelines;
-pub(crate) use polygon_mode::FaceDrawing;
+pub(crate) use polygon_mode::{FaceDrawing, with_kept_faces};
 
 /// [`camera_matrices`] for a mesh uploaded relative to `origin` (see [`GpuMesh::origin`]): the
 /// camera is moved by the same amount, so eye space is unchanged.
@@ -169,16 +169,8 @@ impl Reference {
         queue: &wgpu::Queue,
         color_format: wgpu::TextureFormat,
     ) -> Self {
-        let shader = device.create_shader_module(wgpu::ShaderModuleDescriptor {
-            label: Some("reference.wgsl"),
-            source: wgpu::ShaderSource::Wgsl(
-                concat!(
-                    include_str!("reference.wgsl"),
-                    include_str!("../kept_faces.wgsl")
-                )
-                .into(),
-            ),
-        });
+        let shader =
+            polygon_mode::with_kept_faces(device, "reference.wgsl", include_str!("reference.wgsl"));
         Self {
             shader,
             color_format,

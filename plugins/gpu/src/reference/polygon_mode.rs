@@ -87,6 +87,19 @@ impl FaceDrawing {
     }
 }
 
+/// A shader module of `source` with `kept_faces.wgsl`'s functions after it.
+pub(crate) fn with_kept_faces(
+    device: &wgpu::Device,
+    label: &str,
+    source: &str,
+) -> wgpu::ShaderModule {
+    let kept_faces = include_str!("../kept_faces.wgsl");
+    device.create_shader_module(wgpu::ShaderModuleDescriptor {
+        label: Some(label),
+        source: wgpu::ShaderSource::Wgsl(format!("{source}\n{kept_faces}").into()),
+    })
+}
+
 /// Whether a device with `features` draws some mode as instanced faces.
 pub(super) fn needs_faces(features: wgpu::Features) -> bool {
     !features.contains(wgpu::Features::POLYGON_MODE_LINE | wgpu::Features::POLYGON_MODE_POINT)
