@@ -740,10 +740,16 @@ fn simple_clipping_differs_from_full_only_at_the_frustum_borders() {
 
 /// Runs `close2gl render torus` at 160x120 into `out` with `extra` arguments.
 fn render_command(out: &Path, extra: &[&str]) -> std::process::Output {
+    render_command_with(out, extra, "0")
+}
+
+/// [`render_command`] with `CLOSE2GL_NO_POLYGON_MODE` set to `no_polygon_mode`.
+fn render_command_with(out: &Path, extra: &[&str], no_polygon_mode: &str) -> std::process::Output {
     let empty = parity_dir().join("empty.toml");
     std::fs::create_dir_all(parity_dir()).expect("create target/parity");
     std::fs::write(&empty, "").expect("write target/parity/empty.toml");
     std::process::Command::new(env!("CARGO_BIN_EXE_close2gl"))
+        .env(close2gl_gpu::NO_POLYGON_MODE_VAR, no_polygon_mode)
         .args(["render", "torus", "--size", "160x120", "--config"])
         .arg(&empty)
         .arg("--out")
@@ -822,6 +828,17 @@ fn the_render_command_reports_what_its_images_show() {
         report["frames"], 3,
         "the frames asked for were rendered: {text}"
     );
+    assert_eq!(report["polygon_modes"], true, "lavapipe has them: {text}");
+
+    // WebGL2's way on the desktop: lines drawn face by face, as the report says, agreeing.
+    let set = ["--set", "render.mode=wireframe"];
+    assert_success(&render_command_with(&out, &set, "1"));
+    check_report(&out);
+    let text = std::fs::read_to_string(out.join("report.json")).expect("report.json");
+    let report: serde_json::Value = serde_json::from_str(&text).expect("valid JSON");
+    assert_eq!(report["polygon_modes"], false, "{text}");
+    let agreement = report["coverage_agreement"].as_f64().unwrap_or(0.0);
+    assert!(agreement >= 0.99, "{text}");
 
     assert_success(&render_command(
         &out,

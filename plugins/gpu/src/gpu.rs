@@ -198,6 +198,12 @@ impl Gpu {
         Ok(f())
     }
 
+    /// Whether the device draws lines and points with the hardware's polygon modes (otherwise
+    /// the reference draws them face by face).
+    pub fn has_polygon_modes(&self) -> bool {
+        self.device.features().contains(POLYGON_MODES)
+    }
+
     /// The adapter's name, e.g. "llvmpipe (LLVM 15.0.6, 256 bits)".
     pub fn adapter_name(&self) -> String {
         self.adapter.get_info().name
