@@ -15,8 +15,8 @@ use close2gl::core::{
     TextureFilter, Viewport,
 };
 use close2gl_core::parity::{ColorComparison, Comparison, coverage, diff_image};
-use close2gl_gpu::{OffscreenPlugin, Snapshot, camera_matrices, render_offscreen};
-use close2gl_testkit::{camera_mut as camera, gpu};
+use close2gl_gpu::{Gpu, OffscreenPlugin, Snapshot, camera_matrices, render_offscreen};
+use close2gl_testkit::{camera_mut as camera, gpu, gpu_without_polygon_modes};
 
 /// target/parity, next to the other build products.
 fn parity_dir() -> PathBuf {
@@ -29,6 +29,11 @@ fn parity_dir() -> PathBuf {
 /// The scene for `model` with `overrides`, read from an empty config file so that the
 /// repository's config.toml cannot change what is tested.
 fn scene(model: &str, overrides: &[&str], viewport: Viewport) -> App {
+    scene_on(gpu(), model, overrides, viewport)
+}
+
+/// [`scene`] drawn on `device`.
+fn scene_on(device: Gpu, model: &str, overrides: &[&str], viewport: Viewport) -> App {
     let empty = parity_dir().join("empty.toml");
     std::fs::create_dir_all(parity_dir()).expect("create target/parity");
     if !empty.is_file() {
@@ -41,7 +46,7 @@ fn scene(model: &str, overrides: &[&str], viewport: Viewport) -> App {
     }
     let config = config::load(Some(&empty), &overrides).expect("a valid test config");
     let mut app = close2gl::build_app(&config, viewport).expect("the scene loads");
-    app.add_plugins(OffscreenPlugin(gpu()));
+    app.add_plugins(OffscreenPlugin(device));
     app
 }
 
@@ -169,6 +174,23 @@ const SIZE: Viewport = Viewport {
 
 const MODES: [RenderMode; 3] = [RenderMode::Solid, RenderMode::Wireframe, RenderMode::Points];
 
+/// What scenes are checked on: a device and the modes drawn on it.
+#[derive(Clone, Copy)]
+struct Run {
+    gpu: fn() -> Gpu,
+    modes: &'static [RenderMode],
+}
+
+/// The adapter as it is, every mode (lavapipe has the polygon modes).
+const HARDWARE: Run = Run { gpu, modes: &MODES };
+
+/// The adapter without the polygon-mode features, as WebGL2 offers it: lines and points drawn
+/// face by face and culled in the shader. Solid triangles are drawn the same either way.
+const NO_POLYGON_MODES: Run = Run {
+    gpu: gpu_without_polygon_modes,
+    modes: &[RenderMode::Wireframe, RenderMode::Points],
+};
+
 /// Coverage agreement needed. The software rasterizer follows the reference's rasterization
 /// rules itself, so solid triangles must agree more closely than the GPU drawing Close2GL's 2D
 /// buffer (where two sets of vertex positions, rounded apart, meet the same rules).
@@ -251,14 +273,14 @@ fn far_plane_points(pose: Pose, mode: RenderMode) -> bool {
 /// Renders the selected poses × modes × both front faces of `model`, flat colour and full
 /// clipping; returns the failures, one line each. A pose whose every variant shows nothing is a
 /// failure too: it would prove nothing.
-fn check_scene(label: &str, model: &str, overrides: &[&str]) -> String {
+fn check_scene(run: Run, label: &str, model: &str, overrides: &[&str]) -> String {
     let mut failures = String::new();
     for pose in Pose::SCENE {
-        let mut app = scene(model, overrides, SIZE);
+        let mut app = scene_on((run.gpu)(), model, overrides, SIZE);
         pose.apply(&mut app);
         let mut covered_any = false;
         for front_face in [FrontFace::Ccw, FrontFace::Cw] {
-            for mode in MODES {
+            for &mode in run.modes {
                 for rasterizer in Rasterizer::ALL.iter().copied() {
                     let s = settings(&mut app);
                     (s.front_face, s.mode, s.close2gl_raster) = (front_face, mode, rasterizer);
@@ -336,9 +358,13 @@ fn judge(case: &str, snapshot: &Snapshot, c: &Comparison, needed: Needed) -> Str
 }
 
 fn assert_scenes(scenes: &[(&str, &str, &[&str])]) {
+    assert_scenes_on(HARDWARE, scenes);
+}
+
+fn assert_scenes_on(run: Run, scenes: &[(&str, &str, &[&str])]) {
     let failures: String = scenes
         .iter()
-        .map(|(label, model, overrides)| check_scene(label, model, overrides))
+        .map(|(label, model, overrides)| check_scene(run, label, model, overrides))
         .collect();
     assert!(failures.is_empty(), "the views disagree:\n{failures}");
 }
@@ -352,6 +378,24 @@ fn the_primitives_agree_in_every_pose_front_face_and_mode() {
         ("cone", "cone", &[]),
         ("cylinder", "cylinder", &[]),
     ]);
+}
+
+/// WebGL2's way (no polygon modes) on the desktop: lines and points drawn face by face must
+/// agree with Close2GL as the hardware's polygon modes do, in every pose, front face and
+/// rasterizer.
+#[test]
+fn without_polygon_modes_lines_and_points_agree_in_every_pose_and_front_face() {
+    let knot = format!("{}/assets/knot.obj", env!("CARGO_MANIFEST_DIR"));
+    assert_scenes_on(
+        NO_POLYGON_MODES,
+        &[
+            ("faces_box", "box", &[]),
+            ("faces_sphere", "sphere", &[]),
+            ("faces_torus", "torus", &[]),
+            ("faces_cone", "cone", &[]),
+            ("faces_knot", knot.as_str(), &[]),
+        ],
+    );
 }
 
 #[test]
@@ -696,10 +740,16 @@ fn simple_clipping_differs_from_full_only_at_the_frustum_borders() {
 
 /// Runs `close2gl render torus` at 160x120 into `out` with `extra` arguments.
 fn render_command(out: &Path, extra: &[&str]) -> std::process::Output {
+    render_command_with(out, extra, "0")
+}
+
+/// [`render_command`] with `CLOSE2GL_NO_POLYGON_MODE` set to `no_polygon_mode`.
+fn render_command_with(out: &Path, extra: &[&str], no_polygon_mode: &str) -> std::process::Output {
     let empty = parity_dir().join("empty.toml");
     std::fs::create_dir_all(parity_dir()).expect("create target/parity");
     std::fs::write(&empty, "").expect("write target/parity/empty.toml");
     std::process::Command::new(env!("CARGO_BIN_EXE_close2gl"))
+        .env(close2gl_gpu::NO_POLYGON_MODE_VAR, no_polygon_mode)
         .args(["render", "torus", "--size", "160x120", "--config"])
         .arg(&empty)
         .arg("--out")
@@ -778,6 +828,17 @@ fn the_render_command_reports_what_its_images_show() {
         report["frames"], 3,
         "the frames asked for were rendered: {text}"
     );
+    assert_eq!(report["polygon_modes"], true, "lavapipe has them: {text}");
+
+    // WebGL2's way on the desktop: lines drawn face by face, as the report says, agreeing.
+    let set = ["--set", "render.mode=wireframe"];
+    assert_success(&render_command_with(&out, &set, "1"));
+    check_report(&out);
+    let text = std::fs::read_to_string(out.join("report.json")).expect("report.json");
+    let report: serde_json::Value = serde_json::from_str(&text).expect("valid JSON");
+    assert_eq!(report["polygon_modes"], false, "{text}");
+    let agreement = report["coverage_agreement"].as_f64().unwrap_or(0.0);
+    assert!(agreement >= 0.99, "{text}");
 
     assert_success(&render_command(
         &out,

@@ -3,7 +3,9 @@
 //! `tests/web/page.mjs` with playwright-core; WebGL2 runs on SwiftShader there). Each page is
 //! opened with `?test=1`, so the app keeps its JSON status in `#status`: the first frame is
 //! drawn, both views agree, a link's model and settings are applied and the link follows the
-//! view. Needs what `.ci/run` installs: the wasm32 target, wasm-bindgen-cli at the lock file's
+//! view; every mode with both of Close2GL's rasterizers agrees (the reference draws lines and
+//! points face by face, WebGL2 having no polygon modes); a page in virtual time, which starts at
+//! time zero, draws its first frame. Needs what `.ci/run` installs: the wasm32 target, wasm-bindgen-cli at the lock file's
 //! version, Node.js with `npm ci` done in tests/web, and chromium.
 
 use std::io::{BufRead, BufReader, Write};
@@ -155,6 +157,101 @@ fn the_first_frame_is_drawn_and_both_views_agree() {
         "the views disagree: {agreement} ({status})"
     );
     eprintln!("first frame after {first:.0} ms: {status}");
+    let wasm = site().join("close2gl_web_bg.wasm");
+    let gzipped = gzipped_bytes(&wasm);
+    eprintln!("the module: {gzipped} bytes gzipped");
+    // 4 MB, not MiB: the stricter reading of the size budget.
+    assert!(
+        gzipped < 4_000_000,
+        "the module is {gzipped} bytes gzipped, over 4 MB"
+    );
+}
+
+/// The size of `file` compressed with `gzip -9`, as a server would send it.
+fn gzipped_bytes(file: &Path) -> usize {
+    let output = Command::new("gzip")
+        .arg("-9c")
+        .arg(file)
+        .output()
+        .expect("gzip runs");
+    assert!(
+        output.status.success(),
+        "gzip {}: {output:?}",
+        file.display()
+    );
+    output.stdout.len()
+}
+
+/// Points, wireframe and solid, each with both Close2GL rasterizers, agree with the reference
+/// in the page as on the desktop: WebGL2 has no polygon modes, so the reference draws each kept
+/// face's edges or corners itself.
+#[test]
+fn every_mode_agrees_with_both_rasterizers() {
+    let mut failures = String::new();
+    for (mode, needed) in [("points", 0.99), ("wireframe", 0.99), ("solid", 0.999)] {
+        for raster in ["software", "gpu"] {
+            let link = format!("render.mode=%22{mode}%22&render.close2gl_raster=%22{raster}%22");
+            let report = open(&format!("?test=1#{link}"), &format!("{mode}-{raster}.png"));
+            let status = &report["status"];
+            assert_eq!(status["settings"]["render.mode"], mode, "{status}");
+            assert_eq!(
+                status["settings"]["render.close2gl_raster"], raster,
+                "{status}"
+            );
+            let agreement = number(status, "coverage_agreement");
+            eprintln!(
+                "{mode}, {raster}: coverage agreement {agreement} ({})",
+                status["backend"]
+            );
+            if agreement < needed {
+                failures += &format!("{mode}, {raster}: {agreement} < {needed} ({status})\n");
+            }
+        }
+    }
+    assert!(failures.is_empty(), "the views disagree:\n{failures}");
+}
+
+/// A page in virtual time (as crawlers and test runners open it) starts its clock at zero and
+/// runs it only as fast as the page's work: it must draw its first frame and report it, not
+/// stop (the link's throttle once subtracted 250 ms from the clock's first reading).
+#[test]
+fn a_page_in_virtual_time_draws_its_first_frame() {
+    let url = format!("{}/?test=1", server());
+    let flags = std::fs::read_to_string(root().join("tests/web/chromium-args.json"))
+        .expect("tests/web/chromium-args.json");
+    let flags: Vec<String> = serde_json::from_str(&flags).expect("a JSON list of flags");
+    let output = Command::new(std::env::var("CHROMIUM").unwrap_or("/usr/bin/chromium".into()))
+        .args(flags)
+        .args([
+            "--headless",
+            "--virtual-time-budget=20000",
+            "--dump-dom",
+            &url,
+        ])
+        .output()
+        .expect("chromium runs (apt-get install chromium)");
+    let dom = String::from_utf8_lossy(&output.stdout);
+    let text = |id: &str| element_text(&dom, id).unwrap_or_else(|| panic!("no #{id} in {dom}"));
+    let error = text("error");
+    assert!(error.is_empty(), "the page stopped: {error}");
+    let status: Value = serde_json::from_str(&text("status"))
+        .unwrap_or_else(|e| panic!("no status in virtual time ({e}): {dom}"));
+    assert!(number(&status, "frames") >= 1.0, "{status}");
+    eprintln!("in virtual time: {status}");
+}
+
+/// The text of the element with `id` in a serialized DOM, its entities decoded.
+fn element_text(dom: &str, id: &str) -> Option<String> {
+    let start = dom.find(&format!("id=\"{id}\""))?;
+    let open_end = start + dom[start..].find('>')? + 1;
+    let close = open_end + dom[open_end..].find('<')?;
+    let raw = &dom[open_end..close];
+    Some(
+        raw.replace("&lt;", "<")
+            .replace("&gt;", ">")
+            .replace("&quot;", "\"")
+            .replace("&amp;", "&"),
+    )
 }
 
 #[test]

@@ -255,11 +255,11 @@ impl Running {
 
     /// Waits until `done` holds, while the app runs, for at most [`STEP_TIMEOUT`].
     fn until(&mut self, what: &str, mut done: impl FnMut() -> bool) {
-        let deadline = Instant::now() + STEP_TIMEOUT;
+        let started = Instant::now();
         while !done() {
             self.assert_running();
             assert!(
-                Instant::now() < deadline,
+                started.elapsed() < STEP_TIMEOUT,
                 "no {what} within {STEP_TIMEOUT:?}"
             );
             std::thread::sleep(Duration::from_millis(100));
@@ -282,13 +282,13 @@ impl Running {
 
     /// The app's exit status and stderr, once it exits by itself.
     fn finish(mut self) -> (ExitStatus, String) {
-        let deadline = Instant::now() + STEP_TIMEOUT;
+        let started = Instant::now();
         loop {
             if let Some(status) = self.child.try_wait().expect("the app can be waited on") {
                 return (status, self.stderr());
             }
             assert!(
-                Instant::now() < deadline,
+                started.elapsed() < STEP_TIMEOUT,
                 "the app did not exit within {STEP_TIMEOUT:?}"
             );
             std::thread::sleep(Duration::from_millis(50));
@@ -321,13 +321,13 @@ fn xdotool(xvfb: &Xvfb, args: &[&str]) -> Output {
         }
         Err(e) => panic!("cannot run xdotool: {e}"),
     };
-    let deadline = Instant::now() + STEP_TIMEOUT;
+    let started = Instant::now();
     while child
         .try_wait()
         .expect("xdotool can be waited on")
         .is_none()
     {
-        if Instant::now() > deadline {
+        if started.elapsed() > STEP_TIMEOUT {
             let _ = child.kill();
             panic!("xdotool {args:?} did not finish within {STEP_TIMEOUT:?}");
         }

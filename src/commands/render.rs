@@ -203,6 +203,7 @@ fn write_pose(dir: &Path, suffix: &str, snapshot: &Snapshot, gpu: &Gpu) -> Resul
     Ok(json!({
         "adapter": gpu.adapter_name(),
         "backend": gpu.backend_name(),
+        "polygon_modes": gpu.has_polygon_modes(),
         "size": [snapshot.reference.width, snapshot.reference.height],
         "coverage_agreement": comparison.coverage_agreement,
         "mismatched_pixels": comparison.mismatched_pixels,

@@ -5,22 +5,17 @@
 // the status shows it as the model or the trace.
 //
 //   node page.mjs URL SCREENSHOT.png [TIMEOUT_MS [PICK]]
+import { readFileSync } from "node:fs";
 import { basename } from "node:path";
 import { chromium } from "playwright-core";
+
+// Chromium's flags, shared with tests/web_page.rs's page in virtual time.
+const args = JSON.parse(readFileSync(new URL("./chromium-args.json", import.meta.url), "utf8"));
 
 const [url, screenshot, timeout = "90000", pick] = process.argv.slice(2);
 const browser = await chromium.launch({
   executablePath: process.env.CHROMIUM ?? "/usr/bin/chromium",
-  args: [
-    "--no-sandbox",
-    "--enable-unsafe-swiftshader",
-    "--use-angle=swiftshader",
-    "--use-gl=angle",
-    "--disable-background-networking",
-    "--disable-component-update",
-    "--disable-sync",
-    "--no-first-run",
-  ],
+  args,
 });
 const errors = [];
 try {

@@ -17,16 +17,35 @@ pub struct Gpu {
     lost: Arc<Mutex<Option<String>>>,
 }
 
-/// The optional features the reference renderer uses when the adapter has them: they are what
-/// make glPolygonMode's lines and points possible.
-const WANTED_FEATURES: wgpu::Features =
+/// The optional features the reference renderer uses when the adapter has them: glPolygonMode's
+/// lines and points drawn by the hardware (without them, face by face).
+const POLYGON_MODES: wgpu::Features =
     wgpu::Features::POLYGON_MODE_LINE.union(wgpu::Features::POLYGON_MODE_POINT);
+
+/// Set to 1, the device is opened without [`POLYGON_MODES`] even where the adapter has them: the
+/// way WebGL2 draws lines and points, on the desktop.
+pub const NO_POLYGON_MODE_VAR: &str = "CLOSE2GL_NO_POLYGON_MODE";
+
+/// The optional features to ask the adapter for: [`POLYGON_MODES`] unless
+/// [`NO_POLYGON_MODE_VAR`] is 1.
+fn wanted_features() -> wgpu::Features {
+    match std::env::var(NO_POLYGON_MODE_VAR).as_deref() {
+        Ok("1") => wgpu::Features::empty(),
+        _ => POLYGON_MODES,
+    }
+}
 
 impl Gpu {
     /// No window: `backends` picks Vulkan, GL, ... (`WGPU_BACKEND` in the environment is ignored
     /// so that the caller's choice is the one used). Fails with a message saying what to install
     /// when no adapter exists.
     pub fn headless(backends: wgpu::Backends) -> Result<Gpu, String> {
+        Self::headless_with(backends, wanted_features())
+    }
+
+    /// [`Gpu::headless`] asking for the optional features in `wanted` (those the adapter has),
+    /// whatever the environment says.
+    pub fn headless_with(backends: wgpu::Backends, wanted: wgpu::Features) -> Result<Gpu, String> {
         let mut descriptor = wgpu::InstanceDescriptor::new_without_display_handle_from_env();
         descriptor.backends = backends;
         let instance = wgpu::Instance::new(descriptor);
@@ -35,7 +54,7 @@ impl Gpu {
             ..Default::default()
         }))
         .map_err(|_| no_adapter(backends))?;
-        Self::with_adapter(instance, adapter)
+        pollster::block_on(Self::open_device(instance, adapter, wanted))
     }
 
     /// For windows: the caller made the instance (with a display handle) and a surface; the
@@ -62,7 +81,9 @@ impl Gpu {
         // Real GPUs before software ones, as `PowerPreference::HighPerformance` would.
         presenting.sort_by_key(|adapter| adapter.get_info().device_type == wgpu::DeviceType::Cpu);
         match presenting.into_iter().next() {
-            Some(adapter) => Self::with_adapter(instance, adapter),
+            Some(adapter) => {
+                pollster::block_on(Self::open_device(instance, adapter, wanted_features()))
+            }
             None if names.is_empty() => Err(no_adapter(wgpu::Backends::all())),
             None => Err(format!(
                 "no GPU adapter can present to this window ({} cannot)",
@@ -86,18 +107,18 @@ impl Gpu {
             })
             .await
             .map_err(|e| format!("this browser offers no WebGPU or WebGL2 adapter: {e}"))?;
-        Self::open_device(instance, adapter).await
+        Self::open_device(instance, adapter, wanted_features()).await
     }
 
-    fn with_adapter(instance: wgpu::Instance, adapter: wgpu::Adapter) -> Result<Gpu, String> {
-        pollster::block_on(Self::open_device(instance, adapter))
-    }
-
-    async fn open_device(instance: wgpu::Instance, adapter: wgpu::Adapter) -> Result<Gpu, String> {
+    async fn open_device(
+        instance: wgpu::Instance,
+        adapter: wgpu::Adapter,
+        wanted: wgpu::Features,
+    ) -> Result<Gpu, String> {
         let (device, queue) = adapter
             .request_device(&wgpu::DeviceDescriptor {
                 label: Some("close2gl"),
-                required_features: adapter.features() & WANTED_FEATURES,
+                required_features: adapter.features() & wanted,
                 // Everything the adapter offers: big viewports need its real texture size limit.
                 required_limits: adapter.limits(),
                 ..Default::default()
@@ -175,6 +196,12 @@ impl Gpu {
     #[cfg(target_arch = "wasm32")]
     pub fn validated<T>(&self, f: impl FnOnce() -> T) -> Result<T, String> {
         Ok(f())
+    }
+
+    /// Whether the device draws lines and points with the hardware's polygon modes (otherwise
+    /// the reference draws them face by face).
+    pub fn has_polygon_modes(&self) -> bool {
+        self.device.features().contains(POLYGON_MODES)
     }
 
     /// The adapter's name, e.g. "llvmpipe (LLVM 15.0.6, 256 bits)".

@@ -3,7 +3,8 @@
 //! An ID pass draws the mesh as the reference does (glam's matrices, the same culling, front
 //! face, polygon mode and depth test) into an R32Uint target holding each fragment's mesh
 //! triangle index + 1 and an R32Float target holding its depth; one texel of each is read back.
-//! The index comes from a flat per-triangle vertex attribute of a non-indexed draw rather than
+//! The index comes from a flat per-face attribute of an instanced draw (one instance a face, which
+//! is also how lines and points are drawn without polygon modes) rather than
 //! WGSL's `primitive_index`: that builtin is an optional feature (Vulkan needs geometry shaders
 //! for it, WebGPU and older Metal GPUs lack it), and the reference's index buffer is reordered
 //! (zero-area triangles last), so a primitive index would need a table back to mesh order anyway.
@@ -17,7 +18,7 @@ use crate::attachments::DEPTH_FORMAT;
 use crate::attachments::texture_2d;
 use crate::gpu::Gpu;
 use crate::readback::Mapping;
-use crate::reference::{PipelineKey, has_area, primitive_state, relative_matrices};
+use crate::reference::{FaceDrawing, PipelineKey, has_area, relative_matrices, with_kept_faces};
 use crate::uniforms::UniformSetup;
 
 /// The GPU's answer for one pixel of the reference view.
@@ -29,11 +30,12 @@ pub struct ReferenceHit {
     pub depth: f32,
 }
 
-/// One vertex of the ID pass: a corner (relative to the mesh's origin) and its triangle's index.
+/// One instance of the ID pass: a face's corners (relative to the mesh's origin) and its
+/// triangle's index.
 #[repr(C)]
 #[derive(Clone, Copy, Pod, Zeroable)]
-struct IdVertex {
-    position: [f32; 3],
+struct IdFace {
+    corners: [[f32; 3]; 3],
     triangle: u32,
 }
 
@@ -71,12 +73,12 @@ pub fn start_probe(
         .mesh
         .validate()
         .map_err(|e| format!("cannot probe an invalid mesh: {e}"))?;
-    let vertices = id_vertices(scene.mesh, scene.settings.backface_culling);
-    if vertices.is_empty() {
+    let faces = id_faces(scene.mesh, scene.settings.backface_culling);
+    if faces.is_empty() {
         return Ok(ReferenceProbe(None));
     }
     let targets = Targets::new(&gpu.device, (width, height));
-    draw(gpu, scene, &vertices, &targets);
+    draw(gpu, scene, &faces, &targets);
     Ok(ReferenceProbe(Some(copy_texel(gpu, &targets, (x, y)))))
 }
 
@@ -108,20 +110,18 @@ fn read_hit(bytes: &[u8]) -> Option<ReferenceHit> {
         .map(|triangle| ReferenceHit { triangle, depth })
 }
 
-/// Three vertices per drawn triangle, each carrying the triangle's mesh index. With culling on,
-/// triangles without area are left out, as the reference leaves them out.
-fn id_vertices(mesh: &Mesh, culling: bool) -> Vec<IdVertex> {
+/// Each drawn triangle with its mesh index. With culling on, triangles without area are left
+/// out, as the reference leaves them out.
+fn id_faces(mesh: &Mesh, culling: bool) -> Vec<IdFace> {
     let origin = mesh.bounding_sphere().0;
     let corners = |t: &[u32; 3]| t.map(|i| mesh.positions[i as usize]);
     mesh.triangles
         .iter()
         .enumerate()
         .filter(|(_, t)| !culling || has_area(corners(t)))
-        .flat_map(|(index, t)| {
-            corners(t).map(|p| IdVertex {
-                position: (p - origin).to_array(),
-                triangle: index as u32,
-            })
+        .map(|(index, t)| IdFace {
+            corners: corners(t).map(|p| (p - origin).to_array()),
+            triangle: index as u32,
         })
         .collect()
 }
@@ -150,7 +150,7 @@ impl Targets {
     }
 }
 
-fn draw(gpu: &Gpu, scene: Scene<'_>, vertices: &[IdVertex], targets: &Targets) {
+fn draw(gpu: &Gpu, scene: Scene<'_>, faces: &[IdFace], targets: &Targets) {
     let device = &gpu.device;
     let setup = UniformSetup::new(device, "probe", size_of::<[[f32; 4]; 4]>());
     let (view, projection) = relative_matrices(scene.camera, scene.mesh.bounding_sphere().0);
@@ -158,11 +158,13 @@ fn draw(gpu: &Gpu, scene: Scene<'_>, vertices: &[IdVertex], targets: &Targets) {
     gpu.queue
         .write_buffer(&setup.buffer, 0, bytemuck::bytes_of(&view_projection));
     let buffer = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
-        label: Some("probe vertices"),
-        contents: bytemuck::cast_slice(vertices),
+        label: Some("probe faces"),
+        contents: bytemuck::cast_slice(faces),
         usage: wgpu::BufferUsages::VERTEX,
     });
-    let pipeline = create_pipeline(device, &setup.layout, PipelineKey::new(scene.settings));
+    let key = PipelineKey::new(scene.settings);
+    let drawing = FaceDrawing::new(device.features(), scene.settings.mode);
+    let pipeline = create_pipeline(device, &setup.layout, key, drawing);
     let id_view = targets.id.create_view(&Default::default());
     let depth_out_view = targets.depth_out.create_view(&Default::default());
     let depth_view = targets.depth.create_view(&Default::default());
@@ -192,7 +194,7 @@ fn draw(gpu: &Gpu, scene: Scene<'_>, vertices: &[IdVertex], targets: &Targets) {
         pass.set_pipeline(&pipeline);
         pass.set_bind_group(0, &setup.bind_group, &[]);
         pass.set_vertex_buffer(0, buffer.slice(..));
-        pass.draw(0..vertices.len() as u32, 0..1);
+        pass.draw(0..drawing.vertices_per_face(), 0..faces.len() as u32);
     }
     gpu.queue.submit([encoder.finish()]);
 }
@@ -201,23 +203,30 @@ fn create_pipeline(
     device: &wgpu::Device,
     layout: &wgpu::PipelineLayout,
     key: PipelineKey,
+    drawing: FaceDrawing,
 ) -> wgpu::RenderPipeline {
-    let shader = device.create_shader_module(wgpu::include_wgsl!("id_pass.wgsl"));
-    let attributes = wgpu::vertex_attr_array![0 => Float32x3, 1 => Uint32];
+    let shader = with_kept_faces(device, "id_pass.wgsl", include_str!("id_pass.wgsl"));
+    let attributes =
+        wgpu::vertex_attr_array![0 => Float32x3, 1 => Float32x3, 2 => Float32x3, 3 => Uint32];
+    let constants = drawing.constants(key);
+    let options = wgpu::PipelineCompilationOptions {
+        constants: &constants,
+        ..Default::default()
+    };
     device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
         label: Some("probe"),
         layout: Some(layout),
         vertex: wgpu::VertexState {
             module: &shader,
             entry_point: Some("vs_main"),
-            compilation_options: Default::default(),
+            compilation_options: options,
             buffers: &[Some(wgpu::VertexBufferLayout {
-                array_stride: size_of::<IdVertex>() as u64,
-                step_mode: wgpu::VertexStepMode::Vertex,
+                array_stride: size_of::<IdFace>() as u64,
+                step_mode: wgpu::VertexStepMode::Instance,
                 attributes: &attributes,
             })],
         },
-        primitive: primitive_state(device.features(), key),
+        primitive: drawing.primitive_state(key),
         depth_stencil: Some(wgpu::DepthStencilState {
             format: DEPTH_FORMAT,
             depth_write_enabled: Some(true),

@@ -20,11 +20,32 @@ struct Probe {
     @location(1) depth: f32,
 }
 
+// One face an instance: drawn as a triangle (3 vertices, culled by the hardware), or without
+// polygon modes as its edges or corners (6 vertices), culled here (kept_faces.wgsl).
+struct Face {
+    @location(0) p0: vec3<f32>,
+    @location(1) p1: vec3<f32>,
+    @location(2) p2: vec3<f32>,
+    @location(3) triangle: u32,
+}
+
 @vertex
-fn vs_main(@location(0) position: vec3<f32>, @location(1) triangle: u32) -> Varyings {
+fn vs_main(@builtin(vertex_index) index: u32, face: Face) -> Varyings {
+    var clips = array<vec4<f32>, 3>(
+        u.view_projection * vec4<f32>(face.p0, 1.0),
+        u.view_projection * vec4<f32>(face.p1, 1.0),
+        u.view_projection * vec4<f32>(face.p2, 1.0),
+    );
+    let v = face_vertex(index, clips[0], clips[1], clips[2]);
     var out: Varyings;
-    out.clip = u.view_projection * vec4<f32>(position, 1.0);
-    out.triangle = triangle;
+    out.clip = mix(clips[v.i], clips[v.j], v.t);
+    if v.near {
+        out.clip.z = 0.0;
+    }
+    if !v.kept || culled(clips[0], clips[1], clips[2]) {
+        out.clip = CLIPPED;
+    }
+    out.triangle = face.triangle;
     return out;
 }
 

@@ -1,5 +1,7 @@
 //! The GPU side of close2gl, on wgpu: the shared device ([`Gpu`], which says when it is lost),
-//! the reference renderer (the mesh drawn from glam's own camera matrices, standing in for OpenGL)
+//! the reference renderer (the mesh drawn from glam's own camera matrices, standing in for OpenGL;
+//! its lines and points drawn face by face where the device lacks the polygon-mode features, or
+//! when the environment's `CLOSE2GL_NO_POLYGON_MODE` is 1, read as each device opens)
 //! and the Close2GL view (the 2D buffer drawn through a pass-through pipeline, or the software
 //! rasterizer's image drawn as one textured triangle, or in the fate view each triangle in its
 //! fate's colour, or in the live difference where the two views differ), both held in [`Views`],
@@ -54,7 +56,7 @@ use uploads::{
 pub use attachments::DEPTH_FORMAT;
 pub use close2gl_core::Image;
 pub use close2gl_core::camera_matrices;
-pub use gpu::{Gpu, parse_backends};
+pub use gpu::{Gpu, NO_POLYGON_MODE_VAR, parse_backends};
 pub use id_pass::{ReferenceHit, ReferenceProbe, probe_reference, start_probe};
 pub use offscreen::{OFFSCREEN_FORMAT, OffscreenPlugin, Snapshot, render_offscreen};
 pub use pass::{submit_pass, submit_pass_timed};

@@ -104,8 +104,8 @@ impl Views {
         self.background
     }
 
-    /// Shown in the UI when the adapter lacks POLYGON_MODE_LINE / POINT (what is drawn instead),
-    /// else None.
+    /// Shown in the UI when the device lacks POLYGON_MODE_LINE / POINT (how lines and points are
+    /// drawn instead), else None.
     pub fn limitations(&self) -> Option<String> {
         self.reference.limitations()
     }

@@ -7,10 +7,10 @@ use close2gl_core::bevy_ecs::change_detection::DetectChangesMut;
 use close2gl_core::glam::{Vec2, Vec3};
 use close2gl_core::parity::{Comparison, ONLY_REFERENCE, coverage, diff_image, to_rgb8};
 use close2gl_core::{
-    App, Camera, Clipping, FrontFace, Image, Mesh, Overlay, RenderMode, RenderSettings, Shading,
-    Texture, TextureFilter, Viewport,
+    App, Camera, Clipping, FrontFace, Image, Mesh, Overlay, RenderMode, RenderSettings, Scene,
+    Shading, Texture, TextureFilter, Viewport,
 };
-use close2gl_gpu::{Gpu, OffscreenPlugin, Snapshot, render_offscreen};
+use close2gl_gpu::{Gpu, OffscreenPlugin, Snapshot, probe_reference, render_offscreen};
 use close2gl_pipeline::Close2glPlugin;
 use close2gl_testkit::{gpu, sphere};
 
@@ -302,6 +302,55 @@ fn without_polygon_modes_the_views_say_what_they_draw_instead() {
         assert!(
             covered > 100,
             "{mode:?}: the fallback drew {covered} pixels"
+        );
+    }
+}
+
+/// Without the polygon modes the probe's ID pass draws lines and points face by face as the
+/// reference does: a sample of the pixels the reference covers are hit, on a triangle facing
+/// the camera (culling is on), and a sample of those it leaves are not.
+#[test]
+fn without_polygon_modes_the_probe_hits_what_the_reference_draws() {
+    let bare = close2gl_testkit::gpu_without_polygon_modes();
+    let viewport = Viewport {
+        width: 48,
+        height: 36,
+    };
+    let camera = camera_at(Vec3::new(0.3, 0.5, 3.0), Vec3::ZERO);
+    let mesh = sphere(Vec3::ZERO, 1.0, 8, 16);
+    for mode in [RenderMode::Wireframe, RenderMode::Points] {
+        let settings = RenderSettings {
+            mode,
+            backface_culling: true,
+            ..Default::default()
+        };
+        let mut app = app_on(bare.clone(), mesh.clone(), camera, settings, viewport);
+        let snapshot = render_offscreen(&mut app).expect("render");
+        let covered = coverage(&snapshot.reference, snapshot.background);
+        let scene = Scene {
+            mesh: &mesh,
+            camera: &camera,
+            settings: &settings,
+            viewport,
+        };
+        let (mut hits, mut misses) = (0, 0);
+        for (i, &on) in covered.iter().enumerate().filter(|(i, _)| i % 7 == 0) {
+            let pixel = (i as u32 % viewport.width, i as u32 / viewport.width);
+            let hit = probe_reference(&bare, scene, pixel).expect("the probe reads back");
+            assert_eq!(hit.is_some(), on, "{mode:?} at {pixel:?}: {hit:?}");
+            let Some(hit) = hit else {
+                misses += 1;
+                continue;
+            };
+            let [a, b, c] =
+                mesh.triangles[hit.triangle as usize].map(|i| mesh.positions[i as usize]);
+            let facing = (b - a).cross(c - a).dot(camera.position - a);
+            assert!(facing > 0.0, "{mode:?}: a culled triangle hit at {pixel:?}");
+            hits += 1;
+        }
+        assert!(
+            hits > 3 && misses > 3,
+            "{mode:?}: {hits} hits, {misses} misses"
         );
     }
 }

@@ -65,10 +65,30 @@ pub fn mesh(app: &mut App) -> &Mesh {
 /// adapter is a failure that says what to install, never a silent pass.
 #[cfg(feature = "gpu")]
 pub fn gpu() -> close2gl_gpu::Gpu {
-    use std::sync::OnceLock;
-    static GPU: OnceLock<Result<close2gl_gpu::Gpu, String>> = OnceLock::new();
-    let primary = close2gl_gpu::wgpu::Backends::PRIMARY;
-    match GPU.get_or_init(|| close2gl_gpu::Gpu::headless(primary)) {
+    static GPU: GpuCell = std::sync::OnceLock::new();
+    shared(&GPU, close2gl_gpu::Gpu::headless)
+}
+
+/// [`gpu`]'s adapter opened without the polygon-mode features, as WebGL2 offers it: lines and
+/// points are drawn face by face. Made once per test binary.
+#[cfg(feature = "gpu")]
+pub fn gpu_without_polygon_modes() -> close2gl_gpu::Gpu {
+    static GPU: GpuCell = std::sync::OnceLock::new();
+    shared(&GPU, |backends| {
+        close2gl_gpu::Gpu::headless_with(backends, close2gl_gpu::wgpu::Features::empty())
+    })
+}
+
+#[cfg(feature = "gpu")]
+type GpuCell = std::sync::OnceLock<Result<close2gl_gpu::Gpu, String>>;
+
+/// The device in `cell`, opened by `open` on the primary backends the first time.
+#[cfg(feature = "gpu")]
+fn shared(
+    cell: &GpuCell,
+    open: impl FnOnce(close2gl_gpu::wgpu::Backends) -> Result<close2gl_gpu::Gpu, String>,
+) -> close2gl_gpu::Gpu {
+    match cell.get_or_init(|| open(close2gl_gpu::wgpu::Backends::PRIMARY)) {
         Ok(gpu) => gpu.clone(),
         Err(e) => panic!("these tests need a GPU adapter: {e}"),
     }

@@ -150,19 +150,28 @@ fn number(value: Option<f64>, decimals: usize) -> String {
 mod tests {
     use super::*;
 
+    /// `t` plus `d`, checked: no arithmetic on an Instant can overflow, in tests either.
+    fn after(t: Instant, d: Duration) -> Instant {
+        t.checked_add(d)
+            .expect("an instant seconds after the clock's reading")
+    }
+
     #[test]
     fn fps_counts_the_frames_of_the_last_second() {
         let mut timer = FrameTimer::default();
         let t0 = Instant::now();
         assert_eq!(timer.fps(), None);
         for i in 0..=20 {
-            timer.record(t0 + Duration::from_millis(50 * i), Duration::from_millis(4));
+            timer.record(
+                after(t0, Duration::from_millis(50 * i)),
+                Duration::from_millis(4),
+            );
         }
         // 21 frames 50 ms apart, the oldest ones past one second dropped: 20 fps.
         let fps = timer.fps().unwrap_or_default();
         assert!((fps - 20.0).abs() < 1e-6, "fps {fps}");
         assert!((timer.mean_ms().unwrap_or_default() - 4.0).abs() < 1e-9);
-        timer.record(t0 + Duration::from_secs(10), Duration::from_millis(8));
+        timer.record(after(t0, Duration::from_secs(10)), Duration::from_millis(8));
         assert_eq!(timer.fps(), None, "a lone frame after a pause has no rate");
         assert_eq!(timer.mean_ms(), Some(8.0));
     }

@@ -54,7 +54,8 @@ pub struct Viewer {
 struct Opening {
     windows: Created,
     error: String,
-    deadline: Instant,
+    /// `None`: the clock cannot count that far on, so the error stands at once.
+    deadline: Option<Instant>,
 }
 
 #[cfg(not(target_arch = "wasm32"))]
@@ -422,7 +423,7 @@ impl ApplicationHandler for Viewer {
                 self.opening = Some(Opening {
                     windows: created,
                     error,
-                    deadline: Instant::now() + OPENING_GRACE,
+                    deadline: Instant::now().checked_add(OPENING_GRACE),
                 });
             }
         }
@@ -473,8 +474,8 @@ impl ApplicationHandler for Viewer {
 
     fn about_to_wait(&mut self, event_loop: &ActiveEventLoop) {
         if let Some(opening) = &self.opening {
-            if Instant::now() < opening.deadline {
-                return event_loop.set_control_flow(ControlFlow::WaitUntil(opening.deadline));
+            if let Some(deadline) = opening.deadline.filter(|d| Instant::now() < *d) {
+                return event_loop.set_control_flow(ControlFlow::WaitUntil(deadline));
             }
             let error = opening.error.clone();
             self.opening = None;

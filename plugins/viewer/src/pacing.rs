@@ -82,15 +82,24 @@ impl Pacing {
 mod tests {
     use super::*;
 
+    /// `t` plus `d`, checked: no arithmetic on an Instant can overflow, in tests either.
+    fn after(t: Instant, d: Duration) -> Instant {
+        t.checked_add(d)
+            .expect("an instant seconds after the clock's reading")
+    }
+
     const IDLE: Duration = Duration::MAX;
 
     #[test]
     fn a_hold_is_timed_from_its_previous_frame_and_its_first_frame_is_nominal() {
         let t0 = Instant::now();
         let mut pacing = Pacing::new(t0);
-        assert_eq!(pacing.frame_dt(t0 + Duration::from_secs(5)), NOMINAL_FRAME);
+        assert_eq!(
+            pacing.frame_dt(after(t0, Duration::from_secs(5))),
+            NOMINAL_FRAME
+        );
         assert!(pacing.after_frame(t0, true, false, false, IDLE));
-        let dt = pacing.frame_dt(t0 + Duration::from_secs(5) + Duration::from_millis(20));
+        let dt = pacing.frame_dt(after(t0, Duration::from_millis(5020)));
         assert!((dt - 0.02).abs() < 1e-6, "dt {dt}");
     }
 
@@ -109,7 +118,7 @@ mod tests {
         let now = Instant::now();
         let mut pacing = Pacing::new(now);
         assert!(!pacing.after_frame(now, false, true, false, IDLE));
-        let due = now + RETRY_MISSED_FRAME;
+        let due = after(now, RETRY_MISSED_FRAME);
         assert_eq!(pacing.wait(now), (ControlFlow::WaitUntil(due), false));
         assert_eq!(pacing.wait(due), (ControlFlow::Wait, true));
 
@@ -117,7 +126,24 @@ mod tests {
         assert!(!pacing.after_frame(now, false, false, false, blink));
         assert_eq!(
             pacing.wait(now),
-            (ControlFlow::WaitUntil(now + blink), false)
+            (ControlFlow::WaitUntil(after(now, blink)), false)
         );
+    }
+
+    #[test]
+    fn a_pacing_started_at_the_clocks_first_reading_never_overflows() {
+        // A page's clock starts at zero: nothing may be subtracted from its first reading, and
+        // an idle panel's "never" (Duration::MAX) is no deadline rather than an overflow.
+        let zero = Instant::now();
+        let mut pacing = Pacing::new(zero);
+        assert_eq!(pacing.frame_dt(zero), NOMINAL_FRAME);
+        assert!(pacing.after_frame(zero, true, false, false, IDLE));
+        assert_eq!(pacing.frame_dt(zero), 0.0);
+        assert!(pacing.after_frame(zero, false, false, false, IDLE));
+        assert!(!pacing.after_frame(zero, false, false, false, IDLE));
+        assert_eq!(pacing.wait(zero), (ControlFlow::Wait, false));
+        assert!(!pacing.after_frame(zero, false, true, false, IDLE));
+        let retry = ControlFlow::WaitUntil(after(zero, RETRY_MISSED_FRAME));
+        assert_eq!(pacing.wait(zero), (retry, false));
     }
 }

@@ -5,30 +5,17 @@ use bevy_ecs::prelude::*;
 use close2gl_core::{ModelSource, PageLink, Wake};
 use wasm_bindgen::JsCast;
 use wasm_bindgen::prelude::*;
-use web_time::{Duration, Instant};
+use web_time::Instant;
 
 use crate::link;
-
-/// How often the link may change while the camera moves: often enough to be current when
-/// copied, rarely enough that the browser is not asked on every frame of a drag.
-const THROTTLE: Duration = Duration::from_millis(250);
+use crate::link_throttle::LinkThrottle;
 
 /// The fragment last written, and when; whether a later one waits for the throttle.
-#[derive(Resource)]
+#[derive(Resource, Default)]
 pub struct Address {
     written: String,
-    at: Instant,
+    throttle: LinkThrottle,
     waiting: bool,
-}
-
-impl Default for Address {
-    fn default() -> Self {
-        Address {
-            written: String::new(),
-            at: Instant::now() - THROTTLE,
-            waiting: false,
-        }
-    }
 }
 
 /// What the world shows, as a link's fragment; `None` before a model and a camera exist.
@@ -42,7 +29,8 @@ pub fn fragment(world: &mut World) -> Option<String> {
     Some(link::write(&model, &settings))
 }
 
-/// Replaces the page's fragment with the view's when it changed, at most every [`THROTTLE`]
+/// Replaces the page's fragment with the view's when it changed, at most every
+/// [`LinkThrottle::PERIOD`]
 /// (a change within it is written when it ends), without adding an entry to the history for
 /// each camera move; and keeps [`PageLink`] for the panel's Copy link.
 pub fn write_link(world: &mut World) {
@@ -57,7 +45,7 @@ pub fn write_link(world: &mut World) {
     let Some(window) = web_sys::window() else {
         return;
     };
-    let wait = THROTTLE.saturating_sub(address.at.elapsed());
+    let wait = address.throttle.wait(Instant::now());
     if !wait.is_zero() {
         if !std::mem::replace(&mut address.waiting, true) {
             let later = Closure::once_into_js(move || wake.wake());
@@ -74,7 +62,8 @@ pub fn write_link(world: &mut World) {
             .replace_state_with_url(&JsValue::NULL, "", Some(&url))
             .is_ok()
     });
-    (address.at, address.waiting) = (Instant::now(), false);
+    address.throttle.wrote(Instant::now());
+    address.waiting = false;
     if replaced {
         let location = window.location();
         let page = location.origin().unwrap_or_default() + &location.pathname().unwrap_or_default();

@@ -14,6 +14,7 @@ mod address;
 #[cfg(target_arch = "wasm32")]
 mod arrivals;
 pub mod link;
+pub mod link_throttle;
 #[cfg(target_arch = "wasm32")]
 mod page;
 #[cfg(target_arch = "wasm32")]

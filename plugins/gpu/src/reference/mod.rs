@@ -4,6 +4,7 @@
 //! answers over it ([`overlay`]).
 
 mod overlay;
+mod polygon_mode;
 
 use std::collections::HashMap;
 
@@ -20,6 +21,7 @@ use wgpu::util::DeviceExt;
 use crate::attachments::DEPTH_FORMAT;
 use crate::reference_texture::ReferenceBindings;
 use overlay::OverlayPipelines;
+pub(crate) use polygon_mode::{FaceDrawing, with_kept_faces};
 
 /// [`camera_matrices`] for a mesh uploaded relative to `origin` (see [`GpuMesh::origin`]): the
 /// camera is moved by the same amount, so eye space is unchanged.
@@ -115,6 +117,9 @@ struct GpuMesh {
     indices: wgpu::Buffer,
     index_count: u32,
     culled_index_count: u32,
+    /// The triangles, in the index buffer's order, as instances of `vs_face`, on a device that
+    /// draws lines or points face by face ([`polygon_mode`]).
+    faces: Option<wgpu::Buffer>,
     /// Whether the mesh came with texture coordinates (without, it is never textured).
     has_uvs: bool,
 }
@@ -164,7 +169,8 @@ impl Reference {
         queue: &wgpu::Queue,
         color_format: wgpu::TextureFormat,
     ) -> Self {
-        let shader = device.create_shader_module(wgpu::include_wgsl!("reference.wgsl"));
+        let shader =
+            polygon_mode::with_kept_faces(device, "reference.wgsl", include_str!("reference.wgsl"));
         Self {
             shader,
             color_format,
@@ -185,9 +191,10 @@ impl Reference {
             return;
         }
         let origin = mesh.bounding_sphere().0;
+        let corners = Vertex::of(mesh, origin);
         let vertices = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
             label: Some("reference vertices"),
-            contents: bytemuck::cast_slice(&Vertex::of(mesh, origin)),
+            contents: bytemuck::cast_slice(&corners),
             usage: wgpu::BufferUsages::VERTEX,
         });
         let has_area = |t: &&[u32; 3]| has_area(t.map(|i| mesh.positions[i as usize]));
@@ -195,6 +202,8 @@ impl Reference {
             mesh.triangles.iter().partition(has_area);
         let culled_index_count = triangles.len() as u32 * 3;
         triangles.extend(degenerate);
+        let faces = polygon_mode::needs_faces(self.features)
+            .then(|| polygon_mode::face_buffer(device, &corners, &triangles));
         let indices = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
             label: Some("reference indices"),
             contents: bytemuck::cast_slice(&triangles),
@@ -206,6 +215,7 @@ impl Reference {
             indices,
             index_count: triangles.len() as u32 * 3,
             culled_index_count,
+            faces,
             has_uvs: !mesh.uvs.is_empty(),
         });
     }
@@ -265,19 +275,22 @@ impl Reference {
         }
     }
 
-    /// What this adapter cannot draw as asked, if anything.
+    /// How this device draws what it has no polygon mode for, if anything.
     pub(crate) fn limitations(&self) -> Option<String> {
-        let mut missing = Vec::new();
-        if !self.features.contains(wgpu::Features::POLYGON_MODE_LINE) {
-            missing.push("wireframe drawn solid (the adapter lacks POLYGON_MODE_LINE)");
-        }
-        if !self.features.contains(wgpu::Features::POLYGON_MODE_POINT) {
-            missing.push(
-                "points drawn as a point list, without culling (the adapter lacks \
-                 POLYGON_MODE_POINT)",
-            );
-        }
-        (!missing.is_empty()).then(|| missing.join("; "))
+        let missing: Vec<&str> = [
+            (wgpu::Features::POLYGON_MODE_LINE, "POLYGON_MODE_LINE"),
+            (wgpu::Features::POLYGON_MODE_POINT, "POLYGON_MODE_POINT"),
+        ]
+        .into_iter()
+        .filter(|(feature, _)| !self.features.contains(*feature))
+        .map(|(_, name)| name)
+        .collect();
+        (!missing.is_empty()).then(|| {
+            format!(
+                "lines and points drawn face by face, culled in the shader (the device lacks {})",
+                missing.join(", ")
+            )
+        })
     }
 
     fn create_pipeline(&self, device: &wgpu::Device, key: PipelineKey) -> wgpu::RenderPipeline {
@@ -291,26 +304,35 @@ impl Reference {
         key: PipelineKey,
         drawing: &Drawing<'_>,
     ) -> wgpu::RenderPipeline {
-        let constants = shader_constants(key.shading, drawing.constants);
+        let faces = FaceDrawing::new(self.features, key.mode);
+        let mut constants = shader_constants(key.shading, drawing.constants);
+        constants.extend(faces.constants(key));
         let options = wgpu::PipelineCompilationOptions {
             constants: &constants,
             ..Default::default()
         };
         let attributes = wgpu::vertex_attr_array![0 => Float32x3, 1 => Float32x3, 2 => Float32x2];
+        let (entry_point, layout) = match faces {
+            FaceDrawing::Triangles(_) => (
+                "vs_main",
+                wgpu::VertexBufferLayout {
+                    array_stride: size_of::<Vertex>() as u64,
+                    step_mode: wgpu::VertexStepMode::Vertex,
+                    attributes: &attributes,
+                },
+            ),
+            FaceDrawing::Instanced { .. } => ("vs_face", polygon_mode::face_layout()),
+        };
         device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
             label: Some(drawing.fragment),
             layout: Some(&self.bindings.pipeline_layout),
             vertex: wgpu::VertexState {
                 module: &self.shader,
-                entry_point: Some("vs_main"),
+                entry_point: Some(entry_point),
                 compilation_options: options.clone(),
-                buffers: &[Some(wgpu::VertexBufferLayout {
-                    array_stride: size_of::<Vertex>() as u64,
-                    step_mode: wgpu::VertexStepMode::Vertex,
-                    attributes: &attributes,
-                })],
+                buffers: &[Some(layout)],
             },
-            primitive: primitive_state(self.features, key),
+            primitive: faces.primitive_state(key),
             depth_stencil: Some(wgpu::DepthStencilState {
                 format: DEPTH_FORMAT,
                 depth_write_enabled: Some(drawing.depth_write),
@@ -341,14 +363,23 @@ impl Reference {
         };
         pass.set_pipeline(pipeline);
         pass.set_bind_group(0, self.bindings.bind_group(filter), &[]);
-        pass.set_vertex_buffer(0, mesh.vertices.slice(..));
-        pass.set_index_buffer(mesh.indices.slice(..), wgpu::IndexFormat::Uint32);
         let count = if key.backface_culling {
             mesh.culled_index_count
         } else {
             mesh.index_count
         };
-        pass.draw_indexed(0..count, 0, 0..1);
+        let drawing = FaceDrawing::new(self.features, key.mode);
+        match (drawing, &mesh.faces) {
+            (FaceDrawing::Instanced { .. }, Some(faces)) => {
+                pass.set_vertex_buffer(0, faces.slice(..));
+                pass.draw(0..drawing.vertices_per_face(), 0..count / 3);
+            }
+            _ => {
+                pass.set_vertex_buffer(0, mesh.vertices.slice(..));
+                pass.set_index_buffer(mesh.indices.slice(..), wgpu::IndexFormat::Uint32);
+                pass.draw_indexed(0..count, 0, 0..1);
+            }
+        }
     }
 }
 
@@ -370,40 +401,6 @@ const SHADED: Drawing<'static> = Drawing {
     blend: None,
     constants: &[],
 };
-
-/// glPolygonMode as wgpu's polygon mode, or the nearest thing the adapter can draw, with the
-/// reference's culling and front face: the ID pass draws exactly what the reference draws.
-pub(crate) fn primitive_state(features: wgpu::Features, key: PipelineKey) -> wgpu::PrimitiveState {
-    let (topology, polygon_mode) = match key.mode {
-        RenderMode::Solid => (
-            wgpu::PrimitiveTopology::TriangleList,
-            wgpu::PolygonMode::Fill,
-        ),
-        RenderMode::Wireframe if features.contains(wgpu::Features::POLYGON_MODE_LINE) => (
-            wgpu::PrimitiveTopology::TriangleList,
-            wgpu::PolygonMode::Line,
-        ),
-        RenderMode::Wireframe => (
-            wgpu::PrimitiveTopology::TriangleList,
-            wgpu::PolygonMode::Fill,
-        ),
-        RenderMode::Points if features.contains(wgpu::Features::POLYGON_MODE_POINT) => (
-            wgpu::PrimitiveTopology::TriangleList,
-            wgpu::PolygonMode::Point,
-        ),
-        RenderMode::Points => (wgpu::PrimitiveTopology::PointList, wgpu::PolygonMode::Fill),
-    };
-    wgpu::PrimitiveState {
-        topology,
-        front_face: match key.front_face {
-            FrontFace::Ccw => wgpu::FrontFace::Ccw,
-            FrontFace::Cw => wgpu::FrontFace::Cw,
-        },
-        cull_mode: key.backface_culling.then_some(wgpu::Face::Back),
-        polygon_mode,
-        ..Default::default()
-    }
-}
 
 /// Whether a triangle has area by the rule Close2GL culls by (see `ZERO_AREA`), measured here in
 /// world space: a shape's area over its longest edge squared is the same after the projection,

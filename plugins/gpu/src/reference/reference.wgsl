@@ -44,6 +44,9 @@ struct Varyings {
     @location(2) gouraud: vec3<f32>,
     // Perspective-correct, as every @location varying is by default.
     @location(3) uv: vec2<f32>,
+    // 1 on a front face drawn as lines or points without polygon modes (where the builtin
+    // front_facing is always true), 0 on a back one; 1 elsewhere.
+    @location(4) @interpolate(flat) front: f32,
 }
 
 // Normalises without producing NaN for a zero vector (a degenerate normal, a light on a vertex).
@@ -72,6 +75,56 @@ fn vs_main(
     @location(1) normal: vec3<f32>,
     @location(2) uv: vec2<f32>,
 ) -> Varyings {
+    return shade_vertex(position, normal, uv);
+}
+
+// One face (an instance) drawn as lines or points, without polygon modes (kept_faces.wgsl).
+struct Face {
+    @location(0) p0: vec3<f32>,
+    @location(1) n0: vec3<f32>,
+    @location(2) uv0: vec2<f32>,
+    @location(3) p1: vec3<f32>,
+    @location(4) n1: vec3<f32>,
+    @location(5) uv1: vec2<f32>,
+    @location(6) p2: vec3<f32>,
+    @location(7) n2: vec3<f32>,
+    @location(8) uv2: vec2<f32>,
+}
+
+@vertex
+fn vs_face(@builtin(vertex_index) index: u32, face: Face) -> Varyings {
+    var positions = array<vec3<f32>, 3>(face.p0, face.p1, face.p2);
+    var normals = array<vec3<f32>, 3>(face.n0, face.n1, face.n2);
+    var uvs = array<vec2<f32>, 3>(face.uv0, face.uv1, face.uv2);
+    let a = u.view_projection * vec4<f32>(face.p0, 1.0);
+    let b = u.view_projection * vec4<f32>(face.p1, 1.0);
+    let c = u.view_projection * vec4<f32>(face.p2, 1.0);
+    let v = face_vertex(index, a, b, c);
+    let first = shade_vertex(positions[v.i], normals[v.i], uvs[v.i]);
+    var out = mix_varyings(first, shade_vertex(positions[v.j], normals[v.j], uvs[v.j]), v.t);
+    out.front = select(0.0, 1.0, faces_front(a, b, c));
+    if v.near {
+        // Exactly on the plane, as clipping puts it, not a rounding error behind it.
+        out.clip.z = 0.0;
+    }
+    if !v.kept || culled(a, b, c) {
+        out.clip = CLIPPED;
+    }
+    return out;
+}
+
+// x and y mixed at t, as clipping interpolates a new vertex's varyings (linearly in clip space).
+fn mix_varyings(x: Varyings, y: Varyings, t: f32) -> Varyings {
+    var out = x;
+    out.clip = mix(x.clip, y.clip, t);
+    out.eye = mix(x.eye, y.eye, t);
+    out.normal = mix(x.normal, y.normal, t);
+    out.gouraud = mix(x.gouraud, y.gouraud, t);
+    out.uv = mix(x.uv, y.uv, t);
+    return out;
+}
+
+fn shade_vertex(position: vec3<f32>, normal: vec3<f32>, uv: vec2<f32>) -> Varyings {
     let world = vec4<f32>(position, 1.0);
     let eye = (u.modelview * world).xyz;
     let n = (u.normal_matrix * vec4<f32>(normal, 0.0)).xyz;
@@ -81,6 +134,7 @@ fn vs_main(
     out.normal = n;
     out.gouraud = GOURAUD * illumination(eye, n);
     out.uv = uv;
+    out.front = 1.0;
     return out;
 }
 
@@ -104,8 +158,9 @@ override FAILED_COLOR: u32 = 0u;
 
 // Facing as the rasterizer decided it, on the fragments that won the depth test.
 @fragment
-fn fs_facing(@builtin(front_facing) front: bool) -> @location(0) vec4<f32> {
-    return vec4<f32>(unpack4x8unorm(select(BACK_COLOR, FRONT_COLOR, front)).rgb, 0.6);
+fn fs_facing(in: Varyings, @builtin(front_facing) front: bool) -> @location(0) vec4<f32> {
+    let color = select(BACK_COLOR, FRONT_COLOR, front && in.front > 0.5);
+    return vec4<f32>(unpack4x8unorm(color).rgb, 0.6);
 }
 
 // Fragments the depth test rejected (drawn with the test reversed): more layers, more colour.
