@@ -30,6 +30,7 @@ mod output_tail;
 mod proc_table;
 mod reap;
 mod resource_limits;
+mod sandbox;
 mod signals;
 mod spawn;
 mod supervise;
@@ -40,5 +41,9 @@ pub use interrupt::{install_interrupt_handler, interrupted, request_interrupt};
 pub use outcome::{Ending, Outcome};
 pub use reap::reap_everything;
 pub use resource_limits::Limits;
+pub use sandbox::{
+    Protection, Protections, SYSTEM_DEVICES, SYSTEM_FILES, SYSTEM_FOLDERS, Sandbox,
+    command_folders,
+};
 pub use supervise::run;
 pub use workspace::Workspace;

@@ -42,10 +42,11 @@ pub(super) fn grade_class(dir: &Path, args: &GradeArgs, plan: &Plan) -> Result<(
     for ((name, _), grade) in submissions.iter().zip(&grades) {
         write(
             dir.join(format!("{name}.html")),
-            html::page(grade, name, &args.run),
+            html::page(grade, name, &args.run, &plan.sandboxing),
         )?;
     }
     write(dir.join("grades.csv"), csv(&submissions, &grades))?;
+    println!("{}", plan.sandboxing.summary());
     for ((name, _), grade) in submissions.iter().zip(&grades) {
         println!("{name}: {}/{MAX_TOTAL}", grade.total);
     }

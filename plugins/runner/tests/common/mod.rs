@@ -9,7 +9,7 @@ use std::process::Command;
 use std::sync::Mutex;
 use std::time::{Duration, Instant};
 
-use close2gl_runner::{Ending, Limits, Outcome, Workspace, run};
+use close2gl_runner::{Ending, Limits, Outcome, Sandbox, Workspace, run};
 
 /// Helpers every program may use: `write_pid` (atomically, so a reader never sees half a
 /// number) and `wait_for` (a file another process writes).
@@ -202,7 +202,7 @@ pub fn run_program(name: &str, limits: &Limits) -> (Outcome, Workspace, Duration
     let words = vec![program(name)];
     let workspace = Workspace::new().expect("make a workspace");
     let started = Instant::now();
-    let outcome = run(&words, workspace.path(), limits);
+    let outcome = run(&words, workspace.path(), limits, &Sandbox::Off);
     let took = started.elapsed();
     eprintln!("{name}: {:?} in {took:.2?}", outcome.ended);
     (outcome, workspace, took)
