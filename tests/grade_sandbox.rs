@@ -10,6 +10,7 @@
 
 use std::io::ErrorKind;
 use std::net::TcpListener;
+use std::os::linux::net::SocketAddrExt;
 use std::os::unix::net::UnixListener;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
@@ -157,7 +158,10 @@ fn a_program_cannot_read_the_teachers_home_nor_leak_it() {
         page.contains("the sandbox stopped it: tried to open ~/answer-key.txt: denied"),
         "{page}"
     );
-    assert!(!Path::new(&leak).exists(), "a file appeared outside the run");
+    assert!(
+        !Path::new(&leak).exists(),
+        "a file appeared outside the run"
+    );
     assert_nothing_received(&tcp);
 }
 
@@ -178,7 +182,10 @@ fn a_program_cannot_read_a_sibling_submission() {
     let page = class.assert_graded(&csv);
     assert!(page.contains("tried to open"), "{page}");
     assert!(page.contains("class/good/notes.txt: denied"), "{page}");
-    assert!(!Path::new(&leak).exists(), "it wrote into its own submission's folder");
+    assert!(
+        !Path::new(&leak).exists(),
+        "it wrote into its own submission's folder"
+    );
     assert_nothing_received(&tcp);
 }
 
@@ -190,12 +197,12 @@ fn a_program_cannot_rewrite_a_siblings_program() {
     let class = Class::new("grade_sandbox_rewrite");
     let other = class.path("class/other/prog");
     class.hostile(&format!(
-        r#"int main(void) {{
+        r##"int main(void) {{
             FILE *f = fopen("{other}", "w");
             if (f) {{ fputs("#!/bin/sh\nexit 1\n", f); fclose(f); }} else perror("{other}");
             if (unlink("{other}") != 0) perror("unlink {other}");
             return 3;
-        }}"#
+        }}"##
     ));
     let before = std::fs::read(class.class.join("other/prog")).expect("other's program");
     let (_, csv) = class.grade();
@@ -244,8 +251,9 @@ fn a_program_cannot_talk_over_an_abstract_unix_socket() {
     }
     // The test's own abstract socket, and one the runs make to find each other.
     let name = format!("close2gl-test-{}", std::process::id());
-    let address = std::os::linux::net::SocketAddrExt::from_abstract_name(name.as_bytes())
-        .expect("an abstract address");
+    let address =
+        <std::os::unix::net::SocketAddr as SocketAddrExt>::from_abstract_name(name.as_bytes())
+            .expect("an abstract address");
     let ours = UnixListener::bind_addr(&address).expect("an abstract socket");
     ours.set_nonblocking(true).expect("non-blocking");
     let body = format!(
@@ -272,7 +280,10 @@ fn a_program_cannot_talk_over_an_abstract_unix_socket() {
     class.hostile(&body);
     let (_, csv) = class.grade();
     let page = class.assert_graded(&csv);
-    assert!(!page.contains("status 42"), "a run talked to another: {page}");
+    assert!(
+        !page.contains("status 42"),
+        "a run talked to another: {page}"
+    );
     match ours.accept() {
         Err(e) if e.kind() == ErrorKind::WouldBlock => {}
         other => panic!("a program reached the test's abstract socket: {other:?}"),
@@ -320,8 +331,15 @@ fn venv_with_numpy() -> PathBuf {
             .is_ok_and(|s| s.success())
     };
     if !has_numpy(&python) {
-        let made = Command::new("python3").arg("-m").arg("venv").arg(&venv).status();
-        assert!(made.is_ok_and(|s| s.success()), "python3 -m venv failed (CI installs python3-venv)");
+        let made = Command::new("python3")
+            .arg("-m")
+            .arg("venv")
+            .arg(&venv)
+            .status();
+        assert!(
+            made.is_ok_and(|s| s.success()),
+            "python3 -m venv failed (CI installs python3-venv)"
+        );
         let pip = Command::new(venv.join("bin/pip"))
             .args(["install", "--quiet", "numpy"])
             .status();
@@ -341,7 +359,11 @@ fn a_python_program_with_numpy_from_a_virtual_environment_scores_200() {
     let dir = TempDir::new("grade_sandbox_python");
     let tmp = dir.join("tmp");
     std::fs::create_dir_all(&tmp).expect("TMPDIR");
-    let command = format!("'{}' '{}' {{scene}} {{trace}}", python.display(), script.display());
+    let command = format!(
+        "'{}' '{}' {{scene}} {{trace}}",
+        python.display(),
+        script.display()
+    );
     let output = Command::new(env!("CARGO_BIN_EXE_close2gl"))
         .args(["grade", "--run", &command, "--jobs", "2", "--json"])
         .env("TMPDIR", &tmp)
@@ -396,7 +418,14 @@ fn the_report_says_what_the_sandbox_enforces() {
         .unwrap_or_default();
     assert_eq!(
         names,
-        ["landlock", "filesystem", "network", "signals", "unix sockets", "namespaces"]
+        [
+            "landlock",
+            "filesystem",
+            "network",
+            "signals",
+            "unix sockets",
+            "namespaces"
+        ]
     );
     let unsandboxed = run(&["--unsandboxed"]);
     let stdout = String::from_utf8_lossy(&unsandboxed.stdout);

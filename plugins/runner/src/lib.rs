@@ -42,8 +42,7 @@ pub use outcome::{Ending, Outcome};
 pub use reap::reap_everything;
 pub use resource_limits::Limits;
 pub use sandbox::{
-    Protection, Protections, SYSTEM_DEVICES, SYSTEM_FILES, SYSTEM_FOLDERS, Sandbox,
-    command_folders,
+    Protection, Protections, SYSTEM_DEVICES, SYSTEM_FILES, SYSTEM_FOLDERS, Sandbox, command_folders,
 };
 pub use supervise::run;
 pub use workspace::Workspace;

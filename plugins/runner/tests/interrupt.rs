@@ -6,7 +6,8 @@ mod common;
 use std::time::{Duration, Instant};
 
 use close2gl_runner::{
-    Ending, Limits, Sandbox, Workspace, install_interrupt_handler, interrupted, reap_everything, run,
+    Ending, Limits, Sandbox, Workspace, install_interrupt_handler, interrupted, reap_everything,
+    run,
 };
 use common::{gone, pids_written, program};
 

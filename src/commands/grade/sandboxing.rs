@@ -85,7 +85,12 @@ impl Sandboxing {
             reads.push("its submission's folder".into());
         }
         let named = close2gl_runner::command_folders(words, &path);
-        reads.extend(named.iter().chain(&self.allow_read).map(|p| p.display().to_string()));
+        reads.extend(
+            named
+                .iter()
+                .chain(&self.allow_read)
+                .map(|p| p.display().to_string()),
+        );
         out.push_str(&format!(
             "\nsandbox: each run reads {}; writes only its own directory",
             reads.join(", ")

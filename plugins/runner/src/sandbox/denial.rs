@@ -20,7 +20,9 @@ const DENIED: [&str; 4] = [
 /// run could read (a path under them was denied for another reason: permissions, or writing).
 pub(super) fn spot(stderr: &[u8], allowed: &[PathBuf]) -> Option<String> {
     let text = String::from_utf8_lossy(stderr);
-    let line = text.lines().find(|l| DENIED.iter().any(|d| l.contains(d)))?;
+    let line = text
+        .lines()
+        .find(|l| DENIED.iter().any(|d| l.contains(d)))?;
     let outside = paths_in(line).find(|path| {
         let path = Path::new(path);
         !allowed.iter().any(|a| path.starts_with(a)) && !system(path)

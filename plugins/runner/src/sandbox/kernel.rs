@@ -110,7 +110,11 @@ impl Protections {
         let list = self.list();
         let (on, off): (Vec<_>, Vec<_>) = list[1..].iter().partition(|p| p.enforced);
         let names = |ps: &[&Protection]| ps.iter().map(|p| p.name).collect::<Vec<_>>().join(", ");
-        let mut line = format!("sandbox: Landlock {}; enforced: {}", list[0].detail, names(&on));
+        let mut line = format!(
+            "sandbox: Landlock {}; enforced: {}",
+            list[0].detail,
+            names(&on)
+        );
         if !off.is_empty() {
             line.push_str(&format!("; missing: {}", names(&off)));
         }

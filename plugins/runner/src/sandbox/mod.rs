@@ -21,7 +21,9 @@ use std::os::fd::{AsRawFd, OwnedFd, RawFd};
 use std::path::{Path, PathBuf};
 
 pub use kernel::{Protection, Protections};
-pub use program_folders::{SYSTEM_DEVICES, SYSTEM_FILES, SYSTEM_FOLDERS, command_folders, find_program};
+pub use program_folders::{
+    SYSTEM_DEVICES, SYSTEM_FILES, SYSTEM_FOLDERS, command_folders, find_program,
+};
 
 /// How a run is confined, beyond its limits.
 #[derive(Clone, Debug, PartialEq, Eq)]

@@ -34,8 +34,8 @@ pub const SYSTEM_DEVICES: &[&str] = &[
 /// The folders (or, in a folder too broad to open, the files) that `words` names: the
 /// program (looked up in `path_var` when it has no slash) and its interpreter with their
 /// folders and prefixes, and each absolute path among the arguments (a folder itself, a
-/// file's folder). A folder is too broad when it is `/`, the user's home or the temporary
-/// folder (where every run's directory is).
+/// file's folder: a script run by the interpreter named first). A folder is too broad when it is the user's home or holds the temporary
+/// folder (where every run's directory is): then only the file is readable.
 pub fn command_folders(words: &[String], path_var: &OsStr) -> Vec<PathBuf> {
     let mut folders = Vec::new();
     let Some((program, args)) = words.split_first() else {
@@ -49,11 +49,10 @@ pub fn command_folders(words: &[String], path_var: &OsStr) -> Vec<PathBuf> {
             add_folder(arg, &mut folders);
         } else if arg.exists() {
             add_folder_of(arg, &mut folders);
-            if let Some(interpreter) = shebang(arg, path_var) {
-                add_program(&interpreter, path_var, &mut folders);
-            }
         }
     }
+    // The system's folders are readable anyway.
+    folders.retain(|f| !SYSTEM_FOLDERS.iter().any(|s| f.starts_with(s)));
     folders.sort();
     folders.dedup();
     folders
@@ -84,7 +83,10 @@ fn add_program(program: &Path, path_var: &OsStr, folders: &mut Vec<PathBuf>) {
     let resolved = program.canonicalize().ok();
     for path in std::iter::once(program.to_path_buf()).chain(resolved) {
         add_folder_of(&path, folders);
-        let Some(prefix) = path.parent().filter(|p| p.ends_with("bin")).and_then(Path::parent)
+        let Some(prefix) = path
+            .parent()
+            .filter(|p| p.ends_with("bin"))
+            .and_then(Path::parent)
         else {
             continue;
         };
@@ -108,10 +110,13 @@ fn add_program(program: &Path, path_var: &OsStr, folders: &mut Vec<PathBuf>) {
 /// `home` in `prefix/pyvenv.cfg`: the folder of the Python a virtual environment was made from.
 fn venv_home(prefix: &Path) -> Option<PathBuf> {
     let file = std::fs::File::open(prefix.join("pyvenv.cfg")).ok()?;
-    BufReader::new(file).lines().map_while(Result::ok).find_map(|line| {
-        let (key, value) = line.split_once('=')?;
-        (key.trim() == "home").then(|| PathBuf::from(value.trim()))
-    })
+    BufReader::new(file)
+        .lines()
+        .map_while(Result::ok)
+        .find_map(|line| {
+            let (key, value) = line.split_once('=')?;
+            (key.trim() == "home").then(|| PathBuf::from(value.trim()))
+        })
 }
 
 /// The interpreter of a script's `#!` line; through `/usr/bin/env NAME`, NAME looked up in
@@ -144,14 +149,12 @@ fn add_folder(folder: &Path, folders: &mut Vec<PathBuf>) {
     }
 }
 
-/// `/`, the user's home, the temporary folder (every run's directory is in it).
+/// The user's home, and the temporary folder or any folder holding it (`/`, `/tmp`: every
+/// run's directory is in it, and a run must not read another's).
 fn too_broad(folder: &Path) -> bool {
-    let same = |other: &Path| {
-        let canonical = |p: &Path| p.canonicalize().unwrap_or_else(|_| p.to_path_buf());
-        canonical(folder) == canonical(other)
-    };
+    let canonical = |p: &Path| p.canonicalize().unwrap_or_else(|_| p.to_path_buf());
+    let folder = canonical(folder);
     let home = std::env::var_os("HOME").map(PathBuf::from);
-    folder.parent().is_none()
-        || home.is_some_and(|home| same(&home))
-        || same(&std::env::temp_dir())
+    home.is_some_and(|home| canonical(&home) == folder)
+        || canonical(&std::env::temp_dir()).starts_with(&folder)
 }
