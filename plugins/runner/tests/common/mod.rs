@@ -150,6 +150,24 @@ const PROGRAMS: &[(&str, &str)] = &[
         r#"int main(void) { char b[16]; printf("%zd\n", read(0, b, sizeof b)); return 0; }"#,
     ),
     (
+        "cat_first_argument",
+        r#"int main(int argc, char **argv) {
+            FILE *f = fopen(argv[1], "r");
+            if (!f) { perror(argv[1]); return 1; }
+            int c;
+            while ((c = fgetc(f)) != EOF) putchar(c);
+            return 0;
+        }"#,
+    ),
+    (
+        "write_first_argument",
+        r#"int main(int argc, char **argv) {
+            FILE *f = fopen(argv[1], "w");
+            if (!f) { perror(argv[1]); return 1; }
+            return fclose(f) != 0;
+        }"#,
+    ),
+    (
         "print_cwd",
         r#"int main(void) { char b[4096]; puts(getcwd(b, sizeof b)); return 0; }"#,
     ),
