@@ -51,13 +51,13 @@ fn a_file_outside_is_denied_and_named_one_in_a_given_folder_is_read() {
     std::fs::write(&secret, "KEY").expect("the key");
     let denied = sandboxed("cat_first_argument", &secret, Vec::new());
     assert_eq!(denied.ended, Ending::Exited(1));
+    let expected = format!("tried to open {}: denied", secret.display());
+    assert_eq!(denied.denied.as_deref(), Some(expected.as_str()));
+    let reason = denied.reason();
     assert!(
-        denied
-            .reason()
-            .contains("\nthe sandbox stopped it: denied: ../")
+        reason.contains("\nthe sandbox stopped it: tried to open "),
+        "{reason}"
     );
-    let said = denied.denied.unwrap_or_default();
-    assert!(said.ends_with("key.txt: Permission denied"), "{said}");
     let parent = secret.parent().map(Path::to_path_buf).unwrap_or_default();
     let allowed = sandboxed("cat_first_argument", &secret, vec![parent]);
     assert_eq!(

@@ -6,7 +6,7 @@
 //! "tried to open PATH: denied"; another such line is quoted as it is. A program that says
 //! nothing, or says it in other words, is not caught: this is a hint for the report, not proof.
 
-use std::path::{Path, PathBuf};
+use std::path::{Component, Path, PathBuf};
 
 /// The words of the errors the sandbox causes.
 const DENIED: [&str; 4] = [
@@ -17,13 +17,14 @@ const DENIED: [&str; 4] = [
 ];
 
 /// The first sign in `stderr` that the sandbox denied something; `allowed`: the folders the
-/// run could read (a path under them was denied for another reason: permissions, or writing).
-pub(super) fn spot(stderr: &[u8], allowed: &[PathBuf]) -> Option<String> {
+/// run could read (a path under them was denied for another reason: permissions, or writing);
+/// `dir`: the run's directory, which relative paths start from.
+pub(super) fn spot(stderr: &[u8], allowed: &[PathBuf], dir: &Path) -> Option<String> {
     let text = String::from_utf8_lossy(stderr);
     let line = text
         .lines()
         .find(|l| DENIED.iter().any(|d| l.contains(d)))?;
-    let outside = paths_in(line).find(|path| {
+    let outside = paths_in(line, dir).find(|path| {
         let path = Path::new(path);
         !allowed.iter().any(|a| path.starts_with(a)) && !system(path)
     });
@@ -33,13 +34,23 @@ pub(super) fn spot(stderr: &[u8], allowed: &[PathBuf]) -> Option<String> {
     })
 }
 
-/// Absolute paths in a line: words starting with `/`, without the quotes, colons and commas
-/// error messages put around them.
-fn paths_in(line: &str) -> impl Iterator<Item = String> + '_ {
+/// Paths in a line: words starting with `/`, `./` or `../` (those from `dir`, `..` taken away),
+/// without the quotes, colons and commas error messages put around them.
+fn paths_in<'a>(line: &'a str, dir: &'a Path) -> impl Iterator<Item = String> + 'a {
     line.split(|c: char| c.is_whitespace() || c == '\'' || c == '"' || c == '`')
-        .map(|word| word.trim_end_matches([':', ',', ';', ')', '.']))
-        .filter(|word| word.starts_with('/') && word.len() > 1)
-        .map(str::to_string)
+        .map(|word| word.trim_end_matches([':', ',', ';', ')']))
+        .filter(|word| word.len() > 1 && ["/", "./", "../"].iter().any(|s| word.starts_with(s)))
+        .map(|word| {
+            let mut path = PathBuf::new();
+            for part in dir.join(word).components() {
+                match part {
+                    Component::ParentDir => _ = path.pop(),
+                    Component::CurDir => {}
+                    part => path.push(part),
+                }
+            }
+            path.display().to_string()
+        })
 }
 
 fn system(path: &Path) -> bool {
@@ -64,6 +75,7 @@ mod tests {
     #[test]
     fn a_path_outside_is_named_and_one_inside_is_quoted() {
         let allowed = [PathBuf::from("/work/run")];
+        let spot = |stderr: &[u8], allowed: &[PathBuf]| super::spot(stderr, allowed, &allowed[0]);
         let python = b"Traceback\nPermissionError: [Errno 13] Permission denied: '/srv/key'\n";
         assert_eq!(
             spot(python, &allowed).as_deref(),
@@ -80,5 +92,10 @@ mod tests {
             Some("denied: kill: Operation not permitted")
         );
         assert_eq!(spot(b"segmentation fault\n", &allowed), None);
+        let relative = b"../../srv/key: Permission denied\n";
+        assert_eq!(
+            spot(relative, &allowed).as_deref(),
+            Some("tried to open /srv/key: denied")
+        );
     }
 }

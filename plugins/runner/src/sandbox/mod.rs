@@ -42,6 +42,7 @@ pub(crate) struct Prepared {
     ruleset: Option<OwnedFd>,
     namespaces: bool,
     allowed: Vec<PathBuf>,
+    dir: PathBuf,
 }
 
 /// What the child needs between fork and exec: plain values only (it must not allocate).
@@ -65,6 +66,7 @@ impl Prepared {
                 ruleset: None,
                 namespaces: false,
                 allowed: Vec::new(),
+                dir: dir.to_path_buf(),
             });
         };
         let protections = Protections::current();
@@ -80,6 +82,7 @@ impl Prepared {
             ruleset: Some(ruleset),
             namespaces: protections.namespaces.is_ok(),
             allowed,
+            dir: dir.to_path_buf(),
         })
     }
 
@@ -93,7 +96,7 @@ impl Prepared {
     /// What the sandbox denied the program, as its stderr shows it; none when it was off.
     pub(crate) fn denial(&self, stderr: &[u8]) -> Option<String> {
         self.ruleset.as_ref()?;
-        denial::spot(stderr, &self.allowed)
+        denial::spot(stderr, &self.allowed, &self.dir)
     }
 }
 
