@@ -40,7 +40,7 @@ pub(crate) fn start(
     let path = std::env::var_os("PATH").unwrap_or_else(|| "/usr/bin:/bin".into());
     // Found here, as the child would: in the sandbox it could not look in every folder of
     // PATH, and might find another program of the same name further on.
-    let program = sandbox::find_program(program, &path).unwrap_or_else(|| program.into());
+    let found = sandbox::find_program(program, &path).unwrap_or_else(|| program.into());
     let prepared = Prepared::new(sandbox, words, &home, &path)?;
     let in_sandbox = prepared.in_child();
     let lang = std::env::var_os("LANG").unwrap_or_else(|| "C.UTF-8".into());
@@ -51,7 +51,9 @@ pub(crate) fn start(
     };
     // SAFETY: getpid has no preconditions.
     let grader = unsafe { libc::getpid() };
-    let mut command = Command::new(program);
+    let mut command = Command::new(found);
+    // The program still sees the name it was called by.
+    std::os::unix::process::CommandExt::arg0(&mut command, program);
     command
         .args(args)
         .current_dir(&home)

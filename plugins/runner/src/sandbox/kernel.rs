@@ -9,6 +9,29 @@ use super::namespaces;
 /// `landlock_create_ruleset`'s flag asking for the ABI version instead of a ruleset.
 const LANDLOCK_CREATE_RULESET_VERSION: libc::c_uint = 1;
 
+/// What Landlock protects from which ABI (and Linux version) on: name, ABI, Linux, what.
+const LANDLOCK_PROTECTIONS: [(&str, i32, &str, &str); 4] = [
+    (
+        "filesystem",
+        1,
+        "5.13",
+        "reads only the system's folders and its program's, writes only its run's directory",
+    ),
+    ("network", 4, "6.7", "no TCP connect or bind"),
+    (
+        "signals",
+        6,
+        "6.12",
+        "signals and abstract Unix sockets only within its own run",
+    ),
+    (
+        "unix sockets",
+        9,
+        "7.1",
+        "no connecting to a Unix socket by its path",
+    ),
+];
+
 /// What the sandbox can do on this kernel.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Protections {
@@ -44,15 +67,6 @@ impl Protections {
     /// Each protection, enforced or missing, in a fixed order.
     pub fn list(&self) -> Vec<Protection> {
         let abi = *self.landlock_abi.as_ref().unwrap_or(&0);
-        let netns = self.namespaces.is_ok();
-        let from = |version: i32, linux: &str, what: &str| Protection {
-            name: "",
-            enforced: abi >= version,
-            detail: match abi >= version {
-                true => what.to_string(),
-                false => format!("{what}: needs Landlock ABI {version} (Linux {linux})"),
-            },
-        };
         let landlock = Protection {
             name: "landlock",
             enforced: abi > 0,
@@ -63,7 +77,7 @@ impl Protections {
         };
         let namespace = Protection {
             name: "namespaces",
-            enforced: netns,
+            enforced: self.namespaces.is_ok(),
             detail: match &self.namespaces {
                 Ok(()) => "a user and network namespace of its own: no network at all, \
                            UDP and DNS included"
@@ -71,35 +85,21 @@ impl Protections {
                 Err(why) => format!("no network namespace ({why}): UDP and DNS are not blocked"),
             },
         };
-        vec![
-            landlock,
-            Protection {
-                name: "filesystem",
-                ..from(
-                    1,
-                    "5.13",
-                    "reads only the system's folders and its program's, writes only its \
-                     run's directory",
-                )
-            },
-            Protection {
-                name: "network",
-                ..from(4, "6.7", "no TCP connect or bind")
-            },
-            Protection {
-                name: "signals",
-                ..from(
-                    6,
-                    "6.12",
-                    "signals and abstract Unix sockets only within its own run",
-                )
-            },
-            Protection {
-                name: "unix sockets",
-                ..from(9, "7.1", "no connecting to a Unix socket by its path")
-            },
-            namespace,
-        ]
+        let mut list = vec![landlock];
+        list.extend(
+            LANDLOCK_PROTECTIONS
+                .iter()
+                .map(|&(name, version, linux, what)| Protection {
+                    name,
+                    enforced: abi >= version,
+                    detail: match abi >= version {
+                        true => what.to_string(),
+                        false => format!("{what}: needs Landlock ABI {version} (Linux {linux})"),
+                    },
+                }),
+        );
+        list.push(namespace);
+        list
     }
 
     /// One line for the start of grading and the text report: what is enforced, what is not.
