@@ -33,6 +33,8 @@ pub(super) fn grade_class(dir: &Path, args: &GradeArgs, plan: &Plan) -> Result<(
         submissions.len(),
         plan.rubric.scenes.len()
     );
+    // Said once the input is known to be good, before the first program runs.
+    eprintln!("{}", plan.sandboxing.banner(plan.words, true));
     let results = run_tasks(plan, &dirs, label)?;
     let grades: Vec<Grade> = results.into_iter().map(Grade::new).collect();
     let write = |path: PathBuf, text: String| {

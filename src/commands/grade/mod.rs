@@ -122,7 +122,6 @@ pub fn run(args: GradeArgs) -> Result<(), CliError> {
     };
     let sandboxing = Sandboxing::new(args.unsandboxed, &args.allow_read)?;
     let rubric = load_rubric(&args.models)?;
-    eprintln!("{}", sandboxing.banner(&words, args.submissions.is_some()));
     let plan = Plan {
         words: &words,
         rubric: &rubric,
@@ -141,6 +140,7 @@ pub fn run(args: GradeArgs) -> Result<(), CliError> {
 
 fn grade_one(args: &GradeArgs, plan: &Plan) -> Result<(), CliError> {
     let label = format!("grading {} scenes", plan.rubric.scenes.len());
+    eprintln!("{}", plan.sandboxing.banner(plan.words, false));
     let mut results = run_tasks(plan, &[None], label)?;
     let grade = Grade::new(results.remove(0));
     if let Some(path) = &args.html {
