@@ -9,16 +9,22 @@
 //! session), and its [`Outcome`] says how it ended in words a report can show. Ctrl+C
 //! ([`install_interrupt_handler`]) stops every running program and lets the caller clean up.
 //!
-//! This is **not a sandbox**: the program runs as the user, and can read and write anything the
-//! user can (outside its directory too), open network connections, or ask another daemon to
-//! start processes for it. The limits stop mistakes and runaway programs (a crash, a hang, an
-//! endless loop writing a file, a fork that outlives its parent), not an attacker. Linux only.
+//! Each run is also **sandboxed** ([`Sandbox::On`], `sandbox/`): Landlock rules applied in the
+//! child between fork and exec let the program and everything it starts read and execute only
+//! the system's folders, the folders its command names (its program, a script's interpreter and
+//! prefix, a virtual environment's base Python) and those the caller adds; read and write only
+//! its directory; make no TCP connection; signal nothing and reach no abstract socket outside its
+//! run; and, where the kernel allows unprivileged namespaces, it gets a user and network namespace
+//! of its own (no network at all). [`Protections`] says what this kernel enforces; a run's
+//! [`Outcome`] says what the sandbox denied it, as its stderr shows. It does not hide
+//! world-readable system files, nor time as a side channel. Linux only.
 //!
 //! The files follow one run: `words` (the command line) → `workspace` (the directory, with
 //! `disk` measuring it) → `spawn` (the child's limits, session and environment, set between fork
 //! and exec) → `run` (watching it: exit, time, disk, interrupt, with `output` keeping the tails)
 //! → `reap` (killing the program's whole tree, found through `proc_table`) → `outcome` (how it
-//! ended, with `signals`' names). `interrupt` is the Ctrl+C flag every run watches.
+//! ended, with `signals`' names). `interrupt` is the Ctrl+C flag every run watches; `sandbox`
+//! makes each run's rules before the fork, and the child applies them.
 
 #![cfg(target_os = "linux")]
 
@@ -30,6 +36,7 @@ mod output_tail;
 mod proc_table;
 mod reap;
 mod resource_limits;
+mod sandbox;
 mod signals;
 mod spawn;
 mod supervise;
@@ -40,5 +47,8 @@ pub use interrupt::{install_interrupt_handler, interrupted, request_interrupt};
 pub use outcome::{Ending, Outcome};
 pub use reap::reap_everything;
 pub use resource_limits::Limits;
+pub use sandbox::{
+    Protection, Protections, SYSTEM_DEVICES, SYSTEM_FILES, SYSTEM_FOLDERS, Sandbox, command_folders,
+};
 pub use supervise::run;
 pub use workspace::Workspace;

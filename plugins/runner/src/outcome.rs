@@ -18,6 +18,9 @@ pub struct Outcome {
     pub stdout_tail: Vec<u8>,
     /// The last [`Limits::output`](crate::Limits) bytes of stderr.
     pub stderr_tail: Vec<u8>,
+    /// What the sandbox denied it, as its stderr shows ("tried to open ~/key: denied"), when
+    /// it did not end well.
+    pub denied: Option<String>,
 }
 
 /// Why the program stopped.
@@ -54,6 +57,10 @@ impl Outcome {
             Ending::Interrupted => format!("stopped after {after} s: grading was interrupted"),
             Ending::CouldNotStart(why) => format!("could not start: {why}"),
         };
+        if let Some(denied) = &self.denied {
+            reason.push_str("\nthe sandbox stopped it: ");
+            reason.push_str(&printable(denied));
+        }
         for line in last_lines(&self.stderr_tail, STDERR_LINES) {
             reason.push('\n');
             reason.push_str(&line);
@@ -114,6 +121,7 @@ mod tests {
             elapsed: Duration::from_millis(millis),
             stdout_tail: Vec::new(),
             stderr_tail: stderr.to_vec(),
+            denied: None,
         }
     }
 

@@ -1,7 +1,8 @@
 //! Starting the program: its directory, its environment, closed stdin, piped output, and what
 //! must be set in the child between `fork` and `exec` (a session of its own, resource limits,
-//! death with its parent). Between fork and exec only async-signal-safe calls are allowed, so
-//! that code makes raw system calls and nothing else.
+//! death with its parent, the sandbox). Between fork and exec only async-signal-safe calls are
+//! allowed, so that code makes raw system calls and nothing else; the sandbox's rules are made
+//! before the fork.
 
 use std::io;
 use std::path::Path;
@@ -10,6 +11,7 @@ use std::time::Duration;
 
 use crate::reap::{self, Registration};
 use crate::resource_limits::Limits;
+use crate::sandbox::{self, InChild, Prepared, Sandbox};
 
 /// The kernel-enforced limits, computed before the fork (the child must not allocate).
 #[derive(Clone, Copy)]
@@ -23,17 +25,24 @@ struct ChildLimits {
 /// `PATH` and `LANG` from ours (defaults `/usr/bin:/bin`, `C.UTF-8`) and `HOME` = `dir`: nothing
 /// of the teacher's environment (tokens, proxies) reaches a student's program. A program named
 /// without a slash is looked up in that `PATH`; one with a slash but not absolute is resolved
-/// from `dir`, so callers give absolute paths.
+/// from `dir`, so callers give absolute paths. Returns the run's sandbox too, to read its
+/// stderr by.
 pub(crate) fn start(
     words: &[String],
     dir: &Path,
     limits: &Limits,
-) -> io::Result<(Child, Registration)> {
+    sandbox: &Sandbox,
+) -> io::Result<(Child, Registration, Prepared)> {
     let Some((program, args)) = words.split_first() else {
         return Err(io::Error::other("the command is empty"));
     };
     let home = std::path::absolute(dir)?;
     let path = std::env::var_os("PATH").unwrap_or_else(|| "/usr/bin:/bin".into());
+    // Found here, as the child would: in the sandbox it could not look in every folder of
+    // PATH, and might find another program of the same name further on.
+    let found = sandbox::find_program(program, &path).unwrap_or_else(|| program.into());
+    let prepared = Prepared::new(sandbox, words, &home, &path)?;
+    let in_sandbox = prepared.in_child();
     let lang = std::env::var_os("LANG").unwrap_or_else(|| "C.UTF-8".into());
     let child_limits = ChildLimits {
         address_space: limits.address_space,
@@ -42,7 +51,9 @@ pub(crate) fn start(
     };
     // SAFETY: getpid has no preconditions.
     let grader = unsafe { libc::getpid() };
-    let mut command = Command::new(program);
+    let mut command = Command::new(found);
+    // The program still sees the name it was called by.
+    std::os::unix::process::CommandExt::arg0(&mut command, program);
     command
         .args(args)
         .current_dir(&home)
@@ -54,13 +65,15 @@ pub(crate) fn start(
         .stdout(Stdio::piped())
         .stderr(Stdio::piped());
     // SAFETY: the hook runs in the forked child before exec and only makes async-signal-safe
-    // system calls (setsid, getrlimit, setrlimit, prctl, getppid) on copied plain values.
+    // system calls (setsid, getrlimit, setrlimit, prctl, getppid, unshare,
+    // landlock_restrict_self) on copied plain values.
     unsafe {
         std::os::unix::process::CommandExt::pre_exec(&mut command, move || {
-            in_child(child_limits, grader)
+            in_child(child_limits, grader, in_sandbox)
         });
     }
-    reap::spawn(&mut command)
+    let (child, registration) = reap::spawn(&mut command)?;
+    Ok((child, registration, prepared))
 }
 
 /// CPU time: the wall-clock limit rounded up, plus a second, so that the grader's own timeout
@@ -69,8 +82,8 @@ fn cpu_seconds(time: Duration) -> u64 {
     time.as_secs() + u64::from(time.subsec_nanos() > 0) + 1
 }
 
-/// Runs in the child between fork and exec.
-fn in_child(limits: ChildLimits, grader: libc::pid_t) -> io::Result<()> {
+/// Runs in the child between fork and exec; the sandbox last, once nothing else needs a file.
+fn in_child(limits: ChildLimits, grader: libc::pid_t, in_sandbox: InChild) -> io::Result<()> {
     // SAFETY: these are plain system calls without pointers into shared state; setsid makes
     // the child a session and process-group leader, which the reaper relies on.
     unsafe {
@@ -92,7 +105,8 @@ fn in_child(limits: ChildLimits, grader: libc::pid_t) -> io::Result<()> {
     set_limit(libc::RLIMIT_FSIZE, limits.file_size, limits.file_size)?;
     set_limit(libc::RLIMIT_CORE, 0, 0)?;
     // The soft limit sends SIGXCPU, the hard one a second later SIGKILL (if SIGXCPU is caught).
-    set_limit(libc::RLIMIT_CPU, limits.cpu_seconds, limits.cpu_seconds + 1)
+    set_limit(libc::RLIMIT_CPU, limits.cpu_seconds, limits.cpu_seconds + 1)?;
+    sandbox::enter(in_sandbox)
 }
 
 /// Lowers a resource limit to `soft`/`hard`, never above the current hard limit (raising it

@@ -13,27 +13,29 @@ use crate::outcome::{Ending, Outcome};
 use crate::output_tail::Output;
 use crate::reap::Registration;
 use crate::resource_limits::Limits;
+use crate::sandbox::Sandbox;
 use crate::signals::signal_name;
 use crate::{disk, spawn};
 
 /// How often the watcher checks: small next to any time limit, rare enough to cost nothing.
 const TICK: Duration = Duration::from_millis(20);
 
-/// Runs `words` (a program and its arguments) in `dir` under `limits`, and returns once it has
-/// ended and every process it started is dead and reaped. Nothing is started once grading was
-/// interrupted. Safe to call from several threads at once.
-pub fn run(words: &[String], dir: &Path, limits: &Limits) -> Outcome {
+/// Runs `words` (a program and its arguments) in `dir` under `limits` and in `sandbox`, and
+/// returns once it has ended and every process it started is dead and reaped. Nothing is
+/// started once grading was interrupted. Safe to call from several threads at once.
+pub fn run(words: &[String], dir: &Path, limits: &Limits, sandbox: &Sandbox) -> Outcome {
     let not_run = |ended| Outcome {
         ended,
         elapsed: Duration::ZERO,
         stdout_tail: Vec::new(),
         stderr_tail: Vec::new(),
+        denied: None,
     };
     if interrupted() {
         return not_run(Ending::Interrupted);
     }
     let started = Instant::now();
-    let (mut child, registration) = match spawn::start(words, dir, limits) {
+    let (mut child, registration, sandboxed) = match spawn::start(words, dir, limits, sandbox) {
         Ok(running) => running,
         Err(e) => return not_run(Ending::CouldNotStart(start_error(words, dir, &e))),
     };
@@ -42,11 +44,16 @@ pub fn run(words: &[String], dir: &Path, limits: &Limits) -> Outcome {
     // Only once the program is reaped may the reaper take the orphans it left.
     drop(registration);
     let (stdout_tail, stderr_tail) = output.finish();
+    // A program that ended well was not stopped by whatever it was denied.
+    let denied = (ended != Ending::Exited(0))
+        .then(|| sandboxed.denial(&stderr_tail))
+        .flatten();
     Outcome {
         ended,
         elapsed,
         stdout_tail,
         stderr_tail,
+        denied,
     }
 }
 
@@ -114,7 +121,9 @@ fn start_error(words: &[String], dir: &Path, error: &std::io::Error) -> String {
     }
     match error.kind() {
         std::io::ErrorKind::NotFound => format!("no such program `{program}`"),
-        std::io::ErrorKind::PermissionDenied => format!("`{program}` is not executable"),
+        std::io::ErrorKind::PermissionDenied => {
+            format!("`{program}` is not executable, or the sandbox denied running it")
+        }
         _ => format!("`{program}`: {error}"),
     }
 }

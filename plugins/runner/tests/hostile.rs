@@ -5,7 +5,7 @@ mod common;
 
 use std::time::Duration;
 
-use close2gl_runner::{Ending, Limits};
+use close2gl_runner::{Ending, Limits, Sandbox};
 use common::{pids_written, run_expecting, signalled, small_limits};
 
 const QUICK: Duration = Duration::from_secs(1);
@@ -126,9 +126,9 @@ fn endless_allocation_fails_inside_the_program_not_the_grader() {
 fn a_missing_program_could_not_start() {
     let workspace = close2gl_runner::Workspace::new().expect("make a workspace");
     let words = vec!["/no/such/student-program".to_string()];
-    let outcome = close2gl_runner::run(&words, workspace.path(), &small_limits());
+    let outcome = close2gl_runner::run(&words, workspace.path(), &small_limits(), &Sandbox::Off);
     let expected = "no such program `/no/such/student-program`".to_string();
     assert_eq!(outcome.ended, Ending::CouldNotStart(expected));
-    let outcome = close2gl_runner::run(&[], workspace.path(), &small_limits());
+    let outcome = close2gl_runner::run(&[], workspace.path(), &small_limits(), &Sandbox::Off);
     assert!(matches!(outcome.ended, Ending::CouldNotStart(_)));
 }

@@ -6,7 +6,8 @@ mod common;
 use std::time::{Duration, Instant};
 
 use close2gl_runner::{
-    Ending, Limits, Workspace, install_interrupt_handler, interrupted, reap_everything, run,
+    Ending, Limits, Sandbox, Workspace, install_interrupt_handler, interrupted, reap_everything,
+    run,
 };
 use common::{gone, pids_written, program};
 
@@ -21,7 +22,7 @@ fn sigint_stops_the_running_program_and_reap_everything_removes_the_workspaces()
     let workspace = Workspace::new().expect("make a workspace");
     let path = workspace.path().to_path_buf();
     let (outcome, took) = std::thread::scope(|scope| {
-        let running = scope.spawn(|| run(&words, &path, &limits));
+        let running = scope.spawn(|| run(&words, &path, &limits, &Sandbox::Off));
         // Wait until the program and its fifty children are all running.
         let ready = Instant::now();
         while !path.join("pid").exists() {
@@ -48,7 +49,7 @@ fn sigint_stops_the_running_program_and_reap_everything_removes_the_workspaces()
     assert!(pids.iter().all(|pid| gone(*pid)), "left running: {pids:?}");
 
     // A run asked for after the interrupt does not start.
-    let again = run(&words, &path, &limits);
+    let again = run(&words, &path, &limits, &Sandbox::Off);
     assert_eq!(again.ended, Ending::Interrupted);
     assert_eq!(again.elapsed, Duration::ZERO);
 

@@ -33,6 +33,8 @@ pub(super) fn grade_class(dir: &Path, args: &GradeArgs, plan: &Plan) -> Result<(
         submissions.len(),
         plan.rubric.scenes.len()
     );
+    // Said once the input is known to be good, before the first program runs.
+    eprintln!("{}", plan.sandboxing.banner(plan.words, true));
     let results = run_tasks(plan, &dirs, label)?;
     let grades: Vec<Grade> = results.into_iter().map(Grade::new).collect();
     let write = |path: PathBuf, text: String| {
@@ -42,10 +44,11 @@ pub(super) fn grade_class(dir: &Path, args: &GradeArgs, plan: &Plan) -> Result<(
     for ((name, _), grade) in submissions.iter().zip(&grades) {
         write(
             dir.join(format!("{name}.html")),
-            html::page(grade, name, &args.run),
+            html::page(grade, name, &args.run, &plan.sandboxing),
         )?;
     }
     write(dir.join("grades.csv"), csv(&submissions, &grades))?;
+    println!("{}", plan.sandboxing.summary());
     for ((name, _), grade) in submissions.iter().zip(&grades) {
         println!("{name}: {}/{MAX_TOTAL}", grade.total);
     }

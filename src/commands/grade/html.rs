@@ -9,6 +9,7 @@ use base64::engine::general_purpose::STANDARD;
 use close2gl_trace::rubric::MAX_TOTAL;
 
 use super::report::failure_lines;
+use super::sandboxing::Sandboxing;
 use super::score::Grade;
 use super::to_fix;
 
@@ -18,10 +19,10 @@ td.n{text-align:right;white-space:nowrap}tr.full td.n{color:#186a2b}tr.lost td.n
 .why{font-size:12px;color:#555;white-space:pre-wrap}pre{background:#f6f6f6;padding:.6em;overflow-x:auto;font-size:12px}\
 figure{display:inline-block;margin:0 1em 1em 0}figcaption{font-size:12px;color:#555}\
 img{image-rendering:pixelated;border:1px solid #ccc;max-width:360px}section{border-top:2px solid #ddd;margin-top:2em}\
-.legend span{display:inline-block;padding:0 .5em;margin-right:.3em;color:#fff;font-size:12px}";
+li.lost{color:#b3261e}ul.sandbox{font-size:12px}.legend span{display:inline-block;padding:0 .5em;margin-right:.3em;color:#fff;font-size:12px}";
 
 /// The page for `grade`, of the program run as `command`.
-pub fn page(grade: &Grade, title: &str, command: &str) -> String {
+pub fn page(grade: &Grade, title: &str, command: &str, sandboxing: &Sandboxing) -> String {
     let mut out = String::new();
     let _ = write!(
         out,
@@ -32,6 +33,7 @@ pub fn page(grade: &Grade, title: &str, command: &str) -> String {
         grade.total,
         escape(command)
     );
+    sandbox_list(&mut out, sandboxing);
     let _ = write!(
         out,
         "<h2>To fix</h2><pre>{}</pre>",
@@ -121,6 +123,23 @@ fn rubric_table(out: &mut String, grade: &Grade) {
         "<tr><th>total</th><th class=\"n\">{}/{MAX_TOTAL}</th><th></th><th></th></tr></table>",
         grade.total
     );
+}
+
+/// The protections the programs ran under, each enforced or missing.
+fn sandbox_list(out: &mut String, sandboxing: &Sandboxing) {
+    out.push_str("<p class=\"sandbox\">Sandbox:</p><ul class=\"sandbox\">");
+    for (name, enforced, detail) in sandboxing.rows() {
+        let (class, word) = match enforced {
+            true => ("full", "enforced"),
+            false => ("lost", "missing"),
+        };
+        let _ = write!(
+            out,
+            "<li class=\"{class}\"><b>{name}</b> ({word}): {}</li>",
+            escape(&detail)
+        );
+    }
+    out.push_str("</ul>");
 }
 
 /// The difference picture's colours, as check paints them.

@@ -5,11 +5,13 @@
 //! The files follow a grading: `mod.rs` the arguments, the models and the scenes' workers;
 //! `scene_run.rs` one scene through the runner and the judges; `score.rs` the scenes' verdicts added
 //! up into the rubric's lines; `report.rs` the terminal table and the JSON; `html.rs` the page;
-//! `class.rs` a folder of submissions and its CSV.
+//! `class.rs` a folder of submissions and its CSV; `sandboxing.rs` the sandbox each run is in,
+//! and what every report says of it.
 
 mod class;
 mod html;
 mod report;
+mod sandboxing;
 mod scene_run;
 mod score;
 mod to_fix;
@@ -26,6 +28,7 @@ use close2gl_trace::rubric::{self, RubricScene};
 
 use super::CliError;
 use crate::progress_bar::TerminalProgress;
+use sandboxing::Sandboxing;
 use scene_run::SceneResult;
 use score::Grade;
 
@@ -55,6 +58,13 @@ pub struct GradeArgs {
     /// Grade every folder in DIR, writing DIR/grades.csv and DIR/NAME.html.
     #[arg(long, value_name = "DIR")]
     pub submissions: Option<PathBuf>,
+    /// Let every program read DIR too (a course's shared library folder); repeat for several.
+    #[arg(long = "allow-read", value_name = "DIR")]
+    pub allow_read: Vec<PathBuf>,
+    /// Run the programs without a sandbox, as you: for a kernel without Landlock (before Linux
+    /// 5.13, WSL1), where grade otherwise refuses. Only for programs you trust.
+    #[arg(long)]
+    pub unsandboxed: bool,
 }
 
 /// A model the rubric's scenes are made on: its file (copied beside each scene, so that a
@@ -77,11 +87,13 @@ pub struct Rubric {
 const BUG: &str = "close2gl could not judge this scene (a bug in close2gl: please report it \
                    with the scene and the program's trace)";
 
-/// What every grading shares: the command's words, the scenes, the limits, how many at once.
+/// What every grading shares: the command's words, the scenes, the limits, the sandbox, how
+/// many at once.
 struct Plan<'a> {
     words: &'a [String],
     rubric: &'a Rubric,
     limits: Limits,
+    sandboxing: Sandboxing,
     jobs: usize,
 }
 
@@ -109,11 +121,13 @@ pub fn run(args: GradeArgs) -> Result<(), CliError> {
         Some(n) => n,
         None => std::thread::available_parallelism().map_or(1, |n| n.get()),
     };
+    let sandboxing = Sandboxing::new(args.unsandboxed, &args.allow_read)?;
     let rubric = load_rubric(&args.models)?;
     let plan = Plan {
         words: &words,
         rubric: &rubric,
         limits,
+        sandboxing,
         jobs,
     };
     close2gl_runner::install_interrupt_handler();
@@ -127,16 +141,17 @@ pub fn run(args: GradeArgs) -> Result<(), CliError> {
 
 fn grade_one(args: &GradeArgs, plan: &Plan) -> Result<(), CliError> {
     let label = format!("grading {} scenes", plan.rubric.scenes.len());
+    eprintln!("{}", plan.sandboxing.banner(plan.words, false));
     let mut results = run_tasks(plan, &[None], label)?;
     let grade = Grade::new(results.remove(0));
     if let Some(path) = &args.html {
-        let page = html::page(&grade, "close2gl grade", &args.run);
+        let page = html::page(&grade, "close2gl grade", &args.run, &plan.sandboxing);
         std::fs::write(path, page)
             .map_err(|e| CliError::Runtime(format!("{}: cannot write: {e}", path.display())))?;
     }
     match args.json {
-        true => println!("{}", report::json(&grade)),
-        false => print!("{}", report::table(&grade, &args.run)),
+        true => println!("{}", report::json(&grade, &plan.sandboxing)),
+        false => print!("{}", report::table(&grade, &args.run, &plan.sandboxing)),
     }
     Ok(())
 }
@@ -166,9 +181,11 @@ fn run_tasks(
                     let (model, scene) = &rubric.scenes[task.scene];
                     let dir = dirs[task.submission].as_deref();
                     let model = &rubric.models[*model];
+                    let sandbox = plan.sandboxing.for_run(dir);
                     // A bug of ours on one program's trace must not stop a class's grading.
                     let result = std::panic::catch_unwind(AssertUnwindSafe(|| {
-                        scene_run::run_scene(plan.words, dir, model, scene, &plan.limits)
+                        let run = scene_run::Run::new(plan.words, dir, &plan.limits, &sandbox);
+                        scene_run::run_scene(&run, model, scene)
                     }))
                     .unwrap_or_else(|_| SceneResult::failed(scene, BUG.into()));
                     let i = task.submission * rubric.scenes.len() + task.scene;

@@ -1,22 +1,25 @@
 //! The grade for a person (the rubric as a table on the terminal) and for a script (one JSON
 //! object whose keys and line ids are binding: `total`, `max`, `lines` with `id`, `points`,
-//! `max`, `scenes`, `passed`, `mistakes`, `failures`; `scenes`).
+//! `max`, `scenes`, `passed`, `mistakes`, `failures`; `scenes`; `sandbox` with `enforced`,
+//! `landlock_abi`, `protections`, `summary`).
 
 use std::fmt::Write;
 
 use close2gl_trace::rubric::MAX_TOTAL;
 use serde_json::{Value, json};
 
+use super::sandboxing::Sandboxing;
 use super::score::{Grade, LineScore};
 use super::to_fix;
 
 /// The rubric table: each line's points of its points and scenes passed of its scenes; under
 /// a failing line, its first failing scene with why, check's first difference and the
 /// mistakes named; the total.
-pub fn table(grade: &Grade, command: &str) -> String {
+pub fn table(grade: &Grade, command: &str, sandboxing: &Sandboxing) -> String {
     let mut out = String::new();
     // Writing to a String cannot fail.
     let _ = writeln!(out, "close2gl grade: {command}");
+    let _ = writeln!(out, "{}", sandboxing.summary());
     for line in to_fix::lines(grade) {
         let _ = writeln!(out, "{line}");
     }
@@ -64,7 +67,7 @@ pub fn failure_lines(grade: &Grade, line: &LineScore) -> Vec<String> {
     lines
 }
 
-pub fn json(grade: &Grade) -> Value {
+pub fn json(grade: &Grade, sandboxing: &Sandboxing) -> Value {
     let lines: Vec<Value> = grade
         .lines
         .iter()
@@ -124,5 +127,6 @@ pub fn json(grade: &Grade) -> Value {
         "to_fix": bugs,
         "lines": lines,
         "scenes": scenes,
+        "sandbox": sandboxing.json(),
     })
 }

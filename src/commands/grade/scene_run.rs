@@ -6,7 +6,7 @@
 
 use std::path::Path;
 
-use close2gl_runner::{Ending, Limits, Workspace};
+use close2gl_runner::{Ending, Limits, Sandbox, Workspace};
 use close2gl_trace::check::{self, Report, picture, report};
 use close2gl_trace::rubric::{self, LineId, RubricScene, Verdict};
 use close2gl_trace::{Trace, read_trace};
@@ -55,17 +55,36 @@ impl SceneResult {
     }
 }
 
-/// Runs `words` (with `{scene}`, `{trace}` and `{dir}` filled in) on `scene`.
-pub fn run_scene(
-    words: &[String],
-    dir: Option<&Path>,
-    model: &Model,
-    scene: &RubricScene,
-    limits: &Limits,
-) -> SceneResult {
+/// How one submission's program runs: its command's words (with `{scene}`, `{trace}` and
+/// `{dir}`), its folder for `{dir}`, the limits and the sandbox.
+pub struct Run<'a> {
+    words: &'a [String],
+    dir: Option<&'a Path>,
+    limits: &'a Limits,
+    sandbox: &'a Sandbox,
+}
+
+impl<'a> Run<'a> {
+    pub fn new(
+        words: &'a [String],
+        dir: Option<&'a Path>,
+        limits: &'a Limits,
+        sandbox: &'a Sandbox,
+    ) -> Self {
+        Self {
+            words,
+            dir,
+            limits,
+            sandbox,
+        }
+    }
+}
+
+/// Runs the program on `scene`.
+pub fn run_scene(run: &Run, model: &Model, scene: &RubricScene) -> SceneResult {
     let scene_text = scene.scene.to_text();
     let failed = |why: String| SceneResult::failed(scene, why);
-    let trace = match run_program(words, dir, model, &scene_text, limits) {
+    let trace = match run_program(run, model, &scene_text) {
         Ok(trace) => trace,
         Err(why) => return failed(why),
     };
@@ -89,13 +108,7 @@ pub fn run_scene(
 
 /// The program run in a fresh directory holding `scene.txt` and the model; its trace, or why
 /// there is none. The directory is gone when this returns.
-fn run_program(
-    words: &[String],
-    dir: Option<&Path>,
-    model: &Model,
-    scene_text: &str,
-    limits: &Limits,
-) -> Result<Trace, String> {
+fn run_program(run: &Run, model: &Model, scene_text: &str) -> Result<Trace, String> {
     let workspace = Workspace::new().map_err(|e| format!("could not make its directory: {e}"))?;
     let (scene, trace) = (
         workspace.path().join("scene.txt"),
@@ -107,15 +120,15 @@ fn run_program(
     write(&workspace.path().join(&model.file_name), &model.bytes)?;
     write(&scene, scene_text.as_bytes())?;
     let text = |p: &Path| p.to_string_lossy().into_owned();
-    let dir = dir.map(text).unwrap_or_default();
+    let dir = run.dir.map(text).unwrap_or_default();
     let values = [
         ("scene", text(&scene)),
         ("trace", text(&trace)),
         ("dir", dir),
     ];
     let values: Vec<(&str, &str)> = values.iter().map(|(k, v)| (*k, v.as_str())).collect();
-    let command = close2gl_runner::substitute(words, &values);
-    let outcome = close2gl_runner::run(&command, workspace.path(), limits);
+    let command = close2gl_runner::substitute(run.words, &values);
+    let outcome = close2gl_runner::run(&command, workspace.path(), run.limits, run.sandbox);
     if outcome.ended != Ending::Exited(0) {
         return Err(outcome.reason());
     }

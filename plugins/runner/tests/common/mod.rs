@@ -9,7 +9,7 @@ use std::process::Command;
 use std::sync::Mutex;
 use std::time::{Duration, Instant};
 
-use close2gl_runner::{Ending, Limits, Outcome, Workspace, run};
+use close2gl_runner::{Ending, Limits, Outcome, Sandbox, Workspace, run};
 
 /// Helpers every program may use: `write_pid` (atomically, so a reader never sees half a
 /// number) and `wait_for` (a file another process writes).
@@ -150,6 +150,24 @@ const PROGRAMS: &[(&str, &str)] = &[
         r#"int main(void) { char b[16]; printf("%zd\n", read(0, b, sizeof b)); return 0; }"#,
     ),
     (
+        "cat_first_argument",
+        r#"int main(int argc, char **argv) {
+            FILE *f = fopen(argv[1], "r");
+            if (!f) { perror(argv[1]); return 1; }
+            int c;
+            while ((c = fgetc(f)) != EOF) putchar(c);
+            return 0;
+        }"#,
+    ),
+    (
+        "write_first_argument",
+        r#"int main(int argc, char **argv) {
+            FILE *f = fopen(argv[1], "w");
+            if (!f) { perror(argv[1]); return 1; }
+            return fclose(f) != 0;
+        }"#,
+    ),
+    (
         "print_cwd",
         r#"int main(void) { char b[4096]; puts(getcwd(b, sizeof b)); return 0; }"#,
     ),
@@ -202,7 +220,7 @@ pub fn run_program(name: &str, limits: &Limits) -> (Outcome, Workspace, Duration
     let words = vec![program(name)];
     let workspace = Workspace::new().expect("make a workspace");
     let started = Instant::now();
-    let outcome = run(&words, workspace.path(), limits);
+    let outcome = run(&words, workspace.path(), limits, &Sandbox::Off);
     let took = started.elapsed();
     eprintln!("{name}: {:?} in {took:.2?}", outcome.ended);
     (outcome, workspace, took)
