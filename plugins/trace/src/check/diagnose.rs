@@ -5,19 +5,24 @@
 
 use close2gl_core::{Mesh, Mistake};
 use close2gl_pipeline::mistakes::Mistakes;
-use close2gl_pipeline::program::{ClipPlanes, Outcome, Program};
+use close2gl_pipeline::program::{ClipPlanes, Outcome, Program, WindingSpace};
 use rayon::prelude::*;
 
 use super::clues;
 use super::compare::{self, Comparison, Kind, Stage};
-use super::program_for;
-use crate::format::Trace;
+use super::{program_for, program_winding};
+use crate::format::{Culling, Trace};
 
 /// The sets of mistakes that reproduce `trace`: single mistakes first; a pair only when neither
 /// of its mistakes alone does (the other one would change nothing the trace shows).
 pub fn diagnose(mesh: &Mesh, trace: &Trace) -> Vec<Mistakes> {
     let pieces = compare::pieces_by_triangle(trace, mesh.triangles.len());
-    let reproduces = |set: &Mistakes| reproduces(&program_for(trace, *set), mesh, trace, &pieces);
+    let reproduces = |set: &Mistakes| {
+        spaces(trace, *set).into_iter().any(|space| {
+            let program = program_winding(trace, *set, space);
+            reproduces(&program, mesh, trace, &pieces)
+        })
+    };
     let candidates = candidates(trace);
     let (singles, pairs): (Vec<Mistakes>, Vec<Mistakes>) =
         candidates.into_iter().partition(|s| s.iter().count() == 1);
@@ -26,6 +31,27 @@ pub fn diagnose(mesh: &Mesh, trace: &Trace) -> Vec<Mistakes> {
         return found;
     }
     pairs.into_par_iter().filter(reproduces).collect()
+}
+
+/// Where a program with `set` may test the winding: where the trace says; when it does not, on
+/// screen (version 1's meaning), and also where it changes what `set` culls: in NDC when V is
+/// flipped by the mistake, in the 2D numbers when the declared system runs mirrored on screen.
+fn spaces(trace: &Trace, set: Mistakes) -> Vec<WindingSpace> {
+    if let Some(space) = trace.winding {
+        return vec![space];
+    }
+    let mut spaces = vec![WindingSpace::Screen];
+    if trace.culling == Culling::Off {
+        return spaces;
+    }
+    if set.has(Mistake::ViewportYFlipped) {
+        spaces.push(WindingSpace::Ndc);
+    }
+    let o = trace.ortho2d;
+    if (o.right - o.left) * (o.top - o.bottom) < 0.0 {
+        spaces.push(WindingSpace::Window);
+    }
+    spaces
 }
 
 /// The sets a trace can be diagnosed with: every single and pair, but those that contradict
