@@ -140,9 +140,21 @@ fn graded(command: &str, dir: &Path) -> Value {
     let tmp = dir.join("tmp");
     std::fs::create_dir_all(&tmp).expect("make TMPDIR");
     let model = asset("cube.in").display().to_string();
+    // The Python programs import the helpers from examples/trace, a folder their command does
+    // not name: the course's shared library folder, which the sandbox reads when told to.
+    let helpers = repository().join("examples/trace").display().to_string();
     let output = Command::new(env!("CARGO_BIN_EXE_close2gl"))
         .args([
-            "grade", "--run", command, "--json", "--jobs", "2", "--model", &model,
+            "grade",
+            "--run",
+            command,
+            "--json",
+            "--jobs",
+            "2",
+            "--model",
+            &model,
+            "--allow-read",
+            &helpers,
         ])
         .env("TMPDIR", &tmp)
         .output()
