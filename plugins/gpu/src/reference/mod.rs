@@ -311,18 +311,7 @@ impl Reference {
             constants: &constants,
             ..Default::default()
         };
-        let attributes = wgpu::vertex_attr_array![0 => Float32x3, 1 => Float32x3, 2 => Float32x2];
-        let (entry_point, layout) = match faces {
-            FaceDrawing::Triangles(_) => (
-                "vs_main",
-                wgpu::VertexBufferLayout {
-                    array_stride: size_of::<Vertex>() as u64,
-                    step_mode: wgpu::VertexStepMode::Vertex,
-                    attributes: &attributes,
-                },
-            ),
-            FaceDrawing::Instanced { .. } => ("vs_face", polygon_mode::face_layout()),
-        };
+        let (entry_point, layout) = faces.vertex_stage();
         device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
             label: Some(drawing.fragment),
             layout: Some(&self.bindings.pipeline_layout),

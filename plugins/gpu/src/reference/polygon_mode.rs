@@ -60,6 +60,22 @@ impl FaceDrawing {
         ]
     }
 
+    /// The reference shader's vertex entry point and its vertex buffer: the mesh's vertices for
+    /// triangles, the faces as instances otherwise.
+    pub(super) fn vertex_stage(self) -> (&'static str, wgpu::VertexBufferLayout<'static>) {
+        match self {
+            Self::Triangles(_) => (
+                "vs_main",
+                wgpu::VertexBufferLayout {
+                    array_stride: size_of::<Vertex>() as u64,
+                    step_mode: wgpu::VertexStepMode::Vertex,
+                    attributes: &VERTEX_ATTRIBUTES,
+                },
+            ),
+            Self::Instanced { .. } => ("vs_face", face_layout()),
+        }
+    }
+
     /// The primitive state: the key's culling and front face for triangles; for instanced faces
     /// lines or points, which the hardware does not cull.
     pub(crate) fn primitive_state(self, key: PipelineKey) -> wgpu::PrimitiveState {
@@ -127,14 +143,18 @@ pub(super) fn face_buffer(
     })
 }
 
+/// A vertex: position, normal and uv.
+const VERTEX_ATTRIBUTES: [wgpu::VertexAttribute; 3] =
+    wgpu::vertex_attr_array![0 => Float32x3, 1 => Float32x3, 2 => Float32x2];
+
 /// The vertex buffer layout of instanced faces: three corners of position, normal and uv.
-pub(super) const FACE_ATTRIBUTES: [wgpu::VertexAttribute; 9] = wgpu::vertex_attr_array![
+const FACE_ATTRIBUTES: [wgpu::VertexAttribute; 9] = wgpu::vertex_attr_array![
     0 => Float32x3, 1 => Float32x3, 2 => Float32x2,
     3 => Float32x3, 4 => Float32x3, 5 => Float32x2,
     6 => Float32x3, 7 => Float32x3, 8 => Float32x2,
 ];
 
-pub(super) fn face_layout() -> wgpu::VertexBufferLayout<'static> {
+fn face_layout() -> wgpu::VertexBufferLayout<'static> {
     wgpu::VertexBufferLayout {
         array_stride: size_of::<Face>() as u64,
         step_mode: wgpu::VertexStepMode::Instance,
