@@ -14,7 +14,7 @@ use std::path::{Path, PathBuf};
 use std::process::Command;
 
 use close2gl_testkit::TempDir;
-use close2gl_testkit::student::{asset, compile_c, compile_cpp, repository};
+use close2gl_testkit::student::{asset, compile_c, compile_cpp, corpus_programs, repository};
 use serde_json::Value;
 
 /// One `expect-grade` line: a build of a program and the points each line should get.
@@ -44,18 +44,7 @@ fn corpus() -> PathBuf {
 
 /// Every `expect-grade cube` line of every program of the corpus.
 fn expectations() -> Vec<Expected> {
-    let mut programs: Vec<PathBuf> = std::fs::read_dir(corpus())
-        .expect("examples/corpus")
-        .map(|e| e.expect("a directory entry").path())
-        .filter(|p| {
-            matches!(
-                p.extension().and_then(|e| e.to_str()),
-                Some("c" | "cpp" | "py")
-            )
-        })
-        .filter(|p| p.file_stem().is_some_and(|s| s != "model"))
-        .collect();
-    programs.sort();
+    let programs = corpus_programs();
     let mut all = Vec::new();
     for program in programs {
         let text = std::fs::read_to_string(&program).expect("read a corpus program");

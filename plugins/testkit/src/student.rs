@@ -77,3 +77,22 @@ fn compile(
     );
     out.to_path_buf()
 }
+
+/// The programs of `examples/corpus` (every .c, .cpp and .py file but the shared loader), in
+/// name order: `check`'s corpus test and `grade`'s both run them.
+pub fn corpus_programs() -> Vec<PathBuf> {
+    let corpus = repository().join("examples/corpus");
+    let mut found: Vec<PathBuf> = std::fs::read_dir(&corpus)
+        .expect("examples/corpus")
+        .map(|e| e.expect("a directory entry").path())
+        .filter(|p| {
+            matches!(
+                p.extension().and_then(|e| e.to_str()),
+                Some("c" | "cpp" | "py")
+            )
+        })
+        .filter(|p| p.file_stem().is_some_and(|s| s != "model"))
+        .collect();
+    found.sort();
+    found
+}

@@ -16,7 +16,7 @@ use std::path::{Path, PathBuf};
 use std::process::Command;
 
 use close2gl_testkit::TempDir;
-use close2gl_testkit::student::{compile_c, compile_cpp, repository};
+use close2gl_testkit::student::{compile_c, compile_cpp, corpus_programs, repository};
 use close2gl_trace::check;
 use expect::{Expectation, Outcome};
 use rayon::prelude::*;
@@ -24,23 +24,6 @@ use scenes::SceneFile;
 
 fn corpus() -> PathBuf {
     repository().join("examples/corpus")
-}
-
-/// The corpus's programs: every .c, .cpp and .py file but the shared loader.
-fn programs() -> Vec<PathBuf> {
-    let mut found: Vec<PathBuf> = std::fs::read_dir(corpus())
-        .expect("examples/corpus")
-        .map(|e| e.expect("a directory entry").path())
-        .filter(|p| {
-            matches!(
-                p.extension().and_then(|e| e.to_str()),
-                Some("c" | "cpp" | "py")
-            )
-        })
-        .filter(|p| p.file_stem().is_some_and(|s| s != "model"))
-        .collect();
-    found.sort();
-    found
 }
 
 /// How to start a program built with some flags: a compiled program, or python3 with the script.
@@ -110,7 +93,7 @@ fn run(mut command: Command, scene: &SceneFile, trace: &Path) -> Result<(Outcome
 
 /// Every program's expectations, in the corpus's order.
 fn expectations() -> Vec<(PathBuf, Expectation)> {
-    programs()
+    corpus_programs()
         .into_iter()
         .flat_map(|p| {
             let expectations = expect::read(&p).unwrap_or_else(|e| panic!("{e}"));
