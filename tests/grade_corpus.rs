@@ -14,7 +14,9 @@ use std::path::{Path, PathBuf};
 use std::process::Command;
 
 use close2gl_testkit::TempDir;
-use close2gl_testkit::student::{asset, compile_c, compile_cpp, corpus_programs, repository};
+use close2gl_testkit::student::{
+    asset, compile_c, compile_cpp, compile_pipeline, corpus_programs, repository,
+};
 use serde_json::Value;
 
 /// One `expect-grade` line: a build of a program and the points each line should get.
@@ -244,4 +246,65 @@ fn expect_grade_lines_that_do_not_read_are_refused() {
     assert!(parse(program, 1, "knot: 200").is_none());
     assert!(parse(program, 1, "cube: culling").is_none());
     assert!(parse(program, 1, "cube 200").is_none());
+}
+
+// The fairness of one style, against the rubric's promise that honesty never costs:
+// `c_aspect.c` takes its horizontal extent from the window's aspect (gluPerspective's habit):
+// asked hfov = vfov = 60° in a 640×480 window, it draws with hfov 75.18°. Honest
+// (`-DWRITE_USED_HFOV`) it says so in its trace; as it is, it writes the scene's 60.
+
+/// The ids of the lines that lost points.
+fn lost(grade: &Value) -> Vec<String> {
+    let lines = grade["lines"].as_array().expect("lines");
+    lines
+        .iter()
+        .filter(|l| l["points"] != l["max"])
+        .map(|l| l["id"].as_str().expect("id").to_string())
+        .collect()
+}
+
+#[test]
+fn honesty_never_costs_and_a_window_aspect_projection_costs_only_its_lines() {
+    let dir = TempDir::new("grade_fairness");
+    let command = |program: PathBuf| format!("'{}' {{scene}} {{trace}}", program.display());
+    let correct = graded(&command(compile_pipeline(&dir, "pipeline", &[])), &dir);
+    let aspect = |flags: &[&str]| {
+        let source = corpus().join("c_aspect.c");
+        let include = format!("-I{}", repository().join("examples/trace").display());
+        let out = dir.join(format!(
+            "c_aspect{}",
+            flags.concat().replace(['-', '='], "_")
+        ));
+        let all: Vec<&str> = [include.as_str()]
+            .into_iter()
+            .chain(flags.iter().copied())
+            .collect();
+        command(compile_c(&source, &out, &all))
+    };
+    let honest = graded(&aspect(&["-DWRITE_USED_HFOV"]), &dir);
+    let dishonest = graded(&aspect(&[]), &dir);
+    assert_eq!(correct["total"], 200, "{correct:#}");
+    let total = |g: &Value| g["total"].as_u64().expect("total");
+    assert!(
+        total(&honest) >= total(&dishonest),
+        "honest {} < dishonest {}",
+        total(&honest),
+        total(&dishonest)
+    );
+    // The horizontal field of view is wrong, and so are the pictures (the mode lines and
+    // synchronized); culling, clipping, the moves, vfov and resize are judged on the program's
+    // own geometry, and keep their points.
+    for grade in [&honest, &dishonest] {
+        let lost = lost(grade);
+        assert!(lost.iter().any(|l| l == "hfov"), "{lost:?}");
+        for line in &lost {
+            assert!(
+                ["points", "wireframe", "solid", "hfov", "synchronized"].contains(&line.as_str()),
+                "lost {line}: {:#}",
+                grade["lines"]
+            );
+        }
+    }
+    // The report leads with what to fix.
+    assert!(!honest["to_fix"].as_array().expect("to_fix").is_empty());
 }
