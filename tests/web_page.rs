@@ -232,12 +232,17 @@ fn a_page_in_virtual_time_draws_its_first_frame() {
     let flags = std::fs::read_to_string(root().join("tests/web/chromium-args.json"))
         .expect("tests/web/chromium-args.json");
     let flags: Vec<String> = serde_json::from_str(&flags).expect("a JSON list of flags");
+    // A profile of its own: with the default one, a Chromium already running hands the page to
+    // that one and exits at once, with the page not yet started.
+    let profile_dir = close2gl_testkit::TempDir::new("virtual_time_profile");
+    let profile = format!("--user-data-dir={}", profile_dir.display());
     let output = Command::new(std::env::var("CHROMIUM").unwrap_or("/usr/bin/chromium".into()))
         .args(flags)
         .args([
             "--headless",
             "--virtual-time-budget=20000",
             "--dump-dom",
+            &profile,
             &url,
         ])
         .output()
