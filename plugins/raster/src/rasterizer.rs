@@ -6,7 +6,7 @@
 //! pixels together (`queue`, Phong); or every triangle depth-tested first and each pixel shaded
 //! once after (`deferred`, Phong in tiles of small triangles). Then the tiles are copied out as
 //! an image (`target`); while fates are recorded, which triangles covered no pixel centre and
-//! which won none (`fates`).
+//! which won none (`pixel_fates`).
 
 use bevy_ecs::prelude::Resource;
 use close2gl_core::{

@@ -14,7 +14,7 @@
 //! bias in their constant (`edge`), the bounding box, and the planes of depth, 1/w and each
 //! varying times 1/w, set up once per triangle); the value of a plane at a pixel centre
 //! (`varyings`: in f32 the order of a sum decides its last bit, so both sum alike); the
-//! lighting equation (`lighting`); and the texture's level of detail and filters (`texture`).
+//! lighting equation (`lighting`); and the texture's level of detail and filters (`sampling`).
 //! The last two work on eight lanes at once: here one pixel is given to all eight and the
 //! first is read back.
 

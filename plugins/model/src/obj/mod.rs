@@ -3,7 +3,7 @@
 //! into fans from their first corner. Every line is checked on its way to tobj (`checks`), so
 //! that what is wrong is reported at its line (`path:line: expected '<form>', found '<line>'`);
 //! the file is read once, a line at a time, through the caller's reader (its progress and its
-//! cancel). tobj's objects are merged into one mesh (`mesh`), one vertex per distinct (position,
+//! cancel). tobj's objects are merged into one mesh (`merge`), one vertex per distinct (position,
 //! normal, texture coordinate), with smooth (area-weighted) normals where the file gives none.
 //! Materials, groups, lines and points are skipped: the app draws triangles in one chosen colour.
 
