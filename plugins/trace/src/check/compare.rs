@@ -411,11 +411,15 @@ pub fn judge(
         window,
         depths,
     };
-    let ours_visible = ours.drawn() && !region::negligible(&ours.polygon, &ours.errors);
-    let theirs_visible = theirs.iter().any(|q| {
+    // Each is read in one branch only: judged for every triangle of every candidate set, they
+    // are worked out there, not up front.
+    let ours_visible = || ours.drawn() && !region::negligible(&ours.polygon, &ours.errors);
+    let theirs_visible = || {
         let error = corner_error(program, ours);
-        !region::negligible(q, &vec![error; q.len()])
-    });
+        theirs
+            .iter()
+            .any(|q| !region::negligible(q, &vec![error; q.len()]))
+    };
     let line = || pieces.first().map_or(0, |&i| trace.pieces[i].line);
     match (ours.drawn(), !theirs.is_empty()) {
         (true, true) => {
@@ -440,7 +444,7 @@ pub fn judge(
                 },
             }
         }
-        (true, false) if ours_visible && !ours.near_a_plane => {
+        (true, false) if !ours.near_a_plane && ours_visible() => {
             let inside = ours.fate.kind == FateKind::Drawn;
             let culling_on = program.declared.culling.is_some();
             if inside && culling_on && !ours.near_edge_on {
@@ -465,7 +469,7 @@ pub fn judge(
                 AGREE
             }
         }
-        (false, true) if theirs_visible => match ours.fate.kind {
+        (false, true) if theirs_visible() => match ours.fate.kind {
             FateKind::Clipped if !ours.near_a_plane => {
                 let kind = match ours.clip.iter().any(|c| c.w <= 0.0) {
                     true => Kind::DrawnBehindEye,
