@@ -29,17 +29,6 @@ struct Expected {
     points: Vec<(String, u64)>,
 }
 
-/// Lines where grade's points are disputed: the build, the line, and why the expectation is
-/// kept (the rubric's standard: a mistake costs only the lines it is about). They are left out
-/// of the main test and held by `disputed_lines_score_what_the_rubric_says`, ignored until
-/// grade is fixed.
-const DISPUTED: [(&str, &str, &str, &str); 1] = [(
-    "py_ndc.py",
-    "-DALWAYS_CULLS",
-    "simple_clipping",
-    "everything culled (culling's bug) fails clipping as 'it drew nothing'",
-)];
-
 fn corpus() -> PathBuf {
     repository().join("examples/corpus")
 }
@@ -158,17 +147,9 @@ fn graded(command: &str, dir: &Path) -> Value {
     serde_json::from_slice(&output.stdout).expect("grade --json prints JSON")
 }
 
-fn disputed(expected: &Expected, line: &str) -> bool {
-    let name = expected.program.file_name().and_then(|n| n.to_str());
-    let flags = expected.flags.join(" ");
-    DISPUTED
-        .iter()
-        .any(|&(p, f, l, _)| Some(p) == name && f == flags && l == line)
-}
-
 /// The lines where grade's points are not the expected ones: `(build, line, expected, found,
-/// grade's first reason)`; `keep` picks the lines looked at.
-fn mismatches(expected: &Expected, grade: &Value, keep: &dyn Fn(&str) -> bool) -> Vec<String> {
+/// grade's first reason)`.
+fn mismatches(expected: &Expected, grade: &Value) -> Vec<String> {
     let lines = grade["lines"].as_array().expect("lines");
     let mut wrong = Vec::new();
     for line in lines {
@@ -179,7 +160,7 @@ fn mismatches(expected: &Expected, grade: &Value, keep: &dyn Fn(&str) -> bool) -
             .iter()
             .find(|(l, _)| l == id)
             .map_or_else(|| line["max"].as_u64().expect("max"), |&(_, p)| p);
-        if keep(id) && found != want {
+        if found != want {
             let reason = &line["failures"][0]["reason"];
             wrong.push(format!(
                 "{}:{} {}: {id} expected {want}, grade gave {found} ({reason})",
@@ -192,49 +173,54 @@ fn mismatches(expected: &Expected, grade: &Value, keep: &dyn Fn(&str) -> bool) -
     wrong
 }
 
-fn check_all(dir_name: &str, keep: &dyn Fn(&Expected, &str) -> bool) -> Vec<String> {
-    let dir = TempDir::new(dir_name);
+/// A line that names a mistake must have it named in every scene it failed: a mistake that
+/// explains one scene of a line and not the others did not cost the line.
+fn false_names(expected: &Expected, grade: &Value) -> Vec<String> {
+    let scenes = grade["scenes"].as_array().expect("scenes");
+    let named_in = |scene: &str, mistake: &Value| {
+        let scene = scenes.iter().find(|s| s["id"] == scene);
+        scene.is_some_and(|s| {
+            s["mistakes"]
+                .as_array()
+                .expect("mistakes")
+                .contains(mistake)
+        })
+    };
+    let mut wrong = Vec::new();
+    for line in grade["lines"].as_array().expect("lines") {
+        for mistake in line["mistakes"].as_array().expect("mistakes") {
+            for failure in line["failures"].as_array().expect("failures") {
+                let scene = failure["scene"].as_str().expect("scene");
+                if !named_in(scene, mistake) {
+                    wrong.push(format!(
+                        "{}:{} {}: {} names {mistake}, which scene {scene} does not",
+                        expected.program.display(),
+                        expected.line_no,
+                        expected.flags.join(" "),
+                        line["id"]
+                    ));
+                }
+            }
+        }
+    }
+    wrong
+}
+
+#[test]
+fn every_corpus_build_scores_what_its_header_expects_and_names_no_mistake_falsely() {
+    let dir = TempDir::new("grade_corpus");
     let all = expectations();
     assert!(
         all.len() >= 17,
         "every corpus build has its expect-grade line"
     );
-    all.iter()
-        .filter(|e| LINES.iter().any(|line| keep(e, line)))
+    let wrong: Vec<String> = all
+        .iter()
         .flat_map(|e| {
             let grade = graded(&run_command(e, &dir), &dir);
-            mismatches(e, &grade, &|line| keep(e, line))
+            [mismatches(e, &grade), false_names(e, &grade)].concat()
         })
-        .collect()
-}
-
-const LINES: [&str; 12] = [
-    "points",
-    "wireframe",
-    "solid",
-    "translation",
-    "lookat_translation",
-    "rotation",
-    "culling",
-    "hfov",
-    "vfov",
-    "simple_clipping",
-    "resize",
-    "synchronized",
-];
-
-#[test]
-fn every_corpus_build_scores_what_its_header_expects() {
-    let wrong = check_all("grade_corpus", &|e, line| !disputed(e, line));
-    assert!(wrong.is_empty(), "{}", wrong.join("\n"));
-}
-
-/// The lines grade judges unfairly by the rubric's standard (see [`DISPUTED`]): this fails
-/// until grade is fixed.
-#[test]
-#[ignore = "grade is unfair on these lines (reported; see DISPUTED)"]
-fn disputed_lines_score_what_the_rubric_says() {
-    let wrong = check_all("grade_corpus_disputed", &disputed);
+        .collect();
     assert!(wrong.is_empty(), "{}", wrong.join("\n"));
 }
 

@@ -3,11 +3,13 @@ viewport and cuts x and y at the window's edge), so it clips only against the ne
 planes (a triangle with a corner outside them is dropped, the rest sent whole) and culls by the
 winding of NDC x, y. Standard library only; matrices are flat tuples, row by row.
 
-    python3 py_ndc.py SCENE TRACE [-DIGNORES_FRONT_FACE] [-DALWAYS_CULLS]
+    python3 py_ndc.py SCENE TRACE [-DIGNORES_FRONT_FACE] [-DALWAYS_CULLS] [-DDRAWS_NOTHING]
 
 Variants: -DIGNORES_FRONT_FACE always takes counter-clockwise as front, whatever the scene's
 culling says; -DALWAYS_CULLS culls back faces (counter-clockwise front) even with culling off,
 as a program that calls glEnable(GL_CULL_FACE) once and forgets it; it writes the scene's culling.
+-DDRAWS_NOTHING computes every triangle's clip coordinates and draws none, as a program whose
+draw call was left commented out.
 
 Lines ending in "[trace]" were added only to write the trace.
 
@@ -19,9 +21,12 @@ expect knot_cw -DIGNORES_FRONT_FACE: differs stage=culling names=culling_inverte
 expect knot_turned -DIGNORES_FRONT_FACE: agree
 expect inside_cube -DALWAYS_CULLS: differs stage=culling unexplained
 expect cube_front -DALWAYS_CULLS: agree
+expect cube_front -DDRAWS_NOTHING: differs stage=culling unexplained
+expect inside_cube -DDRAWS_NOTHING: differs stage=culling unexplained
 expect-grade cube: 200
 expect-grade cube -DIGNORES_FRONT_FACE: culling=16 synchronized=23
 expect-grade cube -DALWAYS_CULLS: points=0 wireframe=0 solid=0 culling=16 synchronized=2
+expect-grade cube -DDRAWS_NOTHING: points=0 wireframe=0 solid=0 culling=4 hfov=0 vfov=0 simple_clipping=3 resize=0 synchronized=0
 """
 import math
 import sys
@@ -31,6 +36,7 @@ from model import load_model
 
 IGNORES_FRONT_FACE = "-DIGNORES_FRONT_FACE" in sys.argv
 ALWAYS_CULLS = "-DALWAYS_CULLS" in sys.argv
+DRAWS_NOTHING = "-DDRAWS_NOTHING" in sys.argv
 
 
 def rotated(a, b, degrees):
@@ -121,6 +127,8 @@ def main(scene_path, trace_path):
                 twice = (x1 - x0) * (y2 - y0) - (x2 - x0) * (y1 - y0)
                 if culls and (twice <= 0 if front == "ccw" else twice >= 0):
                     ndc = None
+            if DRAWS_NOTHING:
+                ndc = None
             out.triangle(index, clip, ndc)  # [trace]
         out.end()  # [trace]
 

@@ -12,8 +12,8 @@ pub struct LineScore {
     pub scenes: usize,
     pub passed: usize,
     /// The catalogue mistakes of the line's stage check named in every one of its failing
-    /// scenes that it named any in (a scene names all those it cannot tell apart; across scenes only the
-    /// consistent explanation stays); all of them when no one is named everywhere.
+    /// scenes (a scene names all those it cannot tell apart; across scenes only the
+    /// explanation of them all stays).
     pub mistakes: Vec<&'static str>,
     /// The failing scenes (indices into [`Grade::scenes`]) with why each failed the line.
     pub failures: Vec<(usize, String)>,
@@ -77,40 +77,29 @@ fn score(line: LineId, scenes: &[SceneResult]) -> LineScore {
     score
 }
 
-/// The mistakes of the line's stage named in every scene that names any, in the order first
-/// named; all those named when no one is named everywhere.
+/// The mistakes of the line's stage named in every failing scene. A scene no mistake
+/// explains leaves none: a mistake that explains only some of a line's failures is not what
+/// cost the line (each scene's own names stay in its evidence).
 fn consistent_mistakes<'a>(
-    scenes: impl Iterator<Item = &'a SceneResult>,
+    mut scenes: impl Iterator<Item = &'a SceneResult>,
     line: LineId,
 ) -> Vec<&'static str> {
-    let of_stage = |name: &&'static str| {
-        line.stage_mistakes()
-            .is_none_or(|stage| stage.iter().any(|m| m.name() == *name))
-    };
-    let named: Vec<Vec<&'static str>> = scenes
-        .filter_map(|s| s.evidence.as_ref())
-        .map(|e| {
-            e.mistakes
-                .iter()
-                .copied()
-                .filter(of_stage)
-                .collect::<Vec<_>>()
+    let named = |s: &SceneResult| -> Vec<&'static str> {
+        let of_stage = |name: &&'static str| {
+            line.stage_mistakes()
+                .is_none_or(|stage| stage.iter().any(|m| m.name() == *name))
+        };
+        let evidence = s.evidence.as_ref();
+        evidence.map_or(Vec::new(), |e| {
+            e.mistakes.iter().copied().filter(of_stage).collect()
         })
-        .filter(|m| !m.is_empty())
-        .collect();
-    let mut union: Vec<&'static str> = Vec::new();
-    for mistake in named.iter().flatten() {
-        if !union.contains(mistake) {
-            union.push(mistake);
-        }
-    }
-    let everywhere: Vec<&'static str> = union
-        .iter()
-        .copied()
-        .filter(|m| named.iter().all(|set| set.contains(m)))
-        .collect();
-    match everywhere.is_empty() {
-        true => union,
-        false => everywhere,
-    }
+    };
+    let Some(first) = scenes.next() else {
+        return Vec::new();
+    };
+    scenes.fold(named(first), |mut everywhere, scene| {
+        let here = named(scene);
+        everywhere.retain(|m| here.contains(m));
+        everywhere
+    })
 }

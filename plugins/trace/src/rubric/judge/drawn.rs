@@ -1,12 +1,13 @@
 //! The lines judged on the frame: the modes' 2D output, culling and clipping on the program's
 //! own geometry, the fields of view, resizing, and the whole frame for `synchronized`.
 
-use close2gl_pipeline::program::Outcome;
+use close2gl_core::FrontFace;
+use close2gl_pipeline::program::{CullRule, Outcome};
 use glam::{DMat4, DVec2};
 
 use super::{Judge, Verdict, drew_nothing, required, stage_verdict, stages_agree};
 use crate::check::clues;
-use crate::check::compare::{self, Stage, number};
+use crate::check::compare::{self, Kind, Stage, number};
 use crate::check::own_input::own_program;
 
 /// How far a frame's width in NDC (where the window is 2 wide) may be off.
@@ -35,6 +36,39 @@ impl Judge<'_> {
         }
         let comparison = compare::compare(&program, self.mesh, self.trace, &expected);
         stages_agree(&comparison, stages)
+    }
+
+    /// Clipping on the program's own geometry, its culling taken as given: what it left out
+    /// inside the view volume must be what culling with some front face (the declared one, or
+    /// either) leaves out, so that a culling bug (culling with culling off, everything culled
+    /// in a scene seen from inside) costs the culling line and not this one, while a program
+    /// that drops what no culling drops (or draws nothing at all) still fails it.
+    pub(super) fn clipping(&self) -> Verdict {
+        let program = own_program(&self.ours, self.mesh, self.trace, true);
+        if !self.trace.gives_output() {
+            return drew_nothing(&program.frame(self.mesh), "its own clip coordinates show");
+        }
+        let either = [FrontFace::Ccw, FrontFace::Cw].map(|front| {
+            let mut culling = program;
+            culling.declared.culling = Some(front);
+            culling.cull = CullRule::Winding(front);
+            culling
+        });
+        let judged = [program, either[0], either[1]].map(|program| {
+            let comparison =
+                compare::compare(&program, self.mesh, self.trace, &program.frame(self.mesh));
+            let verdict = stages_agree(&comparison, &[Stage::Clipping]);
+            match comparison
+                .triangles
+                .iter()
+                .find(|(kind, _)| matches!(kind, Kind::InsideNotDrawn | Kind::FrontCulled))
+            {
+                Some(_) if verdict.passed => stage_verdict(comparison.stage(Stage::Culling)),
+                _ => verdict,
+            }
+        });
+        let [first, ..] = &judged;
+        judged.iter().find(|v| v.passed).unwrap_or(first).clone()
     }
 
     /// hfov (row 0) or vfov (row 1): P's row, and the frame's width (height) in NDC.

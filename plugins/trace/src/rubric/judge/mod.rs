@@ -13,7 +13,8 @@
 //!   turned by the angle, by the right-hand rule or the other way round;
 //! - `culling`, `simple_clipping`: check's stage recomputed on the program's own geometry
 //!   ([`own_input`](crate::check::own_input)), so that a wrong matrix costs its own line, not
-//!   these;
+//!   these; clipping takes the program's culling as given (what it left out inside the volume
+//!   is what culling with some front face leaves out);
 //! - `hfov`, `vfov`: P's first (second) row, and the width (height) in NDC of what the program
 //!   drew against close2gl's with the program's own M;
 //! - `resize`: check's V, and where the 2D output lands (the window stage) from the program's
@@ -128,7 +129,7 @@ impl Judge<'_> {
             LineId::LookatTranslation => self.orbit(),
             LineId::Rotation => self.rotation(),
             LineId::Culling => self.own_stages(&[Stage::Culling], true),
-            LineId::SimpleClipping => self.own_stages(&[Stage::Clipping], true),
+            LineId::SimpleClipping => self.clipping(),
             LineId::Hfov => self.fov(0),
             LineId::Vfov => self.fov(1),
             LineId::Resize => self.resize(),
