@@ -92,3 +92,101 @@ fn every_link_from_the_code_into_the_docs_names_a_heading() {
         broken.join("\n")
     );
 }
+
+/// The extensions of the files the prose names.
+const NAMED: [&str; 9] = [
+    ".rs", ".wgsl", ".md", ".toml", ".c", ".h", ".py", ".cpp", ".html",
+];
+
+/// Each file name or path `text` names: a word of path characters ending in one of [`NAMED`].
+fn named_files(text: &str) -> Vec<&str> {
+    let path_char = |c: char| c.is_ascii_alphanumeric() || matches!(c, '_' | '-' | '.' | '/');
+    text.split(|c: char| !path_char(c))
+        .map(|word| word.trim_end_matches('.').trim_start_matches("./"))
+        .filter(|word| {
+            NAMED
+                .iter()
+                .any(|ext| word.ends_with(ext) && word.len() > ext.len())
+        })
+        .filter(|word| !placeholder(word))
+        .collect()
+}
+
+/// A name that stands for the reader's own file, not one of ours: an absolute path, a path
+/// with a part in capitals (`DIR/NAME.html`), `my_...`, or a relative one going up.
+fn placeholder(word: &str) -> bool {
+    let capitals = |part: &str| part.len() > 1 && part.chars().all(|c| c.is_ascii_uppercase());
+    word.starts_with(['/', '.'])
+        || word.contains("..")
+        || word.starts_with("my_")
+        || word.split(['/', '.']).any(capitals)
+}
+
+/// The repository's files, as paths relative to its root (build output and dependencies left out).
+fn repository_files(root: &Path, dir: &Path, out: &mut Vec<String>) {
+    for entry in fs::read_dir(dir).expect("a directory") {
+        let path = entry.expect("a directory entry").path();
+        let name = path
+            .file_name()
+            .and_then(|n| n.to_str())
+            .unwrap_or_default();
+        if path.is_dir() {
+            if !matches!(name, "target" | "node_modules" | ".git" | "__pycache__") {
+                repository_files(root, &path, out);
+            }
+        } else if let Ok(relative) = path.strip_prefix(root) {
+            out.push(relative.to_string_lossy().into_owned());
+        }
+    }
+}
+
+#[test]
+fn every_file_a_comment_or_document_names_exists() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let mut all = Vec::new();
+    repository_files(root, root, &mut all);
+    let exists = |name: &str| {
+        all.iter()
+            .any(|f| f == name || f.ends_with(&format!("/{name}")))
+    };
+    let mut checked = 0;
+    let mut missing = Vec::new();
+    let prose = all
+        .iter()
+        .filter(|f| f.ends_with(".rs") || f.ends_with(".md"));
+    for file in prose {
+        let text = fs::read_to_string(root.join(file)).expect("a text file");
+        for (i, line) in text.lines().enumerate() {
+            // In Rust, the comments are the prose; in Markdown, every line.
+            let prose = match file.ends_with(".rs") {
+                true => line.split_once("//").map_or("", |(_, comment)| comment),
+                false => line,
+            };
+            for name in named_files(prose) {
+                checked += 1;
+                if !exists(name) {
+                    missing.push(format!("{file}:{}: {name}", i + 1));
+                }
+            }
+        }
+    }
+    assert!(
+        checked > 100,
+        "only {checked} names found: the search is broken"
+    );
+    assert!(
+        missing.is_empty(),
+        "files named that do not exist:\n{}",
+        missing.join("\n")
+    );
+}
+
+#[test]
+fn file_names_are_found_in_prose() {
+    assert_eq!(
+        named_files(
+            "see `stage.rs`, plugins/gpu/src/kept_faces.wgsl and docs/web.md. Not x.y, DIR/NAME.html, /home/me/a.py or my_close2gl.py"
+        ),
+        ["stage.rs", "plugins/gpu/src/kept_faces.wgsl", "docs/web.md"]
+    );
+}

@@ -43,10 +43,35 @@ impl FrameSet {
     ];
 }
 
-/// The frame's schedule with the sets chained in [`FrameSet::ALL`]'s order.
+/// The steps inside [`FrameSet::Close2gl`], chained in this order, so that no plugin orders
+/// itself by another crate's system.
+#[derive(SystemSet, Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Close2glStep {
+    /// What asks the pipeline for more, or replaces what it shows: recording the fates while
+    /// they are shown, a requested trace read.
+    Prepare,
+    /// The pipeline: camera, mesh and settings into the 2D buffer.
+    Geometry,
+    /// What reads the 2D buffer: the software rasterizer, a shown trace's output in its place.
+    Raster,
+}
+
+impl Close2glStep {
+    /// Every step, in the order it runs.
+    pub const ALL: [Close2glStep; 3] = [
+        Close2glStep::Prepare,
+        Close2glStep::Geometry,
+        Close2glStep::Raster,
+    ];
+}
+
+/// The frame's schedule with the sets chained in [`FrameSet::ALL`]'s order, and the steps of
+/// [`FrameSet::Close2gl`] in [`Close2glStep::ALL`]'s.
 pub(crate) fn frame_schedule() -> Schedule {
     let mut schedule = Schedule::new(Update);
     let [input, panel, load, camera, close2gl, output] = FrameSet::ALL;
     schedule.configure_sets((input, panel, load, camera, close2gl, output).chain());
+    let [prepare, geometry, raster] = Close2glStep::ALL;
+    schedule.configure_sets((prepare, geometry, raster).chain().in_set(close2gl));
     schedule
 }

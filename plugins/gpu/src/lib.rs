@@ -43,8 +43,8 @@ mod views;
 
 use bevy_ecs::prelude::*;
 use close2gl_core::{
-    App, Close2glFrame, Fates, FrameSet, Lighting, Owner, Plugin, RenderSettings, SelectedTriangle,
-    Update, Viewport,
+    App, Close2glFrame, Close2glStep, Fates, FrameSet, Lighting, Owner, Plugin, RenderSettings,
+    SelectedTriangle, Update, Viewport,
 };
 
 use fate_view::record_fates_while_shown;
@@ -90,9 +90,7 @@ impl Plugin for GpuPlugin {
             .init_resource::<Fates>()
             .add_systems(
                 Update,
-                record_fates_while_shown
-                    .in_set(FrameSet::Close2gl)
-                    .before(close2gl_pipeline::close2gl_system),
+                record_fates_while_shown.in_set(Close2glStep::Prepare),
             )
             .add_systems(
                 Update,

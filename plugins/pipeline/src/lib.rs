@@ -30,7 +30,7 @@ use web_time::Instant;
 use bevy_ecs::prelude::*;
 use close2gl_core::Owner;
 use close2gl_core::{
-    App, Camera, Close2glFrame, FateCounts, FateKind, Fates, FrameSet, Mesh, Mistake, Plugin,
+    App, Camera, Close2glFrame, Close2glStep, FateCounts, FateKind, Fates, Mesh, Mistake, Plugin,
     RenderSettings, StageCounts, Update, Viewport,
 };
 
@@ -49,7 +49,7 @@ impl Plugin for Close2glPlugin {
             .init_resource::<Fates>()
             .requires::<RenderSettings>(Owner::Settings)
             .requires::<Viewport>(Owner::Settings)
-            .add_systems(Update, close2gl_system.in_set(FrameSet::Close2gl));
+            .add_systems(Update, close2gl_system.in_set(Close2glStep::Geometry));
     }
 }
 

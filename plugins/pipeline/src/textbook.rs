@@ -3,7 +3,8 @@
 //! check; the fast path must produce exactly its output.
 
 use close2gl_core::{
-    Camera, Close2glFrame, CutVertex, Fates, Mesh, Rasterizer, RenderMode, RenderSettings, Viewport,
+    Camera, Close2glFrame, CutVertex, Fates, Mesh, RasterGeometry, Rasterizer, RenderMode,
+    RenderSettings, Viewport,
 };
 
 use crate::Tally;
@@ -98,22 +99,7 @@ pub fn run_mistaken(
             let p = outcome.polygon[i];
             frame.vertices.push([p.x as f32, p.y as f32]);
             if raster {
-                let cut = frame.raster.cuts.len() as u32;
-                frame
-                    .raster
-                    .primitives
-                    .push(frame.raster.vertices.len() as u32 + cut);
-                frame.raster.cuts.push(CutVertex {
-                    window: [
-                        p.x as f32,
-                        p.y as f32,
-                        (outcome.depths[i] * 0.5 + 0.5) as f32,
-                        outcome.inv_w[i] as f32,
-                    ],
-                    corners,
-                    weights: outcome.weights[i],
-                });
-                frame.raster.triangles.push(index as u32);
+                push_cut_vertex(&mut frame.raster, outcome, i, corners, index);
             }
         }
         let primitives = (frame.vertices.len() - before) / constants.topology_vertices();
@@ -126,17 +112,37 @@ pub fn run_mistaken(
     if raster {
         // One triangle index per primitive, not per vertex.
         let step = constants.topology_vertices();
-        frame.raster.triangles = frame
-            .raster
-            .triangles
-            .iter()
-            .step_by(step)
-            .copied()
-            .collect();
+        let triangles = frame.raster.triangles.iter().step_by(step).copied();
+        frame.raster.triangles = triangles.collect();
     }
     frame.counts = counts.stage_counts();
     fates.counts = counts.fate_counts();
     (frame, fates)
+}
+
+/// Corner `i` of `outcome`'s polygon (mesh triangle `index`, of `corners`) as a vertex of the
+/// software rasterizer: a cut vertex, which carries where it lies in its triangle.
+fn push_cut_vertex(
+    raster: &mut RasterGeometry,
+    outcome: &Outcome,
+    i: usize,
+    corners: [u32; 3],
+    index: usize,
+) {
+    let cut = raster.cuts.len() as u32;
+    raster.primitives.push(raster.vertices.len() as u32 + cut);
+    let p = outcome.polygon[i];
+    raster.cuts.push(CutVertex {
+        window: [
+            p.x as f32,
+            p.y as f32,
+            (outcome.depths[i] * 0.5 + 0.5) as f32,
+            outcome.inv_w[i] as f32,
+        ],
+        corners,
+        weights: outcome.weights[i],
+    });
+    raster.triangles.push(index as u32);
 }
 
 /// Which vertices of a drawn polygon the mode emits, in order: a fan of triangles, the

@@ -69,7 +69,7 @@ use web_time::Instant;
 use bevy_ecs::prelude::*;
 use close2gl_core::Owner;
 use close2gl_core::{
-    App, Camera, Close2glFrame, Fates, FrameSet, Lighting, Plugin, Rasterizer, RenderSettings,
+    App, Camera, Close2glFrame, Close2glStep, Fates, Lighting, Plugin, Rasterizer, RenderSettings,
     SoftwareFrame, Texture, Update,
 };
 
@@ -86,12 +86,7 @@ impl Plugin for RasterPlugin {
             .requires::<RenderSettings>(Owner::Settings)
             .requires::<Lighting>(Owner::Settings)
             .requires::<Fates>(Owner::Close2gl)
-            .add_systems(
-                Update,
-                raster_system
-                    .after(close2gl_pipeline::close2gl_system)
-                    .in_set(FrameSet::Close2gl),
-            );
+            .add_systems(Update, raster_system.in_set(Close2glStep::Raster));
     }
 }
 

@@ -14,7 +14,7 @@ pub mod rubric;
 pub mod view;
 
 use bevy_ecs::prelude::*;
-use close2gl_core::{App, FrameSet, Owner, Plugin, RenderSettings, Update, Viewport};
+use close2gl_core::{App, Close2glStep, Owner, Plugin, RenderSettings, Update, Viewport};
 use view::{TraceRequest, TraceView, load_requested_trace, show_trace};
 
 pub use format::{
@@ -37,10 +37,9 @@ impl Plugin for TracePlugin {
             .add_systems(
                 Update,
                 (
-                    load_requested_trace.before(close2gl_pipeline::close2gl_system),
-                    show_trace.after(close2gl_pipeline::close2gl_system),
-                )
-                    .in_set(FrameSet::Close2gl),
+                    load_requested_trace.in_set(Close2glStep::Prepare),
+                    show_trace.in_set(Close2glStep::Raster),
+                ),
             );
     }
 }

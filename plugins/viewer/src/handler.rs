@@ -58,6 +58,16 @@ struct Opening {
     deadline: Option<Instant>,
 }
 
+/// What sizing a frame found, for the steps after it.
+struct FrameStart {
+    now: Instant,
+    /// The main window's surface, in pixels.
+    surface: (u32, u32),
+    placement: crate::view_layout::Placement,
+    /// Whether the outside view was shown before the systems ran.
+    outside: bool,
+}
+
 #[cfg(not(target_arch = "wasm32"))]
 const OPENING_GRACE: Duration = Duration::from_millis(500);
 
@@ -100,13 +110,28 @@ impl Viewer {
         event_loop.exit();
     }
 
-    /// One app frame: the panel, the layout, the systems, then every window drawn.
+    /// One app frame, in the wgpu examples' steps: size (the input and the layout), update (the
+    /// app's systems), draw (every window, then what the frame captured).
     fn redraw(&mut self, event_loop: &ActiveEventLoop) {
-        let Some(windows) = self.windows.as_mut() else {
+        let Some(start) = self.size_frame(event_loop) else {
             return;
         };
+        self.app.update();
+        let Some((held, delay)) = self.draw_frame(event_loop, &start) else {
+            return;
+        };
+        self.frames += 1;
+        self.next_frame(event_loop, start.now, held, delay);
+    }
+
+    /// The frame's input handed to the panel and the world, the outside view's window shown or
+    /// hidden, the views laid out and their viewport told to the world. None when the frame is
+    /// not drawn (the window is still being resized, or the session failed).
+    fn size_frame(&mut self, event_loop: &ActiveEventLoop) -> Option<FrameStart> {
+        let windows = self.windows.as_mut()?;
         if self.session.wait_for_resize(self.frames, &windows.main) {
-            return windows.main.window.request_redraw();
+            windows.main.window.request_redraw();
+            return None;
         }
         let now = Instant::now();
         let world = self.app.world_mut();
@@ -114,7 +139,8 @@ impl Viewer {
         let mut raw = windows.gui.take_input(&windows.main.window, surface);
         let dt = self.pacing.frame_dt(now);
         if let Err(e) = self.session.begin_frame(self.frames, dt, &mut raw, world) {
-            return self.fail(event_loop, e);
+            self.fail(event_loop, e);
+            return None;
         }
         world.resource_mut::<ViewStats>().replay = self.session.replay_progress(self.frames);
         let both_views = windows.close2gl.is_none();
@@ -131,13 +157,31 @@ impl Viewer {
             .views_area(&windows.main.window, surface, hidden);
         let placement = windows.placement(views, outside);
         update_viewport(world, placement.viewport);
-        self.app.update();
+        Some(FrameStart {
+            now,
+            surface,
+            placement,
+            outside,
+        })
+    }
+
+    /// The panel finished, the probe answered, every window drawn and presented, and what the
+    /// frame captured saved: whether input is still held and how long the panel may wait for
+    /// its next frame. None when the session failed.
+    fn draw_frame(
+        &mut self,
+        event_loop: &ActiveEventLoop,
+        start: &FrameStart,
+    ) -> Option<(bool, Duration)> {
+        let windows = self.windows.as_mut()?;
         let world = self.app.world_mut();
-        let mut gui_frame = windows.gui.finish(&windows.main.window, world, surface);
+        let mut gui_frame = windows
+            .gui
+            .finish(&windows.main.window, world, start.surface);
         windows.gui.upload_textures(&windows.gpu, &mut gui_frame);
         // The panel showed or hid the outside view this frame: lay the views out again at once.
-        let relayout = world.get_resource::<OutsideView>().is_some_and(|o| o.show) != outside;
-        crate::pixel_probe::answer(self.app.world_mut(), &windows.gpu, &placement);
+        let relayout = world.get_resource::<OutsideView>().is_some_and(|o| o.show) != start.outside;
+        crate::pixel_probe::answer(self.app.world_mut(), &windows.gpu, &start.placement);
         #[cfg(target_arch = "wasm32")]
         let probing = crate::pixel_probe::arrive(self.app.world_mut(), &windows.gpu);
         #[cfg(not(target_arch = "wasm32"))]
@@ -149,7 +193,7 @@ impl Viewer {
             windows,
             self.app.world_mut(),
             &gui_frame,
-            &placement,
+            &start.placement,
             capture,
         );
         windows.gui.free_textures(&mut gui_frame);
@@ -165,14 +209,14 @@ impl Viewer {
         if let Err(e) =
             saved.and_then(|()| self.session.end_frame(self.frames, self.app.world_mut()))
         {
-            return self.fail(event_loop, e);
+            self.fail(event_loop, e);
+            return None;
         }
-        self.frames += 1;
         let delay = match relayout {
             true => Duration::ZERO,
             false => gui_frame.repaint_delay,
         };
-        self.next_frame(event_loop, now, held, delay);
+        Some((held, delay))
     }
 
     /// After a frame: exit when the frame budget is spent, else ask for the next frame when

@@ -7,7 +7,9 @@
 
 use bevy_ecs::prelude::*;
 use close2gl_core::Mistake;
-use close2gl_core::{Camera, Fates, InputState, Mesh, RenderSettings, Scene, SelectedTriangle};
+use close2gl_core::{
+    Camera, Fates, InputState, Mesh, ProbeClick, RenderSettings, Scene, SelectedTriangle, Viewport,
+};
 use close2gl_gpu::{Gpu, ReferenceHit};
 use close2gl_pipeline::mistakes::Mistakes;
 use close2gl_pipeline::textbook;
@@ -41,19 +43,9 @@ pub fn answer(world: &mut World, gpu: &Gpu, placement: &Placement) {
     let Some(at) = world.resource::<InputState>().probe else {
         return;
     };
-    let (Some(viewport), x, y) = (placement.viewport, at.at.x as u32, at.at.y as u32) else {
+    let Some((placed, pixel, viewport)) = clicked_view(placement, &at) else {
         return;
     };
-    let window = match at.close2gl_window {
-        true => &placement.close2gl,
-        false => &placement.main,
-    };
-    // The outside view is an illustration: a click there turns its camera, it probes nothing.
-    let probed = |p: &&Placed| p.view != View::Outside && p.rect.contains(x, y);
-    let Some(placed) = window.iter().find(probed) else {
-        return;
-    };
-    let pixel = (x - placed.rect.x, y - placed.rect.y);
     let mesh = world.query::<&Mesh>().iter(world).next().cloned();
     let camera = world.query::<&Camera>().iter(world).next().copied();
     let (Some(mesh), Some(camera)) = (mesh, camera) else {
@@ -102,6 +94,22 @@ pub fn answer(world: &mut World, gpu: &Gpu, placement: &Placement) {
         arriving.select = close2gl.is_none();
     }
     world.insert_resource(answer);
+}
+
+/// The view the click is in, the pixel in that view's coordinates, and the views' viewport.
+fn clicked_view<'a>(
+    placement: &'a Placement,
+    at: &ProbeClick,
+) -> Option<(&'a Placed, (u32, u32), Viewport)> {
+    let (viewport, x, y) = (placement.viewport?, at.at.x as u32, at.at.y as u32);
+    let window = match at.close2gl_window {
+        true => &placement.close2gl,
+        false => &placement.main,
+    };
+    // The outside view is an illustration: a click there turns its camera, it probes nothing.
+    let probed = |p: &&Placed| p.view != View::Outside && p.rect.contains(x, y);
+    let placed = window.iter().find(probed)?;
+    Some((placed, (x - placed.rect.x, y - placed.rect.y), viewport))
 }
 
 /// The reference's answer: at once on the desktop.

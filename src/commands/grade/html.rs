@@ -10,6 +10,7 @@ use close2gl_trace::rubric::MAX_TOTAL;
 
 use super::report::failure_lines;
 use super::sandboxing::Sandboxing;
+use super::scene_run::SceneResult;
 use super::score::Grade;
 use super::to_fix;
 
@@ -54,44 +55,50 @@ pub fn page(grade: &Grade, title: &str, command: &str, sandboxing: &Sandboxing) 
         );
     }
     for scene in failing {
-        let _ = write!(
-            out,
-            "<section><h3 id=\"{0}\">{0}</h3><ul>",
-            escape(&scene.id)
-        );
-        for (line, verdict) in scene.verdicts.iter().filter(|(_, v)| !v.passed) {
-            let _ = write!(
-                out,
-                "<li><b>{}</b>: <span class=\"why\">{}</span></li>",
-                line.id(),
-                escape(&verdict.detail)
-            );
-        }
-        out.push_str("</ul>");
-        if let Some(evidence) = &scene.evidence {
-            let captions = [
-                "close2gl (the reference)",
-                "the program's trace",
-                "the difference",
-            ];
-            for (png, caption) in evidence.pictures.iter().zip(captions) {
-                let _ = write!(
-                    out,
-                    "<figure><img alt=\"{caption}\" src=\"data:image/png;base64,{}\">\
-                     <figcaption>{caption}</figcaption></figure>",
-                    STANDARD.encode(png)
-                );
-            }
-            let _ = write!(out, "<h4>check</h4><pre>{}</pre>", escape(&evidence.text));
-        }
-        let _ = write!(
-            out,
-            "<h4>scene</h4><pre>{}</pre></section>",
-            escape(&scene.scene_text)
-        );
+        failing_scene(&mut out, scene);
     }
     out.push_str("</body></html>\n");
     out
+}
+
+/// A failing scene's section: the lines it failed and why, the pictures, check's report and
+/// the scene file.
+fn failing_scene(out: &mut String, scene: &SceneResult) {
+    let _ = write!(
+        out,
+        "<section><h3 id=\"{0}\">{0}</h3><ul>",
+        escape(&scene.id)
+    );
+    for (line, verdict) in scene.verdicts.iter().filter(|(_, v)| !v.passed) {
+        let _ = write!(
+            out,
+            "<li><b>{}</b>: <span class=\"why\">{}</span></li>",
+            line.id(),
+            escape(&verdict.detail)
+        );
+    }
+    out.push_str("</ul>");
+    if let Some(evidence) = &scene.evidence {
+        let captions = [
+            "close2gl (the reference)",
+            "the program's trace",
+            "the difference",
+        ];
+        for (png, caption) in evidence.pictures.iter().zip(captions) {
+            let _ = write!(
+                out,
+                "<figure><img alt=\"{caption}\" src=\"data:image/png;base64,{}\">\
+                 <figcaption>{caption}</figcaption></figure>",
+                STANDARD.encode(png)
+            );
+        }
+        let _ = write!(out, "<h4>check</h4><pre>{}</pre>", escape(&evidence.text));
+    }
+    let _ = write!(
+        out,
+        "<h4>scene</h4><pre>{}</pre></section>",
+        escape(&scene.scene_text)
+    );
 }
 
 fn rubric_table(out: &mut String, grade: &Grade) {

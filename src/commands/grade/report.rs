@@ -9,6 +9,7 @@ use close2gl_trace::rubric::MAX_TOTAL;
 use serde_json::{Value, json};
 
 use super::sandboxing::Sandboxing;
+use super::scene_run::SceneResult;
 use super::score::{Grade, LineScore};
 use super::to_fix;
 
@@ -68,51 +69,8 @@ pub fn failure_lines(grade: &Grade, line: &LineScore) -> Vec<String> {
 }
 
 pub fn json(grade: &Grade, sandboxing: &Sandboxing) -> Value {
-    let lines: Vec<Value> = grade
-        .lines
-        .iter()
-        .map(|line| {
-            let failures: Vec<Value> = line
-                .failures
-                .iter()
-                .map(|(i, why)| json!({"scene": grade.scenes[*i].id, "reason": why}))
-                .collect();
-            json!({
-                "id": line.line.id(),
-                "points": line.points,
-                "max": line.line.max_points(),
-                "scenes": line.scenes,
-                "passed": line.passed,
-                "mistakes": line.mistakes,
-                "failures": failures,
-                "accepted": line.notes,
-            })
-        })
-        .collect();
-    let scenes: Vec<Value> = grade
-        .scenes
-        .iter()
-        .map(|scene| {
-            let verdicts: serde_json::Map<String, Value> = scene
-                .verdicts
-                .iter()
-                .map(|(line, v)| {
-                    (
-                        line.id().to_string(),
-                        json!({"passed": v.passed, "detail": v.detail}),
-                    )
-                })
-                .collect();
-            let evidence = scene.evidence.as_ref();
-            json!({
-                "id": scene.id,
-                "lines": verdicts,
-                "run_failure": scene.run_failure,
-                "first_difference": evidence.and_then(|e| e.first_difference.clone()),
-                "mistakes": evidence.map_or(Vec::new(), |e| e.mistakes.clone()),
-            })
-        })
-        .collect();
+    let lines: Vec<Value> = grade.lines.iter().map(|l| line_json(grade, l)).collect();
+    let scenes: Vec<Value> = grade.scenes.iter().map(scene_json).collect();
     let bugs: Vec<Value> = to_fix::bugs(grade)
         .iter()
         .map(|bug| {
@@ -128,5 +86,46 @@ pub fn json(grade: &Grade, sandboxing: &Sandboxing) -> Value {
         "lines": lines,
         "scenes": scenes,
         "sandbox": sandboxing.json(),
+    })
+}
+
+/// A line of the rubric: its points, scenes, the mistakes named, why each failing scene failed.
+fn line_json(grade: &Grade, line: &LineScore) -> Value {
+    let failures: Vec<Value> = line
+        .failures
+        .iter()
+        .map(|(i, why)| json!({"scene": grade.scenes[*i].id, "reason": why}))
+        .collect();
+    json!({
+        "id": line.line.id(),
+        "points": line.points,
+        "max": line.line.max_points(),
+        "scenes": line.scenes,
+        "passed": line.passed,
+        "mistakes": line.mistakes,
+        "failures": failures,
+        "accepted": line.notes,
+    })
+}
+
+/// A scene: each line's verdict on it, why its run failed, and check's evidence.
+fn scene_json(scene: &SceneResult) -> Value {
+    let verdicts: serde_json::Map<String, Value> = scene
+        .verdicts
+        .iter()
+        .map(|(line, v)| {
+            (
+                line.id().to_string(),
+                json!({"passed": v.passed, "detail": v.detail}),
+            )
+        })
+        .collect();
+    let evidence = scene.evidence.as_ref();
+    json!({
+        "id": scene.id,
+        "lines": verdicts,
+        "run_failure": scene.run_failure,
+        "first_difference": evidence.and_then(|e| e.first_difference.clone()),
+        "mistakes": evidence.map_or(Vec::new(), |e| e.mistakes.clone()),
     })
 }

@@ -405,71 +405,112 @@ pub fn judge(
         .iter()
         .map(|&i| trace.pieces[i].corners.as_slice())
         .collect();
-    let differs = |kind, detail, window, depths| Verdict::Differs {
-        kind,
-        detail,
-        window,
-        depths,
+    let one = OneTriangle {
+        program,
+        trace,
+        t,
+        ours,
+        pieces,
+        theirs,
     };
-    // Each is read in one branch only: judged for every triangle of every candidate set, they
-    // are worked out there, not up front.
-    let ours_visible = || ours.drawn() && !region::negligible(&ours.polygon, &ours.errors);
-    let theirs_visible = || {
-        let error = corner_error(program, ours);
-        theirs
-            .iter()
-            .any(|q| !region::negligible(q, &vec![error; q.len()]))
-    };
-    let line = || pieces.first().map_or(0, |&i| trace.pieces[i].line);
-    match (ours.drawn(), !theirs.is_empty()) {
-        (true, true) => {
-            if let Some(d) = region::compare(&ours.polygon, &ours.errors, &theirs) {
-                return differs(Kind::Moved, moved(t, &d, line()), true, 0);
-            }
-            let (checked, off) = depths(ours, pieces, trace);
-            match off {
-                Some((found, want, line)) => differs(
-                    Kind::Depth,
-                    format!(
-                        "triangle {t} (line {line}): depth expected {}, found {}",
-                        number(want),
-                        number(found)
-                    ),
-                    true,
-                    checked,
+    match (ours.drawn(), !one.theirs.is_empty()) {
+        (true, true) => one.both_drew(),
+        (true, false) => one.only_ours_drew(),
+        (false, true) => one.only_theirs_drew(),
+        (false, false) => AGREE,
+    }
+}
+
+/// One mesh triangle as both sides drew it. What is worked out from it (visibility, the
+/// trace's line) is worked out only in the branch that reads it: a triangle is judged for
+/// every candidate set of mistakes.
+struct OneTriangle<'a> {
+    program: &'a Program,
+    trace: &'a Trace,
+    t: usize,
+    ours: &'a Outcome,
+    pieces: &'a [usize],
+    theirs: Vec<&'a [DVec2]>,
+}
+
+impl OneTriangle<'_> {
+    /// The trace's line of the triangle's first piece.
+    fn line(&self) -> usize {
+        self.pieces
+            .first()
+            .map_or(0, |&i| self.trace.pieces[i].line)
+    }
+
+    /// Both drew it: in the same place (the window stage), at the same depths.
+    fn both_drew(&self) -> Verdict {
+        let (t, ours) = (self.t, self.ours);
+        if let Some(d) = region::compare(&ours.polygon, &ours.errors, &self.theirs) {
+            return differs(Kind::Moved, moved(t, &d, self.line()), true, 0);
+        }
+        let (checked, off) = depths(ours, self.pieces, self.trace);
+        match off {
+            Some((found, want, line)) => differs(
+                Kind::Depth,
+                format!(
+                    "triangle {t} (line {line}): depth expected {}, found {}",
+                    number(want),
+                    number(found)
                 ),
-                None => Verdict::Agree {
-                    window: true,
-                    depths: checked,
-                },
-            }
+                true,
+                checked,
+            ),
+            None => Verdict::Agree {
+                window: true,
+                depths: checked,
+            },
         }
-        (true, false) if !ours.near_a_plane && ours_visible() => {
-            let inside = ours.fate.kind == FateKind::Drawn;
-            let culling_on = program.declared.culling.is_some();
-            if inside && culling_on && !ours.near_edge_on {
-                let detail = format!(
-                    "triangle {t}: close2gl drew it (front-facing, inside the view volume); \
-                     the trace drew nothing"
-                );
-                differs(Kind::FrontCulled, detail, false, 0)
-            } else if inside && !ours.near_edge_on {
-                let detail = format!(
-                    "triangle {t}: close2gl drew it (inside the view volume, culling off); the \
-                     trace drew nothing"
-                );
-                differs(Kind::InsideNotDrawn, detail, false, 0)
-            } else if !(inside && ours.near_edge_on) {
-                let detail = format!(
-                    "triangle {t}: close2gl {} it; the trace drew nothing",
-                    fate_words(ours)
-                );
-                differs(Kind::NotDrawn, detail, false, 0)
-            } else {
-                AGREE
-            }
+    }
+
+    /// close2gl drew it and the trace did not: culling's (front-facing, or inside with culling
+    /// off) or clipping's; nothing when close2gl's piece is within rounding of nothing.
+    fn only_ours_drew(&self) -> Verdict {
+        let (t, ours) = (self.t, self.ours);
+        if ours.near_a_plane || region::negligible(&ours.polygon, &ours.errors) {
+            return AGREE;
         }
-        (false, true) if theirs_visible() => match ours.fate.kind {
+        let inside = ours.fate.kind == FateKind::Drawn;
+        let culling_on = self.program.declared.culling.is_some();
+        if inside && ours.near_edge_on {
+            AGREE
+        } else if inside && culling_on {
+            let detail = format!(
+                "triangle {t}: close2gl drew it (front-facing, inside the view volume); the \
+                 trace drew nothing"
+            );
+            differs(Kind::FrontCulled, detail, false, 0)
+        } else if inside {
+            let detail = format!(
+                "triangle {t}: close2gl drew it (inside the view volume, culling off); the trace \
+                 drew nothing"
+            );
+            differs(Kind::InsideNotDrawn, detail, false, 0)
+        } else {
+            let detail = format!(
+                "triangle {t}: close2gl {} it; the trace drew nothing",
+                fate_words(ours)
+            );
+            differs(Kind::NotDrawn, detail, false, 0)
+        }
+    }
+
+    /// The trace drew it and close2gl did not: clipping's (outside, or behind the eye) or
+    /// culling's; nothing when the trace's pieces are within rounding of nothing.
+    fn only_theirs_drew(&self) -> Verdict {
+        let (t, ours) = (self.t, self.ours);
+        let error = corner_error(self.program, ours);
+        let visible = self
+            .theirs
+            .iter()
+            .any(|q| !region::negligible(q, &vec![error; q.len()]));
+        if !visible {
+            return AGREE;
+        }
+        match ours.fate.kind {
             FateKind::Clipped if !ours.near_a_plane => {
                 let kind = match ours.clip.iter().any(|c| c.w <= 0.0) {
                     true => Kind::DrawnBehindEye,
@@ -478,20 +519,28 @@ pub fn judge(
                 let detail = format!(
                     "triangle {t}: close2gl {} it; the trace drew it (line {})",
                     fate_words(ours),
-                    line()
+                    self.line()
                 );
                 differs(kind, detail, false, 0)
             }
             FateKind::Culled | FateKind::ZeroArea if !ours.near_edge_on => {
                 let detail = format!(
                     "triangle {t}: close2gl culled it as a back face; the trace drew it (line {})",
-                    line()
+                    self.line()
                 );
                 differs(Kind::BackDrawn, detail, false, 0)
             }
             _ => AGREE,
-        },
-        _ => AGREE,
+        }
+    }
+}
+
+fn differs(kind: Kind, detail: String, window: bool, depths: usize) -> Verdict {
+    Verdict::Differs {
+        kind,
+        detail,
+        window,
+        depths,
     }
 }
 

@@ -165,8 +165,21 @@ pub fn unexplained(
         );
     };
     let n = triangles.len();
-    // (what, its plural): "1 triangle was", "2 triangles were".
-    let (one, many) = match kind {
+    let (one, many) = happened(kind);
+    let what = match n {
+        1 => format!("1 triangle {one}"),
+        _ => format!("{n} triangles {many}"),
+    };
+    format!(
+        "no catalogue mistake explains it: {what}; {}",
+        whereabouts(program, mesh, triangles, expected)
+    )
+}
+
+/// What happened to triangles of `kind`, said of one and of several ("1 triangle was", "2
+/// triangles were").
+fn happened(kind: Kind) -> (&'static str, &'static str) {
+    match kind {
         Kind::ClipCoordinates => ("has other clip coordinates", "have other clip coordinates"),
         Kind::DrawnBehindEye => (
             "with a corner behind the eye was drawn",
@@ -197,15 +210,7 @@ pub fn unexplained(
             "were drawn elsewhere or in another shape",
         ),
         Kind::Depth => ("was drawn at other depths", "were drawn at other depths"),
-    };
-    let what = match n {
-        1 => format!("1 triangle {one}"),
-        _ => format!("{n} triangles {many}"),
-    };
-    format!(
-        "no catalogue mistake explains it: {what}; {}",
-        whereabouts(program, mesh, triangles, expected)
-    )
+    }
 }
 
 /// Where some triangles lie and how big they are ([`clues::triangles`]).

@@ -4,78 +4,88 @@
 use serde_json::{Value, json};
 
 use super::Report;
-use super::compare::Status;
+use super::compare::{Comparison, StageResult, Status};
 
 /// The most triangle indices listed per kind of disagreement in the JSON (the totals are all).
 pub const MAX_LISTED: usize = 100;
 
 /// The report as text: each stage in order, the first difference in full, the mistakes named.
 pub fn text(report: &Report, trace_name: &str) -> String {
-    let c = &report.comparison;
-    let mut out = String::new();
     let verdict = match report.agrees() {
         true => "agrees with close2gl's pipeline",
         false => "differs from close2gl's pipeline",
     };
-    out.push_str(&format!("{trace_name}: {verdict}\n"));
-    for s in &c.stages {
-        let counts = match s.status {
-            Status::NotChecked => s.note.clone().unwrap_or_default(),
-            _ => format!("{} checked, {} differ", s.checked, s.differing),
-        };
-        out.push_str(&format!(
-            "  {:<9} {:<12} {counts}\n",
-            s.stage.name(),
-            s.status.name()
-        ));
-        if s.status == Status::Differs {
-            for d in &s.details {
-                out.push_str(&format!("      {d}\n"));
-            }
-            if s.differing > s.details.len() {
-                out.push_str(&format!(
-                    "      ... and {} more\n",
-                    s.differing - s.details.len()
-                ));
-            }
-            for (kind, triangles) in c.triangles.iter().filter(|(k, _)| k.stage() == s.stage) {
-                out.push_str(&format!(
-                    "      {}: {} triangles\n",
-                    kind.name(),
-                    triangles.len()
-                ));
-            }
-        }
+    let mut out = format!("{trace_name}: {verdict}\n");
+    for s in &report.comparison.stages {
+        stage_text(&mut out, s, &report.comparison);
     }
     if !report.agrees() {
-        match report.diagnoses.as_slice() {
-            [] => {}
-            [one] => out.push_str(&format!("mistake: {}\n", one.names())),
-            many => {
-                let names: Vec<String> = many.iter().map(|m| m.names()).collect();
-                out.push_str(&format!(
-                    "mistakes (the trace cannot tell them apart): {}\n",
-                    names.join(", ")
-                ));
-                let hints = &report.apart;
-                if !hints.is_empty() {
-                    out.push_str(&format!("  to tell them apart: {}\n", hints.join("; ")));
-                }
-            }
-        }
-        for (set, stages) in &report.partial {
-            let stages: Vec<&str> = stages.iter().map(|s| s.name()).collect();
-            out.push_str(&format!(
-                "mistake: {} explains {}; the rest is unexplained\n",
-                set.names(),
-                stages.join(", ")
-            ));
-        }
-        if let Some(unexplained) = &report.unexplained {
-            out.push_str(&format!("{unexplained}\n"));
-        }
+        explanation_text(&mut out, report);
     }
     out
+}
+
+/// One stage's line and, where it differs, its details and its triangles by kind.
+fn stage_text(out: &mut String, s: &StageResult, c: &Comparison) {
+    let counts = match s.status {
+        Status::NotChecked => s.note.clone().unwrap_or_default(),
+        _ => format!("{} checked, {} differ", s.checked, s.differing),
+    };
+    out.push_str(&format!(
+        "  {:<9} {:<12} {counts}\n",
+        s.stage.name(),
+        s.status.name()
+    ));
+    if s.status != Status::Differs {
+        return;
+    }
+    for d in &s.details {
+        out.push_str(&format!("      {d}\n"));
+    }
+    if s.differing > s.details.len() {
+        out.push_str(&format!(
+            "      ... and {} more\n",
+            s.differing - s.details.len()
+        ));
+    }
+    for (kind, triangles) in c.triangles.iter().filter(|(k, _)| k.stage() == s.stage) {
+        out.push_str(&format!(
+            "      {}: {} triangles\n",
+            kind.name(),
+            triangles.len()
+        ));
+    }
+}
+
+/// The mistakes named (with what would tell them apart), those explaining some stages, and
+/// what is left unexplained.
+fn explanation_text(out: &mut String, report: &Report) {
+    match report.diagnoses.as_slice() {
+        [] => {}
+        [one] => out.push_str(&format!("mistake: {}\n", one.names())),
+        many => {
+            let names: Vec<String> = many.iter().map(|m| m.names()).collect();
+            out.push_str(&format!(
+                "mistakes (the trace cannot tell them apart): {}\n",
+                names.join(", ")
+            ));
+            let hints = &report.apart;
+            if !hints.is_empty() {
+                out.push_str(&format!("  to tell them apart: {}\n", hints.join("; ")));
+            }
+        }
+    }
+    for (set, stages) in &report.partial {
+        let stages: Vec<&str> = stages.iter().map(|s| s.name()).collect();
+        out.push_str(&format!(
+            "mistake: {} explains {}; the rest is unexplained\n",
+            set.names(),
+            stages.join(", ")
+        ));
+    }
+    if let Some(unexplained) = &report.unexplained {
+        out.push_str(&format!("{unexplained}\n"));
+    }
 }
 
 /// The report as one JSON object.

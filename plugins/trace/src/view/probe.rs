@@ -5,8 +5,8 @@
 use close2gl_core::Viewport;
 use glam::DVec2;
 
-use super::TraceView;
 use super::show::system;
+use super::{Shown, TraceView};
 use crate::check::compare::fate_words;
 use crate::check::region::covers;
 
@@ -42,43 +42,49 @@ pub fn probe(view: &TraceView, pixel: (u32, u32), viewport: Viewport) -> Option<
     let expected: Vec<usize> = (0..shown.report.expected.len())
         .filter(|&t| covers(&shown.report.expected[t].polygon))
         .collect();
-    let mut lines = Vec::new();
-    match drawn.as_slice() {
-        [] => lines.push("The trace drew nothing here.".to_string()),
-        _ => {
-            let list: Vec<String> = drawn
-                .iter()
-                .map(|(t, l)| format!("{t} (line {l})"))
-                .collect();
-            lines.push(format!("The trace drew triangle {} here.", list.join(", ")));
-        }
-    }
-    match expected.as_slice() {
-        [] => lines.push("close2gl draws nothing here.".to_string()),
-        _ => {
-            let list: Vec<String> = expected.iter().map(usize::to_string).collect();
-            lines.push(format!("close2gl draws triangle {} here.", list.join(", ")));
-        }
-    }
+    let mut lines = vec![
+        who_drew(
+            "The trace drew",
+            "triangle",
+            drawn.iter().map(|(t, l)| format!("{t} (line {l})")),
+        ),
+        who_drew(
+            "close2gl draws",
+            "triangle",
+            expected.iter().map(usize::to_string),
+        ),
+    ];
     let triangle = drawn.first().map(|(t, _)| *t);
     let mut triangles: Vec<usize> = drawn.iter().map(|(t, _)| *t).chain(expected).collect();
     triangles.sort_unstable();
     triangles.dedup();
-    for t in triangles {
-        let outcome = &shown.report.expected[t];
-        let found = shown
-            .report
-            .comparison
-            .triangles
-            .iter()
-            .find(|(_, list)| list.binary_search(&t).is_ok())
-            .map_or("agrees".to_string(), |(kind, _)| {
-                format!("differs: {} ({} stage)", kind.name(), kind.stage().name())
-            });
-        lines.push(format!(
-            "Triangle {t}: close2gl {} it; the trace {found}.",
-            fate_words(outcome)
-        ));
-    }
+    lines.extend(triangles.into_iter().map(|t| fate_line(shown, t)));
     Some(TraceProbe { lines, triangle })
+}
+
+/// "The trace drew triangle 3 (line 9), 4 (line 10) here.", or "... nothing here.".
+fn who_drew(who: &str, what: &str, list: impl Iterator<Item = String>) -> String {
+    let list: Vec<String> = list.collect();
+    match list.is_empty() {
+        true => format!("{who} nothing here."),
+        false => format!("{who} {what} {} here.", list.join(", ")),
+    }
+}
+
+/// Mesh triangle `t`: close2gl's fate for it and what check found.
+fn fate_line(shown: &Shown, t: usize) -> String {
+    let outcome = &shown.report.expected[t];
+    let found = shown
+        .report
+        .comparison
+        .triangles
+        .iter()
+        .find(|(_, list)| list.binary_search(&t).is_ok())
+        .map_or("agrees".to_string(), |(kind, _)| {
+            format!("differs: {} ({} stage)", kind.name(), kind.stage().name())
+        });
+    format!(
+        "Triangle {t}: close2gl {} it; the trace {found}.",
+        fate_words(outcome)
+    )
 }

@@ -166,17 +166,7 @@ pub fn probe_window(
     let escape = ctx.input(|i| i.key_pressed(egui::Key::Escape))
         || input.is_some_and(|i| i.pressed.iter().any(|k| k == "escape"));
     let camera = cameras.iter().next();
-    let click = answer.click.at / ctx.pixels_per_point();
-    let (at, pivot) = match answer.click.close2gl_window {
-        true => (
-            area.left_top() + egui::vec2(16.0, 32.0),
-            egui::Align2::LEFT_TOP,
-        ),
-        false if click.x > area.center().x => {
-            (egui::pos2(click.x - 12.0, click.y), egui::Align2::RIGHT_TOP)
-        }
-        false => (egui::pos2(click.x + 12.0, click.y), egui::Align2::LEFT_TOP),
-    };
+    let (at, pivot) = beside_click(&answer, area, ctx.pixels_per_point());
     let mut open = !escape;
     let mut journey = None;
     egui::Window::new("Probe")
@@ -214,5 +204,25 @@ pub fn probe_window(
     }
     if !open {
         answer.window = false;
+    }
+}
+
+/// Where the probe window goes, and which of its corners is there: beside the click, on the
+/// side with more room; in the views' corner for a click in the Close2GL window.
+fn beside_click(
+    answer: &ProbeAnswer,
+    area: egui::Rect,
+    pixels_per_point: f32,
+) -> (egui::Pos2, egui::Align2) {
+    let click = answer.click.at / pixels_per_point;
+    match answer.click.close2gl_window {
+        true => (
+            area.left_top() + egui::vec2(16.0, 32.0),
+            egui::Align2::LEFT_TOP,
+        ),
+        false if click.x > area.center().x => {
+            (egui::pos2(click.x - 12.0, click.y), egui::Align2::RIGHT_TOP)
+        }
+        false => (egui::pos2(click.x + 12.0, click.y), egui::Align2::LEFT_TOP),
     }
 }
