@@ -47,7 +47,7 @@ struct Varyings {
     // Perspective-correct, as every @location varying is by default.
     @location(3) uv: vec2<f32>,
     // 1 on a front face drawn as lines or points without polygon modes (where the builtin
-    // front_facing is always true), 0 on a back one; 1 elsewhere.
+    // front_facing is their shapes' own), 0 on a back one; 1 elsewhere.
     @location(4) @interpolate(flat) front: f32,
 }
 
@@ -156,10 +156,13 @@ override FRONT_COLOR: u32 = 0u;
 override BACK_COLOR: u32 = 0u;
 override FAILED_COLOR: u32 = 0u;
 
-// Facing as the rasterizer decided it, on the fragments that won the depth test.
+// Facing as the rasterizer decided it, on the fragments that won the depth test; for lines and
+// points drawn face by face, as the vertex shader found it (their shapes' triangles face
+// whichever way their corners' order makes them, not the face's way).
 @fragment
 fn fs_facing(in: Varyings, @builtin(front_facing) front: bool) -> @location(0) vec4<f32> {
-    let color = select(BACK_COLOR, FRONT_COLOR, front && in.front > 0.5);
+    let facing = select(front, in.front > 0.5, SHAPES);
+    let color = select(BACK_COLOR, FRONT_COLOR, facing);
     return vec4<f32>(unpack4x8unorm(color).rgb, 0.6);
 }
 
