@@ -41,9 +41,14 @@ fn line_corner(k: u32, a: vec2<f32>, b: vec2<f32>) -> LineCorner {
     return LineCorner(at_b, snapped(select(a, b, at_b)) + select(-across, across, corner >= 2u));
 }
 
-// Vertex `k`'s position in the square of the point at `window`.
+// Vertex `k`'s position in the square of the point at `window`. The software rasterizer's
+// square, centred on the snapped point s, covers the one pixel whose centre c has
+// s - 0.5 <= c < s + 0.5 each way (the top-left rule); the square drawn here is that pixel's
+// own cell, whose edges lie half a pixel from every centre, so that a rasterizer with fewer
+// sub-pixel bits (SwiftShader snaps to 1/16) covers the same pixel.
 fn point_corner(k: u32, window: vec2<f32>) -> vec2<f32> {
     let corner = shape_corner(k);
     let right = corner == 1u || corner == 2u;
-    return snapped(window) + vec2<f32>(select(-0.5, 0.5, right), select(-0.5, 0.5, corner >= 2u));
+    let cell = ceil(snapped(window) - 1.0);
+    return cell + vec2<f32>(select(0.0, 1.0, right), select(0.0, 1.0, corner >= 2u));
 }
