@@ -184,20 +184,13 @@ fn gzipped_bytes(file: &Path) -> usize {
 
 /// Points, wireframe and solid, each with both Close2GL rasterizers, agree with the reference
 /// in the page as on the desktop: WebGL2 has no polygon modes, so the reference draws each kept
-/// face's edges or corners itself.
-///
-/// Known gap (issue 44 stays open for it, docs/web.md): SwiftShader rasterizes line and point
-/// primitives by other rules than the software rasterizer's one-pixel rectangles and squares
-/// (lavapipe's), so software points and wireframe agree to 0.908 and 0.924 in the page, not
-/// 0.99. Their floor here is what the right faces give (0.9; 0.55 and 0.50 before the faces
-/// were right), so that a regression of the faces still fails.
+/// face's edges or corners itself, and both GPU views draw lines and points as the software
+/// rasterizer's one-pixel rectangles and squares (SwiftShader's own line and point rules differ).
 #[test]
 fn every_mode_agrees_with_both_rasterizers() {
     let mut failures = String::new();
     for (mode, needed) in [("points", 0.99), ("wireframe", 0.99), ("solid", 0.999)] {
         for raster in ["software", "gpu"] {
-            let line_rules_differ = raster == "software" && mode != "solid";
-            let needed = if line_rules_differ { 0.9 } else { needed };
             let link = format!("render.mode=%22{mode}%22&render.close2gl_raster=%22{raster}%22");
             let report = open(&format!("?test=1#{link}"), &format!("{mode}-{raster}.png"));
             let status = &report["status"];

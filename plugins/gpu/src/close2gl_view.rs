@@ -1,11 +1,16 @@
 //! The Close2GL view: draws the 2D buffer the Close2GL system wrote, through a pass-through
-//! pipeline (pixels to NDC, one flat colour; no depth, no culling, no 3D transform).
+//! pipeline (pixels to NDC, one flat colour; no depth, no culling, no 3D transform). Its lines
+//! and points are the GPU's line and point lists where the device has the polygon-mode features
+//! (so the reference's polygon modes and these follow the same rules), and otherwise, as the
+//! reference draws its own there, the software rasterizer's one-pixel rectangles and squares as
+//! triangles, one instance a line or point (`pixel_shapes.wgsl`).
 
 use bytemuck::{Pod, Zeroable};
 use close2gl_core::{Close2glFrame, Topology};
 use glam::Vec3;
 
 use crate::grow_buffer::GrowBuffer;
+use crate::reference::{SHAPE_VERTICES, needs_faces, with_pixel_shapes};
 
 /// The uniform block of close2gl.wgsl.
 #[repr(C)]
@@ -27,6 +32,8 @@ pub(crate) struct Close2glView {
     vertices: GrowBuffer,
     vertex_count: u32,
     topology: Topology,
+    /// Whether lines and points are drawn as shapes (the device lacks the polygon modes).
+    shapes: bool,
 }
 
 fn slot(topology: Topology) -> usize {
@@ -41,7 +48,7 @@ const VERTEX_SIZE: u64 = size_of::<[f32; 2]>() as u64;
 
 impl Close2glView {
     pub(crate) fn new(device: &wgpu::Device, color_format: wgpu::TextureFormat) -> Self {
-        let shader = device.create_shader_module(wgpu::include_wgsl!("close2gl.wgsl"));
+        let shader = with_pixel_shapes(device, "close2gl.wgsl", include_str!("close2gl.wgsl"));
         let crate::uniforms::UniformSetup {
             buffer: uniforms,
             bind_group,
@@ -57,6 +64,7 @@ impl Close2glView {
             vertices: GrowBuffer::new(device, "close2gl vertices", wgpu::BufferUsages::VERTEX),
             vertex_count: 0,
             topology: Topology::Triangles,
+            shapes: needs_faces(device.features()),
         }
     }
 
@@ -98,30 +106,27 @@ impl Close2glView {
         pass.set_pipeline(pipeline);
         pass.set_bind_group(0, &self.bind_group, &[]);
         pass.set_vertex_buffer(0, self.vertices.slice());
-        pass.draw(0..self.vertex_count, 0..1);
+        match Feed::new(self.topology, self.shapes) {
+            Feed::Shapes { per_shape, .. } => {
+                pass.draw(0..SHAPE_VERTICES, 0..self.vertex_count / per_shape);
+            }
+            Feed::Primitives(_) => pass.draw(0..self.vertex_count, 0..1),
+        }
     }
 
     fn create_pipeline(&self, device: &wgpu::Device, topology: Topology) -> wgpu::RenderPipeline {
-        let attributes = wgpu::vertex_attr_array![0 => Float32x2];
+        let feed = Feed::new(topology, self.shapes);
         device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
             label: Some("close2gl"),
             layout: Some(&self.layout),
             vertex: wgpu::VertexState {
                 module: &self.shader,
-                entry_point: Some("vs_main"),
+                entry_point: Some(feed.entry_point()),
                 compilation_options: Default::default(),
-                buffers: &[Some(wgpu::VertexBufferLayout {
-                    array_stride: VERTEX_SIZE,
-                    step_mode: wgpu::VertexStepMode::Vertex,
-                    attributes: &attributes,
-                })],
+                buffers: &[Some(feed.layout())],
             },
             primitive: wgpu::PrimitiveState {
-                topology: match topology {
-                    Topology::Points => wgpu::PrimitiveTopology::PointList,
-                    Topology::Lines => wgpu::PrimitiveTopology::LineList,
-                    Topology::Triangles => wgpu::PrimitiveTopology::TriangleList,
-                },
+                topology: feed.topology(),
                 cull_mode: None,
                 ..Default::default()
             },
@@ -138,3 +143,67 @@ impl Close2glView {
         })
     }
 }
+
+/// How the 2D buffer of one topology reaches the GPU.
+#[derive(Clone, Copy)]
+enum Feed {
+    /// As the GPU's own primitives, one buffer vertex a vertex.
+    Primitives(wgpu::PrimitiveTopology),
+    /// Each line or point one instance of `per_shape` buffer vertices, drawn by `entry_point` as
+    /// its shape's two triangles.
+    Shapes {
+        per_shape: u32,
+        entry_point: &'static str,
+    },
+}
+
+impl Feed {
+    fn new(topology: Topology, shapes: bool) -> Feed {
+        match (topology, shapes) {
+            (Topology::Lines, true) => Feed::Shapes {
+                per_shape: 2,
+                entry_point: "vs_line",
+            },
+            (Topology::Points, true) => Feed::Shapes {
+                per_shape: 1,
+                entry_point: "vs_point",
+            },
+            (Topology::Points, false) => Feed::Primitives(wgpu::PrimitiveTopology::PointList),
+            (Topology::Lines, false) => Feed::Primitives(wgpu::PrimitiveTopology::LineList),
+            (Topology::Triangles, _) => Feed::Primitives(wgpu::PrimitiveTopology::TriangleList),
+        }
+    }
+
+    fn entry_point(self) -> &'static str {
+        match self {
+            Feed::Primitives(_) => "vs_main",
+            Feed::Shapes { entry_point, .. } => entry_point,
+        }
+    }
+
+    fn topology(self) -> wgpu::PrimitiveTopology {
+        match self {
+            Feed::Primitives(topology) => topology,
+            Feed::Shapes { .. } => wgpu::PrimitiveTopology::TriangleList,
+        }
+    }
+
+    /// The buffer's layout: a vertex a vertex, or a line's two or a point's one an instance.
+    fn layout(self) -> wgpu::VertexBufferLayout<'static> {
+        let (attributes, step_mode): (&'static [wgpu::VertexAttribute], _) = match self {
+            Feed::Shapes { per_shape: 2, .. } => (&LINE, wgpu::VertexStepMode::Instance),
+            Feed::Shapes { .. } => (&POINT, wgpu::VertexStepMode::Instance),
+            Feed::Primitives(_) => (&POINT, wgpu::VertexStepMode::Vertex),
+        };
+        wgpu::VertexBufferLayout {
+            array_stride: VERTEX_SIZE * attributes.len() as u64,
+            step_mode,
+            attributes,
+        }
+    }
+}
+
+/// One pixel position.
+const POINT: [wgpu::VertexAttribute; 1] = wgpu::vertex_attr_array![0 => Float32x2];
+/// A line's two ends.
+const LINE: [wgpu::VertexAttribute; 2] = wgpu::vertex_attr_array![0 => Float32x2, 1 => Float32x2];

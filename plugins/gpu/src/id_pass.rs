@@ -18,7 +18,9 @@ use crate::attachments::DEPTH_FORMAT;
 use crate::attachments::texture_2d;
 use crate::gpu::Gpu;
 use crate::readback::Mapping;
-use crate::reference::{FaceDrawing, PipelineKey, has_area, relative_matrices, with_kept_faces};
+use crate::reference::{
+    FaceDrawing, PipelineKey, has_area, relative_matrices, viewport_size, with_kept_faces,
+};
 use crate::uniforms::UniformSetup;
 
 /// The GPU's answer for one pixel of the reference view.
@@ -37,6 +39,14 @@ pub struct ReferenceHit {
 struct IdFace {
     corners: [[f32; 3]; 3],
     triangle: u32,
+}
+
+/// The uniform block of id_pass.wgsl.
+#[repr(C)]
+#[derive(Clone, Copy, Pod, Zeroable)]
+struct IdUniforms {
+    view_projection: [[f32; 4]; 4],
+    viewport: [f32; 4],
 }
 
 const ID_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::R32Uint;
@@ -152,11 +162,14 @@ impl Targets {
 
 fn draw(gpu: &Gpu, scene: Scene<'_>, faces: &[IdFace], targets: &Targets) {
     let device = &gpu.device;
-    let setup = UniformSetup::new(device, "probe", size_of::<[[f32; 4]; 4]>());
+    let setup = UniformSetup::new(device, "probe", size_of::<IdUniforms>());
     let (view, projection) = relative_matrices(scene.camera, scene.mesh.bounding_sphere().0);
-    let view_projection = (projection * view).to_cols_array_2d();
+    let uniforms = IdUniforms {
+        view_projection: (projection * view).to_cols_array_2d(),
+        viewport: viewport_size(scene.viewport),
+    };
     gpu.queue
-        .write_buffer(&setup.buffer, 0, bytemuck::bytes_of(&view_projection));
+        .write_buffer(&setup.buffer, 0, bytemuck::bytes_of(&uniforms));
     let buffer = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
         label: Some("probe faces"),
         contents: bytemuck::cast_slice(faces),

@@ -5,6 +5,8 @@
 struct Uniforms {
     // clip <- world, relative to the mesh's origin as the reference draws it.
     view_projection: mat4x4<f32>,
+    // xy: the target's size in pixels, which lines and points drawn face by face are measured in.
+    viewport: vec4<f32>,
 }
 
 @group(0) @binding(0) var<uniform> u: Uniforms;
@@ -21,7 +23,7 @@ struct Probe {
 }
 
 // One face an instance: drawn as a triangle (3 vertices, culled by the hardware), or without
-// polygon modes as its edges or corners (6 vertices), culled here (kept_faces.wgsl).
+// polygon modes as its edges' rectangles or its points' squares, culled here (kept_faces.wgsl).
 struct Face {
     @location(0) p0: vec3<f32>,
     @location(1) p1: vec3<f32>,
@@ -31,20 +33,14 @@ struct Face {
 
 @vertex
 fn vs_main(@builtin(vertex_index) index: u32, face: Face) -> Varyings {
-    var clips = array<vec4<f32>, 3>(
+    let clips = array<vec4<f32>, 3>(
         u.view_projection * vec4<f32>(face.p0, 1.0),
         u.view_projection * vec4<f32>(face.p1, 1.0),
         u.view_projection * vec4<f32>(face.p2, 1.0),
     );
-    let v = face_vertex(index, clips[0], clips[1], clips[2]);
+    let v = face_vertex(index, clips, u.viewport.xy);
     var out: Varyings;
-    out.clip = mix(clips[v.i], clips[v.j], v.t);
-    if v.near {
-        out.clip.z = 0.0;
-    }
-    if !v.kept || culled(clips[0], clips[1], clips[2]) {
-        out.clip = CLIPPED;
-    }
+    out.clip = face_clip(v, clips);
     out.triangle = face.triangle;
     return out;
 }

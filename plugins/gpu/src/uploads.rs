@@ -42,12 +42,17 @@ pub(crate) fn upload_reference(
     camera: Single<&Camera>,
     settings: Res<RenderSettings>,
     lighting: Res<Lighting>,
+    viewport: Res<Viewport>,
     mut views: ResMut<Views>,
 ) {
     views.background = clear_color(settings.background);
-    views
-        .reference
-        .update(&gpu.device, &gpu.queue, &camera, &settings, &lighting);
+    views.reference.update(
+        &gpu.device,
+        &gpu.queue,
+        (&camera, *viewport),
+        &settings,
+        &lighting,
+    );
 }
 
 /// Only when the frame, the colour or the views changed: the 2D buffer can be megabytes.

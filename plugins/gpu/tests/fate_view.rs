@@ -4,10 +4,10 @@
 
 use close2gl_core::glam::Vec3;
 use close2gl_core::{
-    App, Camera, Close2glFrame, FateKind, Fates, Mesh, Overlay, RenderSettings, SelectedTriangle,
-    Shading, TriangleFate, Viewport,
+    App, Camera, Close2glFrame, FateKind, Fates, FrontFace, Mesh, Overlay, RenderMode,
+    RenderSettings, SelectedTriangle, Shading, TriangleFate, Viewport,
 };
-use close2gl_gpu::{OffscreenPlugin, Snapshot, render_offscreen};
+use close2gl_gpu::{Gpu, OffscreenPlugin, Snapshot, render_offscreen};
 use close2gl_testkit::gpu;
 
 const SIZE: u32 = 64;
@@ -36,19 +36,33 @@ fn scene() -> Mesh {
     }
 }
 
-/// Renders the scene with the fate view on, the fates recorded as `kinds` (what Close2GL's
-/// pipeline records; set here so that the view is tested on its own).
-fn render(kinds: [FateKind; 3]) -> (App, Snapshot) {
-    let settings = RenderSettings {
+/// The fate view's settings: the overlay on, flat colour.
+fn fate_view() -> RenderSettings {
+    RenderSettings {
         overlay: Overlay::FateView,
         shading: Shading::None,
         ..Default::default()
-    };
+    }
+}
+
+/// Renders the scene with the fate view on, the fates recorded as `kinds` (what Close2GL's
+/// pipeline records; set here so that the view is tested on its own).
+fn render(kinds: [FateKind; 3]) -> (App, Snapshot) {
+    render_on(gpu(), fate_view(), scene(), kinds)
+}
+
+/// [`render`] of `mesh` on `device` with `settings`.
+fn render_on(
+    device: Gpu,
+    settings: RenderSettings,
+    mesh: Mesh,
+    kinds: [FateKind; 3],
+) -> (App, Snapshot) {
     let viewport = Viewport {
         width: SIZE,
         height: SIZE,
     };
-    let mut app = close2gl_testkit::world_with(scene(), Camera::default(), settings, viewport);
+    let mut app = close2gl_testkit::world_with(mesh, Camera::default(), settings, viewport);
     let fates = Fates {
         triangles: kinds
             .map(|kind| TriangleFate {
@@ -60,7 +74,7 @@ fn render(kinds: [FateKind; 3]) -> (App, Snapshot) {
     };
     app.insert_resource(fates)
         .init_resource::<Close2glFrame>()
-        .add_plugins(OffscreenPlugin(gpu()));
+        .add_plugins(OffscreenPlugin(device));
     let snapshot = render_offscreen(&mut app).expect("both views render");
     (app, snapshot)
 }
@@ -131,6 +145,39 @@ fn the_reference_shows_the_gpus_facing_and_its_depth_test_failures() {
         "{:?}",
         reference.pixel(32, 36)
     );
+}
+
+/// Without the polygon modes lines and points are drawn as rectangles and squares of two
+/// triangles, which face the way their corners' order makes them, whatever the face's facing:
+/// the overlay takes the face's, as the shader found it. The scene is wound so that every face
+/// is a front face for the front face set, and none is culled.
+#[test]
+fn without_polygon_modes_the_facing_overlay_takes_each_faces_own_facing() {
+    let bare = close2gl_testkit::gpu_without_polygon_modes();
+    let shaded = fate_view().color.to_array().map(|c| c * 255.0);
+    let [front, back] =
+        [FateKind::Drawn, FateKind::Culled].map(|kind| blend(shaded, kind.color(), 0.6));
+    for mode in [RenderMode::Wireframe, RenderMode::Points] {
+        for front_face in [FrontFace::Ccw, FrontFace::Cw] {
+            let mut mesh = scene();
+            if front_face == FrontFace::Cw {
+                mesh.triangles.iter_mut().for_each(|t| t.swap(1, 2));
+            }
+            let settings = RenderSettings {
+                mode,
+                front_face,
+                ..fate_view()
+            };
+            let (_, snapshot) = render_on(bare.clone(), settings, mesh, [FateKind::Drawn; 3]);
+            let pixels = &snapshot.reference.pixels;
+            let count = |colour| pixels.iter().filter(|p| near(rgb(**p), colour)).count();
+            let (front, back) = (count(front), count(back));
+            assert!(
+                front > 5 && back == 0,
+                "{mode:?}, {front_face:?}: {front} pixels in the front colour, {back} in the back"
+            );
+        }
+    }
 }
 
 #[test]

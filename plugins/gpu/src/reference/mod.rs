@@ -13,7 +13,7 @@ use close2gl_core::camera_matrices;
 use close2gl_core::limits::has_no_area;
 use close2gl_core::{
     Camera, FrontFace, Lighting, Mesh, Overlay, RenderMode, RenderSettings, Shading, Texture,
-    TextureFilter,
+    TextureFilter, Viewport,
 };
 use glam::{Mat4, Vec3};
 use wgpu::util::DeviceExt;
@@ -21,7 +21,9 @@ use wgpu::util::DeviceExt;
 use crate::attachments::DEPTH_FORMAT;
 use crate::reference_texture::ReferenceBindings;
 use overlay::OverlayPipelines;
-pub(crate) use polygon_mode::{FaceDrawing, with_kept_faces};
+pub(crate) use polygon_mode::{
+    FaceDrawing, SHAPE_VERTICES, needs_faces, with_kept_faces, with_pixel_shapes,
+};
 
 /// [`camera_matrices`] for a mesh uploaded relative to `origin` (see [`GpuMesh::origin`]): the
 /// camera is moved by the same amount, so eye space is unchanged.
@@ -47,6 +49,8 @@ struct Uniforms {
     attenuation: [f32; 4],
     /// x: 1 when the texture modulates the colour, else 0.
     texturing: [f32; 4],
+    /// xy: the target's size in pixels, which lines and points drawn face by face are measured in.
+    viewport: [f32; 4],
 }
 
 impl Uniforms {
@@ -58,6 +62,7 @@ impl Uniforms {
         lighting: &Lighting,
         origin: Vec3,
         textured: bool,
+        viewport: Viewport,
     ) -> Self {
         let (view, projection) = relative_matrices(camera, origin);
         let light = view.transform_point3(lighting.light_position - origin);
@@ -73,6 +78,7 @@ impl Uniforms {
             material: [lighting.kd, lighting.ks, lighting.shininess, 0.0],
             attenuation: [c0, c1, c2, 0.0],
             texturing: [f32::from(u8::from(textured)), 0.0, 0.0, 0.0],
+            viewport: viewport_size(viewport),
         }
     }
 }
@@ -236,12 +242,13 @@ impl Reference {
         self.bindings.sync(device, queue, texture);
     }
 
-    /// Writes the uniforms and makes sure the pipeline for the settings exists.
+    /// Writes the uniforms for a target of `viewport`'s size and makes sure the pipeline for
+    /// the settings exists.
     pub(crate) fn update(
         &mut self,
         device: &wgpu::Device,
         queue: &wgpu::Queue,
-        camera: &Camera,
+        (camera, viewport): (&Camera, Viewport),
         settings: &RenderSettings,
         lighting: &Lighting,
     ) {
@@ -250,7 +257,7 @@ impl Reference {
             .as_ref()
             .map_or((Vec3::ZERO, false), |m| (m.origin, m.has_uvs));
         let textured = settings.texture && has_uvs && self.bindings.has_texture();
-        let uniforms = Uniforms::new(camera, settings, lighting, origin, textured);
+        let uniforms = Uniforms::new(camera, settings, lighting, origin, textured, viewport);
         queue.write_buffer(self.bindings.uniforms(), 0, bytemuck::bytes_of(&uniforms));
         let key = PipelineKey::new(settings);
         if !self.pipelines.contains_key(&key) {
@@ -287,7 +294,8 @@ impl Reference {
         .collect();
         (!missing.is_empty()).then(|| {
             format!(
-                "lines and points drawn face by face, culled in the shader (the device lacks {})",
+                "lines and points drawn face by face as one-pixel rectangles and squares, culled \
+                 in the shader (the device lacks {})",
                 missing.join(", ")
             )
         })
@@ -400,6 +408,13 @@ pub(crate) fn has_area([a, b, c]: [Vec3; 3]) -> bool {
         .max((c - b).length_squared())
         .max((a - c).length_squared());
     !has_no_area((b - a).cross(c - a).length(), longest)
+}
+
+/// A target's size in pixels as a uniform (xy; at least 1, so that the shaders never divide by
+/// 0).
+pub(crate) fn viewport_size(viewport: Viewport) -> [f32; 4] {
+    let Viewport { width, height } = viewport;
+    [width.max(1) as f32, height.max(1) as f32, 0.0, 0.0]
 }
 
 /// The background colour as wgpu's clear colour.

@@ -1,11 +1,13 @@
 //! glPolygonMode on any adapter. Where the device has `POLYGON_MODE_LINE` / `POLYGON_MODE_POINT`
 //! the triangles are drawn with wgpu's polygon mode. Where it lacks them (WebGL2, some mobile and
 //! older desktop adapters, or a device opened without them: `CLOSE2GL_NO_POLYGON_MODE=1`), each
-//! face is drawn as one instance carrying its three corners: a line list of its three edges or a
-//! point list of its corners (with those clipping adds on the near plane), one pixel wide, with
-//! the depth test; and culling, which the
-//! hardware applies to filled faces only, is decided in the vertex shader from the face's clip
-//! positions (`kept_faces.wgsl`), so that the same faces are kept as OpenGL keeps.
+//! face is drawn as one instance carrying its three corners: its three edges as one-pixel
+//! rectangles or its corners (with those clipping adds on the near plane) as one-pixel squares,
+//! each two triangles (`pixel_shapes.wgsl`, the shapes Close2GL's software rasterizer draws, so
+//! that the triangle fill rule decides their pixels on every backend), with the depth test; and
+//! culling, which the hardware would apply to each shape's triangles rather than to the face, is
+//! decided in the vertex shader from the face's clip positions (`kept_faces.wgsl`), so that the
+//! same faces are kept as OpenGL keeps.
 
 use bytemuck::{Pod, Zeroable};
 use close2gl_core::{FrontFace, RenderMode};
@@ -18,7 +20,8 @@ use super::{PipelineKey, Vertex};
 pub(crate) enum FaceDrawing {
     /// Indexed triangles in wgpu's polygon mode.
     Triangles(wgpu::PolygonMode),
-    /// One instance a face, drawn as its edges (`true`) or its corners, culled by the shader.
+    /// One instance a face, drawn as its edges' rectangles (`true`) or its points' squares,
+    /// culled by the shader.
     Instanced { edges: bool },
 }
 
@@ -38,12 +41,14 @@ impl FaceDrawing {
         }
     }
 
-    /// Vertices drawn per instance: a triangle's 3; for lines, 2 for each edge; for points, the
-    /// 3 corners and the 3 that clipping at the near plane may add (`kept_faces.wgsl`).
+    /// Vertices drawn per instance: a triangle's 3; for lines, a rectangle's 6 for each of 3
+    /// edges; for points, a square's 6 for each of the 3 corners and the 3 that clipping at the
+    /// near plane may add (`kept_faces.wgsl`).
     pub(crate) fn vertices_per_face(self) -> u32 {
         match self {
             Self::Triangles(_) => 3,
-            Self::Instanced { .. } => 6,
+            Self::Instanced { edges: true } => 3 * SHAPE_VERTICES,
+            Self::Instanced { edges: false } => 6 * SHAPE_VERTICES,
         }
     }
 
@@ -54,6 +59,7 @@ impl FaceDrawing {
         };
         let flag = |on: bool| f64::from(u8::from(on));
         vec![
+            ("SHAPES", 1.0),
             ("EDGES", flag(edges)),
             ("CULL_BACK", flag(key.backface_culling)),
             ("CLOCKWISE", flag(key.front_face == FrontFace::Cw)),
@@ -77,7 +83,7 @@ impl FaceDrawing {
     }
 
     /// The primitive state: the key's culling and front face for triangles; for instanced faces
-    /// lines or points, which the hardware does not cull.
+    /// the shapes' triangles, which the hardware does not cull (the shader culls the faces).
     pub(crate) fn primitive_state(self, key: PipelineKey) -> wgpu::PrimitiveState {
         let front_face = match key.front_face {
             FrontFace::Ccw => wgpu::FrontFace::Ccw,
@@ -91,12 +97,10 @@ impl FaceDrawing {
                 polygon_mode,
                 ..Default::default()
             },
-            Self::Instanced { edges } => wgpu::PrimitiveState {
-                topology: match edges {
-                    true => wgpu::PrimitiveTopology::LineList,
-                    false => wgpu::PrimitiveTopology::PointList,
-                },
+            Self::Instanced { .. } => wgpu::PrimitiveState {
+                topology: wgpu::PrimitiveTopology::TriangleList,
                 front_face,
+                cull_mode: None,
                 ..Default::default()
             },
         }
@@ -110,14 +114,29 @@ pub(crate) fn with_kept_faces(
     source: &str,
 ) -> wgpu::ShaderModule {
     let kept_faces = include_str!("../kept_faces.wgsl");
+    with_pixel_shapes(device, label, &format!("{source}\n{kept_faces}"))
+}
+
+/// A shader module of `source` with `pixel_shapes.wgsl`'s functions after it.
+pub(crate) fn with_pixel_shapes(
+    device: &wgpu::Device,
+    label: &str,
+    source: &str,
+) -> wgpu::ShaderModule {
+    let shapes = include_str!("../pixel_shapes.wgsl");
     device.create_shader_module(wgpu::ShaderModuleDescriptor {
         label: Some(label),
-        source: wgpu::ShaderSource::Wgsl(format!("{source}\n{kept_faces}").into()),
+        source: wgpu::ShaderSource::Wgsl(format!("{source}\n{shapes}").into()),
     })
 }
 
-/// Whether a device with `features` draws some mode as instanced faces.
-pub(super) fn needs_faces(features: wgpu::Features) -> bool {
+/// The vertices of one line's rectangle or one point's square: two triangles
+/// (`pixel_shapes.wgsl`).
+pub(crate) const SHAPE_VERTICES: u32 = 6;
+
+/// Whether a device with `features` draws some mode as instanced faces (and the Close2GL view
+/// its lines and points as shapes).
+pub(crate) fn needs_faces(features: wgpu::Features) -> bool {
     !features.contains(wgpu::Features::POLYGON_MODE_LINE | wgpu::Features::POLYGON_MODE_POINT)
 }
 

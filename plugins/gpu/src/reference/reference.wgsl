@@ -30,6 +30,8 @@ struct Uniforms {
     attenuation: vec4<f32>,
     // x: 1 when the texture modulates the colour (texturing on, the mesh has coordinates), else 0.
     texturing: vec4<f32>,
+    // xy: the target's size in pixels, which lines and points drawn face by face are measured in.
+    viewport: vec4<f32>,
 }
 
 @group(0) @binding(0) var<uniform> u: Uniforms;
@@ -45,7 +47,7 @@ struct Varyings {
     // Perspective-correct, as every @location varying is by default.
     @location(3) uv: vec2<f32>,
     // 1 on a front face drawn as lines or points without polygon modes (where the builtin
-    // front_facing is always true), 0 on a back one; 1 elsewhere.
+    // front_facing is their shapes' own), 0 on a back one; 1 elsewhere.
     @location(4) @interpolate(flat) front: f32,
 }
 
@@ -78,7 +80,8 @@ fn vs_main(
     return shade_vertex(position, normal, uv);
 }
 
-// One face (an instance) drawn as lines or points, without polygon modes (kept_faces.wgsl).
+// One face (an instance) drawn as lines or points, without polygon modes (kept_faces.wgsl): its
+// edges' rectangles or its points' squares, as triangles.
 struct Face {
     @location(0) p0: vec3<f32>,
     @location(1) n0: vec3<f32>,
@@ -96,20 +99,17 @@ fn vs_face(@builtin(vertex_index) index: u32, face: Face) -> Varyings {
     var positions = array<vec3<f32>, 3>(face.p0, face.p1, face.p2);
     var normals = array<vec3<f32>, 3>(face.n0, face.n1, face.n2);
     var uvs = array<vec2<f32>, 3>(face.uv0, face.uv1, face.uv2);
-    let a = u.view_projection * vec4<f32>(face.p0, 1.0);
-    let b = u.view_projection * vec4<f32>(face.p1, 1.0);
-    let c = u.view_projection * vec4<f32>(face.p2, 1.0);
-    let v = face_vertex(index, a, b, c);
-    let first = shade_vertex(positions[v.i], normals[v.i], uvs[v.i]);
-    var out = mix_varyings(first, shade_vertex(positions[v.j], normals[v.j], uvs[v.j]), v.t);
-    out.front = select(0.0, 1.0, faces_front(a, b, c));
-    if v.near {
-        // Exactly on the plane, as clipping puts it, not a rounding error behind it.
-        out.clip.z = 0.0;
-    }
-    if !v.kept || culled(a, b, c) {
-        out.clip = CLIPPED;
-    }
+    let clips = array<vec4<f32>, 3>(
+        u.view_projection * vec4<f32>(face.p0, 1.0),
+        u.view_projection * vec4<f32>(face.p1, 1.0),
+        u.view_projection * vec4<f32>(face.p2, 1.0),
+    );
+    let v = face_vertex(index, clips, u.viewport.xy);
+    let p = v.point;
+    let first = shade_vertex(positions[p.i], normals[p.i], uvs[p.i]);
+    var out = mix_varyings(first, shade_vertex(positions[p.j], normals[p.j], uvs[p.j]), p.t);
+    out.front = select(0.0, 1.0, faces_front(clips[0], clips[1], clips[2]));
+    out.clip = face_clip(v, clips);
     return out;
 }
 
@@ -156,10 +156,13 @@ override FRONT_COLOR: u32 = 0u;
 override BACK_COLOR: u32 = 0u;
 override FAILED_COLOR: u32 = 0u;
 
-// Facing as the rasterizer decided it, on the fragments that won the depth test.
+// Facing as the rasterizer decided it, on the fragments that won the depth test; for lines and
+// points drawn face by face, as the vertex shader found it (their shapes' triangles face
+// whichever way their corners' order makes them, not the face's way).
 @fragment
 fn fs_facing(in: Varyings, @builtin(front_facing) front: bool) -> @location(0) vec4<f32> {
-    let color = select(BACK_COLOR, FRONT_COLOR, front && in.front > 0.5);
+    let facing = select(front, in.front > 0.5, SHAPES);
+    let color = select(BACK_COLOR, FRONT_COLOR, facing);
     return vec4<f32>(unpack4x8unorm(color).rgb, 0.6);
 }
 
