@@ -493,3 +493,45 @@ fn every_system_sits_in_one_frame_set_of_the_one_schedule() {
     // Every set has a system of the viewer's, so the walk above saw each of them.
     assert!(!per_set.contains(&0), "systems per FrameSet: {per_set:?}");
 }
+
+/// A shown trace has an output of its own: the pipeline's frame stays what the pipeline drew
+/// (its counts describe it), the trace's 2D output goes to `TraceOutput` in the view's pixels,
+/// and once no trace is shown there is none.
+#[test]
+fn a_shown_trace_writes_its_own_output_and_leaves_the_pipelines_frame_alone() {
+    use close2gl::core::TraceOutput;
+    use close2gl_trace::view::{TraceRequest, TraceView};
+    let dir = close2gl_testkit::TempDir::new("systems_trace_output");
+    let path = dir.join("one.trace");
+    let trace = "close2gl-trace 1\nwindow 640 480\ncamera position 0 0 5\ncamera u 1 0 0\n\
+                 camera v 0 1 0\ncamera n 0 0 1\ncamera hfov 60\ncamera vfov 60\ncamera near 1\n\
+                 camera far 10\ntri 0 10 10 100 10 10 100\n";
+    std::fs::write(&path, trace).expect("write the trace");
+    let viewport = Viewport {
+        width: 640,
+        height: 480,
+    };
+    let mut app = world_with(
+        cube(),
+        Camera::default(),
+        RenderSettings::default(),
+        viewport,
+    );
+    app.add_plugins(CameraPlugin)
+        .add_plugins(Close2glPlugin)
+        .add_plugins(close2gl_trace::TracePlugin);
+    app.world_mut().resource_mut::<TraceRequest>().0 = Some(path);
+    app.update();
+    let shown = app.world().resource::<TraceOutput>().0.clone();
+    // ortho2d 0 640 0 480 is y up; the view's pixels are y down.
+    let expected = vec![[10.0, 470.0], [100.0, 470.0], [10.0, 380.0]];
+    assert_eq!(shown, Some(expected.clone()));
+    let pipeline = &frame(&app).vertices;
+    assert!(
+        !pipeline.is_empty() && *pipeline != expected,
+        "the pipeline's frame is its own: {pipeline:?}"
+    );
+    app.world_mut().resource_mut::<TraceView>().shown = None;
+    app.update();
+    assert_eq!(app.world().resource::<TraceOutput>().0, None);
+}

@@ -85,6 +85,12 @@ pub struct RasterGeometry {
     pub textured: bool,
 }
 
+/// A shown trace's 2D output, in the Close2GL view's pixels and the frame's topology: the GPU
+/// draws it in place of the pipeline's 2D buffer. Its one writer is the trace plugin; `None`
+/// while no trace is shown.
+#[derive(Resource, Clone, Debug, Default, PartialEq)]
+pub struct TraceOutput(pub Option<Vec<[f32; 2]>>);
+
 /// The Close2GL pipeline's output: 2D positions in window pixels (origin top-left, y down), ready
 /// for a pass-through GPU pipeline, and the stage counts; with the software rasterizer, also the
 /// same primitives with depth and what shading needs.

@@ -42,7 +42,7 @@ pub use excerpt::{EXCERPT_CHARS, excerpt};
 pub use fates::{ClipPlane, FateCounts, FateKind, Fates, SelectedTriangle, TriangleFate};
 pub use frame::{
     Close2glFrame, CutVertex, RasterGeometry, RasterVertex, Scene, SoftwareFrame, StageCounts,
-    Topology, Viewport,
+    Topology, TraceOutput, Viewport,
 };
 pub use image::Image;
 pub use input::{Action, InputBindings, InputState, ProbeClick};

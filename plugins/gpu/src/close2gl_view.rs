@@ -68,18 +68,20 @@ impl Close2glView {
         }
     }
 
-    /// Uploads the 2D buffer (growing the GPU buffer by doubling when it does not fit) and the
-    /// uniforms, and makes sure the pipeline for its topology exists.
+    /// Uploads `vertices` (the frame's 2D buffer, or a shown trace's in its topology; the GPU
+    /// buffer grows by doubling when they do not fit) and the uniforms, and makes sure the
+    /// pipeline for the frame's topology exists.
     pub(crate) fn update(
         &mut self,
         device: &wgpu::Device,
         queue: &wgpu::Queue,
         frame: &Close2glFrame,
+        vertices: &[[f32; 2]],
         color: Vec3,
     ) {
         self.vertices
-            .write(device, queue, bytemuck::cast_slice(&frame.vertices));
-        self.vertex_count = frame.vertices.len() as u32;
+            .write(device, queue, bytemuck::cast_slice(vertices));
+        self.vertex_count = vertices.len() as u32;
         self.topology = frame.topology;
         let uniforms = FrameUniforms {
             size: [

@@ -6,7 +6,7 @@ use bevy_ecs::system::SystemParam;
 use close2gl_core::parity::to_rgb8;
 use close2gl_core::{
     Camera, Close2glFrame, Fates, Lighting, Mesh, Overlay, RenderSettings, SelectedTriangle,
-    SoftwareFrame, Texture, Viewport,
+    SoftwareFrame, Texture, TraceOutput, Viewport,
 };
 
 use crate::gpu::Gpu;
@@ -55,17 +55,22 @@ pub(crate) fn upload_reference(
     );
 }
 
-/// Only when the frame, the colour or the views changed: the 2D buffer can be megabytes.
+/// Only when the frame, a shown trace, the colour or the views changed: the 2D buffer can be
+/// megabytes. A shown trace's output is drawn in place of the pipeline's.
 pub(crate) fn upload_close2gl(
     gpu: Res<Gpu>,
     frame: Res<Close2glFrame>,
+    trace: Option<Res<TraceOutput>>,
     settings: Res<RenderSettings>,
     mut views: ResMut<Views>,
 ) {
-    if frame.is_changed() || settings.is_changed() || views.is_added() {
+    let trace_changed = trace.as_ref().is_some_and(|t| t.is_changed());
+    if frame.is_changed() || trace_changed || settings.is_changed() || views.is_added() {
+        let shown = trace.as_ref().and_then(|t| t.0.as_deref());
+        let vertices = shown.unwrap_or(&frame.vertices);
         views
             .close2gl
-            .update(&gpu.device, &gpu.queue, &frame, settings.color);
+            .update(&gpu.device, &gpu.queue, &frame, vertices, settings.color);
     }
 }
 

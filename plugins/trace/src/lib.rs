@@ -14,7 +14,9 @@ pub mod rubric;
 pub mod view;
 
 use bevy_ecs::prelude::*;
-use close2gl_core::{App, Close2glStep, Owner, Plugin, RenderSettings, Update, Viewport};
+use close2gl_core::{
+    App, Close2glStep, Owner, Plugin, RenderSettings, TraceOutput, Update, Viewport,
+};
 use view::{TraceRequest, TraceView, load_requested_trace, show_trace};
 
 pub use format::{
@@ -32,6 +34,7 @@ impl Plugin for TracePlugin {
     fn build(&self, app: &mut App) {
         app.init_resource::<TraceRequest>()
             .init_resource::<TraceView>()
+            .init_resource::<TraceOutput>()
             .requires::<RenderSettings>(Owner::Settings)
             .requires::<Viewport>(Owner::Settings)
             .add_systems(

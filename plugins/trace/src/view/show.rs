@@ -2,24 +2,30 @@
 //! view's pixels, as the frame's topology draws them.
 
 use bevy_ecs::prelude::*;
-use close2gl_core::{Close2glFrame, Topology, Viewport};
+use close2gl_core::{Close2glFrame, Topology, TraceOutput, Viewport};
 use close2gl_pipeline::program::System2d;
 use glam::DVec2;
 
 use super::TraceView;
 use crate::format::Trace;
 
-/// Replaces the 2D buffer with the shown trace's whenever the pipeline wrote its own, the trace
-/// changed or the view was resized.
-pub fn show_trace(view: Res<TraceView>, viewport: Res<Viewport>, mut frame: ResMut<Close2glFrame>) {
+/// The shown trace's 2D output, in the view's pixels, whenever the pipeline's frame (its
+/// topology), the trace or the view's size changed; none once no trace is shown.
+pub fn show_trace(
+    view: Res<TraceView>,
+    viewport: Res<Viewport>,
+    frame: Res<Close2glFrame>,
+    mut output: ResMut<TraceOutput>,
+) {
     let Some(shown) = &view.shown else {
+        if output.0.is_some() {
+            output.0 = None;
+        }
         return;
     };
-    if !(frame.is_changed() || view.is_changed() || viewport.is_changed()) {
-        return;
+    if frame.is_changed() || view.is_changed() || viewport.is_changed() {
+        output.0 = Some(vertices(&shown.trace, *viewport, frame.topology));
     }
-    let vertices = vertices(&shown.trace, *viewport, frame.topology);
-    frame.vertices = vertices;
 }
 
 /// The trace's 2D system.
