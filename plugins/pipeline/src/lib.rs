@@ -12,6 +12,7 @@
 //! as pure functions. It depends on no GPU, window or UI crate; glam only holds the numbers.
 
 pub mod clip;
+pub mod emit;
 pub mod fast;
 pub mod frustum;
 pub mod journey;
