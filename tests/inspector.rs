@@ -7,7 +7,9 @@ use std::path::PathBuf;
 use std::process::{Command, Output};
 use std::sync::OnceLock;
 
-use close2gl::core::{Camera, Fates, Mesh, RenderSettings, Scene, SoftwareFrame, Viewport};
+use close2gl::core::{
+    Camera, Fates, Mesh, RecordFates, RenderSettings, Scene, SoftwareFrame, Viewport,
+};
 use close2gl::raster::SoftwareRasterizer;
 use close2gl::raster::coverage_probe::{Drawn, Outcome, PixelProbe, probe};
 use close2gl_gpu::{Gpu, OffscreenPlugin, probe_reference, render_offscreen};
@@ -222,7 +224,7 @@ fn world_app(extra: &[&str]) -> close2gl::core::App {
     let mut config = close2gl::config::load(None, &sets).expect("the settings");
     config.model = close2gl::core::ModelSource::parse(model.to_str().expect("UTF-8"));
     let mut app = close2gl::build_app(&config, SIZE).expect("the scene");
-    app.world_mut().resource_mut::<Fates>().record = true;
+    app.world_mut().resource_mut::<RecordFates>().0 = true;
     app.update();
     app
 }

@@ -50,7 +50,7 @@ fn a_recorded_ctrl_click_opens_the_probe_window_with_both_answers() {
     let mut h = Harness::new();
     h.click(Role::CheckBox, "Backface culling");
     assert!(
-        !h.world().resource::<close2gl_core::Fates>().record,
+        !h.world().resource::<close2gl_core::RecordFates>().0,
         "the fate view is off: the probe works the fates out itself"
     );
     // Two 200 × 100 views side by side; the click is in the middle of the Close2GL one.

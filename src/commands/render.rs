@@ -6,7 +6,7 @@ use std::path::{Path, PathBuf};
 
 use bevy_ecs::prelude::DetectChangesMut;
 use close2gl_core::parity::{ColorComparison, Comparison, diff_image};
-use close2gl_core::{App, Camera, CameraAction, CameraActions, Fates, OutsideView};
+use close2gl_core::{App, Camera, CameraAction, CameraActions, Fates, OutsideView, RecordFates};
 use close2gl_gpu::outside::render_outside;
 use close2gl_gpu::{Gpu, OffscreenPlugin, Snapshot, parse_backends, render_offscreen};
 use close2gl_pipeline::frustum::world_corners;
@@ -54,7 +54,7 @@ pub fn run(args: RenderArgs) -> Result<(), CliError> {
     print_warnings(&app);
     let gpu = Gpu::headless(backends).map_err(CliError::Runtime)?;
     app.add_plugins(OffscreenPlugin(gpu.clone()));
-    app.world_mut().resource_mut::<Fates>().record = true;
+    app.world_mut().resource_mut::<RecordFates>().0 = true;
     std::fs::create_dir_all(&args.out).map_err(|e| {
         CliError::Runtime(format!(
             "{}: cannot create the directory: {e}",

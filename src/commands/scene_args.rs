@@ -2,7 +2,7 @@
 
 use std::path::PathBuf;
 
-use close2gl_core::{App, Fates, ModelSource, ModelStatus, Viewport};
+use close2gl_core::{App, ModelSource, ModelStatus, RecordFates, Viewport};
 
 use super::CliError;
 use crate::config::{self, Config};
@@ -89,6 +89,6 @@ pub fn print_warnings(app: &App) {
 /// Records every triangle's fate from now on (the headless commands report them), and runs one
 /// more frame so that the current one is recorded.
 pub fn record_fates(app: &mut App) {
-    app.world_mut().resource_mut::<Fates>().record = true;
+    app.world_mut().resource_mut::<RecordFates>().0 = true;
     app.update();
 }

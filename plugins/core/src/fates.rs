@@ -139,11 +139,18 @@ impl FateCounts {
     }
 }
 
+/// The request to record every triangle's fate ([`Fates`]): set while the fate view is shown, and
+/// by the headless commands and tests that read the fates. The request only: its writers never
+/// touch the result, which only the pipeline (and, for pixels, the rasterizer) write.
+#[derive(Resource, Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct RecordFates(pub bool);
+
 /// Every mesh triangle's fate, in mesh order, for the last Close2GL frame. Recorded only while
-/// `record` is set (the fate view, the outside view, the inspector's probe and journey, the
-/// headless commands ask for it): the steady frame otherwise writes nothing here.
+/// asked ([`RecordFates`], which the pipeline copies into `record` before it runs): the steady
+/// frame otherwise writes nothing here.
 #[derive(Resource, Clone, Debug, Default)]
 pub struct Fates {
+    /// Whether this frame records them (for a pipeline run outside the world, the caller's ask).
     pub record: bool,
     /// One per mesh triangle when recorded; empty otherwise.
     pub triangles: Vec<TriangleFate>,

@@ -39,7 +39,9 @@ pub use camera::{
     Pose,
 };
 pub use excerpt::{EXCERPT_CHARS, excerpt};
-pub use fates::{ClipPlane, FateCounts, FateKind, Fates, SelectedTriangle, TriangleFate};
+pub use fates::{
+    ClipPlane, FateCounts, FateKind, Fates, RecordFates, SelectedTriangle, TriangleFate,
+};
 pub use frame::{
     Close2glFrame, CutVertex, RasterGeometry, RasterVertex, Scene, SoftwareFrame, StageCounts,
     Topology, TraceOutput, Viewport,

@@ -1,8 +1,8 @@
 //! The owner of the settings both views follow.
 
 use crate::{
-    App, Lighting, OutsideOrbit, OutsideView, Plugin, RenderSettings, SelectedTriangle, Viewport,
-    Wake,
+    App, Lighting, OutsideOrbit, OutsideView, Plugin, RecordFates, RenderSettings,
+    SelectedTriangle, Viewport, Wake,
 };
 
 /// Owns [`RenderSettings`] (one set of switches for both views), [`Lighting`] (both views light
@@ -12,8 +12,9 @@ use crate::{
 /// before the plugin is added (the configuration's) are kept. [`OutsideView`] (shown or not, and
 /// its stage) and [`OutsideOrbit`] (its own camera) are settings of the same kind: the config,
 /// the panel and the keys write them, the GPU's outside renderer reads them. It owns [`Wake`] too, which the
-/// viewer fills and any plugin's background work clones, and [`SelectedTriangle`], which the
-/// panel and the probe write and both views highlight.
+/// viewer fills and any plugin's background work clones, [`SelectedTriangle`], which the
+/// panel and the probe write and both views highlight, and [`RecordFates`], the request the
+/// fate view and the headless commands make and the pipeline reads.
 pub struct SettingsPlugin;
 
 impl Plugin for SettingsPlugin {
@@ -24,6 +25,7 @@ impl Plugin for SettingsPlugin {
             .init_resource::<OutsideView>()
             .init_resource::<OutsideOrbit>()
             .init_resource::<Wake>()
-            .init_resource::<SelectedTriangle>();
+            .init_resource::<SelectedTriangle>()
+            .init_resource::<RecordFates>();
     }
 }

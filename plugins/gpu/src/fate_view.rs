@@ -11,7 +11,9 @@
 //! eye shows nothing and one reaching behind it shows the part in front.
 
 use bevy_ecs::prelude::*;
-use close2gl_core::{Camera, FateKind, Fates, Mesh, Overlay, RenderSettings, TriangleFate};
+use close2gl_core::{
+    Camera, FateKind, Fates, Mesh, Overlay, RecordFates, RenderSettings, TriangleFate,
+};
 use close2gl_pipeline::matrices::ClipTransform;
 use glam::Vec4;
 
@@ -146,12 +148,12 @@ fn rgba(kind: FateKind) -> [u8; 4] {
 /// off, is left alone).
 pub(crate) fn record_fates_while_shown(
     settings: Res<RenderSettings>,
-    mut fates: ResMut<Fates>,
+    mut request: ResMut<RecordFates>,
     mut shown: Local<bool>,
 ) {
     let now = settings.overlay == Overlay::FateView;
     if now != *shown {
-        fates.record = now;
+        request.0 = now;
         *shown = now;
     }
 }

@@ -43,8 +43,8 @@ mod views;
 
 use bevy_ecs::prelude::*;
 use close2gl_core::{
-    App, Close2glFrame, Close2glStep, Fates, FrameSet, Lighting, Owner, Plugin, RenderSettings,
-    SelectedTriangle, Update, Viewport,
+    App, Close2glFrame, Close2glStep, Fates, FrameSet, Lighting, Owner, Plugin, RecordFates,
+    RenderSettings, SelectedTriangle, Update, Viewport,
 };
 
 use fate_view::record_fates_while_shown;
@@ -71,8 +71,7 @@ pub use wgpu;
 /// reference uniforms from `Camera`, `RenderSettings` and `Lighting`; the Close2GL 2D buffer
 /// from `Close2glFrame`, or the software rasterizer's image from `SoftwareFrame`; in the fate
 /// view (`RenderSettings::overlay`), each triangle in its colour from `Fates`, which it asks
-/// Close2GL to record (`Fates::record`) while that view is shown (it inserts `Fates` if no one
-/// has); the selected triangle's highlight (`SelectedTriangle`); in the live difference, both
+/// Close2GL to record (`RecordFates`) while that view is shown; the selected triangle's highlight (`SelectedTriangle`); in the live difference, both
 /// views drawn again into textures of the `Viewport`'s size and compared. They run once
 /// the `Gpu` and `Views` resources exist (inserted by whoever owns the target), so a window may
 /// arrive late. It owns no resource: the model, settings and Close2GL plugins provide what it
@@ -87,7 +86,8 @@ impl Plugin for GpuPlugin {
             .requires::<Close2glFrame>(Owner::Close2gl)
             .requires::<Viewport>(Owner::Settings)
             .requires::<SelectedTriangle>(Owner::Settings)
-            .init_resource::<Fates>()
+            .requires::<Fates>(Owner::Close2gl)
+            .requires::<RecordFates>(Owner::Settings)
             .add_systems(
                 Update,
                 record_fates_while_shown.in_set(Close2glStep::Prepare),

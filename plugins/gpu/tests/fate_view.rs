@@ -4,7 +4,7 @@
 
 use close2gl_core::glam::Vec3;
 use close2gl_core::{
-    App, Camera, Close2glFrame, FateKind, Fates, FrontFace, Mesh, Overlay, RenderMode,
+    App, Camera, Close2glFrame, FateKind, Fates, FrontFace, Mesh, Overlay, RecordFates, RenderMode,
     RenderSettings, SelectedTriangle, Shading, TriangleFate, Viewport,
 };
 use close2gl_gpu::{Gpu, OffscreenPlugin, Snapshot, render_offscreen};
@@ -96,7 +96,7 @@ fn near(a: [f32; 3], b: [f32; 3]) -> bool {
 fn close2gl_fills_each_triangle_in_its_fate_colour_and_outlines_what_clipping_removed() {
     let (app, snapshot) = render([FateKind::Drawn, FateKind::Clipped, FateKind::Hidden]);
     assert!(
-        app.world().resource::<Fates>().record,
+        app.world().resource::<RecordFates>().0,
         "the view asks for fates"
     );
     let close2gl = &snapshot.close2gl;

@@ -4,14 +4,15 @@
 //! `Camera` and `Mesh` components and the `RenderSettings` and `Viewport` resources (owned by the
 //! core's `SettingsPlugin`), and writes the `Close2glFrame` resource, which it owns: the 2D vertex
 //! buffer in window pixels (which the GPU only draws) and the stage counts. It also owns the
-//! core's `Fates` resource: every frame it writes each fate's count, and, while `Fates::record`
-//! is set, each mesh triangle's fate (the software rasterizer then adds `no_pixels` and
+//! core's `Fates` resource: every frame it writes each fate's count, and, while `RecordFates`
+//! asks, each mesh triangle's fate (the software rasterizer then adds `no_pixels` and
 //! `hidden`). [`journey`] follows one triangle through every stage with its numbers, for the
 //! inspector. For the outside view it gives the view volume's world corners from the real
 //! matrices ([`frustum`]) and the stage morph from world to eye to NDC coordinates ([`morph`]),
 //! as pure functions. It depends on no GPU, window or UI crate; glam only holds the numbers.
 
 pub mod clip;
+pub mod emit;
 pub mod fast;
 pub mod frustum;
 pub mod journey;
@@ -31,7 +32,7 @@ use bevy_ecs::prelude::*;
 use close2gl_core::Owner;
 use close2gl_core::{
     App, Camera, Close2glFrame, Close2glStep, FateCounts, FateKind, Fates, Mesh, Mistake, Plugin,
-    RenderSettings, StageCounts, Update, Viewport,
+    RecordFates, RenderSettings, StageCounts, Update, Viewport,
 };
 
 pub use fast::FastPipeline;
@@ -49,6 +50,7 @@ impl Plugin for Close2glPlugin {
             .init_resource::<Fates>()
             .requires::<RenderSettings>(Owner::Settings)
             .requires::<Viewport>(Owner::Settings)
+            .requires::<RecordFates>(Owner::Settings)
             .add_systems(Update, close2gl_system.in_set(Close2glStep::Geometry));
     }
 }
@@ -62,8 +64,11 @@ pub fn close2gl_system(
     viewport: Res<Viewport>,
     mut pipeline: ResMut<FastPipeline>,
     mut frame: ResMut<Close2glFrame>,
-    mut fates: ResMut<Fates>,
+    (mut fates, request): (ResMut<Fates>, Res<RecordFates>),
 ) {
+    if fates.record != request.0 {
+        fates.record = request.0;
+    }
     let changed =
         camera.is_changed() || mesh.is_changed() || settings.is_changed() || viewport.is_changed();
     let recorded = match fates.record {

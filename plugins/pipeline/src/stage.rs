@@ -10,7 +10,7 @@ use close2gl_core::{
 use glam::{Mat4, Vec4};
 
 use crate::clip::{NEAR, Outcode, Polygon, clip_polygon, outcode};
-use crate::matrices;
+use crate::{emit, matrices};
 
 /// What stays the same for every triangle of a frame.
 #[derive(Clone, Copy, Debug)]
@@ -273,16 +273,12 @@ fn cut<const RECORD: bool>(
         }
     };
     if constants.mode == RenderMode::Solid {
-        for i in 1..piece.len - 1 {
-            [0, i, i + 1].into_iter().for_each(&mut emit);
-        }
+        emit::fan(piece.len).for_each(&mut emit);
         return Fate::drawn(outside_any, area, piece.len - 2);
     }
     // A GPU draws a clipped polygon in line mode as what is left of the triangle's own edges;
     // the edges clipping added along the planes are not drawn.
-    for i in (0..piece.len).filter(|&i| piece.original[i]) {
-        [i, (i + 1) % piece.len].into_iter().for_each(&mut emit);
-    }
+    emit::edges(piece.len, |i| piece.original[i]).for_each(&mut emit);
     Fate::drawn(outside_any, area, (out.window().len() - before) / 2)
 }
 

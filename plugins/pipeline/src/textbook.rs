@@ -8,6 +8,7 @@ use close2gl_core::{
 };
 
 use crate::Tally;
+use crate::emit;
 use crate::matrices::ClipTransform;
 use crate::mistakes::Mistakes;
 use crate::program::{Outcome, Program};
@@ -145,18 +146,12 @@ fn push_cut_vertex(
     raster.triangles.push(index as u32);
 }
 
-/// Which vertices of a drawn polygon the mode emits, in order: a fan of triangles, the
-/// triangle's own edges as lines, or its corners as points.
+/// Which vertices of a drawn polygon the mode emits, in order ([`crate::emit`]).
 fn emitted(outcome: &Outcome, mode: RenderMode) -> Vec<usize> {
     let n = outcome.polygon.len();
     match mode {
-        RenderMode::Solid => (1..n.saturating_sub(1))
-            .flat_map(|i| [0, i, i + 1])
-            .collect(),
-        RenderMode::Wireframe => (0..n)
-            .filter(|&i| outcome.edges[i])
-            .flat_map(|i| [i, (i + 1) % n])
-            .collect(),
+        RenderMode::Solid => emit::fan(n).collect(),
+        RenderMode::Wireframe => emit::edges(n, |i| outcome.edges[i]).collect(),
         RenderMode::Points => (0..n).collect(),
     }
 }

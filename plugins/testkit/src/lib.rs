@@ -13,7 +13,9 @@ pub mod panel;
 pub mod student;
 mod temp_dir;
 
-use close2gl_core::{App, Camera, Lighting, Mesh, RenderSettings, SelectedTriangle, Viewport};
+use close2gl_core::{
+    App, Camera, Lighting, Mesh, RecordFates, RenderSettings, SelectedTriangle, Viewport,
+};
 
 pub use big_model::{GridFile, write_grid_in, write_grid_obj};
 pub use meshes::{cube, sphere};
@@ -27,7 +29,8 @@ pub fn world_with(mesh: Mesh, camera: Camera, settings: RenderSettings, viewport
     app.insert_resource(settings)
         .insert_resource(viewport)
         .init_resource::<Lighting>()
-        .init_resource::<SelectedTriangle>();
+        .init_resource::<SelectedTriangle>()
+        .init_resource::<RecordFates>();
     app.world_mut().spawn(camera);
     app.world_mut().spawn(mesh);
     app

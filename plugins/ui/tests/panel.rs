@@ -10,7 +10,7 @@ use close2gl_core::{
     RenderMode, RenderSettings, SelectedTriangle, TextureFilter, TextureRequest, ToolRequests,
     Topology,
 };
-use close2gl_core::{Camera, Mesh, ProbeClick, Scene, Viewport};
+use close2gl_core::{Camera, Mesh, ProbeClick, RecordFates, Scene, Viewport};
 use close2gl_raster::coverage_probe::probe;
 use close2gl_testkit::panel::Harness;
 use close2gl_ui::{Notice, PanelState, ProbeAnswer};
@@ -254,7 +254,7 @@ fn a_model_loading_in_the_background_shows_a_bar_with_its_name_and_percent() {
 fn the_inspector_switches_the_fate_view_and_shows_the_picked_triangles_fate_and_the_matrices() {
     let mut h = Harness::new();
     // The GPU plugin asks for fates while the fate view is shown; the harness has no GPU.
-    h.world().resource_mut::<Fates>().record = true;
+    h.world().resource_mut::<RecordFates>().0 = true;
     h.click(Role::Button, "fate_view");
     assert_eq!(
         h.world().resource::<RenderSettings>().overlay,
@@ -390,7 +390,7 @@ fn the_views_show_the_legend_of_their_overlay_until_hidden() {
 #[test]
 fn a_probe_opens_its_answer_beside_the_click_until_escape() {
     let mut h = Harness::new();
-    h.world().resource_mut::<Fates>().record = true;
+    h.world().resource_mut::<RecordFates>().0 = true;
     h.click(Role::Button, "fate_view");
     let camera = h.camera();
     let world = h.world();

@@ -10,8 +10,8 @@ mod renderer;
 
 use bevy_ecs::prelude::*;
 use close2gl_core::{
-    App, Camera, Fates, FrameSet, Mesh, OutsideOrbit, OutsideView, Plugin, RenderSettings, Update,
-    Viewport,
+    App, Camera, Fates, FrameSet, Mesh, OutsideOrbit, OutsideView, Owner, Plugin, RenderSettings,
+    Update, Viewport,
 };
 use close2gl_pipeline::morph::{OutsideFraming, StageMorph};
 
@@ -26,14 +26,13 @@ use crate::gpu::Gpu;
 /// colours while the fate view, which has the pipeline record them, is on) and uploading it
 /// into [`OutsideRenderer`] (inserted by whoever owns the target). Nothing runs while
 /// `OutsideView::show` is off (or missing: it and `OutsideOrbit` are the settings plugin's, and
-/// an app without them, a test of the two compared views, say, never shows this one). It owns
-/// `Fates` when nobody else added it; it reads `Camera`, `Mesh`, `RenderSettings` and
-/// `Viewport` too.
+/// an app without them, a test of the two compared views, say, never shows this one). It reads
+/// `Fates` (the pipeline's), `Camera`, `Mesh`, `RenderSettings` and `Viewport` too.
 pub struct OutsidePlugin;
 
 impl Plugin for OutsidePlugin {
     fn build(&self, app: &mut App) {
-        app.init_resource::<Fates>().add_systems(
+        app.requires::<Fates>(Owner::Close2gl).add_systems(
             Update,
             upload_outside.in_set(FrameSet::Output).run_if(
                 outside_shown

@@ -3,6 +3,7 @@
 
 use bevy_ecs::prelude::*;
 use close2gl_core::{Close2glFrame, Topology, TraceOutput, Viewport};
+use close2gl_pipeline::emit;
 use close2gl_pipeline::program::System2d;
 use glam::DVec2;
 
@@ -51,16 +52,8 @@ fn vertices(trace: &Trace, viewport: Viewport, topology: Topology) -> Vec<[f32; 
         let corners: Vec<[f32; 2]> = piece.corners.iter().map(|&p| pixel(p)).collect();
         let n = corners.len();
         match topology {
-            Topology::Triangles => {
-                for i in 1..n - 1 {
-                    out.extend([corners[0], corners[i], corners[i + 1]]);
-                }
-            }
-            Topology::Lines => {
-                for i in 0..n {
-                    out.extend([corners[i], corners[(i + 1) % n]]);
-                }
-            }
+            Topology::Triangles => out.extend(emit::fan(n).map(|i| corners[i])),
+            Topology::Lines => out.extend(emit::edges(n, |_| true).map(|i| corners[i])),
             Topology::Points => out.extend(&corners),
         }
     }
