@@ -58,12 +58,12 @@ pub fn draw(
     texture: Option<&Texture>,
 ) -> Buffers {
     let raster = &geometry.raster;
-    let light = Light::new(lighting, camera, settings.shading);
     let textured = settings.texture && raster.textured;
     let shader = Shader {
         shading: settings.shading,
         color: settings.color,
-        light,
+        lighting: *lighting,
+        light: ClipTransform::new(camera).eye(lighting.light_position),
         texture: texture
             .filter(|_| textured)
             .map(|t| Mips(t.image.mip_chain())),
@@ -76,7 +76,7 @@ pub fn draw(
         depth: vec![1.0; pixels],
         owners: vec![None; pixels],
     };
-    let vertices = vertex_stage(raster, settings.shading, &light);
+    let vertices = vertex_stage(raster, &shader);
     let per_primitive = match geometry.topology {
         Topology::Triangles => 3,
         Topology::Lines => 2,
@@ -95,12 +95,12 @@ pub fn draw(
 /// Every vertex of `raster` with its varyings: the mesh's (lit, for Gouraud), then those clipping
 /// made, whose varyings are their triangle's corners' blended by their weights, as a GPU's
 /// clipper blends them (a Gouraud intensity is not lit again).
-fn vertex_stage(raster: &RasterGeometry, shading: Shading, light: &Light) -> Vec<Vertex> {
-    let gouraud = matches!(shading, Shading::GouraudAd | Shading::GouraudAds);
+fn vertex_stage(raster: &RasterGeometry, shader: &Shader) -> Vec<Vertex> {
+    let gouraud = matches!(shader.shading, Shading::GouraudAd | Shading::GouraudAds);
     let mut vertices: Vec<Vertex> = (raster.vertices.iter())
         .map(|v| {
             let (eye, normal) = (Vec3::from(v.eye), Vec3::from(v.normal));
-            let intensity = gouraud.then(|| light.illumination(eye, normal));
+            let intensity = gouraud.then(|| shader.illumination(eye, normal));
             let mut varyings = [0.0; VARYINGS];
             varyings[INTENSITY..EYE].copy_from_slice(&intensity.unwrap_or_default().to_array());
             varyings[EYE..NORMAL].copy_from_slice(&v.eye);
@@ -291,7 +291,9 @@ fn varyings(v: &[Vertex; 3], x: i32, y: i32) -> [f32; VARYINGS] {
 struct Shader {
     shading: Shading,
     color: Vec3,
-    light: Light,
+    lighting: Lighting,
+    /// The light's position in eye space.
+    light: Vec3,
     texture: Option<Mips>,
     filter: TextureFilter,
 }
@@ -304,7 +306,7 @@ impl Shader {
         let colour = match self.shading {
             Shading::None => self.color,
             Shading::GouraudAd | Shading::GouraudAds => self.color * vec3(INTENSITY),
-            Shading::Phong => self.color * self.light.illumination(vec3(EYE), vec3(NORMAL)),
+            Shading::Phong => self.color * self.illumination(vec3(EYE), vec3(NORMAL)),
         };
         let Some(mips) = &self.texture else {
             return pack(colour);
@@ -317,57 +319,33 @@ impl Shader {
         };
         pack(colour * texel)
     }
+
+    /// I = Ia ka + f_att Il (kd max(N·L, 0) + ks max(V·R, 0)^n), f_att = min(1 / (c0 + c1 d +
+    /// c2 d²), 1), in eye space (the eye at the origin): the reference shader's formula, term
+    /// for term; without the specular term for Gouraud AD.
+    fn illumination(&self, eye: Vec3, normal: Vec3) -> Vec3 {
+        let k = &self.lighting;
+        let ks = match self.shading {
+            Shading::GouraudAd => 0.0,
+            _ => k.ks,
+        };
+        // Normalised without a NaN for a zero vector, as the shader's safe_normalize.
+        let unit = |v: Vec3| v / v.dot(v).max(1e-30).sqrt();
+        let (n, to_light) = (unit(normal), self.light - eye);
+        let (l, v) = (unit(to_light), unit(-eye));
+        let r = 2.0 * n.dot(l) * n - l;
+        let diffuse = k.kd * n.dot(l).max(0.0);
+        let specular = ks * v.dot(r).max(0.0).powf(k.shininess);
+        let ([c0, c1, c2], d) = (k.attenuation, to_light.length());
+        let f_att = (1.0 / (c0 + c1 * d + c2 * d * d)).min(1.0);
+        k.ia * k.ka + k.il * f_att * (diffuse + specular)
+    }
 }
 
 /// A colour in 0..1 as the RGBA8 a UNORM target stores: clamped, rounded to nearest.
 fn pack(rgb: Vec3) -> [u8; 4] {
     let byte = |c: f32| (c.clamp(0.0, 1.0) * 255.0 + 0.5) as u8;
     [byte(rgb.x), byte(rgb.y), byte(rgb.z), 255]
-}
-
-/// The lighting constants of a frame, with the light in eye space.
-#[derive(Clone, Copy, Debug)]
-struct Light {
-    position: Vec3,
-    ambient: Vec3,
-    intensity: Vec3,
-    kd: f32,
-    /// 0 for the shading without a specular term (Gouraud AD).
-    ks: f32,
-    shininess: f32,
-    attenuation: [f32; 3],
-}
-
-impl Light {
-    fn new(lighting: &Lighting, camera: &Camera, shading: Shading) -> Light {
-        let specular = matches!(shading, Shading::GouraudAds | Shading::Phong);
-        Light {
-            position: ClipTransform::new(camera).eye(lighting.light_position),
-            ambient: lighting.ia * lighting.ka,
-            intensity: lighting.il,
-            kd: lighting.kd,
-            ks: if specular { lighting.ks } else { 0.0 },
-            shininess: lighting.shininess,
-            attenuation: lighting.attenuation,
-        }
-    }
-
-    /// I = Ia ka + f_att Il (kd max(N·L, 0) + ks max(V·R, 0)^n), in eye space (the eye at the
-    /// origin), f_att = min(1 / (c0 + c1 d + c2 d²), 1): the reference shader's formula, term for
-    /// term.
-    fn illumination(&self, eye: Vec3, normal: Vec3) -> Vec3 {
-        // Normalised without a NaN for a zero vector, as the shader's safe_normalize.
-        let unit = |v: Vec3| v / v.dot(v).max(1e-30).sqrt();
-        let (n, to_light) = (unit(normal), self.position - eye);
-        let (l, v) = (unit(to_light), unit(-eye));
-        let r = 2.0 * n.dot(l) * n - l;
-        let diffuse = self.kd * n.dot(l).max(0.0);
-        let specular = self.ks * v.dot(r).max(0.0).powf(self.shininess);
-        let [c0, c1, c2] = self.attenuation;
-        let d = to_light.length();
-        let f_att = (1.0 / (c0 + c1 * d + c2 * d * d)).min(1.0);
-        self.ambient + self.intensity * f_att * (diffuse + specular)
-    }
 }
 
 /// The texture's mipmap chain, level 0 first, each level half the one before. Wrap mode:

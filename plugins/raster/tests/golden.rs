@@ -5,8 +5,8 @@
 //! when the constants were taken. A restructuring that changes no pixel keeps them all; any change
 //! of output, however small, fails here and names the scene. A change meant to alter the output (a
 //! fix for parity with the reference, say) takes the new hashes this test prints, in the same
-//! commit, saying why. The same scenes, on one thread and on two, are also the textbook
-//! rasterizer's (`src/textbook.rs`): every pixel's colour and depth, and every recorded owner.
+//! commit, saying why. The same scenes are also drawn by the textbook rasterizer
+//! (`src/textbook.rs`): the same pixels covered, and depth and colour within the tolerances below.
 
 use TextureFilter::Nearest;
 use close2gl_core::glam::{Vec2, Vec3};
