@@ -13,20 +13,18 @@
 //! ([`SoftwareRasterizer::owner`]) for the inspector's probe. Like the pipeline, it knows no
 //! GPU, window or UI.
 //!
-//! Read [`textbook`] first: the rasterizer as the textbook writes it, in one short file, each
-//! triangle and each pixel of its bounding box one at a time (edge functions with the top-left
-//! rule, the depth test, then the shading and the texture). The fast rasterizer, to read next,
-//! draws exactly its pixels and depths (`tests/golden.rs` holds it to them, on one thread and on
-//! two), from the same building blocks: the vertex stage's work on one vertex, the setup (`setup`:
-//! the snapping, the edge functions, the bounding box and the planes, which both evaluate at a
-//! pixel centre by the same formulas in the same order, so that every bit agrees), the lighting and
-//! the texture sampling. What it adds, to get those pixels faster, is how the work is shared out
-//! and batched: every primitive set up and binned into 64×64 tiles in one parallel pass (those that
-//! cover no pixel centre dropped before their planes are built), the tiles drawn by the threads,
-//! each triangle's covered rows solved rather than tested pixel by pixel, eight pixels at a time in
-//! SIMD lanes, small triangles listed as their fragments, Phong's attenuation skipped when it is 1
-//! everywhere, and Phong shaded once per pixel after the depth test where a tile's triangles are
-//! small, their partial blocks queued where they are not.
+//! Read [`textbook`] first: the rasterizer as the textbook writes it, in one file that stands
+//! alone, each triangle and each pixel of its bounding box one at a time (edge functions with the
+//! top-left rule, the depth test, then the shading and the texture). The fast rasterizer, to read
+//! next, covers exactly its pixels, with depth and colour equal but for rounding (`tests/golden.rs`
+//! holds it to them, and docs/rasterizer.md states the tolerances). What it adds, to get those
+//! pixels faster, is fixed-point setup once per vertex and triangle, with planes evaluated in f32,
+//! and how the work is shared out and batched: every primitive set up and binned into 64×64 tiles
+//! in one parallel pass (those that cover no pixel centre dropped before their planes are built),
+//! the tiles drawn by the threads, each triangle's covered rows solved rather than tested pixel by
+//! pixel, eight pixels at a time in SIMD lanes, small triangles listed as their fragments, Phong's
+//! attenuation skipped when it is 1 everywhere, and Phong shaded once per pixel after the depth
+//! test where a tile's triangles are small, their partial blocks queued where they are not.
 //!
 //! Its files follow one frame, in the order `rasterizer` runs them: `vertex` (each vertex's
 //! varyings, lit by `lighting` for Gouraud) → `bin` (setup and binning in one parallel pass, in
