@@ -20,7 +20,7 @@ use close2gl_core::{
 use view::{TraceRequest, TraceView, load_requested_trace, show_trace};
 
 pub use format::{
-    Axis, CameraLines, ClipLine, Culling, FormatError, Motion, Ortho2d, Piece, Scene, SceneCamera,
+    Axis, CameraLines, ClipLine, Culling, FormatError, Motion, Piece, Scene, SceneCamera, System2d,
     Trace, TraceClipping, parse_scene, parse_trace, read_scene, read_trace,
 };
 

@@ -6,7 +6,7 @@ mod common;
 
 use close2gl_core::RenderMode;
 use close2gl_trace::{
-    Axis, Culling, Motion, Ortho2d, SceneCamera, TraceClipping, parse_scene, parse_trace,
+    Axis, Culling, Motion, SceneCamera, System2d, TraceClipping, parse_scene, parse_trace,
 };
 use common::{SCENE, TRACE, replaced, scene_error, trace_error};
 use glam::{DVec2, DVec3, DVec4};
@@ -83,7 +83,7 @@ fn a_trace_that_gives_only_what_it_must_reads_with_the_defaults() {
     assert_eq!(trace.window, (640, 480));
     assert_eq!(
         trace.ortho2d,
-        Ortho2d {
+        System2d {
             left: 0.0,
             right: 640.0,
             bottom: 0.0,

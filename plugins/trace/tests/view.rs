@@ -8,7 +8,7 @@ use close2gl_pipeline::program::ClipPlanes;
 use close2gl_trace::check::{self, program_for};
 use close2gl_trace::view::probe::probe;
 use close2gl_trace::view::{Shown, TraceView};
-use close2gl_trace::{CameraLines, Culling, Ortho2d, Piece, Trace, TraceClipping};
+use close2gl_trace::{CameraLines, Culling, Piece, System2d, Trace, TraceClipping};
 use glam::{DVec2, DVec3};
 
 /// The cube seen from +z, 4 units away, in a 100 × 100 window with y up; its 2D output as
@@ -19,7 +19,7 @@ fn trace(mesh: &close2gl_core::Mesh, moved: usize) -> Trace {
         model: None,
         triangles: None,
         window: (100, 100),
-        ortho2d: Ortho2d {
+        ortho2d: System2d {
             left: 0.0,
             right: 100.0,
             bottom: 0.0,

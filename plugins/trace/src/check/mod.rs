@@ -13,7 +13,7 @@ pub mod report;
 
 use close2gl_core::{FrontFace, Mesh, RenderMode};
 use close2gl_pipeline::mistakes::Mistakes;
-use close2gl_pipeline::program::{ClipRule, Declared, Outcome, Program, System2d, WindingSpace};
+use close2gl_pipeline::program::{ClipRule, Declared, Outcome, Program, WindingSpace};
 use glam::DMat4;
 
 use crate::format::{Culling, FormatError, Trace, TraceClipping};
@@ -64,13 +64,7 @@ pub fn program_for(trace: &Trace, mistakes: Mistakes) -> Program {
 
 /// [`program_for`] testing the winding in `winding`.
 pub fn program_winding(trace: &Trace, mistakes: Mistakes, winding: WindingSpace) -> Program {
-    let o = trace.ortho2d;
-    let system = System2d {
-        left: o.left,
-        right: o.right,
-        bottom: o.bottom,
-        top: o.top,
-    };
+    let system = trace.ortho2d;
     let culling = match trace.culling {
         Culling::Off => None,
         Culling::Ccw => Some(FrontFace::Ccw),

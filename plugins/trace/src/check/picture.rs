@@ -2,7 +2,6 @@
 //! kind of disagreement, each filled into the trace's window as it shows on screen.
 
 use close2gl_core::Image;
-use close2gl_pipeline::program::System2d;
 use glam::DVec2;
 
 use super::Report;
@@ -33,13 +32,7 @@ pub fn kind_color(kind: Kind) -> [u8; 4] {
 /// The three pictures: close2gl's, the trace's, the difference.
 pub fn pictures(report: &Report, trace: &Trace) -> [Image; 3] {
     let (w, h) = trace.window;
-    let o = trace.ortho2d;
-    let system = System2d {
-        left: o.left,
-        right: o.right,
-        bottom: o.bottom,
-        top: o.top,
-    };
+    let system = trace.ortho2d;
     let to_pixels = |polygon: &[DVec2]| -> Vec<DVec2> {
         polygon.iter().map(|&p| system.to_pixels(p, w, h)).collect()
     };

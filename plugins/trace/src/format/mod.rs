@@ -14,6 +14,9 @@ mod syntax;
 mod trace;
 mod write;
 
+/// `ortho2d L R B T`: the arguments the program gave `gluOrtho2D`, the 2D system of its output,
+/// read straight into the pipeline's own type.
+pub use close2gl_pipeline::program::System2d;
 pub use output::{ClipLine, Piece};
 pub use scene::{Motion, Scene, SceneCamera, parse_scene, read_scene};
 pub use syntax::FormatError;
@@ -54,15 +57,6 @@ pub enum TraceClipping {
     Full,
     /// Nothing: every triangle drawn whole.
     None,
-}
-
-/// `ortho2d L R B T`: the arguments the program gave `gluOrtho2D`, the 2D system of its output.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Ortho2d {
-    pub left: f64,
-    pub right: f64,
-    pub bottom: f64,
-    pub top: f64,
 }
 
 /// One of the camera's own axes, which a scene's motions move along or turn about.

@@ -13,7 +13,7 @@ use super::common::{Common, Ends};
 use super::magic::{Format, check_magic};
 use super::output::{self, ClipLine, MATRIX_NAMES, Piece};
 use super::syntax::{FormatError, Line, Slot, last_line, records, set_once};
-use super::{CameraLines, Culling, MAX_RECORDS, Ortho2d, TraceClipping, read};
+use super::{CameraLines, Culling, MAX_RECORDS, System2d, TraceClipping, read};
 
 /// One trace file. What the file leaves out is `None` (or empty), so that a checker can say
 /// what it did not check.
@@ -26,7 +26,7 @@ pub struct Trace {
     pub triangles: Option<(usize, usize)>,
     pub window: (u32, u32),
     /// `0 W 0 H` when not given.
-    pub ortho2d: Ortho2d,
+    pub ortho2d: System2d,
     pub camera: CameraLines,
     pub culling: Culling,
     pub clipping: TraceClipping,
@@ -94,7 +94,7 @@ pub(crate) fn parse_limited(text: &str, file: &str, limit: usize) -> Result<Trac
 struct Reader {
     common: Common,
     triangles: Slot<usize>,
-    ortho2d: Slot<Ortho2d>,
+    ortho2d: Slot<System2d>,
     matrices: [Slot<DMat4>; 4],
     drawn: Slot<usize>,
     clip: Vec<ClipLine>,
@@ -182,7 +182,7 @@ impl Reader {
             triangles: self.triangles,
             window,
             ortho2d: self.ortho2d.map_or(
-                Ortho2d {
+                System2d {
                     left: 0.0,
                     right: f64::from(window.0),
                     bottom: 0.0,
@@ -209,14 +209,14 @@ impl Reader {
 }
 
 /// `ortho2d L R B T`, a system of some width and height (`gluOrtho2D` divides by both).
-fn ortho2d(line: &Line) -> Result<Ortho2d, FormatError> {
+fn ortho2d(line: &Line) -> Result<System2d, FormatError> {
     const SHAPE: &str = "ortho2d L R B T";
     line.expect_fields(5, SHAPE)?;
     let x = line.numbers(1, SHAPE, |k| ["L", "R", "B", "T"][k].to_string())?;
     if x[0] == x[1] || x[2] == x[3] {
         return Err(line.expected(&format!("'{SHAPE}' with L != R and B != T")));
     }
-    Ok(Ortho2d {
+    Ok(System2d {
         left: x[0],
         right: x[1],
         bottom: x[2],

@@ -5,7 +5,6 @@
 use close2gl_core::Viewport;
 use glam::DVec2;
 
-use super::show::system;
 use super::{Shown, TraceView};
 use crate::check::compare::fate_words;
 use crate::check::region::covers;
@@ -22,7 +21,7 @@ pub struct TraceProbe {
 /// The answer, or None when no trace is shown.
 pub fn probe(view: &TraceView, pixel: (u32, u32), viewport: Viewport) -> Option<TraceProbe> {
     let shown = view.shown.as_ref()?;
-    let system = system(&shown.trace);
+    let system = shown.trace.ortho2d;
     let centre = DVec2::new(f64::from(pixel.0) + 0.5, f64::from(pixel.1) + 0.5);
     let covers = |polygon: &[DVec2]| {
         let pixels: Vec<DVec2> = polygon

@@ -4,7 +4,6 @@
 use bevy_ecs::prelude::*;
 use close2gl_core::{Close2glFrame, Topology, TraceOutput, Viewport};
 use close2gl_pipeline::emit;
-use close2gl_pipeline::program::System2d;
 use glam::DVec2;
 
 use super::TraceView;
@@ -29,20 +28,9 @@ pub fn show_trace(
     }
 }
 
-/// The trace's 2D system.
-pub fn system(trace: &Trace) -> System2d {
-    let o = trace.ortho2d;
-    System2d {
-        left: o.left,
-        right: o.right,
-        bottom: o.bottom,
-        top: o.top,
-    }
-}
-
 /// The pieces in `viewport`'s pixels: fans of triangles, their edges as lines, or their corners.
 fn vertices(trace: &Trace, viewport: Viewport, topology: Topology) -> Vec<[f32; 2]> {
-    let system = system(trace);
+    let system = trace.ortho2d;
     let mut out = Vec::new();
     for piece in &trace.pieces {
         let pixel = |p: DVec2| {

@@ -9,7 +9,7 @@ use std::collections::HashSet;
 use close2gl_core::{NamedEnum, RenderMode};
 use close2gl_pipeline::program::{ClipPlanes, WindingSpace};
 use close2gl_trace::{
-    Axis, CameraLines, ClipLine, Culling, Motion, Ortho2d, Piece, Scene, SceneCamera, Trace,
+    Axis, CameraLines, ClipLine, Culling, Motion, Piece, Scene, SceneCamera, System2d, Trace,
     TraceClipping, parse_scene, parse_trace,
 };
 use glam::{DMat4, DVec2, DVec3, DVec4};
@@ -121,10 +121,10 @@ fn name() -> impl Strategy<Value = String> {
     "[A-Za-z0-9_./-]{1,24}"
 }
 
-fn ortho2d() -> BoxedStrategy<Ortho2d> {
+fn ortho2d() -> BoxedStrategy<System2d> {
     prop::array::uniform4(number())
         .prop_filter("a system of some size", |[l, r, b, t]| l != r && b != t)
-        .prop_map(|[left, right, bottom, top]| Ortho2d {
+        .prop_map(|[left, right, bottom, top]| System2d {
             left,
             right,
             bottom,
