@@ -8,7 +8,7 @@
 use close2gl_core::Mistake;
 use glam::{DMat4, DVec3};
 
-use crate::program::{ProgramCamera, System2d};
+use crate::program::given::{ProgramCamera, System2d};
 /// A set of mistakes (at most a few at once: diagnosis tries each one and each pair).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
 pub struct Mistakes(u32);

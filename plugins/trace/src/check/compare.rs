@@ -8,7 +8,6 @@ use glam::{DMat4, DVec2, DVec4};
 
 use close2gl_pipeline::rounding::{self, BOUND, PRINTED, clip_error, clip_terms};
 
-use super::clues;
 use super::own_input::own_program;
 use super::region;
 use crate::format::Trace;
@@ -246,7 +245,6 @@ fn compare_stages(
     };
     let mut stages = vec![camera(matrices_of, trace)];
     stages.extend(matrices(matrices_of, trace));
-    clues::add_matrix_clues(&mut stages, matrices_of, trace);
     stages.push(clip(clip_of, mesh, trace, &mut mark));
     stages.extend(drawn(output, trace, expected, &mut mark));
     triangles.sort_by_key(|(kind, _)| *kind);

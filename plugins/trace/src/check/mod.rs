@@ -151,7 +151,10 @@ pub fn compare_only(mesh: &Mesh, trace: &Trace) -> Result<Report, FormatError> {
     fits(trace, mesh)?;
     let program = program_for(trace, Mistakes::NONE);
     let expected = program.frame(mesh);
-    let comparison = compare::compare_own_input(&program, mesh, trace);
+    let mut comparison = compare::compare_own_input(&program, mesh, trace);
+    // The clues are for a reader: added to the comparison a report shows, not to each
+    // candidate's.
+    clues::add_matrix_clues(&mut comparison.stages, &program, trace);
     Ok(Report {
         comparison,
         expected,
