@@ -232,7 +232,7 @@ fn create_pipeline(
         vertex: wgpu::VertexState {
             module: &shader,
             entry_point: Some("vs_main"),
-            compilation_options: options,
+            compilation_options: options.clone(),
             buffers: &[Some(wgpu::VertexBufferLayout {
                 array_stride: size_of::<IdFace>() as u64,
                 step_mode: wgpu::VertexStepMode::Instance,
@@ -251,7 +251,8 @@ fn create_pipeline(
         fragment: Some(wgpu::FragmentState {
             module: &shader,
             entry_point: Some("fs_main"),
-            compilation_options: Default::default(),
+            // A line's fragments are kept by the same constants' test as the reference's.
+            compilation_options: options,
             targets: &[Some(ID_FORMAT.into()), Some(DEPTH_OUT_FORMAT.into())],
         }),
         multiview_mask: None,

@@ -1,8 +1,9 @@
 // glPolygonMode's lines and points where the adapter has no polygon modes: each face is one
 // instance carrying its three corners. Its lines (3 edges) or points (6, see `face_point`) are
 // drawn as one-pixel rectangles and squares of two triangles each (`pixel_shapes.wgsl`, so
-// SHAPE_VERTICES vertices a line or point), and culling is decided here from the three clip
-// positions, as the hardware decides it for a filled face (the shapes themselves are not culled).
+// SHAPE_VERTICES vertices a line or point; a line's rectangle drawn larger, its fragments kept
+// by `line_covers`), and culling is decided here from the three clip positions, as the hardware
+// decides it for a filled face (the shapes themselves are not culled).
 
 // 1: lines or points drawn as shapes; 0: the face as a triangle (the ID pass with polygon modes).
 override SHAPES: bool = false;
@@ -24,36 +25,80 @@ struct FacePoint {
     kept: bool,
 }
 
-// Vertex `index` of a face's instance: the face's point it belongs to, and its offset from that
-// point in normalised device coordinates (to its corner of the rectangle or square).
+// Vertex `index` of a face's instance: the face's point it belongs to, its offset from that
+// point in normalised device coordinates (to its corner of the rectangle or square), and for a
+// line the exact rectangle its fragments are kept in (`line_covers`; zero otherwise).
 struct FaceVertex {
     point: FacePoint,
     offset: vec2<f32>,
+    line: ExactLine,
 }
 
 // Vertex `index` of the face with clip positions `clips`, drawn into a target of `size` pixels.
 // Lines: the rectangles of edges 0-1, 1-2, 2-0; points: the squares of `face_point`'s points;
 // a triangle: its corners.
 fn face_vertex(index: u32, clips: array<vec4<f32>, 3>, size: vec2<f32>) -> FaceVertex {
+    let none = ExactLine(vec4<i32>(0), vec2<i32>(0));
     if !SHAPES {
-        return FaceVertex(FacePoint(index, index, 0.0, false, true), vec2<f32>(0.0));
+        return FaceVertex(FacePoint(index, index, 0.0, false, true), vec2<f32>(0.0), none);
     }
     let shape = index / SHAPE_VERTICES;
     let k = index % SHAPE_VERTICES;
-    let to_ndc = vec2<f32>(2.0, -2.0) / size;
     if !EDGES {
         let point = face_point(shape, clips);
         let at = window(point_clip(point, clips), size);
-        return FaceVertex(point, (point_corner(k, at) - at) * to_ndc);
+        return FaceVertex(point, (point_corner(k, at) - at) * to_ndc(size), none);
     }
-    let a = edge_end(shape, (shape + 1u) % 3u, clips);
-    let b = edge_end((shape + 1u) % 3u, shape, clips);
-    let ends = array<vec2<f32>, 2>(window(point_clip(a, clips), size), window(point_clip(b, clips), size));
-    let corner = line_corner(k, ends[0], ends[1]);
+    return edge_vertex(k, shape, (shape + 1u) % 3u, clips, size);
+}
+
+fn to_ndc(size: vec2<f32>) -> vec2<f32> {
+    return vec2<f32>(2.0, -2.0) / size;
+}
+
+// Vertex `k` of the rectangle of the edge from corner i to corner j, drawn MARGIN wider and
+// longer than the exact one (`line_corner`). Its corners at one end lie on the line through the
+// other end and past this one, so they take the point MARGIN pixels beyond the end on the line
+// (mixed from i and j as clipping mixes, perspective-correct) and move from it across the line
+// only, along t: the drawn rectangle's depth and varyings are then those of the exact one,
+// extended. An end cut at the near plane is not extended (behind it nothing is drawn).
+fn edge_vertex(k: u32, i: u32, j: u32, clips: array<vec4<f32>, 3>, size: vec2<f32>) -> FaceVertex {
+    let a = edge_end(i, j, clips);
+    let b = edge_end(j, i, clips);
+    let clip_a = point_clip(a, clips);
+    let clip_b = point_clip(b, clips);
+    let window_a = window(clip_a, size);
+    let window_b = window(clip_b, size);
+    let corner = line_corner(k, window_a, window_b);
+    let f = MARGIN / max(distance(window_a, window_b), 1e-30);
+    // This end, its window position, where it and the other end lie on the edge from i to j,
+    // and their w.
+    var end = a;
+    var at = window_a;
+    var t = vec2<f32>(a.t, 1.0 - b.t);
+    var w = vec2<f32>(clip_a.w, clip_b.w);
     if corner.at_b {
-        return FaceVertex(b, (corner.window - ends[1]) * to_ndc);
+        end = b;
+        at = window_b;
+        t = t.yx;
+        w = w.yx;
     }
-    return FaceVertex(a, (corner.window - ends[0]) * to_ndc);
+    let from_end = corner.window + corner.wider - at;
+    // f, the screen fraction past the end, is the clip-space fraction s below (and w stays > 0
+    // there while the denominator does).
+    let denominator = w.y * (1.0 + f) - f * w.x;
+    if !end.near && denominator > 0.0 {
+        let s = f * w.x / denominator;
+        end = FacePoint(i, j, t.x - s * (t.y - t.x), false, end.kept);
+    }
+    return FaceVertex(end, from_end * to_ndc(size), corner.line);
+}
+
+// Whether the fragment is drawn: for a line drawn as its larger rectangle, where the software
+// rasterizer's exact rectangle (`ends`, `across`: an `ExactLine`) covers its centre (`window`:
+// the `window_varying` of its vertices' clip positions); any other fragment.
+fn fragment_kept(ends: vec4<i32>, across: vec2<i32>, window: vec3<f32>) -> bool {
+    return !(SHAPES && EDGES) || line_covers(ExactLine(ends, across), window);
 }
 
 // Points 0, 1, 2: the corners (those in front of the near plane); 3, 4, 5: where edges 0-1,
