@@ -15,13 +15,14 @@ override CULL_BACK: bool = false;
 override CLOCKWISE: bool = false;
 
 // A point of a face that a line ends at or a point is drawn at: corner i mixed with corner j at
-// t (t = 0: corner i). `near`: it lies on the near plane; `kept`: false where there is no such
-// point (nor its line).
+// t (t = 0: corner i). `near`, `far`: it lies on that plane (a line's end clipping cut there);
+// `kept`: false where there is no such point (nor its line).
 struct FacePoint {
     i: u32,
     j: u32,
     t: f32,
     near: bool,
+    far: bool,
     kept: bool,
 }
 
@@ -40,7 +41,7 @@ struct FaceVertex {
 fn face_vertex(index: u32, clips: array<vec4<f32>, 3>, size: vec2<f32>) -> FaceVertex {
     let none = ExactLine(vec4<i32>(0), vec2<i32>(0));
     if !SHAPES {
-        return FaceVertex(FacePoint(index, index, 0.0, false, true), vec2<f32>(0.0), none);
+        return FaceVertex(FacePoint(index, index, 0.0, false, false, true), vec2<f32>(0.0), none);
     }
     let shape = index / SHAPE_VERTICES;
     let k = index % SHAPE_VERTICES;
@@ -87,9 +88,9 @@ fn edge_vertex(k: u32, i: u32, j: u32, clips: array<vec4<f32>, 3>, size: vec2<f3
     // f, the screen fraction past the end, is the clip-space fraction s below (and w stays > 0
     // there while the denominator does).
     let denominator = w.y * (1.0 + f) - f * w.x;
-    if !end.near && denominator > 0.0 {
+    if !end.near && !end.far && denominator > 0.0 {
         let s = f * w.x / denominator;
-        end = FacePoint(i, j, t.x - s * (t.y - t.x), false, end.kept);
+        end = FacePoint(i, j, t.x - s * (t.y - t.x), false, false, end.kept);
     }
     return FaceVertex(end, from_end * to_ndc(size), corner.line);
 }
@@ -107,32 +108,44 @@ fn fragment_kept(ends: vec4<i32>, across: vec2<i32>, window: vec3<f32>) -> bool 
 fn face_point(index: u32, clips: array<vec4<f32>, 3>) -> FacePoint {
     var z = array<f32, 3>(clips[0].z, clips[1].z, clips[2].z);
     if index < 3u {
-        return FacePoint(index, index, 0.0, false, z[index] >= 0.0);
+        return FacePoint(index, index, 0.0, false, false, z[index] >= 0.0);
     }
     let i = index - 3u;
     let j = (i + 1u) % 3u;
     let crosses = (z[i] < 0.0) != (z[j] < 0.0);
     let t = select(0.0, z[i] / (z[i] - z[j]), crosses);
-    return FacePoint(i, j, t, true, crosses);
+    return FacePoint(i, j, t, true, false, crosses);
 }
 
 // The end at corner i of the edge from corner i to corner j, cut at the near plane (clip z = 0;
-// wgpu's depth range is 0..w) when i is behind it; not kept when both are.
+// wgpu's depth range is 0..w) when i is behind it, or at the far plane (z = w) when it is
+// beyond, as Close2GL's clipping cuts it (the software rasterizer's rectangle runs from the cut
+// end, and its sides' rounding follows that end); not kept when both are past the same plane.
 fn edge_end(i: u32, j: u32, clips: array<vec4<f32>, 3>) -> FacePoint {
-    var z = array<f32, 3>(clips[0].z, clips[1].z, clips[2].z);
-    if z[i] >= 0.0 {
-        return FacePoint(i, i, 0.0, false, true);
+    var c = clips;
+    let zi = c[i].z;
+    let zj = c[j].z;
+    if zi < 0.0 {
+        return FacePoint(i, j, zi / (zi - zj), true, false, zj >= 0.0);
     }
-    return FacePoint(i, j, z[i] / (z[i] - z[j]), true, z[j] >= 0.0);
+    let fi = c[i].w - zi;
+    let fj = c[j].w - zj;
+    if fi < 0.0 {
+        return FacePoint(i, j, fi / (fi - fj), false, true, fj >= 0.0);
+    }
+    return FacePoint(i, i, 0.0, false, false, true);
 }
 
 // The clip position of `p`.
 fn point_clip(p: FacePoint, clips: array<vec4<f32>, 3>) -> vec4<f32> {
     var c = clips;
     var clip = mix(c[p.i], c[p.j], p.t);
+    // Exactly on the plane, as clipping puts it, not a rounding error past it.
     if p.near {
-        // Exactly on the plane, as clipping puts it, not a rounding error behind it.
         clip.z = 0.0;
+    }
+    if p.far {
+        clip.z = clip.w;
     }
     return clip;
 }
