@@ -3,7 +3,9 @@
 //! and points are the GPU's line and point lists where the device has the polygon-mode features
 //! (so the reference's polygon modes and these follow the same rules), and otherwise, as the
 //! reference draws its own there, the software rasterizer's one-pixel rectangles and squares as
-//! triangles, one instance a line or point (`pixel_shapes.wgsl`).
+//! triangles, one instance a line or point (`pixel_shapes.wgsl`): a line's rectangle drawn a
+//! little larger and its fragments kept where the software's exact rectangle covers their
+//! centres, so that no backend's sub-pixel snapping changes them.
 
 use bytemuck::{Pod, Zeroable};
 use close2gl_core::{Close2glFrame, Topology};
@@ -136,7 +138,7 @@ impl Close2glView {
             multisample: Default::default(),
             fragment: Some(wgpu::FragmentState {
                 module: &self.shader,
-                entry_point: Some("fs_main"),
+                entry_point: Some(feed.fragment_entry_point()),
                 compilation_options: Default::default(),
                 targets: &[Some(self.color_format.into())],
             }),
@@ -180,6 +182,14 @@ impl Feed {
         match self {
             Feed::Primitives(_) => "vs_main",
             Feed::Shapes { entry_point, .. } => entry_point,
+        }
+    }
+
+    /// A line's rectangle keeps only the fragments its exact rectangle covers (`fs_line`).
+    fn fragment_entry_point(self) -> &'static str {
+        match self {
+            Feed::Shapes { per_shape: 2, .. } => "fs_line",
+            _ => "fs_main",
         }
     }
 

@@ -4,7 +4,8 @@
 //! face, polygon mode and depth test) into an R32Uint target holding each fragment's mesh
 //! triangle index + 1 and an R32Float target holding its depth; one texel of each is read back.
 //! The index comes from a flat per-face attribute of an instanced draw (one instance a face, which
-//! is also how lines and points are drawn without polygon modes) rather than
+//! is also how lines and points are drawn without polygon modes, a line's fragments kept by the
+//! reference's own test, the override constants given to both stages) rather than
 //! WGSL's `primitive_index`: that builtin is an optional feature (Vulkan needs geometry shaders
 //! for it, WebGPU and older Metal GPUs lack it), and the reference's index buffer is reordered
 //! (zero-area triangles last), so a primitive index would need a table back to mesh order anyway.
@@ -232,7 +233,7 @@ fn create_pipeline(
         vertex: wgpu::VertexState {
             module: &shader,
             entry_point: Some("vs_main"),
-            compilation_options: options,
+            compilation_options: options.clone(),
             buffers: &[Some(wgpu::VertexBufferLayout {
                 array_stride: size_of::<IdFace>() as u64,
                 step_mode: wgpu::VertexStepMode::Instance,
@@ -251,7 +252,8 @@ fn create_pipeline(
         fragment: Some(wgpu::FragmentState {
             module: &shader,
             entry_point: Some("fs_main"),
-            compilation_options: Default::default(),
+            // A line's fragments are kept by the same constants' test as the reference's.
+            compilation_options: options,
             targets: &[Some(ID_FORMAT.into()), Some(DEPTH_OUT_FORMAT.into())],
         }),
         multiview_mask: None,

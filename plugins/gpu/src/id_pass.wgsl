@@ -15,6 +15,10 @@ struct Varyings {
     @builtin(position) clip: vec4<f32>,
     // The same on all three corners, so which corner provokes it does not matter.
     @location(0) @interpolate(flat) triangle: u32,
+    // A line drawn without polygon modes: its exact rectangle (`fragment_kept`).
+    @location(1) @interpolate(flat) line_ends: vec4<i32>,
+    @location(2) @interpolate(flat) line_across: vec2<i32>,
+    @location(3) window: vec3<f32>,
 }
 
 struct Probe {
@@ -42,10 +46,17 @@ fn vs_main(@builtin(vertex_index) index: u32, face: Face) -> Varyings {
     var out: Varyings;
     out.clip = face_clip(v, clips);
     out.triangle = face.triangle;
+    out.line_ends = v.line.ends;
+    out.line_across = v.line.across;
+    out.window = window_varying(out.clip, u.viewport.xy);
     return out;
 }
 
+// Lines drawn without polygon modes keep the fragments the reference keeps.
 @fragment
 fn fs_main(in: Varyings) -> Probe {
+    if !fragment_kept(in.line_ends, in.line_across, in.window) {
+        discard;
+    }
     return Probe(in.triangle + 1u, in.clip.z);
 }

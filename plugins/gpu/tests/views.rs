@@ -10,7 +10,11 @@ use close2gl_core::{
     App, Camera, Clipping, FrontFace, Image, Mesh, Overlay, RenderMode, RenderSettings, Scene,
     Shading, Texture, TextureFilter, Viewport,
 };
-use close2gl_gpu::{Gpu, OffscreenPlugin, Snapshot, probe_reference, render_offscreen};
+use close2gl_gpu::attachments::{READABLE_TARGET, texture_2d};
+use close2gl_gpu::{
+    DEPTH_FORMAT, Gpu, OFFSCREEN_FORMAT, OffscreenPlugin, Readback, Snapshot, Views,
+    probe_reference, render_offscreen, submit_pass, wgpu,
+};
 use close2gl_pipeline::Close2glPlugin;
 use close2gl_testkit::{gpu, sphere};
 
@@ -352,6 +356,65 @@ fn without_polygon_modes_the_probe_hits_what_the_reference_draws() {
             hits > 3 && misses > 3,
             "{mode:?}: {hits} hits, {misses} misses"
         );
+    }
+}
+
+/// A view's pixels (the reference's with its depth buffer, or Close2GL's) when the pass draws it
+/// into the rectangle at `origin` of a larger target, as the windows and the page draw each view:
+/// the rectangle's part, rows from the top.
+fn drawn_at(app: &App, origin: (u32, u32), reference: bool) -> Vec<[u8; 4]> {
+    let gpu = app.world().resource::<Gpu>();
+    let views = app.world().resource::<Views>();
+    let Viewport { width, height } = *app.world().resource::<Viewport>();
+    let size = (origin.0 + width, origin.1 + height);
+    let texture = |format, usage| texture_2d(&gpu.device, "placed view", size, format, usage);
+    let color = texture(OFFSCREEN_FORMAT, READABLE_TARGET);
+    let depth = texture(DEPTH_FORMAT, wgpu::TextureUsages::RENDER_ATTACHMENT);
+    let depth_view = depth.create_view(&Default::default());
+    let color_view = color.create_view(&Default::default());
+    let clear = wgpu::LoadOp::Clear(views.clear_color());
+    let depth = reference.then_some(&depth_view);
+    submit_pass(gpu, &color_view, depth, clear, |pass| {
+        let (x, y) = (origin.0 as f32, origin.1 as f32);
+        pass.set_viewport(x, y, width as f32, height as f32, 0.0, 1.0);
+        match reference {
+            true => views.draw_reference(pass),
+            false => views.draw_close2gl(pass),
+        }
+    });
+    let pixels = Readback::new(&gpu.device, size, 1)
+        .read(gpu, &[&color])
+        .expect("read back");
+    let rows = pixels[0].chunks(size.0 as usize).skip(origin.1 as usize);
+    rows.flat_map(|row| row[origin.0 as usize..].to_vec())
+        .collect()
+}
+
+/// Without the polygon modes a line's fragments are kept by their position in the view, not in
+/// the target: both GPU views draw the same pixels wherever the pass places them.
+#[test]
+fn without_polygon_modes_lines_are_the_same_wherever_the_view_is_placed() {
+    let bare = close2gl_testkit::gpu_without_polygon_modes();
+    let settings = RenderSettings {
+        mode: RenderMode::Wireframe,
+        ..Default::default()
+    };
+    let camera = camera_at(Vec3::new(0.3, 0.5, 3.0), Vec3::ZERO);
+    let mut app = app_on(
+        bare,
+        sphere(Vec3::ZERO, 1.0, 8, 16),
+        camera,
+        settings,
+        SMALL,
+    );
+    render_offscreen(&mut app).expect("render");
+    for reference in [true, false] {
+        let at_corner = drawn_at(&app, (0, 0), reference);
+        let background = at_corner[0];
+        let drawn = at_corner.iter().filter(|p| **p != background).count();
+        assert!(drawn > 100, "reference {reference}: {drawn} pixels drawn");
+        let placed = drawn_at(&app, (13, 7), reference);
+        assert!(at_corner == placed, "reference {reference}: moved");
     }
 }
 

@@ -4,7 +4,9 @@
 //! face is drawn as one instance carrying its three corners: its three edges as one-pixel
 //! rectangles or its corners (with those clipping adds on the near plane) as one-pixel squares,
 //! each two triangles (`pixel_shapes.wgsl`, the shapes Close2GL's software rasterizer draws, so
-//! that the triangle fill rule decides their pixels on every backend), with the depth test; and
+//! that the triangle fill rule decides their pixels on every backend; a line's rectangle drawn
+//! 1/8 pixel larger, its fragments kept where the software's exact rectangle covers their
+//! centres, so that no backend's sub-pixel snapping changes them), with the depth test; and
 //! culling, which the hardware would apply to each shape's triangles rather than to the face, is
 //! decided in the vertex shader from the face's clip positions (`kept_faces.wgsl`), so that the
 //! same faces are kept as OpenGL keeps.

@@ -49,6 +49,16 @@ struct Varyings {
     // 1 on a front face drawn as lines or points without polygon modes (where the builtin
     // front_facing is their shapes' own), 0 on a back one; 1 elsewhere.
     @location(4) @interpolate(flat) front: f32,
+    // A line drawn without polygon modes: its exact rectangle (`ExactLine`), outside which its
+    // fragments are discarded (`fragment_kept`); zero elsewhere.
+    @location(5) @interpolate(flat) line_ends: vec4<i32>,
+    @location(6) @interpolate(flat) line_across: vec2<i32>,
+    // Its fragment's window position (`window_varying`).
+    @location(7) window: vec3<f32>,
+}
+
+fn drawn(in: Varyings) -> bool {
+    return fragment_kept(in.line_ends, in.line_across, in.window);
 }
 
 // Normalises without producing NaN for a zero vector (a degenerate normal, a light on a vertex).
@@ -110,6 +120,9 @@ fn vs_face(@builtin(vertex_index) index: u32, face: Face) -> Varyings {
     var out = mix_varyings(first, shade_vertex(positions[p.j], normals[p.j], uvs[p.j]), p.t);
     out.front = select(0.0, 1.0, faces_front(clips[0], clips[1], clips[2]));
     out.clip = face_clip(v, clips);
+    out.line_ends = v.line.ends;
+    out.line_across = v.line.across;
+    out.window = window_varying(out.clip, u.viewport.xy);
     return out;
 }
 
@@ -147,6 +160,10 @@ fn fs_main(in: Varyings) -> @location(0) vec4<f32> {
     // derivatives pick the mip level). t grows upwards as in OpenGL, the texture's rows downwards.
     let texel = textureSample(tex, samp, vec2<f32>(in.uv.x, 1.0 - in.uv.y)).rgb;
     let modulation = mix(vec3<f32>(1.0), texel, u.texturing.x);
+    // Discarded after the sampling, which needs uniform control flow.
+    if !drawn(in) {
+        discard;
+    }
     return vec4<f32>(u.color.rgb * mix(vec3<f32>(1.0), light, lit) * modulation, 1.0);
 }
 
@@ -161,6 +178,9 @@ override FAILED_COLOR: u32 = 0u;
 // whichever way their corners' order makes them, not the face's way).
 @fragment
 fn fs_facing(in: Varyings, @builtin(front_facing) front: bool) -> @location(0) vec4<f32> {
+    if !drawn(in) {
+        discard;
+    }
     let facing = select(front, in.front > 0.5, SHAPES);
     let color = select(BACK_COLOR, FRONT_COLOR, facing);
     return vec4<f32>(unpack4x8unorm(color).rgb, 0.6);
@@ -168,6 +188,9 @@ fn fs_facing(in: Varyings, @builtin(front_facing) front: bool) -> @location(0) v
 
 // Fragments the depth test rejected (drawn with the test reversed): more layers, more colour.
 @fragment
-fn fs_depth_failed() -> @location(0) vec4<f32> {
+fn fs_depth_failed(in: Varyings) -> @location(0) vec4<f32> {
+    if !drawn(in) {
+        discard;
+    }
     return vec4<f32>(unpack4x8unorm(FAILED_COLOR).rgb, 0.35);
 }
