@@ -135,6 +135,37 @@ impl Declared {
             model: DMat4::IDENTITY,
         }
     }
+
+    /// What close2gl's own view declares with `settings` in `viewport`: its pixels (origin
+    /// top-left, y down), its culling, clipping and mode. [`Declared::onto`] goes back.
+    pub fn of_view(settings: &RenderSettings, viewport: Viewport) -> Self {
+        Self::new(
+            (viewport.width, viewport.height),
+            System2d::pixels(viewport.width, viewport.height),
+            settings.backface_culling.then_some(settings.front_face),
+            match settings.clipping {
+                Clipping::Simple => ClipRule::Simple,
+                Clipping::Full => ClipRule::Full,
+            },
+            settings.mode,
+        )
+    }
+
+    /// `settings` switched to this declaration's culling, clipping and mode: what close2gl's
+    /// view shows of a program that declares it (one that clips nothing, or divides first, is
+    /// shown with full clipping, the nearest close2gl draws).
+    pub fn onto(&self, settings: RenderSettings) -> RenderSettings {
+        RenderSettings {
+            mode: self.mode,
+            backface_culling: self.culling.is_some(),
+            front_face: self.culling.unwrap_or(FrontFace::Ccw),
+            clipping: match self.clip {
+                ClipRule::Simple => Clipping::Simple,
+                ClipRule::Full | ClipRule::Nothing | ClipRule::DivideFirst => Clipping::Full,
+            },
+            ..settings
+        }
+    }
 }
 
 /// A program's Close2GL: what it computes from a camera, with its mistakes.
@@ -213,16 +244,7 @@ impl Program {
         viewport: Viewport,
         mistakes: Mistakes,
     ) -> Self {
-        let declared = Declared::new(
-            (viewport.width, viewport.height),
-            System2d::pixels(viewport.width, viewport.height),
-            settings.backface_culling.then_some(settings.front_face),
-            match settings.clipping {
-                Clipping::Simple => ClipRule::Simple,
-                Clipping::Full => ClipRule::Full,
-            },
-            settings.mode,
-        );
+        let declared = Declared::of_view(settings, viewport);
         Program::new(&ProgramCamera::from(camera), declared, mistakes)
     }
 
@@ -255,6 +277,31 @@ mod tests {
     use super::*;
     use crate::{random_triangles, textbook};
     use glam::Vec3;
+
+    /// The view's switches become a declaration and come back unchanged, whichever they are.
+    #[test]
+    fn the_views_switches_go_to_a_declaration_and_back() {
+        let viewport = Viewport {
+            width: 64,
+            height: 48,
+        };
+        for i in 0..24 {
+            let settings = RenderSettings {
+                backface_culling: i % 2 == 0,
+                front_face: [FrontFace::Ccw, FrontFace::Cw][i / 2 % 2],
+                clipping: [Clipping::Simple, Clipping::Full][i / 4 % 2],
+                mode: [RenderMode::Solid, RenderMode::Wireframe, RenderMode::Points][i / 8],
+                ..RenderSettings::default()
+            };
+            let back = Declared::of_view(&settings, viewport).onto(RenderSettings::default());
+            let front = |s: &RenderSettings| s.backface_culling.then_some(s.front_face);
+            assert_eq!(
+                (front(&back), back.clipping, back.mode),
+                (front(&settings), settings.clipping, settings.mode),
+                "{i}"
+            );
+        }
+    }
 
     /// Without mistakes, the program is close2gl's pipeline: for random triangles around a
     /// camera (many cut by the near and side planes), the same fate as the textbook path, and

@@ -64,6 +64,13 @@ pub fn program_for(trace: &Trace, mistakes: Mistakes) -> Program {
 
 /// [`program_for`] testing the winding in `winding`.
 pub fn program_winding(trace: &Trace, mistakes: Mistakes, winding: WindingSpace) -> Program {
+    Program::new(&trace.camera, declared(trace, winding), mistakes)
+}
+
+/// What `trace` declares (its window, 2D system, culling, clipping, mode, planes and model
+/// matrix), testing the winding in `winding`: the one way a trace becomes what close2gl runs
+/// and what its view shows ([`Declared::onto`]).
+pub fn declared(trace: &Trace, winding: WindingSpace) -> Declared {
     let system = trace.ortho2d;
     let culling = match trace.culling {
         Culling::Off => None,
@@ -76,13 +83,12 @@ pub fn program_winding(trace: &Trace, mistakes: Mistakes, winding: WindingSpace)
         TraceClipping::None => ClipRule::Nothing,
     };
     let mode = trace.mode.unwrap_or(RenderMode::Solid);
-    let declared = Declared {
+    Declared {
         winding,
         planes: trace.planes,
         model: trace.model_matrix.unwrap_or(DMat4::IDENTITY),
         ..Declared::new(trace.window, system, culling, clip, mode)
-    };
-    Program::new(&trace.camera, declared, mistakes)
+    }
 }
 
 /// What a trace says about a model that is not a matter of its numbers: its triangle count and

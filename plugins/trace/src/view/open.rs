@@ -3,11 +3,12 @@
 use std::path::Path;
 
 use bevy_ecs::prelude::*;
-use close2gl_core::{Camera, Clipping, FrontFace, Mesh, Mistake, Rasterizer, RenderSettings};
+use close2gl_core::{Camera, Mesh, Mistake, Rasterizer, RenderSettings};
+use close2gl_pipeline::program::WindingSpace;
 
 use super::{Shown, TraceRequest, TraceView};
 use crate::check;
-use crate::format::{Culling, Trace, TraceClipping, read_trace};
+use crate::format::{Trace, read_trace};
 
 /// Serves a pending `TraceRequest` once a mesh is shown; a new mesh has the shown trace checked
 /// again (or refused, when it does not fit the new model). A trace that does not read or fit
@@ -76,17 +77,8 @@ pub fn trace_camera(trace: &Trace, camera: &Camera, mesh: &Mesh) -> Camera {
 pub fn trace_settings(trace: &Trace, settings: RenderSettings) -> RenderSettings {
     RenderSettings {
         mode: trace.mode.unwrap_or(settings.mode),
-        backface_culling: trace.culling != Culling::Off,
-        front_face: match trace.culling {
-            Culling::Cw => FrontFace::Cw,
-            _ => FrontFace::Ccw,
-        },
-        clipping: match trace.clipping {
-            TraceClipping::Simple => Clipping::Simple,
-            TraceClipping::Full | TraceClipping::None => Clipping::Full,
-        },
         close2gl_raster: Rasterizer::Gpu,
         mistake: Mistake::None,
-        ..settings
+        ..check::declared(trace, WindingSpace::Screen).onto(settings)
     }
 }
