@@ -379,7 +379,7 @@ pub fn pieces_by_triangle(trace: &Trace, triangles: usize) -> Vec<Vec<usize>> {
 }
 
 /// What one mesh triangle's comparison found.
-pub enum Verdict {
+pub enum TriangleVerdict {
     /// Both agree; `window`: both drew it (the window stage checked it), `depths`: how many of
     /// the trace's pieces gave depths that were checked.
     Agree { window: bool, depths: usize },
@@ -392,13 +392,13 @@ pub enum Verdict {
 }
 
 /// Judges mesh triangle `t`: close2gl's outcome `ours` against the trace's pieces for it.
-pub fn judge(
+pub fn judge_triangle(
     program: &Program,
     trace: &Trace,
     t: usize,
     ours: &Outcome,
     pieces: &[usize],
-) -> Verdict {
+) -> TriangleVerdict {
     let theirs: Vec<&[DVec2]> = pieces
         .iter()
         .map(|&i| trace.pieces[i].corners.as_slice())
@@ -440,7 +440,7 @@ impl OneTriangle<'_> {
     }
 
     /// Both drew it: in the same place (the window stage), at the same depths.
-    fn both_drew(&self) -> Verdict {
+    fn both_drew(&self) -> TriangleVerdict {
         let (t, ours) = (self.t, self.ours);
         if let Some(d) = region::compare(&ours.polygon, &ours.errors, &self.theirs) {
             return differs(Kind::Moved, moved(t, &d, self.line()), true, 0);
@@ -457,7 +457,7 @@ impl OneTriangle<'_> {
                 true,
                 checked,
             ),
-            None => Verdict::Agree {
+            None => TriangleVerdict::Agree {
                 window: true,
                 depths: checked,
             },
@@ -466,7 +466,7 @@ impl OneTriangle<'_> {
 
     /// close2gl drew it and the trace did not: culling's (front-facing, or inside with culling
     /// off) or clipping's; nothing when close2gl's piece is within rounding of nothing.
-    fn only_ours_drew(&self) -> Verdict {
+    fn only_ours_drew(&self) -> TriangleVerdict {
         let (t, ours) = (self.t, self.ours);
         if ours.near_a_plane || region::negligible(&ours.polygon, &ours.errors) {
             return AGREE;
@@ -498,7 +498,7 @@ impl OneTriangle<'_> {
 
     /// The trace drew it and close2gl did not: clipping's (outside, or behind the eye) or
     /// culling's; nothing when the trace's pieces are within rounding of nothing.
-    fn only_theirs_drew(&self) -> Verdict {
+    fn only_theirs_drew(&self) -> TriangleVerdict {
         let (t, ours) = (self.t, self.ours);
         let error = corner_error(self.program, ours);
         let visible = self
@@ -533,8 +533,8 @@ impl OneTriangle<'_> {
     }
 }
 
-fn differs(kind: Kind, detail: String, window: bool, depths: usize) -> Verdict {
-    Verdict::Differs {
+fn differs(kind: Kind, detail: String, window: bool, depths: usize) -> TriangleVerdict {
+    TriangleVerdict::Differs {
         kind,
         detail,
         window,
@@ -542,7 +542,7 @@ fn differs(kind: Kind, detail: String, window: bool, depths: usize) -> Verdict {
     }
 }
 
-const AGREE: Verdict = Verdict::Agree {
+const AGREE: TriangleVerdict = TriangleVerdict::Agree {
     window: false,
     depths: 0,
 };
@@ -572,9 +572,9 @@ fn drawn(
         );
     }
     for (t, ours) in expected.iter().enumerate() {
-        let (window, depths) = match judge(program, trace, t, ours, &pieces[t]) {
-            Verdict::Agree { window, depths } => (window, depths),
-            Verdict::Differs {
+        let (window, depths) = match judge_triangle(program, trace, t, ours, &pieces[t]) {
+            TriangleVerdict::Agree { window, depths } => (window, depths),
+            TriangleVerdict::Differs {
                 kind,
                 detail,
                 window,

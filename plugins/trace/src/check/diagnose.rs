@@ -82,8 +82,8 @@ fn reproduces(program: &Program, mesh: &Mesh, trace: &Trace, pieces: &[Vec<usize
     (0..mesh.triangles.len()).all(|t| {
         program.triangle(mesh, t).is_some_and(|ours| {
             matches!(
-                compare::judge(program, trace, t, &ours, &pieces[t]),
-                compare::Verdict::Agree { .. }
+                compare::judge_triangle(program, trace, t, &ours, &pieces[t]),
+                compare::TriangleVerdict::Agree { .. }
             )
         })
     })
