@@ -14,7 +14,7 @@ use close2gl::core::{
     App, CameraSpeeds, Clipping, FrontFace, Mesh, Rasterizer, RenderMode, RenderSettings, Shading,
     TextureFilter, Viewport,
 };
-use close2gl_core::parity::{ColorComparison, Comparison, coverage, diff_image};
+use close2gl_core::parity::{ColorComparison, CoverageComparison, coverage, diff_image};
 use close2gl_gpu::{Gpu, OffscreenPlugin, Snapshot, camera_matrices, render_offscreen};
 use close2gl_testkit::{camera_mut as camera, gpu, gpu_without_polygon_modes};
 
@@ -233,9 +233,14 @@ impl Needed {
 /// Renders `app`'s next frame, compares its two views and judges them against `needed`: the
 /// comparison and the snapshot, and one line naming the case when it fails (empty when it
 /// passes).
-fn render_and_judge(app: &mut App, case: &str, needed: Needed) -> (Comparison, Snapshot, String) {
+fn render_and_judge(
+    app: &mut App,
+    case: &str,
+    needed: Needed,
+) -> (CoverageComparison, Snapshot, String) {
     let snapshot = render_offscreen(app).expect("render");
-    let c = Comparison::of_images(&snapshot.reference, &snapshot.close2gl, snapshot.background);
+    let c =
+        CoverageComparison::of_images(&snapshot.reference, &snapshot.close2gl, snapshot.background);
     let failure = judge(case, &snapshot, &c, needed);
     (c, snapshot, failure)
 }
@@ -318,7 +323,7 @@ fn check_scene(run: Run, label: &str, model: &str, overrides: &[&str]) -> String
 /// below `needed` (or, with `None`, any pixel only Close2GL covers), or colours within 2/255 on
 /// less than its share of the pixels both cover; or when neither view covers a single pixel,
 /// unless `needed` allows it. Nothing when they agree.
-fn judge(case: &str, snapshot: &Snapshot, c: &Comparison, needed: Needed) -> String {
+fn judge(case: &str, snapshot: &Snapshot, c: &CoverageComparison, needed: Needed) -> String {
     if c.covered_pixels == 0 {
         return match needed.blank_allowed {
             true => String::new(),
@@ -767,7 +772,7 @@ fn check_report(out: &Path) {
     let (reference, close2gl) = (image("reference.png"), image("close2gl.png"));
     let diff = image("diff.png");
     let background = to_background(&report["background"]);
-    let c = Comparison::of_images(&reference, &close2gl, background);
+    let c = CoverageComparison::of_images(&reference, &close2gl, background);
     assert_eq!(report["mismatched_pixels"], c.mismatched_pixels);
     assert_eq!(report["coverage_agreement"], c.coverage_agreement);
     assert_eq!(report["size"], serde_json::json!([160, 120]));
@@ -893,8 +898,8 @@ fn a_one_degree_drift_between_the_views_fails_the_threshold() {
         });
     let after = render_offscreen(&mut app).expect("render");
     let bg = before.background;
-    let same = Comparison::of_images(&before.reference, &before.close2gl, bg);
-    let drifted = Comparison::of_images(&before.reference, &after.close2gl, bg);
+    let same = CoverageComparison::of_images(&before.reference, &before.close2gl, bg);
+    let drifted = CoverageComparison::of_images(&before.reference, &after.close2gl, bg);
     assert!(same.coverage_agreement >= 0.999, "{same:?}");
     assert!(drifted.coverage_agreement < 0.99, "{drifted:?}");
 }
@@ -1008,8 +1013,11 @@ fn trilinear_filtering_leaves_no_moire_on_a_grazing_checkerboard() {
             energy.push(far_half_energy(image, snapshot.background));
         }
         if filter == TextureFilter::Trilinear {
-            let c =
-                Comparison::of_images(&snapshot.reference, &snapshot.close2gl, snapshot.background);
+            let c = CoverageComparison::of_images(
+                &snapshot.reference,
+                &snapshot.close2gl,
+                snapshot.background,
+            );
             let needed = Needed::SOFTWARE.colours(0.95);
             let failure = judge("moire_trilinear", &snapshot, &c, needed);
             assert!(failure.is_empty(), "{failure}");
@@ -1068,7 +1076,11 @@ fn a_blank_close2gl_image_fails_the_parity_helper() {
             close2gl: blank.clone(),
             ..snapshot.clone()
         };
-        let c = Comparison::of_images(&blanked.reference, &blanked.close2gl, blanked.background);
+        let c = CoverageComparison::of_images(
+            &blanked.reference,
+            &blanked.close2gl,
+            blanked.background,
+        );
         judge("blank_check", &blanked, &c, needed)
     };
     assert!(

@@ -9,7 +9,7 @@ use std::path::{Path, PathBuf};
 use std::process::Command;
 use std::time::{Duration, Instant};
 
-use close2gl_core::parity::Comparison;
+use close2gl_core::parity::CoverageComparison;
 use close2gl_gpu::Image;
 use common::{
     APP_TIMEOUT, TempDir, Xvfb, assert_one_triangle_highlighted, finish, run_app, spawn_app,
@@ -86,7 +86,7 @@ fn assert_same_pixels(what: &str, window: &Image, rendered: &Image) {
         "{what}: sizes"
     );
     let [r, g, b, _] = window.pixel(0, 0);
-    let comparison = Comparison::of_images(window, rendered, [r, g, b]);
+    let comparison = CoverageComparison::of_images(window, rendered, [r, g, b]);
     let differing = window
         .pixels
         .iter()

@@ -5,7 +5,7 @@ use std::f32::consts::TAU;
 use std::path::{Path, PathBuf};
 
 use bevy_ecs::prelude::DetectChangesMut;
-use close2gl_core::parity::{ColorComparison, Comparison, diff_image};
+use close2gl_core::parity::{ColorComparison, CoverageComparison, diff_image};
 use close2gl_core::{App, Camera, CameraAction, CameraActions, Fates, OutsideView, RecordFates};
 use close2gl_gpu::outside::render_outside;
 use close2gl_gpu::{Gpu, OffscreenPlugin, Snapshot, parse_backends, render_offscreen};
@@ -187,7 +187,7 @@ fn median(mut values: Vec<f64>) -> f64 {
 /// Writes the three images of one pose and returns its report; the caller adds the times.
 fn write_pose(dir: &Path, suffix: &str, snapshot: &Snapshot, gpu: &Gpu) -> Result<Value, CliError> {
     let comparison =
-        Comparison::of_images(&snapshot.reference, &snapshot.close2gl, snapshot.background);
+        CoverageComparison::of_images(&snapshot.reference, &snapshot.close2gl, snapshot.background);
     let colors =
         ColorComparison::of_images(&snapshot.reference, &snapshot.close2gl, snapshot.background);
     let diff = diff_image(&snapshot.reference, &snapshot.close2gl, snapshot.background);

@@ -20,7 +20,7 @@ pub fn coverage(image: &Image, background: [u8; 3]) -> Vec<bool> {
 
 /// The coverage of two images of one scene compared.
 #[derive(Clone, Debug, PartialEq)]
-pub struct Comparison {
+pub struct CoverageComparison {
     /// Pixels covered in one image and not in the other.
     pub mismatched_pixels: usize,
     /// Pixels covered in either image.
@@ -33,8 +33,8 @@ pub struct Comparison {
     pub coverage_agreement: f64,
 }
 
-impl Comparison {
-    pub fn new(first: &[bool], second: &[bool]) -> Comparison {
+impl CoverageComparison {
+    pub fn new(first: &[bool], second: &[bool]) -> CoverageComparison {
         let (mut only_first, mut only_second, mut covered) = (0, 0, 0);
         for (&a, &b) in first.iter().zip(second) {
             covered += usize::from(a || b);
@@ -47,7 +47,7 @@ impl Comparison {
         } else {
             1.0 - mismatched as f64 / covered as f64
         };
-        Comparison {
+        CoverageComparison {
             mismatched_pixels: mismatched,
             covered_pixels: covered,
             only_first,
@@ -57,8 +57,8 @@ impl Comparison {
     }
 
     /// Compares the coverage of two images of the same size against one background colour.
-    pub fn of_images(first: &Image, second: &Image, background: [u8; 3]) -> Comparison {
-        Comparison::new(&coverage(first, background), &coverage(second, background))
+    pub fn of_images(first: &Image, second: &Image, background: [u8; 3]) -> CoverageComparison {
+        CoverageComparison::new(&coverage(first, background), &coverage(second, background))
     }
 }
 
@@ -145,7 +145,7 @@ mod tests {
     fn agreement_counts_mismatches_over_pixels_covered_in_either() {
         let a = image(&[true, true, true, false, false]);
         let b = image(&[true, true, false, true, false]);
-        let c = Comparison::of_images(&a, &b, BG);
+        let c = CoverageComparison::of_images(&a, &b, BG);
         assert_eq!(
             (c.only_first, c.only_second, c.mismatched_pixels),
             (1, 1, 2)
@@ -158,12 +158,12 @@ mod tests {
     fn nothing_covered_scores_zero_and_identical_coverage_scores_one() {
         let empty = image(&[false; 4]);
         assert_eq!(
-            Comparison::of_images(&empty, &empty, BG).coverage_agreement,
+            CoverageComparison::of_images(&empty, &empty, BG).coverage_agreement,
             0.0
         );
         let full = image(&[true, false, true, true]);
         assert_eq!(
-            Comparison::of_images(&full, &full, BG).coverage_agreement,
+            CoverageComparison::of_images(&full, &full, BG).coverage_agreement,
             1.0
         );
     }

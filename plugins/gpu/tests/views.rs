@@ -5,7 +5,7 @@ use std::path::PathBuf;
 
 use close2gl_core::bevy_ecs::change_detection::DetectChangesMut;
 use close2gl_core::glam::{Vec2, Vec3};
-use close2gl_core::parity::{Comparison, ONLY_REFERENCE, coverage, diff_image, to_rgb8};
+use close2gl_core::parity::{CoverageComparison, ONLY_REFERENCE, coverage, diff_image, to_rgb8};
 use close2gl_core::{
     App, Camera, Clipping, FrontFace, Image, Mesh, Overlay, RenderMode, RenderSettings, Scene,
     Shading, Texture, TextureFilter, Viewport,
@@ -47,9 +47,9 @@ fn camera_at(position: Vec3, target: Vec3) -> Camera {
 }
 
 /// Compares both views; on failure writes them and the diff under target/gpu-views/<case>/.
-fn check(case: &str, snapshot: &Snapshot, threshold: f64) -> Comparison {
+fn check(case: &str, snapshot: &Snapshot, threshold: f64) -> CoverageComparison {
     let comparison =
-        Comparison::of_images(&snapshot.reference, &snapshot.close2gl, snapshot.background);
+        CoverageComparison::of_images(&snapshot.reference, &snapshot.close2gl, snapshot.background);
     if comparison.coverage_agreement < threshold {
         let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR"))
             .join("../../target/gpu-views")
@@ -136,7 +136,7 @@ fn a_model_behind_the_camera_leaves_both_views_background_and_scores_zero() {
         assert!(image.pixels.iter().all(|p| p[..3] == background));
     }
     let comparison =
-        Comparison::of_images(&snapshot.reference, &snapshot.close2gl, snapshot.background);
+        CoverageComparison::of_images(&snapshot.reference, &snapshot.close2gl, snapshot.background);
     assert_eq!(comparison.covered_pixels, 0);
     assert_eq!(comparison.coverage_agreement, 0.0);
     assert_eq!(snapshot.counts.drawn, 0);
