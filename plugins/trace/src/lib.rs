@@ -20,8 +20,8 @@ use close2gl_core::{
 use view::{TraceRequest, TraceView, load_requested_trace, show_trace};
 
 pub use format::{
-    Axis, CameraLines, ClipLine, Culling, FormatError, Motion, Piece, Scene, SceneCamera, System2d,
-    Trace, TraceClipping, parse_scene, parse_trace, read_scene, read_trace,
+    Axis, CameraLines, ClipLine, Culling, FormatError, Motion, Piece, SceneCamera, SceneFile,
+    System2d, Trace, TraceClipping, parse_scene, parse_trace, read_scene, read_trace,
 };
 
 /// Reads requested traces (in `FrameSet::Close2gl`, before the pipeline: after the framing of a

@@ -18,7 +18,7 @@ mod write;
 /// read straight into the pipeline's own type.
 pub use close2gl_pipeline::program::System2d;
 pub use output::{ClipLine, Piece};
-pub use scene::{Motion, Scene, SceneCamera, parse_scene, read_scene};
+pub use scene::{Motion, SceneCamera, SceneFile, parse_scene, read_scene};
 pub use syntax::FormatError;
 pub use trace::{Trace, parse_trace, read_trace};
 

@@ -38,10 +38,10 @@ pub enum Motion {
 
 /// One scene file.
 #[derive(Clone, Debug, PartialEq)]
-pub struct Scene {
+pub struct SceneFile {
     /// The label errors and messages name the file by.
     pub file: String,
-    /// The model's path as written: relative to the scene file's folder ([`Scene::model_path`]).
+    /// The model's path as written: relative to the scene file's folder ([`SceneFile::model_path`]).
     pub model: String,
     pub window: (u32, u32),
     pub camera: SceneCamera,
@@ -53,7 +53,7 @@ pub struct Scene {
     pub motions: Vec<Motion>,
 }
 
-impl Scene {
+impl SceneFile {
     /// The model file for a scene read from `scene_file`: relative to its folder, an absolute
     /// path as it is (`Path::join` keeps an absolute one whole).
     pub fn model_path(&self, scene_file: &Path) -> PathBuf {
@@ -63,7 +63,7 @@ impl Scene {
 }
 
 /// Reads a scene from `text`; `file` labels its errors.
-pub fn parse_scene(text: &str, file: &str) -> Result<Scene, FormatError> {
+pub fn parse_scene(text: &str, file: &str) -> Result<SceneFile, FormatError> {
     let mut lines = records(text, file);
     let ends = Ends {
         format: Format::Scene,
@@ -79,7 +79,7 @@ pub fn parse_scene(text: &str, file: &str) -> Result<Scene, FormatError> {
 }
 
 /// Reads the scene file at `path`, labelled as the path is given.
-pub fn read_scene(path: &Path) -> Result<Scene, FormatError> {
+pub fn read_scene(path: &Path) -> Result<SceneFile, FormatError> {
     let (text, file) = read::text(path)?;
     parse_scene(&text, &file)
 }
@@ -145,7 +145,7 @@ impl Reader {
         Ok(false)
     }
 
-    fn finish(self, ends: &Ends) -> Result<Scene, FormatError> {
+    fn finish(self, ends: &Ends) -> Result<SceneFile, FormatError> {
         let common = self.common;
         let (model, _) = common
             .model
@@ -166,7 +166,7 @@ impl Reader {
             }
             (None, Err(i)) => return Err(ends.without(&format!("'{}'", shape(i)))),
         };
-        Ok(Scene {
+        Ok(SceneFile {
             file: ends.file.to_string(),
             model,
             window,

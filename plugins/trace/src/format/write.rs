@@ -2,7 +2,7 @@
 //! spelling (`{:?}`: `0.1`, `-0.0`, `1e-7`, `1e300`), which C's `strtod` and this crate's reader
 //! both take, so reading the text back gives the same bits.
 //!
-//! Only values the readers can produce write a file that reads back: a `Trace` or `Scene` made
+//! Only values the readers can produce write a file that reads back: a `Trace` or `SceneFile` made
 //! by hand with a NaN, a `Piece` of 2 corners or a model name holding a blank or `#` does not. The `line`
 //! fields read back as the lines of the written text.
 
@@ -14,7 +14,7 @@ use close2gl_pipeline::program::{ClipPlanes, WindingSpace};
 use super::camera_lines::LINES;
 use super::magic::Format;
 use super::output::MATRIX_NAMES;
-use super::{CameraLines, Culling, Motion, Piece, Scene, SceneCamera, Trace, TraceClipping};
+use super::{CameraLines, Culling, Motion, Piece, SceneCamera, SceneFile, Trace, TraceClipping};
 
 impl Trace {
     /// This trace as a `close2gl-trace 1` file, every line it holds written out (the defaults
@@ -56,7 +56,7 @@ impl Trace {
     }
 }
 
-impl Scene {
+impl SceneFile {
     /// This scene as a `close2gl-scene 1` file, ending with `end`.
     pub fn to_text(&self) -> String {
         let mut text = Text::new(Format::Scene);

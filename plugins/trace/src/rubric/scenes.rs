@@ -15,7 +15,7 @@ use glam::DVec3;
 
 use super::expected_motion::Pose;
 use super::lines::LineId;
-use crate::format::{Axis, CameraLines, Culling, Motion, Scene, SceneCamera, TraceClipping};
+use crate::format::{Axis, CameraLines, Culling, Motion, SceneCamera, SceneFile, TraceClipping};
 
 /// One scene of the rubric: its id (`cube/translation-move-u+`), the lines it counts for
 /// (`synchronized` is every scene's), and the scene file's values.
@@ -23,7 +23,7 @@ use crate::format::{Axis, CameraLines, Culling, Motion, Scene, SceneCamera, Trac
 pub struct RubricScene {
     pub id: String,
     pub lines: Vec<LineId>,
-    pub scene: Scene,
+    pub scene: SceneFile,
 }
 
 /// The fraction of the narrower field of view the model's bounding sphere fills in the scenes
@@ -129,7 +129,7 @@ pub fn scenes(stem: &str, model_file: &str, mesh: &Mesh) -> Vec<RubricScene> {
         lines.push(LineId::Synchronized);
         let id = format!("{stem}/{name}");
         RubricScene {
-            scene: Scene {
+            scene: SceneFile {
                 file: id.clone(),
                 model: model_file.to_string(),
                 window,

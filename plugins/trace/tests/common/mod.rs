@@ -9,7 +9,7 @@ use std::collections::HashSet;
 use close2gl_core::{NamedEnum, RenderMode};
 use close2gl_pipeline::program::{ClipPlanes, WindingSpace};
 use close2gl_trace::{
-    Axis, CameraLines, ClipLine, Culling, Motion, Piece, Scene, SceneCamera, System2d, Trace,
+    Axis, CameraLines, ClipLine, Culling, Motion, Piece, SceneCamera, SceneFile, System2d, Trace,
     TraceClipping, parse_scene, parse_trace,
 };
 use glam::{DMat4, DVec2, DVec3, DVec4};
@@ -259,7 +259,7 @@ fn motion() -> impl Strategy<Value = Motion> {
 }
 
 /// Any scene the reader can produce.
-pub fn scene() -> impl Strategy<Value = Scene> {
+pub fn scene() -> impl Strategy<Value = SceneFile> {
     (
         name(),
         window(),
@@ -271,7 +271,7 @@ pub fn scene() -> impl Strategy<Value = Scene> {
         prop::collection::vec(motion(), 0..8),
     )
         .prop_map(
-            |(model, window, camera, culling, clipping, mode, lookat, motions)| Scene {
+            |(model, window, camera, culling, clipping, mode, lookat, motions)| SceneFile {
                 file: "random.scene".to_string(),
                 model,
                 window,

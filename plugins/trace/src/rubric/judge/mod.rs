@@ -34,7 +34,7 @@ use super::lines::LineId;
 use super::scenes::RubricScene;
 use crate::check::compare::{Comparison, Stage, StageResult, Status, number};
 use crate::check::{Report, program_for};
-use crate::format::{CameraLines, Culling, Scene, SceneCamera, Trace, TraceClipping};
+use crate::format::{CameraLines, Culling, SceneCamera, SceneFile, Trace, TraceClipping};
 pub use final_camera::{Turn, settle_rotations};
 
 /// How far a unit axis may be from the expected one: far above float32 rounding, far below
@@ -100,7 +100,7 @@ pub fn judge(
 }
 
 struct Judge<'a> {
-    scene: &'a Scene,
+    scene: &'a SceneFile,
     start: CameraLines,
     mesh: &'a Mesh,
     trace: &'a Trace,
