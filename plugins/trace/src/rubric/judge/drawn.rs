@@ -2,7 +2,7 @@
 //! own geometry, the fields of view, resizing, and the whole frame for `synchronized`.
 
 use close2gl_core::FrontFace;
-use close2gl_pipeline::program::{CullRule, Outcome};
+use close2gl_pipeline::program::{CullRule, Outcome, Program};
 use glam::{DMat4, DVec2};
 
 use super::{Judge, Verdict, drew_nothing, required, stage_verdict, stages_agree};
@@ -48,27 +48,37 @@ impl Judge<'_> {
         if !self.trace.gives_output() {
             return drew_nothing(&program.frame(self.mesh), "its own clip coordinates show");
         }
-        let either = [FrontFace::Ccw, FrontFace::Cw].map(|front| {
-            let mut culling = program;
-            culling.declared.culling = Some(front);
-            culling.cull = CullRule::Winding(front);
-            culling
-        });
-        let judged = [program, either[0], either[1]].map(|program| {
-            let comparison =
-                compare::compare(&program, self.mesh, self.trace, &program.frame(self.mesh));
-            let verdict = stages_agree(&comparison, &[Stage::Clipping]);
-            match comparison
-                .triangles
-                .iter()
-                .find(|(kind, _)| matches!(kind, Kind::InsideNotDrawn | Kind::FrontCulled))
-            {
-                Some(_) if verdict.passed => stage_verdict(comparison.stage(Stage::Culling)),
-                _ => verdict,
-            }
-        });
-        let [first, ..] = &judged;
-        judged.iter().find(|v| v.passed).unwrap_or(first).clone()
+        let declared = self.clipping_with(&program);
+        if declared.passed {
+            return declared;
+        }
+        // Only a trace that fails with its declared culling is tried with either front face.
+        [FrontFace::Ccw, FrontFace::Cw]
+            .into_iter()
+            .map(|front| {
+                let mut culling = program;
+                culling.declared.culling = Some(front);
+                culling.cull = CullRule::Winding(front);
+                self.clipping_with(&culling)
+            })
+            .find(|v| v.passed)
+            .unwrap_or(declared)
+    }
+
+    /// Clipping as `program` culls: its clipping stage agrees, and nothing inside the view
+    /// volume that it draws was left out.
+    fn clipping_with(&self, program: &Program) -> Verdict {
+        let comparison =
+            compare::compare(program, self.mesh, self.trace, &program.frame(self.mesh));
+        let verdict = stages_agree(&comparison, &[Stage::Clipping]);
+        let left_out = comparison
+            .triangles
+            .iter()
+            .any(|(kind, _)| matches!(kind, Kind::InsideNotDrawn | Kind::FrontCulled));
+        match left_out && verdict.passed {
+            true => stage_verdict(comparison.stage(Stage::Culling)),
+            false => verdict,
+        }
     }
 
     /// hfov (row 0) or vfov (row 1): P's row, and the frame's width (height) in NDC.
