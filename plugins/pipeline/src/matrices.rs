@@ -1,59 +1,187 @@
 //! The three matrices of the assignment, written out entry by entry: glam only holds the numbers.
 //! Each is given row by row, as in the textbook, and transposed into glam's column-major storage.
+//! Each is written once, in either precision ([`Real`]): f32 for Close2GL's own frame, f64 for
+//! a student's program as `check` recomputes it, where a classic mistake ([`Mistakes`]) may
+//! change an entry. Close2GL's own frame makes none.
 
-use close2gl_core::Camera;
-use glam::{Mat4, Vec3, Vec4};
+use std::ops::{Add, Div, Mul, Neg, Sub};
 
-/// A matrix from its rows, so the code below reads like the printed matrices.
-fn from_rows(rows: [[f32; 4]; 4]) -> Mat4 {
-    Mat4::from_cols_array_2d(&rows).transpose()
+use close2gl_core::{Camera, Mistake};
+use glam::{DMat4, Mat4, Vec3, Vec4};
+
+use crate::mistakes::Mistakes;
+
+/// The two precisions M, P and V are built in.
+pub trait Real:
+    Copy
+    + Add<Output = Self>
+    + Sub<Output = Self>
+    + Mul<Output = Self>
+    + Div<Output = Self>
+    + Neg<Output = Self>
+{
+    const ZERO: Self;
+    const ONE: Self;
+    const HALF: Self;
+    const TWO: Self;
+    /// glam's 4×4 matrix of this precision.
+    type Mat4;
+    fn tan(self) -> Self;
+    fn to_radians(self) -> Self;
+    /// A matrix from its rows, so the code reads like the printed matrices.
+    fn from_rows(rows: [[Self; 4]; 4]) -> Self::Mat4;
+}
+
+impl Real for f32 {
+    const ZERO: Self = 0.0;
+    const ONE: Self = 1.0;
+    const HALF: Self = 0.5;
+    const TWO: Self = 2.0;
+    type Mat4 = Mat4;
+    fn tan(self) -> Self {
+        f32::tan(self)
+    }
+    fn to_radians(self) -> Self {
+        f32::to_radians(self)
+    }
+    fn from_rows(rows: [[Self; 4]; 4]) -> Mat4 {
+        Mat4::from_cols_array_2d(&rows).transpose()
+    }
+}
+
+impl Real for f64 {
+    const ZERO: Self = 0.0;
+    const ONE: Self = 1.0;
+    const HALF: Self = 0.5;
+    const TWO: Self = 2.0;
+    type Mat4 = DMat4;
+    fn tan(self) -> Self {
+        f64::tan(self)
+    }
+    fn to_radians(self) -> Self {
+        f64::to_radians(self)
+    }
+    fn from_rows(rows: [[Self; 4]; 4]) -> DMat4 {
+        DMat4::from_cols_array_2d(&rows).transpose()
+    }
+}
+
+fn dot<S: Real>(a: [S; 3], b: [S; 3]) -> S {
+    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+}
+
+fn transposed<S: Real>(rows: [[S; 4]; 4]) -> [[S; 4]; 4] {
+    std::array::from_fn(|r| std::array::from_fn(|c| rows[c][r]))
 }
 
 /// M: world → camera coordinates, from the camera's u, v, n and centre of projection c
-/// (Hill, matrix 7.2, with the corrected 1 in the corner): rows u, v, n, and d = -c·(u, v, n).
-pub fn modelview(camera: &Camera) -> Mat4 {
-    let (u, v, n, c) = (camera.u, camera.v, camera.n, camera.position);
-    from_rows([
-        [u.x, u.y, u.z, -c.dot(u)],
-        [v.x, v.y, v.z, -c.dot(v)],
-        [n.x, n.y, n.z, -c.dot(n)],
-        [0.0, 0.0, 0.0, 1.0],
-    ])
-}
-
-/// The window of the near plane, recovered from the two fields of view:
-/// right = near·tan(hfov/2), top = near·tan(vfov/2), left = -right, bottom = -top.
-pub fn frustum_bounds(hfov_deg: f32, vfov_deg: f32, near: f32) -> (f32, f32, f32, f32) {
-    let right = near * (hfov_deg.to_radians() * 0.5).tan();
-    let top = near * (vfov_deg.to_radians() * 0.5).tan();
-    (-right, right, -top, top)
+/// (Hill, matrix 7.2, with the corrected 1 in the corner): rows u, v, n, and d = -c·(u, v, n);
+/// or what the mistakes make of it.
+pub fn modelview_of<S: Real>([u, v, n]: [[S; 3]; 3], c: [S; 3], mistakes: Mistakes) -> S::Mat4 {
+    let mut d = match mistakes.has(Mistake::TranslationUnrotated) {
+        true => c.map(|x| -x),
+        false => [-dot(c, u), -dot(c, v), -dot(c, n)],
+    };
+    if mistakes.has(Mistake::TranslationSign) {
+        d = d.map(|x| -x);
+    }
+    let o = S::ZERO;
+    let rows = [
+        [u[0], u[1], u[2], d[0]],
+        [v[0], v[1], v[2], d[1]],
+        [n[0], n[1], n[2], d[2]],
+        [o, o, o, S::ONE],
+    ];
+    S::from_rows(match mistakes.has(Mistake::ModelviewTransposed) {
+        true => transposed(rows),
+        false => rows,
+    })
 }
 
 /// P: camera coordinates → clip coordinates (the OpenGL red book's glFrustum matrix), mapping the
-/// view volume to the normalized cube |x|, |y|, |z| <= w.
-pub fn projection(hfov_deg: f32, vfov_deg: f32, near: f32, far: f32) -> Mat4 {
-    let (l, r, b, t) = frustum_bounds(hfov_deg, vfov_deg, near);
-    let (n, f) = (near, far);
-    from_rows([
-        [2.0 * n / (r - l), 0.0, (r + l) / (r - l), 0.0],
-        [0.0, 2.0 * n / (t - b), (t + b) / (t - b), 0.0],
-        [0.0, 0.0, -(f + n) / (f - n), -2.0 * f * n / (f - n)],
-        [0.0, 0.0, -1.0, 0.0],
+/// view volume to the normalized cube |x|, |y|, |z| <= w. The window of the near plane comes from
+/// the two fields of view: right = near·tan(hfov/2), top = near·tan(vfov/2), left = -right,
+/// bottom = -top, so that 2n/(r − l) = n/r and (r + l)/(r − l) = 0. Or what the mistakes make
+/// of those extents and of the depth row.
+pub fn projection_of<S: Real>(
+    [hfov, vfov]: [S; 2],
+    [near, far]: [S; 2],
+    mistakes: Mistakes,
+) -> S::Mat4 {
+    use Mistake::{AspectFromAngles, DepthRowSign, FovInDegrees, FovNotHalved, FovsSwapped};
+    let (h, v) = match mistakes.has(FovsSwapped) {
+        true => (vfov, hfov),
+        false => (hfov, vfov),
+    };
+    let half_angle = |degrees: S| {
+        let radians = match mistakes.has(FovInDegrees) {
+            true => degrees,
+            false => degrees.to_radians(),
+        };
+        match mistakes.has(FovNotHalved) {
+            true => radians,
+            false => radians * S::HALF,
+        }
+    };
+    let top = near * half_angle(v).tan();
+    let right = match mistakes.has(AspectFromAngles) {
+        true => top * h / v,
+        false => near * half_angle(h).tan(),
+    };
+    let o = S::ZERO;
+    let mut depth = [
+        -(far + near) / (far - near),
+        -S::TWO * far * near / (far - near),
+    ];
+    if mistakes.has(DepthRowSign) {
+        depth = depth.map(|x| -x);
+    }
+    S::from_rows([
+        [near / right, o, o, o],
+        [o, near / top, o, o],
+        [o, o, depth[0], depth[1]],
+        [o, o, -S::ONE, o],
     ])
 }
 
-/// V: the normalized image plane [-1, 1]² → window pixels [0, width] × [0, height], and the
-/// normalized depth [-1, 1] → the depth range [0, 1] (glDepthRange's default, and the range of
-/// the reference's depth buffer). The window's origin is its top-left corner with y growing
-/// downwards (as every window system and wgpu count pixels), so y is scaled by -height/2: the top
-/// of the image plane (+1) lands on row 0.
-pub fn viewport(width: f32, height: f32) -> Mat4 {
-    from_rows([
-        [width / 2.0, 0.0, 0.0, width / 2.0],
-        [0.0, -height / 2.0, 0.0, height / 2.0],
-        [0.0, 0.0, 0.5, 0.5],
-        [0.0, 0.0, 0.0, 1.0],
+/// V: the normalized image plane [-1, 1]² → the 2D system's L R B T (`gluOrtho2D`'s),
+/// x' = x·(R−L)/2 + (R+L)/2, y' = y·(T−B)/2 + (T+B)/2, and the normalized depth [-1, 1] → the
+/// depth range [0, 1] (glDepthRange's default, and the range of the reference's depth buffer).
+/// Or what the mistakes make of the scales.
+pub fn viewport_of<S: Real>([left, right, bottom, top]: [S; 4], mistakes: Mistakes) -> S::Mat4 {
+    let half = match mistakes.has(Mistake::ViewportFullScale) {
+        true => S::ONE,
+        false => S::HALF,
+    };
+    let mut y_scale = (top - bottom) * half;
+    if mistakes.has(Mistake::ViewportYFlipped) {
+        y_scale = -y_scale;
+    }
+    let o = S::ZERO;
+    S::from_rows([
+        [(right - left) * half, o, o, (right + left) / S::TWO],
+        [o, y_scale, o, (top + bottom) / S::TWO],
+        [o, o, S::HALF, S::HALF],
+        [o, o, o, S::ONE],
     ])
+}
+
+/// Close2GL's M (f32, no mistake).
+pub fn modelview(camera: &Camera) -> Mat4 {
+    let axes = [camera.u, camera.v, camera.n].map(|axis| axis.to_array());
+    modelview_of(axes, camera.position.to_array(), Mistakes::NONE)
+}
+
+/// Close2GL's P (f32, no mistake).
+pub fn projection(hfov_deg: f32, vfov_deg: f32, near: f32, far: f32) -> Mat4 {
+    projection_of([hfov_deg, vfov_deg], [near, far], Mistakes::NONE)
+}
+
+/// Close2GL's V (f32, no mistake): its 2D buffer is window pixels [0, width] × [0, height]
+/// with the origin at the top-left corner and y growing downwards (as every window system and
+/// wgpu count pixels), `gluOrtho2D(0, W, H, 0)`: the top of the image plane (+1) lands on row 0.
+pub fn viewport(width: f32, height: f32) -> Mat4 {
+    viewport_of([0.0, width, height, 0.0], Mistakes::NONE)
 }
 
 /// The camera's P·M (why not M·P? M acts first on the point, so it stands on the right).
@@ -161,8 +289,9 @@ mod tests {
             let aspect = (hfov.to_radians() / 2.0).tan() / (vfov.to_radians() / 2.0).tan();
             let p = projection(hfov, vfov, near, far);
             assert_close(p, opengl::perspective(vfov.to_radians(), aspect, near, far));
-            let (l, r, b, t) = frustum_bounds(hfov, vfov, near);
-            assert_close(p, opengl::frustum(l, r, b, t, near, far));
+            let r = near * (hfov.to_radians() / 2.0).tan();
+            let t = near * (vfov.to_radians() / 2.0).tan();
+            assert_close(p, opengl::frustum(-r, r, -t, t, near, far));
         }
     }
 

@@ -7,7 +7,7 @@
 mod common;
 
 use close2gl_core::{Mesh, ModelSource, PrimitiveParams};
-use close2gl_pipeline::mistakes::{self, Mistakes};
+use close2gl_pipeline::mistakes::Mistakes;
 use close2gl_pipeline::program::{ProgramCamera, System2d};
 use close2gl_testkit::student::asset;
 use close2gl_trace::check::{self, Stage, Status, report};
@@ -75,9 +75,9 @@ const GL_WINDOW: System2d = System2d {
 /// close2gl's own M, P and V for `camera` in a 640 × 480 window with y up.
 fn ours(camera: &ProgramCamera) -> [DMat4; 3] {
     [
-        mistakes::modelview(camera, Mistakes::NONE),
-        mistakes::projection(camera, Mistakes::NONE),
-        mistakes::viewport(&GL_WINDOW, Mistakes::NONE),
+        camera.modelview(Mistakes::NONE),
+        camera.projection(Mistakes::NONE),
+        GL_WINDOW.viewport(Mistakes::NONE),
     ]
 }
 

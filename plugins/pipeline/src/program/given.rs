@@ -1,8 +1,11 @@
 //! What a program is given before it computes anything: the camera it holds and the 2D system
-//! it draws in (`gluOrtho2D`'s L R B T). Apart from [`Program`](super::Program), so that the
-//! mistakes' M, P and V ([`crate::mistakes`]) take them without going through the program.
+//! it draws in (`gluOrtho2D`'s L R B T), and the M, P and V it builds from them, in double
+//! precision, with its mistakes.
 
-use glam::{DVec2, DVec3};
+use glam::{DMat4, DVec2, DVec3};
+
+use crate::matrices::{modelview_of, projection_of, viewport_of};
+use crate::mistakes::Mistakes;
 
 /// The 2D system the program draws in: the arguments it gave `gluOrtho2D`.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -32,6 +35,11 @@ impl System2d {
             (self.top - p.y) / (self.top - self.bottom) * f64::from(height),
         )
     }
+
+    /// V onto this system, or what `mistakes` make of it.
+    pub fn viewport(&self, mistakes: Mistakes) -> DMat4 {
+        viewport_of([self.left, self.right, self.bottom, self.top], mistakes)
+    }
 }
 
 /// The camera as the program holds it, in double precision.
@@ -45,4 +53,17 @@ pub struct ProgramCamera {
     pub vfov: f64,
     pub near: f64,
     pub far: f64,
+}
+
+impl ProgramCamera {
+    /// M, or what `mistakes` make of it.
+    pub fn modelview(&self, mistakes: Mistakes) -> DMat4 {
+        let axes = [self.u, self.v, self.n].map(|axis| axis.to_array());
+        modelview_of(axes, self.position.to_array(), mistakes)
+    }
+
+    /// P, or what `mistakes` make of it.
+    pub fn projection(&self, mistakes: Mistakes) -> DMat4 {
+        projection_of([self.hfov, self.vfov], [self.near, self.far], mistakes)
+    }
 }

@@ -14,7 +14,7 @@ use close2gl_core::{
 use glam::{DMat4, DVec3};
 
 use crate::clip::{FAR, NEAR, Outcode};
-use crate::mistakes::{Mistakes, modelview, projection, viewport};
+use crate::mistakes::Mistakes;
 
 pub(crate) mod given;
 mod triangle;
@@ -195,9 +195,9 @@ impl Program {
         if mistakes.has(LeftHanded) {
             camera.u = camera.n.cross(camera.v);
         }
-        let m = modelview(&camera, mistakes);
-        let p = projection(&camera, mistakes);
-        let v = viewport(&declared.system, mistakes);
+        let m = camera.modelview(mistakes);
+        let p = camera.projection(mistakes);
+        let v = declared.system.viewport(mistakes);
         let clip_matrix = match mistakes.has(ProductOrder) {
             true => m * p,
             false => p * m,

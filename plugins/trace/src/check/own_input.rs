@@ -98,7 +98,7 @@ fn outer(a: DVec4, b: DVec4) -> DMat4 {
 mod tests {
     use super::*;
     use crate::format::parse_trace;
-    use close2gl_pipeline::mistakes::from_rows;
+    use close2gl_pipeline::matrices::Real;
 
     /// A trace whose clip lines are `matrix` times the corners of a tetrahedron far from the
     /// origin (as course models are).
@@ -136,13 +136,13 @@ mod tests {
     #[test]
     fn the_clip_matrix_is_found_from_the_clip_lines_even_in_the_wrong_order() {
         let mesh = tetrahedron();
-        let m = from_rows([
+        let m = f64::from_rows([
             [0.8, 0.0, -0.6, 100.0],
             [0.0, 1.0, 0.0, 200.0],
             [0.6, 0.0, 0.8, -900.0],
             [0.0, 0.0, 0.0, 1.0],
         ]);
-        let p = from_rows([
+        let p = f64::from_rows([
             [1.7, 0.0, 0.0, 0.0],
             [0.0, 1.7, 0.0, 0.0],
             [0.0, 0.0, -1.2, -2.2],

@@ -129,7 +129,7 @@ fn and_list(items: &[String]) -> String {
 mod tests {
     use super::super::tests::pitched;
     use super::*;
-    use close2gl_pipeline::mistakes::{self, Mistakes};
+    use close2gl_pipeline::mistakes::Mistakes;
 
     fn values() -> Values {
         let (camera, window) = pitched();
@@ -137,11 +137,11 @@ mod tests {
     }
 
     fn m() -> DMat4 {
-        mistakes::modelview(&pitched().0, Mistakes::NONE)
+        pitched().0.modelview(Mistakes::NONE)
     }
 
     fn p() -> DMat4 {
-        mistakes::projection(&pitched().0, Mistakes::NONE)
+        pitched().0.projection(Mistakes::NONE)
     }
 
     /// `m` with row `r` times `k`.
