@@ -294,3 +294,25 @@ fn honesty_never_costs_and_a_window_aspect_projection_costs_only_its_lines() {
     // The report leads with what to fix.
     assert!(!honest["to_fix"].as_array().expect("to_fix").is_empty());
 }
+
+#[test]
+fn a_program_that_draws_nothing_is_one_bug_to_fix_not_one_per_line() {
+    let dir = TempDir::new("grade_one_bug");
+    let draws_nothing = expectations()
+        .into_iter()
+        .find(|e| e.program.ends_with("py_ndc.py") && e.flags == ["-DDRAWS_NOTHING"])
+        .expect("py_ndc.py has an expect-grade line for -DDRAWS_NOTHING");
+    let grade = graded(&run_command(&draws_nothing, &dir), &dir);
+    let bugs = grade["to_fix"].as_array().expect("to_fix");
+    // Every line it lost is one bug: drawing nothing, where check first finds it different.
+    assert_eq!(bugs.len(), 1, "{bugs:#?}");
+    let lost = lost(&grade);
+    let costs = bugs[0]["lines"].as_array().expect("lines");
+    assert_eq!(costs.len(), lost.len(), "{bugs:#?}");
+    assert!(
+        bugs[0]["example"]
+            .as_str()
+            .is_some_and(|e| e.contains("the trace drew nothing")),
+        "{bugs:#?}"
+    );
+}

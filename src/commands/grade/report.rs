@@ -76,7 +76,7 @@ pub fn json(grade: &Grade, sandboxing: &Sandboxing) -> Value {
         .map(|bug| {
             let lines: Vec<&str> = bug.lines.iter().map(|l| l.id()).collect();
             json!({"cause": bug.cause, "lines": lines, "points_lost": bug.points_lost,
-                   "first_scene": bug.first_scene})
+                   "first_scene": bug.first_scene, "example": bug.example})
         })
         .collect();
     json!({

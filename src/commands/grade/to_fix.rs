@@ -3,26 +3,26 @@
 
 use close2gl_trace::rubric::LineId;
 
-use super::score::Grade;
+use super::score::{Grade, LineScore};
 
-/// One bug: the mistakes check named for it (or, when none, the first reason a scene gave),
-/// the lines it cost and their points, and the first scene that shows it.
+/// One bug: the mistakes check named for it (or, when none, where check first finds the
+/// program different, or else the first reason a scene gave), the lines it cost and their
+/// points, and the first scene that shows it, with what check found there.
 pub struct Bug {
     pub cause: String,
     pub lines: Vec<LineId>,
     pub points_lost: u32,
     pub first_scene: String,
+    /// Check's first difference in the first scene (`stage: detail`), when the cause is a
+    /// stage rather than a named mistake.
+    pub example: Option<String>,
 }
 
 /// The bugs of `grade`, the costliest first: failing lines with the same cause are one bug.
 pub fn bugs(grade: &Grade) -> Vec<Bug> {
     let mut bugs: Vec<Bug> = Vec::new();
     for line in grade.lines.iter().filter(|l| !l.failures.is_empty()) {
-        let (scene, why) = &line.failures[0];
-        let cause = match line.mistakes.is_empty() {
-            false => line.mistakes.join(" or "),
-            true => format!("unexplained: {}", why.lines().next().unwrap_or("")),
-        };
+        let (cause, example) = cause(grade, line);
         let lost = line.line.max_points() - line.points;
         match bugs.iter_mut().find(|b| b.cause == cause) {
             Some(bug) => {
@@ -33,12 +33,37 @@ pub fn bugs(grade: &Grade) -> Vec<Bug> {
                 cause,
                 lines: vec![line.line],
                 points_lost: lost,
-                first_scene: grade.scenes[*scene].id.clone(),
+                first_scene: grade.scenes[line.failures[0].0].id.clone(),
+                example,
             }),
         }
     }
     bugs.sort_by_key(|bug| std::cmp::Reverse(bug.points_lost));
     bugs
+}
+
+/// Why `line` failed, as the key lines of one bug share. Without a named mistake, the stage
+/// where check first finds the program different in the line's first failing scene: a later
+/// stage's difference, and each line's own wording of it ("drew nothing where its clip
+/// coordinates show 12", "nothing wide in NDC"), may follow from that one, and the earliest is
+/// what to fix first. A scene check could not compare (the run failed) gives its reason.
+fn cause(grade: &Grade, line: &LineScore) -> (String, Option<String>) {
+    if !line.mistakes.is_empty() {
+        return (line.mistakes.join(" or "), None);
+    }
+    let (scene, why) = &line.failures[0];
+    let evidence = grade.scenes[*scene].evidence.as_ref();
+    match evidence.and_then(|e| e.first_difference.as_ref()) {
+        Some(difference) => {
+            let stage = difference.split(':').next().unwrap_or(difference);
+            let cause = format!("unexplained, check first finds it different at {stage}");
+            (cause, Some(difference.clone()))
+        }
+        None => {
+            let first = why.lines().next().unwrap_or("");
+            (format!("unexplained: {first}"), None)
+        }
+    }
 }
 
 /// The bugs as lines of text: "1. never_culls: culling (-20), first in culling_inside".
@@ -58,6 +83,9 @@ pub fn lines(grade: &Grade) -> Vec<String> {
             bug.points_lost,
             bug.first_scene
         ));
+        if let Some(example) = &bug.example {
+            out.push(format!("     there: {example}"));
+        }
     }
     out
 }
