@@ -32,39 +32,30 @@ pub trait Real:
     fn from_rows(rows: [[Self; 4]; 4]) -> Self::Mat4;
 }
 
-impl Real for f32 {
-    const ZERO: Self = 0.0;
-    const ONE: Self = 1.0;
-    const HALF: Self = 0.5;
-    const TWO: Self = 2.0;
-    type Mat4 = Mat4;
-    fn tan(self) -> Self {
-        f32::tan(self)
-    }
-    fn to_radians(self) -> Self {
-        f32::to_radians(self)
-    }
-    fn from_rows(rows: [[Self; 4]; 4]) -> Mat4 {
-        Mat4::from_cols_array_2d(&rows).transpose()
-    }
+/// `Real` for one of the two floats: the same impl, with its own glam matrix.
+macro_rules! real {
+    ($float:ident, $mat4:ty) => {
+        impl Real for $float {
+            const ZERO: Self = 0.0;
+            const ONE: Self = 1.0;
+            const HALF: Self = 0.5;
+            const TWO: Self = 2.0;
+            type Mat4 = $mat4;
+            fn tan(self) -> Self {
+                $float::tan(self)
+            }
+            fn to_radians(self) -> Self {
+                $float::to_radians(self)
+            }
+            fn from_rows(rows: [[Self; 4]; 4]) -> $mat4 {
+                <$mat4>::from_cols_array_2d(&rows).transpose()
+            }
+        }
+    };
 }
 
-impl Real for f64 {
-    const ZERO: Self = 0.0;
-    const ONE: Self = 1.0;
-    const HALF: Self = 0.5;
-    const TWO: Self = 2.0;
-    type Mat4 = DMat4;
-    fn tan(self) -> Self {
-        f64::tan(self)
-    }
-    fn to_radians(self) -> Self {
-        f64::to_radians(self)
-    }
-    fn from_rows(rows: [[Self; 4]; 4]) -> DMat4 {
-        DMat4::from_cols_array_2d(&rows).transpose()
-    }
-}
+real!(f32, Mat4);
+real!(f64, DMat4);
 
 fn dot<S: Real>(a: [S; 3], b: [S; 3]) -> S {
     a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
