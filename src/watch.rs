@@ -19,7 +19,7 @@ use close2gl_core::{
 
 use close2gl_trace::view::{TraceRequest, TraceView};
 
-use crate::config::Config;
+use close2gl_config::Config;
 
 /// How often the files are looked at.
 const POLL: Duration = Duration::from_millis(250);
@@ -223,7 +223,7 @@ fn reload_config(world: &mut World) {
     let model_changed = world.resource::<ModelStatus>().source.as_ref() != Some(&config.model);
     let primitive_changed = matches!(config.model, ModelSource::Primitive(_))
         && *world.resource::<close2gl_core::PrimitiveParams>() != config.primitives;
-    crate::apply_settings(world, &config);
+    close2gl_app::apply_settings(world, &config);
     let radius = world.resource::<CameraSpeeds>().model_radius;
     world.insert_resource(CameraSpeeds {
         model_radius: radius,

@@ -1,7 +1,7 @@
 //! The configuration as the command line reads it: a config file's text (any text) and a list of
-//! `--set section.key=value` overrides (real keys from `src/config/keys.rs` or made-up ones, with
+//! `--set section.key=value` overrides (real keys from `plugins/config/src/keys.rs` or made-up ones, with
 //! numbers, NaN and infinities, enum names, arrays or any text as values), through
-//! `close2gl::config::load_text`. It must never panic; an error is one line; a config it accepts
+//! `close2gl_config::load_text`. It must never panic; an error is one line; a config it accepts
 //! keeps every documented range, and the headless app builds from it (one frame: framing the
 //! camera, the Close2GL stage and, in software mode, the rasterizer) on a small primitive.
 #![no_main]
@@ -11,7 +11,7 @@ use std::path::Path;
 use std::sync::LazyLock;
 
 use arbitrary::Arbitrary;
-use close2gl::config::{Config, load_text};
+use close2gl_config::{Config, load_text};
 use close2gl_core::glam::Vec3;
 use close2gl_core::limits::{FOV_RANGE, MAX_PIXELS};
 use close2gl_core::{
@@ -23,7 +23,7 @@ use libfuzzer_sys::fuzz_target;
 
 /// Every key of the configuration's table but `[input]`'s, as `section.name`.
 static KEYS: LazyLock<Vec<String>> = LazyLock::new(|| {
-    close2gl::config::keys::KEYS
+    close2gl_config::keys::KEYS
         .iter()
         .map(|k| format!("{}.{}", k.section, k.name))
         .collect()
@@ -187,7 +187,7 @@ fuzz_target!(|input: Input| {
         width: config.window.width.min(48),
         height: config.window.height.min(48),
     };
-    if let Ok(mut app) = close2gl::build_app(&config, viewport) {
+    if let Ok(mut app) = close2gl_app::build_app(&config, viewport) {
         let camera = app
             .world_mut()
             .query::<&Camera>()

@@ -41,7 +41,7 @@ pub fn run(args: InspectArgs) -> Result<(), CliError> {
         .as_deref()
         .map(|p| parse_pixel(p, viewport))
         .transpose()?;
-    let mut app = crate::build_app(&config, viewport).map_err(CliError::Input)?;
+    let mut app = close2gl_app::build_app(&config, viewport).map_err(CliError::Input)?;
     print_warnings(&app);
     record_fates(&mut app);
     let report = match (args.triangle, pixel) {

@@ -50,7 +50,7 @@ pub fn run(args: RenderArgs) -> Result<(), CliError> {
     let mut config = args.scene.config()?;
     outside_args(&args, &mut config)?;
     let viewport = viewport(args.size.as_deref(), &config)?;
-    let mut app = crate::build_app(&config, viewport).map_err(CliError::Input)?;
+    let mut app = close2gl_app::build_app(&config, viewport).map_err(CliError::Input)?;
     print_warnings(&app);
     let gpu = Gpu::headless(backends).map_err(CliError::Runtime)?;
     app.add_plugins(OffscreenPlugin(gpu.clone()));
@@ -98,7 +98,7 @@ fn check(args: &RenderArgs) -> Result<close2gl_gpu::wgpu::Backends, CliError> {
 }
 
 /// `--view outside` and `--stage`, into the config's `[outside]`.
-fn outside_args(args: &RenderArgs, config: &mut crate::config::Config) -> Result<(), CliError> {
+fn outside_args(args: &RenderArgs, config: &mut close2gl_config::Config) -> Result<(), CliError> {
     match args.view.as_deref() {
         None => {}
         Some("outside") => config.outside.show = true,
@@ -109,7 +109,7 @@ fn outside_args(args: &RenderArgs, config: &mut crate::config::Config) -> Result
         }
     }
     if let Some(stage) = &args.stage {
-        config.outside.stage = crate::config::parse_stage(stage)
+        config.outside.stage = close2gl_config::parse_stage(stage)
             .map_err(|e| CliError::Input(format!("render: --stage: {e}")))?;
     }
     Ok(())

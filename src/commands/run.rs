@@ -8,8 +8,8 @@ use close2gl_viewer::{Recording, ViewerOptions, ViewerPlugin};
 
 use super::CliError;
 use super::scene_args::{SceneArgs, print_warnings, viewport};
-use crate::config::Config;
 use crate::watch::WatchPlugin;
+use close2gl_config::Config;
 
 /// Frames drawn before `--screenshot` saves one, when `--exit-after-frames` does not say.
 const SCREENSHOT_FRAMES: u32 = 5;
@@ -62,7 +62,7 @@ pub fn run(args: RunArgs) -> Result<(), CliError> {
         .map_err(CliError::Input)?;
     let (scene, config, size) = scene_and_size(&args, replay.as_ref())?;
     // The first frame's layout replaces this with the views' real size.
-    let mut app = crate::build_app(&config, size).map_err(CliError::Input)?;
+    let mut app = close2gl_app::build_app(&config, size).map_err(CliError::Input)?;
     print_warnings(&app);
     if let Some(path) = &args.trace {
         show_trace(&mut app, path)?;
@@ -141,7 +141,7 @@ fn last_frames(args: &RunArgs, replay: Option<&Recording>) -> (Option<u32>, Opti
 /// Watches the scene's files, reloading its configuration when one changes.
 fn watch(scene: SceneArgs) -> WatchPlugin {
     WatchPlugin {
-        config_file: crate::config::file_to_read(scene.config.as_deref()),
+        config_file: close2gl_config::file_to_read(scene.config.as_deref()),
         reload: Arc::new(move || {
             scene.config().map_err(|e| match e {
                 CliError::Input(m) | CliError::Runtime(m) => m,

@@ -5,7 +5,7 @@ use std::path::PathBuf;
 use close2gl_core::{App, ModelSource, ModelStatus, RecordFates, Viewport};
 
 use super::CliError;
-use crate::config::{self, Config};
+use close2gl_config::{self as config, Config};
 
 #[derive(clap::Args, Debug, Clone, Default)]
 pub struct SceneArgs {

@@ -25,7 +25,7 @@ pub struct StatsArgs {
 pub fn run(args: StatsArgs) -> Result<(), CliError> {
     let config = args.scene.config()?;
     let viewport = viewport(args.size.as_deref(), &config)?;
-    let mut app = crate::build_app(&config, viewport).map_err(CliError::Input)?;
+    let mut app = close2gl_app::build_app(&config, viewport).map_err(CliError::Input)?;
     print_warnings(&app);
     record_fates(&mut app);
     let frame = app.world().resource::<Close2glFrame>();

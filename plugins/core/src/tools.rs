@@ -25,8 +25,8 @@ pub struct ToolRequests {
 pub struct PageLink(pub String);
 
 /// How the views are written as a `close2gl render` command writing its images to the directory
-/// given (copy as command, the screenshot key). Written in `src/config/command.rs`
-/// (`close2gl::config::command`, whose `CommandPlugin` inserts it), from the same key table the
+/// given (copy as command, the screenshot key). Written in `plugins/config/src/command.rs`
+/// (`close2gl_config::command`, whose `CommandPlugin` inserts it), from the same key table the
 /// configuration is read with. `None` before anything shows.
 #[derive(Resource, Clone, Copy)]
 pub struct CommandLine(pub fn(&mut World, &str) -> Option<String>);

@@ -1,5 +1,5 @@
 //! The view in the page's link: the model and every setting that decides the views' pixels,
-//! written as copy as command writes them (`close2gl::config::keys::pixel_keys_from`).
+//! written as copy as command writes them (`close2gl_config::keys::pixel_keys_from`).
 
 use bevy_ecs::prelude::*;
 use close2gl_core::{ModelSource, PageLink, Wake};
@@ -20,12 +20,12 @@ pub struct Address {
 
 /// What the world shows, as a link's fragment; `None` before a model and a camera exist.
 pub fn fragment(world: &mut World) -> Option<String> {
-    let config = close2gl::config::command::of_world(world)?;
+    let config = close2gl_config::command::of_world(world)?;
     let model = match &config.model {
         ModelSource::File(path) => path.file_name()?.to_string_lossy().into_owned(),
         ModelSource::Primitive(kind) => kind.name().to_string(),
     };
-    let settings = close2gl::config::keys::pixel_keys_from(&config, crate::base_config());
+    let settings = close2gl_config::keys::pixel_keys_from(&config, crate::base_config());
     Some(link::write(&model, &settings))
 }
 

@@ -32,14 +32,14 @@ pub const DEFAULT_MODEL: &str = "knot.obj";
 pub const CONFIG_TOML: &str = include_str!("../../../config.toml");
 
 /// The page's configuration before its link ([`CONFIG_TOML`]; the defaults if it does not read).
-pub fn base_config() -> &'static close2gl::config::Config {
-    static BASE: std::sync::OnceLock<close2gl::config::Config> = std::sync::OnceLock::new();
+pub fn base_config() -> &'static close2gl_config::Config {
+    static BASE: std::sync::OnceLock<close2gl_config::Config> = std::sync::OnceLock::new();
     BASE.get_or_init(|| config_with(&[]).unwrap_or_default())
 }
 
 /// The page's base configuration ([`CONFIG_TOML`]) with a link's `settings` applied.
-pub fn config_with(settings: &[String]) -> Result<close2gl::config::Config, String> {
-    close2gl::config::load_text(
+pub fn config_with(settings: &[String]) -> Result<close2gl_config::Config, String> {
+    close2gl_config::load_text(
         CONFIG_TOML,
         "config.toml",
         std::path::Path::new(""),
@@ -119,7 +119,7 @@ mod tests {
         // Back to a built-in default that the page's config.toml changes: still in the link.
         config.render.shading = close2gl_core::Shading::None;
         config.camera.hfov = 45.0;
-        let settings = close2gl::config::keys::pixel_keys_from(&config, base_config());
+        let settings = close2gl_config::keys::pixel_keys_from(&config, base_config());
         let fragment = link::write("cube.in", &settings);
         let read = link::parse(&fragment).unwrap();
         let again = config_with(&read.settings).unwrap();

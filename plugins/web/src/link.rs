@@ -33,7 +33,7 @@ pub fn parse(fragment: &str) -> Result<Link, String> {
 }
 
 /// The fragment (without `#`) for `model` and `settings` (`("section.key", "value")` each, as
-/// `close2gl::config::keys::pixel_keys` gives them).
+/// `close2gl_config::keys::pixel_keys` gives them).
 pub fn write(model: &str, settings: &[(String, String)]) -> String {
     let mut items = vec![format!("model={}", encode(model))];
     items.extend(

@@ -1,7 +1,7 @@
 //! The page's start: the bundled models fetched beside the page, the link read, the app built
 //! on them as `close2gl MODEL --set ...` builds it, then the viewer on the page's canvas.
 
-use close2gl::config::Config;
+use close2gl_config::Config;
 use close2gl_core::{App, Layout, ModelSource, Viewport};
 use close2gl_ui::Notice;
 use close2gl_viewer::{ViewerOptions, ViewerPlugin, browser::report};
@@ -38,7 +38,7 @@ async fn open() -> Result<(), String> {
         width: inner(window.inner_width()),
         height: inner(window.inner_height()),
     };
-    let mut app = match close2gl::build_app(&config, size) {
+    let mut app = match close2gl_app::build_app(&config, size) {
         Ok(app) => app,
         // The link's model does not load: the default one does, and the panel says why.
         Err(error) => {
@@ -47,7 +47,7 @@ async fn open() -> Result<(), String> {
                 model: ModelSource::File(DEFAULT_MODEL.into()),
                 ..config
             };
-            close2gl::build_app(&fallback, size)?
+            close2gl_app::build_app(&fallback, size)?
         }
     };
     if !problems.is_empty() {

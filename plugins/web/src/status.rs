@@ -86,8 +86,8 @@ fn status_json(world: &mut World, gpu: &Gpu, agreement: Option<f64>) -> Value {
         .iter(world)
         .next()
         .map_or(0, |m| m.triangles.len());
-    let settings = close2gl::config::command::of_world(world)
-        .map(|config| settings_json(&close2gl::config::keys::pixel_keys(&config)))
+    let settings = close2gl_config::command::of_world(world)
+        .map(|config| settings_json(&close2gl_config::keys::pixel_keys(&config)))
         .unwrap_or_default();
     let panel = !world.resource::<PanelState>().hidden;
     let trace = world.get_resource::<TraceView>().and_then(|view| {

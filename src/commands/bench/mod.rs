@@ -12,7 +12,7 @@ pub mod raster;
 use std::path::PathBuf;
 use std::time::Instant;
 
-use crate::config::Config;
+use close2gl_config::Config;
 use close2gl_core::limits::MAX_SEGMENTS;
 use close2gl_core::{
     App, Camera, Clipping, Close2glFrame, Mesh, ModelSource, PrimitiveKind, RenderMode,
@@ -118,7 +118,7 @@ fn geometry(args: &BenchArgs, pool: &rayon::ThreadPool) -> Result<serde_json::Va
     config.render.mode = RenderMode::Solid;
     config.render.clipping = Clipping::Full;
     let viewport = viewport(args.size.as_deref(), &config)?;
-    let mut app = crate::build_app(&config, viewport).map_err(CliError::Input)?;
+    let mut app = close2gl_app::build_app(&config, viewport).map_err(CliError::Input)?;
     let (mesh, camera) = &scene(&mut app)?;
     let settings = config.render;
     let mut pipeline = FastPipeline::default();

@@ -25,7 +25,7 @@ pub fn frame(args: &BenchArgs, pool: &rayon::ThreadPool) -> Result<Value, CliErr
     };
     config.render.close2gl_raster = Rasterizer::Software;
     let viewport = viewport(args.size.as_deref(), &config)?;
-    let mut app = crate::build_app(&config, viewport).map_err(CliError::Input)?;
+    let mut app = close2gl_app::build_app(&config, viewport).map_err(CliError::Input)?;
     if args.grid {
         let mesh = super::grid::grid(args.triangles.unwrap_or(1_000_000));
         super::grid::replace_model(&mut app, mesh).map_err(CliError::Runtime)?;

@@ -27,7 +27,7 @@ use close2gl_runner::Limits;
 use close2gl_trace::rubric::{self, RubricScene};
 
 use super::CliError;
-use crate::progress_bar::TerminalProgress;
+use close2gl_app::progress_bar::TerminalProgress;
 use sandboxing::Sandboxing;
 use scene_run::SceneResult;
 use score::Grade;

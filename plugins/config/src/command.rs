@@ -95,8 +95,8 @@ fn shell_quote(arg: &str) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::config::keys::{KEYS, Write, exact};
-    use crate::config::load;
+    use crate::keys::{KEYS, Write, exact};
+    use crate::load;
     use close2gl_core::PrimitiveKind;
 
     const SIZE: Viewport = Viewport {
@@ -252,17 +252,6 @@ mod tests {
                 "{key} in {words:?}"
             );
         }
-    }
-
-    #[test]
-    fn the_default_plugins_give_the_app_its_command_writer() {
-        let mut app = App::new();
-        app.add_plugins(crate::DefaultPlugins);
-        let write = app.world().get_resource::<CommandLine>().map(|c| c.0);
-        assert!(
-            write.is_some_and(|write| write(app.world_mut(), "out").is_none()),
-            "no model shown yet, nothing to write"
-        );
     }
 
     #[test]

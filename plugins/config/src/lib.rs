@@ -1,12 +1,17 @@
-//! The TOML configuration: every setting with its default, read from a file and then from
-//! `--set section.key=value` overrides, each key checked for type and range as it is set.
+//! The TOML configuration: every setting with its default, read from a file (`config.toml`)
+//! and then from `--set section.key=value` overrides, each key checked for type and range as it
+//! is set. It owns [`Config`], the key table both directions go through ([`keys::KEYS`]), the
+//! config ↔ `Camera` mapping (`camera.rs`) and [`command::CommandPlugin`], whose "copy as
+//! command" reads what the world shows (the camera, the model and the settings resources) back
+//! into a configuration and writes it as a `close2gl render` line: the one resource it inserts
+//! is the app's `CommandLine`. Turning a configuration into an app is `close2gl_app`'s.
 
 mod camera;
 pub mod command;
 pub mod keys;
 mod load;
 
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 pub use close2gl_core::Layout;
 use close2gl_core::glam::Vec3;
@@ -100,5 +105,11 @@ impl Default for Config {
 
 /// The bundled model the app opens when nothing else is asked for.
 pub fn default_model_path() -> PathBuf {
-    PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("assets/knot.obj")
+    repository_root().join("assets/knot.obj")
+}
+
+/// The checkout this crate was built in: two folders above `plugins/config`.
+fn repository_root() -> &'static Path {
+    let crate_dir = Path::new(env!("CARGO_MANIFEST_DIR"));
+    crate_dir.ancestors().nth(2).unwrap_or(crate_dir)
 }
