@@ -3,7 +3,7 @@
 //! and why the last trace requested was refused. Reads `TraceView`; writes nothing.
 
 use bevy_ecs::prelude::*;
-use close2gl_trace::check::compare::Status;
+use close2gl_check::compare::Status;
 use close2gl_trace::view::TraceView;
 
 /// Whether there is a trace (or a refused one) to show.

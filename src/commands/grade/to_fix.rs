@@ -1,9 +1,9 @@
 //! What to fix, first: the bugs a grade found, each with the rubric lines it cost and the first
 //! scene that shows it. A teacher reads this, not the twelve lines; the table follows it.
 
-use close2gl_trace::rubric::LineId;
+use close2gl_check::rubric::LineId;
 
-use super::score::Grade;
+use super::graded::Grade;
 
 /// One bug: the mistakes check named for it (or, when none, the first reason a scene gave),
 /// the lines it cost and their points, and the first scene that shows it.

@@ -13,8 +13,8 @@ use std::path::PathBuf;
 
 use bevy_ecs::prelude::*;
 
-use crate::check::Report;
-use crate::format::Trace;
+use close2gl_check::Report;
+use close2gl_trace_format::Trace;
 
 pub use open::{load_requested_trace, trace_camera, trace_settings};
 pub use show::show_trace;
