@@ -4,10 +4,10 @@
 
 use close2gl_pipeline::mistakes::Mistakes;
 use close2gl_pipeline::program::Program;
+use close2gl_trace_format::Trace;
 use glam::DMat4;
 
 use super::program_for;
-use close2gl_trace_format::Trace;
 
 /// What would tell `sets` apart, each hint once, in a stable order; empty for fewer than two.
 pub fn tell_apart(trace: &Trace, sets: &[Mistakes]) -> Vec<String> {

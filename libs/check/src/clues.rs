@@ -8,10 +8,10 @@ mod matrix_ratio;
 mod triangle_sizes;
 
 use close2gl_pipeline::program::{Program, ProgramCamera};
+use close2gl_trace_format::Trace;
 use glam::DMat4;
 
 use super::compare::{ALL_ROWS, Stage, StageResult, Status, V_ROWS, number};
-use close2gl_trace_format::Trace;
 pub use camera_moves::{axes_after_move, travel};
 pub use matrix_ratio::matrix;
 pub use triangle_sizes::{Seen, on_screen, seen, triangles};

@@ -4,13 +4,13 @@
 
 use close2gl_core::{FateKind, Mesh, Mistake};
 use close2gl_pipeline::program::{Outcome, Program};
+use close2gl_trace_format::Trace;
 use glam::{DMat4, DVec2, DVec4};
 
 use close2gl_pipeline::rounding::{self, BOUND, PRINTED, clip_error, clip_terms};
 
 use super::own_input::own_program;
 use super::region;
-use close2gl_trace_format::Trace;
 
 /// The stages, in the pipeline's order, by the names scripts read.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
@@ -170,6 +170,16 @@ impl StageResult {
             _ => Status::Differs,
         };
         self
+    }
+
+    /// Its status in a few words, as the viewer's panel lists the stages: `not checked`,
+    /// `agrees (N)`, `K of N differ`.
+    pub fn in_brief(&self) -> String {
+        match self.status {
+            Status::NotChecked => "not checked".to_string(),
+            Status::Agree => format!("agrees ({})", self.checked),
+            Status::Differs => format!("{} of {} differ", self.differing, self.checked),
+        }
     }
 }
 

@@ -6,12 +6,12 @@
 use close2gl_core::{Mesh, Mistake};
 use close2gl_pipeline::mistakes::Mistakes;
 use close2gl_pipeline::program::{ClipPlanes, Outcome, Program, WindingSpace};
+use close2gl_trace_format::Trace;
 use rayon::prelude::*;
 
 use super::clues;
 use super::compare::{self, Comparison, Kind, Stage};
 use super::{program_for, program_winding};
-use close2gl_trace_format::Trace;
 
 /// The sets of mistakes that reproduce `trace`: single mistakes first; a pair only when neither
 /// of its mistakes alone does (the other one would change nothing the trace shows).

@@ -82,7 +82,13 @@ pub fn declared(trace: &Trace, winding: WindingSpace) -> Declared {
         winding,
         planes: trace.planes,
         model: trace.model_matrix.unwrap_or(DMat4::IDENTITY),
-        ..Declared::new(trace.window, trace.ortho2d, trace.culling, trace.clipping, mode)
+        ..Declared::new(
+            trace.window,
+            trace.ortho2d,
+            trace.culling,
+            trace.clipping,
+            mode,
+        )
     }
 }
 

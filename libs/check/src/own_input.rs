@@ -10,9 +10,8 @@
 use close2gl_core::Mesh;
 use close2gl_pipeline::program::Program;
 use close2gl_pipeline::rounding::{BOUND, PRINTED};
-use glam::{DMat4, DVec3, DVec4};
-
 use close2gl_trace_format::{ClipLine, Trace};
+use glam::{DMat4, DVec3, DVec4};
 
 /// `ours` with the program's own clip matrix and, with `own_viewport`, its own V (a V that is
 /// not the declared one, such as one turned upside down, then carries on into culling as it
@@ -97,8 +96,8 @@ fn outer(a: DVec4, b: DVec4) -> DMat4 {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use close2gl_trace_format::parse_trace;
     use close2gl_pipeline::mistakes::from_rows;
+    use close2gl_trace_format::parse_trace;
 
     /// A trace whose clip lines are `matrix` times the corners of a tetrahedron far from the
     /// origin (as course models are).

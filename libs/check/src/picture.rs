@@ -2,12 +2,12 @@
 //! kind of disagreement, each filled into the trace's window as it shows on screen.
 
 use close2gl_core::Image;
+use close2gl_trace_format::Trace;
 use glam::DVec2;
 
 use super::Report;
 use super::compare::{Kind, pieces_by_triangle};
 use super::region::covers;
-use close2gl_trace_format::Trace;
 
 const BACKGROUND: [u8; 4] = [20, 20, 26, 255];
 const OURS: [u8; 4] = [217, 166, 64, 255];

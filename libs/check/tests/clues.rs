@@ -8,12 +8,12 @@
 #[path = "../../trace_format/tests/common/mod.rs"]
 mod common;
 
+use close2gl_check::rubric::{self, LineId};
+use close2gl_check::{self as check, Stage, Status, report};
 use close2gl_core::{Mesh, ModelSource, PrimitiveParams};
 use close2gl_pipeline::mistakes::{self, Mistakes};
 use close2gl_pipeline::program::{ProgramCamera, System2d};
 use close2gl_testkit::student::asset;
-use close2gl_check::{self as check, Stage, Status, report};
-use close2gl_check::rubric::{self, LineId};
 use close2gl_trace_format::{CameraLines, Motion, SceneCamera, parse_trace};
 use glam::{DMat4, DVec3};
 use proptest::prelude::*;

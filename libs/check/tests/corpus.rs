@@ -15,9 +15,9 @@ use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
+use close2gl_check as check;
 use close2gl_testkit::TempDir;
 use close2gl_testkit::student::{compile_c, compile_cpp, corpus_programs, repository};
-use close2gl_check as check;
 use expect::{Expectation, Outcome};
 use rayon::prelude::*;
 use scenes::SceneFile;
@@ -82,7 +82,8 @@ fn run(mut command: Command, scene: &SceneFile, trace: &Path) -> Result<(Outcome
             String::from_utf8_lossy(&ran.stderr)
         ));
     }
-    let read = close2gl_trace_format::read_trace(trace).map_err(|e| format!("trace not readable: {e}"))?;
+    let read =
+        close2gl_trace_format::read_trace(trace).map_err(|e| format!("trace not readable: {e}"))?;
     let report = check::check(&scene.mesh, &read)
         .map_err(|e| format!("trace does not fit the model: {e}"))?;
     Ok((

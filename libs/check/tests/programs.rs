@@ -7,11 +7,11 @@
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
+use close2gl_check::{self as check, Report};
 use close2gl_core::{Mesh, Mistake, ModelSource, PrimitiveParams};
 use close2gl_pipeline::mistakes::Mistakes;
 use close2gl_testkit::TempDir;
 use close2gl_testkit::student::{asset, compile_pipeline, mistake_flag};
-use close2gl_check::{self as check, Report};
 use rayon::prelude::*;
 
 const MODELS: [&str; 4] = ["cube.in", "textured_cube.in", "far_away.in", "knot.obj"];
@@ -122,7 +122,8 @@ fn run(program: &Path, case: &Case, dir: &Path, build: &str) -> Report {
         .status()
         .expect("run the program");
     assert!(status.success(), "{build} on {}", case.scene.display());
-    let trace = close2gl_trace_format::read_trace(&trace).expect("the program writes a valid trace");
+    let trace =
+        close2gl_trace_format::read_trace(&trace).expect("the program writes a valid trace");
     check::check(&case.mesh, &trace).expect("the trace fits the model")
 }
 

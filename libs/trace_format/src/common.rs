@@ -141,11 +141,7 @@ fn window(line: &Line) -> Result<(u32, u32), FormatError> {
 }
 
 /// `KEY WORD` with WORD the name of one of `all`.
-fn one_of<T: Copy>(
-    line: &Line,
-    all: &[T],
-    name: fn(T) -> &'static str,
-) -> Result<T, FormatError> {
+fn one_of<T: Copy>(line: &Line, all: &[T], name: fn(T) -> &'static str) -> Result<T, FormatError> {
     let shape = format!("{} {}", line.key(), choices(all, name));
     line.expect_fields(2, &shape)?;
     from_word(all, name, line.fields[1]).ok_or_else(|| line.wrong_shape(&shape))

@@ -4,8 +4,8 @@
 use std::collections::HashMap;
 use std::path::Path;
 
-use close2gl_core::RenderMode;
 use close2gl_core::FrontFace;
+use close2gl_core::RenderMode;
 use close2gl_pipeline::program::{ClipPlanes, ClipRule, WindingSpace};
 use glam::DMat4;
 

@@ -13,8 +13,8 @@ use close2gl_pipeline::program::{ClipPlanes, ClipRule, WindingSpace};
 
 use super::camera_lines::LINES;
 use super::magic::Format;
-use super::output::MATRIX_NAMES;
 use super::names::{clipping_name, culling_name};
+use super::output::MATRIX_NAMES;
 use super::{CameraLines, Motion, Piece, SceneCamera, SceneFile, Trace};
 
 impl Trace {
@@ -142,8 +142,14 @@ impl Text {
             ClipPlanes::All => "",
             ClipPlanes::NearFar => " near_far",
         };
-        self.line(&format!("culling {}{space}", culling_name(trace.culling)), []);
-        self.line(&format!("clipping {}{planes}", clipping_name(trace.clipping)), []);
+        self.line(
+            &format!("culling {}{space}", culling_name(trace.culling)),
+            [],
+        );
+        self.line(
+            &format!("clipping {}{planes}", clipping_name(trace.clipping)),
+            [],
+        );
         if let Some(mode) = trace.mode {
             self.line(&format!("mode {}", mode.name()), []);
         }

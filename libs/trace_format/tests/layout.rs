@@ -175,10 +175,7 @@ fn a_scene_reads_with_its_defaults_and_its_motions_in_order() {
             far: None
         }
     );
-    assert_eq!(
-        (scene.culling, scene.clipping),
-        (None, ClipRule::Simple)
-    );
+    assert_eq!((scene.culling, scene.clipping), (None, ClipRule::Simple));
     assert_eq!((scene.mode, scene.lookat), (None, None));
     assert!(scene.motions.is_empty());
 

@@ -404,7 +404,11 @@ fn nothing_but_comments_may_follow_end() {
         ),
     ]);
     let text = plus("end\n# a comment\n   \n\t# another");
-    assert!(close2gl_trace_format::parse_trace(&text, "t.trace").unwrap().ended);
+    assert!(
+        close2gl_trace_format::parse_trace(&text, "t.trace")
+            .unwrap()
+            .ended
+    );
 }
 
 #[test]

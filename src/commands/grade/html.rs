@@ -8,10 +8,10 @@ use base64::Engine;
 use base64::engine::general_purpose::STANDARD;
 use close2gl_check::rubric::MAX_TOTAL;
 
+use super::graded::Grade;
 use super::report::failure_lines;
 use super::sandboxing::Sandboxing;
 use super::scene_run::SceneResult;
-use super::graded::Grade;
 use super::to_fix;
 
 const STYLE: &str = "body{font:14px/1.4 system-ui,sans-serif;margin:2em;color:#222;max-width:1200px}\

@@ -23,15 +23,15 @@ use std::sync::Mutex;
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::time::Duration;
 
+use close2gl_check::rubric::{self, RubricScene};
 use close2gl_core::{Mesh, ModelSource, PrimitiveParams};
 use close2gl_runner::Limits;
-use close2gl_check::rubric::{self, RubricScene};
 
 use super::CliError;
 use crate::progress_bar::TerminalProgress;
+use graded::Grade;
 use sandboxing::Sandboxing;
 use scene_run::SceneResult;
-use graded::Grade;
 
 #[derive(clap::Args, Debug)]
 pub struct GradeArgs {

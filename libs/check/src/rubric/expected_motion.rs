@@ -3,9 +3,8 @@
 //! `orbit` along u or v keeping the look-at point. The grader judges a program's final camera
 //! against these (and against the accepted variants: the other way round, an arc).
 
-use glam::DVec3;
-
 use close2gl_trace_format::{Axis, CameraLines};
+use glam::DVec3;
 
 /// Where a camera is and how it is turned.
 #[derive(Clone, Copy, Debug, PartialEq)]

@@ -1,4 +1,4 @@
-//! What the trace crate's test files share: small valid files to break one line of, and
+//! What the format's test files (and check's `clues.rs`) share: small valid files to break one line of, and
 //! proptest strategies for every value the readers can produce.
 
 // Each test file that includes this module uses a part of it.

@@ -39,7 +39,7 @@ impl From<&Camera> for ProgramCamera {
 
 /// How the program clips: what a scene or a trace says (`clipping simple|full|none`), and
 /// what it does unless it divides first ([`Program::divides_first`]).
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum ClipRule {
     /// The assignment's: drop a triangle with any corner outside the view volume.
     Simple,

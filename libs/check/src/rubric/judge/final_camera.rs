@@ -2,12 +2,12 @@
 //! against what close2gl expects ([`Pose`]), with the accepted variants (an arc for an orbit,
 //! the other way round for a rotation, consistently).
 
+use close2gl_trace_format::{Axis, Motion};
 use glam::DVec3;
 
 use super::{AXIS, Judge, POSITION, Verdict, stages_agree, vec3};
 use crate::clues::{self, Values};
 use crate::compare::{Stage, number};
-use close2gl_trace_format::{Axis, Motion};
 use crate::rubric::expected_motion::Pose;
 use crate::rubric::scenes::default_lookat;
 
