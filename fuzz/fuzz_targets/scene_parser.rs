@@ -1,11 +1,11 @@
-//! The scene reader (`close2gl_trace::parse_scene`), fed any bytes that are UTF-8 (as
+//! The scene reader (`close2gl_trace_format::parse_scene`), fed any bytes that are UTF-8 (as
 //! `read_scene` hands it a file's text). It must never panic; an error is one line naming the
 //! file; `\r\n` line ends change nothing, errors included; and a scene it reads writes back as
 //! text that reads back to the very same scene, and to the same text again (equal texts mean
 //! equal bits: `==` on floats would let -0 pass for 0).
 #![no_main]
 
-use close2gl_trace::parse_scene;
+use close2gl_trace_format::parse_scene;
 use libfuzzer_sys::fuzz_target;
 
 const LABEL: &str = "fuzz.scene";

@@ -1,4 +1,4 @@
-//! The trace reader (`close2gl_trace::parse_trace`), fed any bytes that are UTF-8 (as
+//! The trace reader (`close2gl_trace_format::parse_trace`), fed any bytes that are UTF-8 (as
 //! `read_trace` hands it a file's text). It must never panic; an error is one line naming the
 //! file; `\r\n` line ends change nothing, errors included; and a trace it reads writes back as
 //! text that reads back to the same trace but for the line numbers, which become the written
@@ -7,7 +7,7 @@
 //! for 0.
 #![no_main]
 
-use close2gl_trace::parse_trace;
+use close2gl_trace_format::parse_trace;
 use libfuzzer_sys::fuzz_target;
 
 const LABEL: &str = "fuzz.trace";

@@ -3,9 +3,9 @@
 
 use std::path::{Path, PathBuf};
 
+use close2gl_check::{Report, picture, report};
 use close2gl_core::{Mesh, ModelSource, PrimitiveParams};
-use close2gl_trace::check::{self, Report, picture, report};
-use close2gl_trace::read_trace;
+use close2gl_trace_format::{Trace, read_trace};
 
 use super::CliError;
 
@@ -27,7 +27,8 @@ pub struct CheckArgs {
 pub fn run(args: CheckArgs) -> Result<(), CliError> {
     let mesh = load_model(&args.model)?;
     let trace = read_trace(&args.trace).map_err(|e| CliError::Input(e.to_string()))?;
-    let report = check::check(&mesh, &trace).map_err(|e| CliError::Input(e.to_string()))?;
+    let report =
+        close2gl_check::check(&mesh, &trace).map_err(|e| CliError::Input(e.to_string()))?;
     let name = args.trace.display().to_string();
     let text = report::text(&report, &name);
     let json = report::json(&report);
@@ -55,7 +56,7 @@ pub fn load_model(model: &str) -> Result<Mesh, CliError> {
 fn write_out(
     dir: &Path,
     report: &Report,
-    trace: &close2gl_trace::Trace,
+    trace: &Trace,
     text: &str,
     json: &serde_json::Value,
 ) -> Result<(), CliError> {

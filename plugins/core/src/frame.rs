@@ -91,6 +91,26 @@ pub struct RasterGeometry {
 #[derive(Resource, Clone, Debug, Default, PartialEq)]
 pub struct TraceOutput(pub Option<Vec<[f32; 2]>>);
 
+/// What check found in the shown trace, in the words the panel shows, so that the panel reads
+/// no check types. Its one writer is the trace plugin, whenever it takes or refuses a trace;
+/// empty while none is shown or refused.
+#[derive(Resource, Clone, Debug, Default, PartialEq)]
+pub struct TraceFindings {
+    /// The trace shown.
+    pub path: Option<std::path::PathBuf>,
+    /// Why the last trace requested was refused (the one shown before stays).
+    pub error: Option<String>,
+    pub agrees: bool,
+    /// The first stage that differs, by name, with its details.
+    pub first_difference: Option<(&'static str, Vec<String>)>,
+    /// The catalogue mistakes check named.
+    pub mistakes: Vec<&'static str>,
+    /// When no mistake explains the trace: its first difference, as precisely as it can say.
+    pub unexplained: Option<String>,
+    /// Every stage by name, with its status in a few words (`agrees (12)`).
+    pub stages: Vec<(&'static str, String)>,
+}
+
 /// The Close2GL pipeline's output: 2D positions in window pixels (origin top-left, y down), ready
 /// for a pass-through GPU pipeline, and the stage counts; with the software rasterizer, also the
 /// same primitives with depth and what shading needs.

@@ -44,7 +44,7 @@ pub use fates::{
 };
 pub use frame::{
     Close2glFrame, CutVertex, RasterGeometry, RasterVertex, Scene, SoftwareFrame, StageCounts,
-    Topology, TraceOutput, Viewport,
+    Topology, TraceFindings, TraceOutput, Viewport,
 };
 pub use image::Image;
 pub use input::{Action, InputBindings, InputState, ProbeClick};

@@ -1,28 +1,18 @@
-//! close2gl's scene and trace files (`trace-format.md`, version 1), which let any program, in
-//! any language, be checked against close2gl's pipeline: a scene is what a grader hands a
-//! program to say which frame to draw, a trace is what the program wrote about that frame of its
-//! own Close2GL (its camera, its matrices, the 2D triangles it drew). This crate owns reading
-//! both into plain values, with every fault a one-line [`FormatError`] naming the file and line,
-//! and writing them back as text that reads back the same; [`check`] compares a trace with the
-//! pipeline, and [`rubric`] makes the assignment's rubric into scenes and judges a program's
-//! traces of them, for `close2gl grade`. Its plugin, [`TracePlugin`], shows a trace in the viewer
-//! ([`view`]) and owns the two resources that hold it.
+//! close2gl's viewer plugin for a program's trace: [`TracePlugin`] reads the trace the command
+//! line, a dropped file or the watch asks for (its format is `close2gl_trace_format`'s), checks
+//! it against the shown mesh (`close2gl_check`), takes its camera and settings, and puts its 2D
+//! output in the Close2GL view ([`view`]). It owns the resources that hold the trace
+//! (`TraceRequest`, `TraceView`, `TraceOutput`, and `TraceFindings`, check's findings in the
+//! panel's words); it reads the mesh and `Viewport`, and writes the `Camera` and
+//! `RenderSettings` when a trace is taken.
 
-pub mod check;
-pub mod format;
-pub mod rubric;
 pub mod view;
 
 use bevy_ecs::prelude::*;
 use close2gl_core::{
-    App, Close2glStep, Owner, Plugin, RenderSettings, TraceOutput, Update, Viewport,
+    App, Close2glStep, Owner, Plugin, RenderSettings, TraceFindings, TraceOutput, Update, Viewport,
 };
-use view::{TraceRequest, TraceView, load_requested_trace, show_trace};
-
-pub use format::{
-    Axis, CameraLines, ClipLine, Culling, FormatError, Motion, Piece, SceneCamera, SceneFile,
-    System2d, Trace, TraceClipping, parse_scene, parse_trace, read_scene, read_trace,
-};
+use view::{TraceRequest, TraceView, load_requested_trace, show_trace, word_findings};
 
 /// Reads requested traces (in `FrameSet::Close2gl`, before the pipeline: after the framing of a
 /// new model, whose camera the trace's replaces) and shows the current one's 2D output (after
@@ -35,12 +25,15 @@ impl Plugin for TracePlugin {
         app.init_resource::<TraceRequest>()
             .init_resource::<TraceView>()
             .init_resource::<TraceOutput>()
+            .init_resource::<TraceFindings>()
             .requires::<RenderSettings>(Owner::Settings)
             .requires::<Viewport>(Owner::Settings)
             .add_systems(
                 Update,
                 (
-                    load_requested_trace.in_set(Close2glStep::Prepare),
+                    (load_requested_trace, word_findings)
+                        .chain()
+                        .in_set(Close2glStep::Prepare),
                     show_trace.in_set(Close2glStep::Raster),
                 ),
             );

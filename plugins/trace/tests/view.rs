@@ -2,13 +2,13 @@
 //! drew at the pixel, close2gl's fate for it and what check found; the trace's camera and
 //! settings become the viewer's.
 
-use close2gl_core::{Camera, Clipping, RenderMode, RenderSettings, Viewport};
+use close2gl_check::program_for;
+use close2gl_core::{Camera, Clipping, FrontFace, RenderMode, RenderSettings, Viewport};
 use close2gl_pipeline::mistakes::Mistakes;
-use close2gl_pipeline::program::ClipPlanes;
-use close2gl_trace::check::{self, program_for};
+use close2gl_pipeline::program::{ClipPlanes, ClipRule};
 use close2gl_trace::view::probe::probe;
 use close2gl_trace::view::{Shown, TraceView};
-use close2gl_trace::{CameraLines, Culling, Piece, System2d, Trace, TraceClipping};
+use close2gl_trace_format::{CameraLines, Piece, System2d, Trace};
 use glam::{DVec2, DVec3};
 
 /// The cube seen from +z, 4 units away, in a 100 × 100 window with y up; its 2D output as
@@ -35,9 +35,9 @@ fn trace(mesh: &close2gl_core::Mesh, moved: usize) -> Trace {
             near: 1.0,
             far: 10.0,
         },
-        culling: Culling::Ccw,
+        culling: Some(FrontFace::Ccw),
         winding: None,
-        clipping: TraceClipping::Full,
+        clipping: ClipRule::Full,
         planes: ClipPlanes::All,
         mode: Some(RenderMode::Solid),
         m: None,
@@ -71,7 +71,7 @@ fn a_probe_where_the_trace_differs_names_the_triangle_its_fate_and_the_differenc
     };
     let moved = drawn[0];
     let trace = trace(&mesh, moved);
-    let report = check::check(&mesh, &trace).expect("fits the cube");
+    let report = close2gl_check::check(&mesh, &trace).expect("fits the cube");
     assert!(!report.agrees());
     let piece = trace
         .pieces

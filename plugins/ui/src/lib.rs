@@ -8,7 +8,7 @@
 //! sets `ToolRequests` (the input plugin's), carries out copy as command (clipboard and terminal,
 //! the command from the app's `CommandLine`) and the key cheat sheet (from `InputBindings`), and
 //! shows the [`Notice`] a tool leaves. Trace, shown while the Close2GL view shows a program's
-//! trace, reads `TraceView` (the file, check's report, why a trace was refused). Inspector reads `Fates`, `Mesh`, `Camera` and `Viewport`
+//! trace, reads `TraceFindings` (the file, check's findings in words, why a trace was refused). Inspector reads `Fates`, `Mesh`, `Camera` and `Viewport`
 //! (the legend's counts, the picked triangle's fate, the matrices) and writes
 //! `RenderSettings::overlay` and `SelectedTriangle`. Over the views it names them, shows the
 //! legend of the overlay each shows, and opens the probe's [`ProbeAnswer`] beside the clicked

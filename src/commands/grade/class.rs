@@ -7,9 +7,9 @@
 use std::fmt::Write;
 use std::path::{Path, PathBuf};
 
-use close2gl_trace::rubric::{LineId, MAX_TOTAL};
+use close2gl_check::rubric::{LineId, MAX_TOTAL};
 
-use super::score::Grade;
+use super::graded::Grade;
 use super::{CliError, GradeArgs, Plan, html, run_tasks};
 
 pub(super) fn grade_class(dir: &Path, args: &GradeArgs, plan: &Plan) -> Result<(), CliError> {

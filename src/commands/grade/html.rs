@@ -6,12 +6,12 @@ use std::fmt::Write;
 
 use base64::Engine;
 use base64::engine::general_purpose::STANDARD;
-use close2gl_trace::rubric::MAX_TOTAL;
+use close2gl_check::rubric::MAX_TOTAL;
 
+use super::graded::Grade;
 use super::report::failure_lines;
 use super::sandboxing::Sandboxing;
 use super::scene_run::SceneResult;
-use super::score::Grade;
 use super::to_fix;
 
 const STYLE: &str = "body{font:14px/1.4 system-ui,sans-serif;margin:2em;color:#222;max-width:1200px}\
@@ -151,8 +151,8 @@ fn sandbox_list(out: &mut String, sandboxing: &Sandboxing) {
 
 /// The difference picture's colours, as check paints them.
 fn legend() -> String {
-    use close2gl_trace::check::compare::Kind;
-    use close2gl_trace::check::picture::kind_color;
+    use close2gl_check::compare::Kind;
+    use close2gl_check::picture::kind_color;
     let kinds = [
         Kind::DrawnBehindEye,
         Kind::DrawnOutside,

@@ -1,19 +1,20 @@
-//! `close2gl grade`: runs a student's program on the rubric's scenes (`close2gl_trace::rubric`)
+//! `close2gl grade`: runs a student's program on the rubric's scenes (`close2gl_check::rubric`)
 //! under the runner's limits, and scores the assignment's 200 points line by line with check's
 //! evidence (docs/grading.md). One program (`--run`), or a class (`--submissions DIR`).
 //!
 //! The files follow a grading: `mod.rs` the arguments, the models and the scenes' workers;
-//! `scene_run.rs` one scene through the runner and the judges; `score.rs` the scenes' verdicts added
-//! up into the rubric's lines; `report.rs` the terminal table and the JSON; `html.rs` the page;
+//! `scene_run.rs` one scene through the runner and the judges; `graded.rs` the scenes' results
+//! with the rubric's lines scored on them (the scoring is check's `rubric::score`);
+//! `report.rs` the terminal table and the JSON; `html.rs` the page;
 //! `class.rs` a folder of submissions and its CSV; `sandboxing.rs` the sandbox each run is in,
 //! and what every report says of it.
 
 mod class;
+mod graded;
 mod html;
 mod report;
 mod sandboxing;
 mod scene_run;
-mod score;
 mod to_fix;
 
 use std::panic::AssertUnwindSafe;
@@ -22,15 +23,15 @@ use std::sync::Mutex;
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::time::Duration;
 
+use close2gl_check::rubric::{self, RubricScene};
 use close2gl_core::{Mesh, ModelSource, PrimitiveParams};
 use close2gl_runner::Limits;
-use close2gl_trace::rubric::{self, RubricScene};
 
 use super::CliError;
 use close2gl_app::progress_bar::TerminalProgress;
+use graded::Grade;
 use sandboxing::Sandboxing;
 use scene_run::SceneResult;
-use score::Grade;
 
 #[derive(clap::Args, Debug)]
 pub struct GradeArgs {

@@ -5,12 +5,12 @@
 
 use std::fmt::Write;
 
-use close2gl_trace::rubric::MAX_TOTAL;
+use close2gl_check::rubric::{LineScore, MAX_TOTAL};
 use serde_json::{Value, json};
 
+use super::graded::Grade;
 use super::sandboxing::Sandboxing;
 use super::scene_run::SceneResult;
-use super::score::{Grade, LineScore};
 use super::to_fix;
 
 /// The rubric table: each line's points of its points and scenes passed of its scenes; under

@@ -6,10 +6,10 @@
 
 use std::path::Path;
 
+use close2gl_check::rubric::{self, Judged, LineId, RubricScene, Verdict};
+use close2gl_check::{self as check, Report, picture, report};
 use close2gl_runner::{Ending, Limits, Sandbox, Workspace};
-use close2gl_trace::check::{self, Report, picture, report};
-use close2gl_trace::rubric::{self, LineId, RubricScene, Verdict};
-use close2gl_trace::{Trace, read_trace};
+use close2gl_trace_format::{Trace, read_trace};
 
 use super::Model;
 
@@ -51,6 +51,14 @@ impl SceneResult {
                 .collect(),
             run_failure: Some(why),
             evidence: None,
+        }
+    }
+
+    /// The scene as the rubric scores it: its verdicts and the mistakes check named.
+    pub fn judged(&mut self) -> Judged<'_> {
+        Judged {
+            verdicts: &mut self.verdicts,
+            mistakes: self.evidence.as_ref().map_or(&[], |e| &e.mistakes),
         }
     }
 }

@@ -1,9 +1,9 @@
 //! What to fix, first: the bugs a grade found, each with the rubric lines it cost and the first
 //! scene that shows it. A teacher reads this, not the twelve lines; the table follows it.
 
-use close2gl_trace::rubric::LineId;
+use close2gl_check::rubric::{LineId, LineScore};
 
-use super::score::{Grade, LineScore};
+use super::graded::Grade;
 
 /// One bug: the mistakes check named for it (or, when none, where check first finds the
 /// program different, or else the first reason a scene gave), the lines it cost and their

@@ -37,7 +37,8 @@ impl From<&Camera> for ProgramCamera {
     }
 }
 
-/// How the program clips.
+/// How the program clips: what a scene or a trace says (`clipping simple|full|none`), and
+/// what it does unless it divides first ([`Program::divides_first`]).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum ClipRule {
     /// The assignment's: drop a triangle with any corner outside the view volume.
@@ -46,9 +47,6 @@ pub enum ClipRule {
     Full,
     /// Nothing clipped, but a corner at w = 0 exactly (no division is possible).
     Nothing,
-    /// `divide_before_clip`: divide first, then drop a triangle with a corner at w = 0 or
-    /// |x/w| > 1 or |y/w| > 1; z is not tested, and what is kept is drawn whole.
-    DivideFirst,
 }
 
 /// How the program culls, and which winding (or side) is front.
@@ -152,8 +150,8 @@ impl Declared {
     }
 
     /// `settings` switched to this declaration's culling, clipping and mode: what close2gl's
-    /// view shows of a program that declares it (one that clips nothing, or divides first, is
-    /// shown with full clipping, the nearest close2gl draws).
+    /// view shows of a program that declares it (one that clips nothing is shown with full
+    /// clipping, the nearest close2gl draws).
     pub fn onto(&self, settings: RenderSettings) -> RenderSettings {
         RenderSettings {
             mode: self.mode,
@@ -161,7 +159,7 @@ impl Declared {
             front_face: self.culling.unwrap_or(FrontFace::Ccw),
             clipping: match self.clip {
                 ClipRule::Simple => Clipping::Simple,
-                ClipRule::Full | ClipRule::Nothing | ClipRule::DivideFirst => Clipping::Full,
+                ClipRule::Full | ClipRule::Nothing => Clipping::Full,
             },
             ..settings
         }
@@ -180,7 +178,11 @@ pub struct Program {
     pub v: DMat4,
     /// What takes a world point to clip coordinates: P·M (or M·P, with `product_order`).
     pub clip_matrix: DMat4,
+    /// The declared rule, or `Nothing` with `no_clipping`.
     pub clip: ClipRule,
+    /// `divide_before_clip`: it divides first, then drops a triangle with a corner at w = 0 or
+    /// |x/w| > 1 or |y/w| > 1 (z is not tested) and draws what it keeps whole, whatever `clip`.
+    pub divides_first: bool,
     pub cull: CullRule,
     pub declared: Declared,
 }
@@ -202,10 +204,9 @@ impl Program {
             true => m * p,
             false => p * m,
         };
-        let clip = match () {
-            _ if mistakes.has(DivideBeforeClip) => ClipRule::DivideFirst,
-            _ if mistakes.has(NoClipping) => ClipRule::Nothing,
-            _ => declared.clip,
+        let clip = match mistakes.has(NoClipping) {
+            true => ClipRule::Nothing,
+            false => declared.clip,
         };
         let cull = match declared.culling {
             None => CullRule::Off,
@@ -231,6 +232,7 @@ impl Program {
             v,
             clip_matrix,
             clip,
+            divides_first: mistakes.has(DivideBeforeClip),
             cull,
             declared,
         }

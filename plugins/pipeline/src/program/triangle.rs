@@ -125,17 +125,17 @@ impl Program {
             outcome.fate.behind_eye = clip.iter().all(|c| c.w <= 0.0);
             None
         };
+        if self.divides_first {
+            let outside =
+                |c: &DVec4| c.w == 0.0 || (c.x / c.w).abs() > 1.0 || (c.y / c.w).abs() > 1.0;
+            return match clip.iter().any(outside) {
+                true => removed(outcome, any),
+                false => whole(outcome),
+            };
+        }
         match self.clip {
             ClipRule::Nothing if clip.iter().any(|c| c.w == 0.0) => removed(outcome, NEAR),
             ClipRule::Nothing => whole(outcome),
-            ClipRule::DivideFirst => {
-                let outside =
-                    |c: &DVec4| c.w == 0.0 || (c.x / c.w).abs() > 1.0 || (c.y / c.w).abs() > 1.0;
-                match clip.iter().any(outside) {
-                    true => removed(outcome, any),
-                    false => whole(outcome),
-                }
-            }
             _ if any == 0 => whole(outcome),
             ClipRule::Simple => removed(outcome, any),
             _ if all != 0 => removed(outcome, all),

@@ -5,6 +5,7 @@
 //! close2gl's, for the GPU to draw as the assignment's 2D output is drawn. The live difference
 //! and the probe then work on it; [`probe`] answers a probe from the trace's side.
 
+mod findings;
 mod open;
 pub mod probe;
 mod show;
@@ -13,9 +14,10 @@ use std::path::PathBuf;
 
 use bevy_ecs::prelude::*;
 
-use crate::check::Report;
-use crate::format::Trace;
+use close2gl_check::Report;
+use close2gl_trace_format::Trace;
 
+pub use findings::word_findings;
 pub use open::{load_requested_trace, trace_camera, trace_settings};
 pub use show::show_trace;
 

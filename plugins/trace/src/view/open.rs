@@ -5,10 +5,9 @@ use std::path::Path;
 use bevy_ecs::prelude::*;
 use close2gl_core::{Camera, Mesh, Mistake, Rasterizer, RenderSettings};
 use close2gl_pipeline::program::WindingSpace;
+use close2gl_trace_format::{Trace, read_trace};
 
 use super::{Shown, TraceRequest, TraceView};
-use crate::check;
-use crate::format::{Trace, read_trace};
 
 /// Serves a pending `TraceRequest` once a mesh is shown; a new mesh has the shown trace checked
 /// again (or refused, when it does not fit the new model). A trace that does not read or fit
@@ -46,7 +45,7 @@ pub fn load_requested_trace(
 
 fn read(path: &Path, mesh: &Mesh) -> Result<Shown, String> {
     let trace = read_trace(path).map_err(|e| e.to_string())?;
-    let report = check::check(mesh, &trace).map_err(|e| e.to_string())?;
+    let report = close2gl_check::check(mesh, &trace).map_err(|e| e.to_string())?;
     Ok(Shown { trace, report })
 }
 
@@ -79,6 +78,6 @@ pub fn trace_settings(trace: &Trace, settings: RenderSettings) -> RenderSettings
         mode: trace.mode.unwrap_or(settings.mode),
         close2gl_raster: Rasterizer::Gpu,
         mistake: Mistake::None,
-        ..check::declared(trace, WindingSpace::Screen).onto(settings)
+        ..close2gl_check::declared(trace, WindingSpace::Screen).onto(settings)
     }
 }

@@ -2,12 +2,12 @@
 //! the pixel, which close2gl draws there, and for each, close2gl's fate for it and what check
 //! found.
 
+use close2gl_check::compare::fate_words;
+use close2gl_check::region::covers;
 use close2gl_core::Viewport;
 use glam::DVec2;
 
 use super::{Shown, TraceView};
-use crate::check::compare::fate_words;
-use crate::check::region::covers;
 
 /// The trace's side of a probe.
 #[derive(Clone, Debug, PartialEq)]

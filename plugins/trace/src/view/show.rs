@@ -4,10 +4,10 @@
 use bevy_ecs::prelude::*;
 use close2gl_core::{Close2glFrame, Topology, TraceOutput, Viewport};
 use close2gl_pipeline::emit;
+use close2gl_trace_format::Trace;
 use glam::DVec2;
 
 use super::TraceView;
-use crate::format::Trace;
 
 /// The shown trace's 2D output, in the view's pixels, whenever the pipeline's frame (its
 /// topology), the trace or the view's size changed; none once no trace is shown.

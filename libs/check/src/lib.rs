@@ -1,0 +1,199 @@
+//! `close2gl check` and the rubric `close2gl grade` scores by, as a library: a program's trace
+//! (read by `close2gl_trace_format`) against close2gl's pipeline on the same mesh, stage by
+//! stage ([`compare`]; each stage on the program's own input, [`own_input`]; pieces against a
+//! polygon, [`region`]), and, when it differs, the catalogue mistakes that reproduce it
+//! ([`diagnose`], [`apart`]); when none does, [`clues`] say what the differences share. [`report`] and [`picture`] write what was found as
+//! text, JSON and images. [`rubric`] makes the assignment's rubric into scenes, judges a
+//! program's traces of them and scores the judged scenes into the lines' points. It reads values
+//! (a mesh, traces, scenes) and returns values: no files, processes, GPU or window.
+
+pub mod apart;
+pub mod clues;
+pub mod compare;
+pub mod diagnose;
+pub mod own_input;
+pub mod picture;
+pub mod region;
+pub mod report;
+pub mod rubric;
+
+use close2gl_core::{Mesh, RenderMode};
+use close2gl_pipeline::mistakes::Mistakes;
+use close2gl_pipeline::program::{Declared, Outcome, Program, WindingSpace};
+use close2gl_trace_format::{FormatError, Trace};
+use glam::DMat4;
+
+pub use compare::{Comparison, Kind, Stage, StageResult, Status};
+
+/// What check found: the comparison with close2gl, close2gl's own frame, and the mistakes that
+/// reproduce the trace (each set on its own; empty when it agrees, or when none does).
+#[derive(Clone, Debug)]
+pub struct Report {
+    pub comparison: Comparison,
+    pub expected: Vec<Outcome>,
+    pub diagnoses: Vec<Mistakes>,
+    /// When the trace differs and no mistake reproduces it: the first difference, as precisely
+    /// as the data allows.
+    pub unexplained: Option<String>,
+    /// When several sets reproduce the trace: what would tell them apart.
+    pub apart: Vec<String>,
+    /// When none reproduces it whole: the mistakes that explain some of its differing stages,
+    /// each with those stages.
+    pub partial: Vec<(Mistakes, Vec<Stage>)>,
+}
+
+impl Report {
+    pub fn agrees(&self) -> bool {
+        self.comparison.agrees()
+    }
+
+    /// The catalogue ids named, each once, in the catalogue's order.
+    pub fn mistakes(&self) -> Vec<&'static str> {
+        let partial = self.partial.iter().map(|(set, _)| set);
+        let all = self
+            .diagnoses
+            .iter()
+            .chain(partial)
+            .fold(Mistakes::NONE, |all, set| {
+                set.iter().fold(all, |a, m| a.with(m))
+            });
+        all.iter().map(|m| m.name()).collect()
+    }
+}
+
+/// The program close2gl runs for this trace: its camera, window, 2D system and settings, with
+/// `mistakes`, testing the winding where the trace says (on screen when it does not).
+pub fn program_for(trace: &Trace, mistakes: Mistakes) -> Program {
+    let winding = trace.winding.unwrap_or(WindingSpace::Screen);
+    program_winding(trace, mistakes, winding)
+}
+
+/// [`program_for`] testing the winding in `winding`.
+pub fn program_winding(trace: &Trace, mistakes: Mistakes, winding: WindingSpace) -> Program {
+    Program::new(&trace.camera, declared(trace, winding), mistakes)
+}
+
+/// What `trace` declares (its window, 2D system, culling, clipping, mode, planes and model
+/// matrix), testing the winding in `winding`: the one way a trace becomes what close2gl runs
+/// and what its view shows ([`Declared::onto`]).
+pub fn declared(trace: &Trace, winding: WindingSpace) -> Declared {
+    let mode = trace.mode.unwrap_or(RenderMode::Solid);
+    Declared {
+        winding,
+        planes: trace.planes,
+        model: trace.model_matrix.unwrap_or(DMat4::IDENTITY),
+        ..Declared::new(
+            trace.window,
+            trace.ortho2d,
+            trace.culling,
+            trace.clipping,
+            mode,
+        )
+    }
+}
+
+/// What a trace says about a model that is not a matter of its numbers: its triangle count and
+/// every triangle index it uses must be the model's, and no triangle drawn in more than
+/// [`MAX_PIECES`] pieces. An error names the trace's line.
+pub fn fits(trace: &Trace, mesh: &Mesh) -> Result<(), FormatError> {
+    let count = mesh.triangles.len();
+    let error = |line: usize, message: String| FormatError {
+        file: trace.file.clone(),
+        line,
+        message,
+    };
+    if let Some((n, line)) = trace.triangles
+        && n != count
+    {
+        return Err(error(
+            line,
+            format!("expected 'triangles {count}' (the model has {count}), found 'triangles {n}'"),
+        ));
+    }
+    let lines = trace
+        .clip
+        .iter()
+        .map(|c| (c.triangle, c.line))
+        .chain(trace.pieces.iter().map(|p| (p.triangle, p.line)));
+    for (t, line) in lines {
+        if t >= count {
+            return Err(error(
+                line,
+                format!("expected a triangle index below {count} (the model's count), found {t}"),
+            ));
+        }
+    }
+    let mut pieces = vec![0usize; count];
+    for piece in &trace.pieces {
+        pieces[piece.triangle] += 1;
+        if pieces[piece.triangle] > MAX_PIECES {
+            return Err(error(
+                piece.line,
+                format!(
+                    "expected at most {MAX_PIECES} 'tri' or 'poly' lines for one mesh triangle \
+                     (a clipped triangle is at most 7), found more for triangle {}",
+                    piece.triangle
+                ),
+            ));
+        }
+    }
+    Ok(())
+}
+
+/// The most pieces a trace may draw for one mesh triangle: a triangle clipped by six planes is
+/// a polygon of at most nine corners, a fan of seven triangles; the rest is room for clippers
+/// that leave slivers. More is a trace that lies, and would make checking it quadratic.
+pub const MAX_PIECES: usize = 64;
+
+/// Checks `trace` against close2gl's pipeline on `mesh`, and diagnoses it when it differs.
+pub fn check(mesh: &Mesh, trace: &Trace) -> Result<Report, FormatError> {
+    let mut report = compare_only(mesh, trace)?;
+    explain(&mut report, mesh, trace);
+    Ok(report)
+}
+
+/// The comparison alone, no mistake named yet: a grader compares every scene but diagnoses
+/// only those it reports, which is where the time goes on a big model.
+pub fn compare_only(mesh: &Mesh, trace: &Trace) -> Result<Report, FormatError> {
+    fits(trace, mesh)?;
+    let program = program_for(trace, Mistakes::NONE);
+    let expected = program.frame(mesh);
+    let mut comparison = compare::compare_own_input(&program, mesh, trace);
+    // The clues are for a reader: added to the comparison a report shows, not to each
+    // candidate's.
+    clues::add_matrix_clues(&mut comparison.stages, &program, trace);
+    Ok(Report {
+        comparison,
+        expected,
+        diagnoses: Vec::new(),
+        unexplained: None,
+        apart: Vec::new(),
+        partial: Vec::new(),
+    })
+}
+
+/// Names the mistakes that reproduce a trace that differs, or states its first difference
+/// when none does; nothing for a trace that agrees.
+pub fn explain(report: &mut Report, mesh: &Mesh, trace: &Trace) {
+    if report.agrees() {
+        return;
+    }
+    report.diagnoses = diagnose::diagnose(mesh, trace);
+    report.apart = apart::tell_apart(trace, &report.diagnoses);
+    if report.diagnoses.is_empty() {
+        report.partial = diagnose::partial(mesh, trace, &report.comparison);
+        let explained: Vec<Stage> = report
+            .partial
+            .iter()
+            .flat_map(|(_, stages)| stages.iter().copied())
+            .collect();
+        let program = program_for(trace, Mistakes::NONE);
+        report.unexplained = Some(diagnose::unexplained(
+            &program,
+            mesh,
+            &report.comparison,
+            &report.expected,
+            &explained,
+        ));
+    }
+}
