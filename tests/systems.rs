@@ -9,11 +9,13 @@ use std::sync::Arc;
 
 use close2gl::core::bevy_ecs::change_detection::DetectChanges;
 use close2gl::core::bevy_ecs::schedule::{ApplyDeferred, Schedules, SystemSet};
+use close2gl::core::bevy_ecs::system::SystemAccess;
 use close2gl::core::glam::{Vec2, Vec3};
 use close2gl::core::{
-    App, Camera, CameraAction, CameraActions, CameraHome, CameraMode, Clipping, Close2glFrame,
-    FrameSet, FrontFace, Image, InputState, Lighting, Mesh, ModelSource, ModelStatus, Rasterizer,
-    RenderMode, RenderSettings, SettingsPlugin, Shading, SoftwareFrame, Texture, Update, Viewport,
+    App, Appearance, Camera, CameraAction, CameraActions, CameraHome, CameraMode, Clipping,
+    Close2glFrame, FrameSet, FrontFace, Image, InputState, Lighting, Mesh, ModelSource,
+    ModelStatus, Overlay, PipelineSettings, Rasterizer, RenderMode, RenderSettings, SettingsPlugin,
+    Shading, SoftwareFrame, Texture, Topology, Update, Viewport,
 };
 use close2gl::input::InputPlugin;
 use close2gl::pipeline::Close2glPlugin;
@@ -180,7 +182,7 @@ fn scroll_zooms_both_fields_of_view_keeping_their_ratio() {
 #[test]
 fn the_lecture_keys_switch_shading() {
     let mut app = app_with(cube(), RenderSettings::default());
-    let shading = |app: &App| app.world().resource::<RenderSettings>().shading;
+    let shading = |app: &App| app.world().resource::<Appearance>().shading;
     press(&mut app, "shift+p");
     assert_eq!(shading(&app), Shading::Phong);
     press(&mut app, "shift+g");
@@ -358,7 +360,7 @@ fn the_raster_system_draws_when_asked_and_when_something_changed() {
     assert_eq!(drawn(&app), inserted, "gpu: nothing drawn");
 
     app.world_mut()
-        .resource_mut::<RenderSettings>()
+        .resource_mut::<PipelineSettings>()
         .close2gl_raster = Rasterizer::Software;
     app.update();
     let first = drawn(&app);
@@ -377,7 +379,7 @@ fn the_raster_system_draws_when_asked_and_when_something_changed() {
     app.update();
     assert_eq!(drawn(&app), first, "nothing changed");
     app.world_mut().resource_mut::<Lighting>().kd = 0.5;
-    app.world_mut().resource_mut::<RenderSettings>().shading = Shading::Phong;
+    app.world_mut().resource_mut::<Appearance>().shading = Shading::Phong;
     app.update();
     assert_ne!(drawn(&app), first, "lit: drawn again");
     let lit = app.world().resource::<SoftwareFrame>();
@@ -386,6 +388,58 @@ fn the_raster_system_draws_when_asked_and_when_something_changed() {
         image.pixels[240 * 640 + 320],
         "now lit"
     );
+}
+
+/// The render settings are three resources, each read by whom it concerns: switching the overlay
+/// or the background recomputes nothing of the pipeline's (the Close2GL frame keeps its change
+/// tick; the background redraws the software image alone), and switching the mode recomputes
+/// the frame in that same frame.
+#[test]
+fn only_the_pipelines_switches_recompute_the_close2gl_frame() {
+    let software = RenderSettings {
+        close2gl_raster: Rasterizer::Software,
+        ..RenderSettings::default()
+    };
+    let mut app = app_with(cube(), software);
+    app.init_resource::<Lighting>().add_plugins(RasterPlugin);
+    camera_mut(&mut app).position = Vec3::new(0.0, 0.0, 6.0);
+    app.update();
+    let computed = |app: &App| app.world().resource_ref::<Close2glFrame>().last_changed();
+    let drawn = |app: &App| app.world().resource_ref::<SoftwareFrame>().last_changed();
+    let (geometry, image) = (computed(&app), drawn(&app));
+
+    *app.world_mut().resource_mut::<Overlay>() = Overlay::Difference;
+    app.update();
+    assert_eq!(
+        computed(&app),
+        geometry,
+        "the overlay: the frame is left alone"
+    );
+    assert_eq!(drawn(&app), image, "the overlay: the image is left alone");
+
+    app.world_mut().resource_mut::<Appearance>().background = Vec3::ONE;
+    app.update();
+    assert_eq!(
+        computed(&app),
+        geometry,
+        "the background: the frame is left alone"
+    );
+    assert_ne!(
+        drawn(&app),
+        image,
+        "the background: the image is drawn again"
+    );
+    let corner = app.world().resource::<SoftwareFrame>().image.pixel(2, 2);
+    assert_eq!(corner[..3], [255, 255, 255], "in the new background");
+
+    app.world_mut().resource_mut::<PipelineSettings>().mode = RenderMode::Wireframe;
+    app.update();
+    assert_ne!(
+        computed(&app),
+        geometry,
+        "the mode: the frame is computed again"
+    );
+    assert_eq!(frame(&app).topology, Topology::Lines);
 }
 
 #[test]
@@ -492,6 +546,39 @@ fn every_system_sits_in_one_frame_set_of_the_one_schedule() {
     }
     // Every set has a system of the viewer's, so the walk above saw each of them.
     assert!(!per_set.contains(&0), "systems per FrameSet: {per_set:?}");
+}
+
+/// The camera plugin is the one system of the viewer's app that writes the `Camera`: the others
+/// read it and ask through `CameraRequest`. Exclusive systems (the panel's, the watch's) could
+/// write anything; they are held to asking by their own tests (`plugins/ui/tests/panel.rs`,
+/// `tests/watch.rs`), and only they are let through here.
+#[test]
+fn the_camera_plugin_is_the_one_system_that_writes_the_camera() {
+    let mut app = viewer_app();
+    let camera = app.world_mut().register_component::<Camera>();
+    let schedules = app.world().resource::<Schedules>();
+    let schedule = schedules.get(Update).expect("the frame schedule");
+    let mut writers = Vec::new();
+    for (_, system) in schedule
+        .systems_with_access()
+        .expect("the schedule has run")
+    {
+        if let SystemAccess::Shared(access) = system.access()
+            && access.combined_access().has_write(camera)
+        {
+            writers.push(system.system().name().to_string());
+        }
+    }
+    writers.sort();
+    assert_eq!(
+        writers,
+        [
+            "close2gl_camera::apply_camera_actions",
+            "close2gl_camera::apply_camera_edit",
+            "close2gl_camera::apply_camera_replacement",
+            "close2gl_camera::frame_new_model",
+        ]
+    );
 }
 
 /// A shown trace has an output of its own: the pipeline's frame stays what the pipeline drew

@@ -15,7 +15,8 @@ pub mod view;
 
 use bevy_ecs::prelude::*;
 use close2gl_core::{
-    App, Close2glStep, Owner, Plugin, RenderSettings, TraceOutput, Update, Viewport,
+    App, CameraRequest, Close2glStep, LoadStep, Owner, PipelineSettings, Plugin, TraceOutput,
+    Update, Viewport,
 };
 use view::{TraceRequest, TraceView, load_requested_trace, show_trace};
 
@@ -24,10 +25,11 @@ pub use format::{
     System2d, Trace, TraceClipping, parse_scene, parse_trace, read_scene, read_trace,
 };
 
-/// Reads requested traces (in `FrameSet::Close2gl`, before the pipeline: after the framing of a
-/// new model, whose camera the trace's replaces) and shows the current one's 2D output (after
-/// the pipeline's own frame). Owns `TraceRequest` and `TraceView`;
-/// reads the mesh and `Viewport`, writes the `Camera`, `RenderSettings` and `Close2glFrame`.
+/// Reads requested traces (in `FrameSet::Load`, against the mesh loaded there: its camera asked
+/// of the camera plugin through `CameraRequest`, which sets it over the framing of a new model,
+/// its switches written into `PipelineSettings`) and shows the current one's 2D output (after
+/// the pipeline's own frame, into `TraceOutput`). Owns `TraceRequest`, `TraceView` and
+/// `TraceOutput`; reads the mesh, the `Camera`, `Close2glFrame` and `Viewport`.
 pub struct TracePlugin;
 
 impl Plugin for TracePlugin {
@@ -35,12 +37,13 @@ impl Plugin for TracePlugin {
         app.init_resource::<TraceRequest>()
             .init_resource::<TraceView>()
             .init_resource::<TraceOutput>()
-            .requires::<RenderSettings>(Owner::Settings)
+            .requires::<PipelineSettings>(Owner::Settings)
+            .requires::<CameraRequest>(Owner::Camera)
             .requires::<Viewport>(Owner::Settings)
             .add_systems(
                 Update,
                 (
-                    load_requested_trace.in_set(Close2glStep::Prepare),
+                    load_requested_trace.in_set(LoadStep::AgainstMesh),
                     show_trace.in_set(Close2glStep::Raster),
                 ),
             );

@@ -2,7 +2,7 @@
 //! drew at the pixel, close2gl's fate for it and what check found; the trace's camera and
 //! settings become the viewer's.
 
-use close2gl_core::{Camera, Clipping, RenderMode, RenderSettings, Viewport};
+use close2gl_core::{Camera, Clipping, PipelineSettings, RenderMode, Viewport};
 use close2gl_pipeline::mistakes::Mistakes;
 use close2gl_pipeline::program::ClipPlanes;
 use close2gl_trace::check::{self, program_for};
@@ -111,7 +111,7 @@ fn the_viewer_takes_the_traces_camera_and_settings() {
     let camera = close2gl_trace::view::trace_camera(&trace, &Camera::default(), &mesh);
     assert_eq!(camera.position, glam::Vec3::new(0.3, 0.2, 4.0));
     assert_eq!((camera.hfov, camera.near, camera.far), (60.0, 1.0, 10.0));
-    let settings = close2gl_trace::view::trace_settings(&trace, RenderSettings::default());
+    let settings = close2gl_trace::view::trace_settings(&trace, PipelineSettings::default());
     assert_eq!(settings.clipping, Clipping::Full);
     assert!(settings.backface_culling);
     assert_eq!(settings.close2gl_raster, close2gl_core::Rasterizer::Gpu);
