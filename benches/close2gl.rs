@@ -60,7 +60,8 @@ fn geometry_stage(c: &mut Criterion) {
             &config,
         );
         group.bench_function(BenchmarkId::new("baseline", size), |b| {
-            b.iter(|| baseline::frame(&mesh, &camera, &config.render, GEOMETRY_VIEWPORT))
+            let settings = config.render.pipeline();
+            b.iter(|| baseline::frame(&mesh, &camera, &settings, GEOMETRY_VIEWPORT))
         });
     }
     // The near plane a fifth of the radius into the sphere: its front cap is cut away.
@@ -88,13 +89,14 @@ fn bench_fast_path(
     group.throughput(Throughput::Elements(mesh.triangles.len() as u64));
     let mut pipeline = FastPipeline::default();
     let mut frame = Close2glFrame::default();
+    let settings = config.render.pipeline();
     group.bench_function(id, |b| {
         b.iter(|| {
             let fates = &mut Default::default();
             pipeline.run(
                 mesh,
                 camera,
-                &config.render,
+                &settings,
                 GEOMETRY_VIEWPORT,
                 &mut frame,
                 fates,
@@ -132,7 +134,7 @@ fn software_raster(c: &mut Criterion) {
         let viewport = Viewport { width, height };
         let mut app = knot(viewport);
         let (mesh, camera) = parts(&mut app);
-        let settings = *app.world().resource::<close2gl::core::RenderSettings>();
+        let settings = close2gl::core::RenderSettings::of_world(app.world()).expect("the settings");
         let lighting = *app.world().resource::<close2gl::core::Lighting>();
         let mut software = SoftwareTimer::default();
         let size = format!("{width}x{height}");

@@ -13,8 +13,8 @@ use std::time::{Duration, SystemTime};
 use close2gl_core::Owner;
 use close2gl_core::bevy_ecs::prelude::*;
 use close2gl_core::{
-    App, Camera, CameraSpeeds, FrameSet, KeepPose, ModelRequest, ModelSource, ModelStatus, Plugin,
-    Texture, TextureRequest, Update, Wake,
+    App, Camera, CameraRequest, CameraSpeeds, FrameSet, KeepPose, ModelRequest, ModelSource,
+    ModelStatus, Plugin, Texture, TextureRequest, Update, Wake,
 };
 
 use close2gl_trace::view::{TraceRequest, TraceView};
@@ -47,6 +47,7 @@ impl Plugin for WatchPlugin {
         })
         .requires::<ModelStatus>(Owner::Model)
         .requires::<KeepPose>(Owner::Camera)
+        .requires::<CameraRequest>(Owner::Camera)
         .add_systems(Update, reload_changed_files.in_set(FrameSet::Input));
     }
 }
@@ -229,9 +230,11 @@ fn reload_config(world: &mut World) {
         model_radius: radius,
         ..config.camera.speeds
     });
-    let mut cameras = world.query::<&mut Camera>();
-    for mut camera in cameras.iter_mut(world) {
-        config.camera.set_lens(&mut camera);
+    // The camera plugin sets the lens in this frame, before it frames a new model.
+    let current = world.query::<&Camera>().iter(world).next().copied();
+    if let Some(current) = current {
+        let mut request = world.resource_mut::<CameraRequest>();
+        config.camera.set_lens(request.edit(&current));
     }
     if model_changed || primitive_changed {
         world.resource_mut::<KeepPose>().0 = !model_changed;

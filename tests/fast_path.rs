@@ -4,7 +4,8 @@
 use close2gl::config::Config;
 use close2gl::core::glam::Vec3;
 use close2gl::core::{
-    Camera, Clipping, Close2glFrame, Fates, Mesh, ModelSource, RenderMode, RenderSettings, Viewport,
+    Camera, Clipping, Close2glFrame, Fates, Mesh, ModelSource, PipelineSettings, RenderMode,
+    Viewport,
 };
 use close2gl::pipeline::{FastPipeline, textbook};
 
@@ -67,10 +68,10 @@ fn fast_equals_textbook(model: &str, mesh: &Mesh, camera: &Camera) -> bool {
     let mut clipped = false;
     for mode in [RenderMode::Solid, RenderMode::Wireframe, RenderMode::Points] {
         for clipping in [Clipping::Full, Clipping::Simple] {
-            let settings = RenderSettings {
+            let settings = PipelineSettings {
                 mode,
                 clipping,
-                ..RenderSettings::default()
+                ..PipelineSettings::default()
             };
             let viewport = Viewport {
                 width: 640,
@@ -108,7 +109,7 @@ fn the_fast_paths_chunks_write_their_fates_in_mesh_order() {
         width: 400,
         height: 300,
     };
-    let settings = RenderSettings::default();
+    let settings = PipelineSettings::default();
     let (_, slow) = textbook::run_recording(&mesh, &camera, &settings, viewport);
     let mut fates = Fates {
         record: true,

@@ -8,7 +8,7 @@ use std::process::{Command, Output};
 use std::sync::OnceLock;
 
 use close2gl::core::{
-    Camera, Fates, Mesh, RecordFates, RenderSettings, Scene, SoftwareFrame, Viewport,
+    Camera, Fates, Mesh, PipelineSettings, RecordFates, Scene, SoftwareFrame, Viewport,
 };
 use close2gl::raster::SoftwareRasterizer;
 use close2gl::raster::coverage_probe::{Drawn, Outcome, PixelProbe, probe};
@@ -254,7 +254,7 @@ struct Probed {
     gpu: Gpu,
     mesh: Mesh,
     camera: Camera,
-    settings: RenderSettings,
+    settings: PipelineSettings,
 }
 
 fn probed(extra: &[&str]) -> Probed {
@@ -264,7 +264,7 @@ fn probed(extra: &[&str]) -> Probed {
     let world = app.world_mut();
     let mesh = world.query::<&Mesh>().single(world).expect("mesh").clone();
     let camera = *world.query::<&Camera>().single(world).expect("camera");
-    let settings = *world.resource::<RenderSettings>();
+    let settings = *world.resource::<PipelineSettings>();
     Probed {
         app,
         gpu,
@@ -287,7 +287,7 @@ impl Probed {
         let scene = Scene {
             mesh: &self.mesh,
             camera: &self.camera,
-            settings: &self.settings,
+            pipeline: &self.settings,
             viewport: SIZE,
         };
         let drawn = Drawn {
@@ -302,7 +302,7 @@ impl Probed {
         let scene = Scene {
             mesh: &self.mesh,
             camera: &self.camera,
-            settings: &self.settings,
+            pipeline: &self.settings,
             viewport: SIZE,
         };
         probe_reference(&self.gpu, scene, (x, y))

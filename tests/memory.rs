@@ -8,7 +8,7 @@ use std::path::Path;
 
 use close2gl::config;
 use close2gl::core::{
-    ModelRequest, ModelSource, ModelStatus, PrimitiveKind, Rasterizer, RenderSettings, Viewport,
+    ModelRequest, ModelSource, ModelStatus, PipelineSettings, PrimitiveKind, Rasterizer, Viewport,
 };
 use close2gl_gpu::{OffscreenPlugin, render_offscreen};
 
@@ -54,7 +54,7 @@ fn loading_models_100_times_leaves_resident_memory_flat() {
         let world = app.world_mut();
         world.resource_mut::<ModelRequest>().0 = Some(source.clone());
         // Odd and even rounds of the five models draw Close2GL with different rasterizers.
-        world.resource_mut::<RenderSettings>().close2gl_raster = match (load / models.len()) % 2 {
+        world.resource_mut::<PipelineSettings>().close2gl_raster = match (load / models.len()) % 2 {
             0 => Rasterizer::Software,
             _ => Rasterizer::Gpu,
         };

@@ -1,19 +1,24 @@
 //! The ECS systems on a headless World: a test inserts resources, sends input, runs the
 //! schedules and asserts. No window, no GPU.
 
-use close2gl::camera::CameraPlugin;
+use close2gl::camera::{
+    CameraPlugin, apply_camera_actions, apply_camera_edit, apply_camera_replacement,
+    frame_new_model,
+};
 use close2gl::config::Config;
 use close2gl::watch::WatchPlugin;
 use std::any::TypeId;
 use std::sync::Arc;
 
 use close2gl::core::bevy_ecs::change_detection::DetectChanges;
-use close2gl::core::bevy_ecs::schedule::{ApplyDeferred, Schedules, SystemSet};
+use close2gl::core::bevy_ecs::schedule::{ApplyDeferred, IntoSystemSet, Schedules, SystemSet};
+use close2gl::core::bevy_ecs::system::SystemAccess;
 use close2gl::core::glam::{Vec2, Vec3};
 use close2gl::core::{
-    App, Camera, CameraAction, CameraActions, CameraHome, CameraMode, Clipping, Close2glFrame,
-    FrameSet, FrontFace, Image, InputState, Lighting, Mesh, ModelSource, ModelStatus, Rasterizer,
-    RenderMode, RenderSettings, SettingsPlugin, Shading, SoftwareFrame, Texture, Update, Viewport,
+    App, Appearance, Camera, CameraAction, CameraActions, CameraHome, CameraMode, Clipping,
+    Close2glFrame, FrameSet, FrontFace, Image, InputState, Lighting, Mesh, ModelSource,
+    ModelStatus, Overlay, PipelineSettings, Rasterizer, RenderMode, RenderSettings, SettingsPlugin,
+    Shading, SoftwareFrame, Texture, Topology, Update, Viewport,
 };
 use close2gl::input::InputPlugin;
 use close2gl::pipeline::Close2glPlugin;
@@ -180,7 +185,7 @@ fn scroll_zooms_both_fields_of_view_keeping_their_ratio() {
 #[test]
 fn the_lecture_keys_switch_shading() {
     let mut app = app_with(cube(), RenderSettings::default());
-    let shading = |app: &App| app.world().resource::<RenderSettings>().shading;
+    let shading = |app: &App| app.world().resource::<Appearance>().shading;
     press(&mut app, "shift+p");
     assert_eq!(shading(&app), Shading::Phong);
     press(&mut app, "shift+g");
@@ -358,7 +363,7 @@ fn the_raster_system_draws_when_asked_and_when_something_changed() {
     assert_eq!(drawn(&app), inserted, "gpu: nothing drawn");
 
     app.world_mut()
-        .resource_mut::<RenderSettings>()
+        .resource_mut::<PipelineSettings>()
         .close2gl_raster = Rasterizer::Software;
     app.update();
     let first = drawn(&app);
@@ -377,7 +382,7 @@ fn the_raster_system_draws_when_asked_and_when_something_changed() {
     app.update();
     assert_eq!(drawn(&app), first, "nothing changed");
     app.world_mut().resource_mut::<Lighting>().kd = 0.5;
-    app.world_mut().resource_mut::<RenderSettings>().shading = Shading::Phong;
+    app.world_mut().resource_mut::<Appearance>().shading = Shading::Phong;
     app.update();
     assert_ne!(drawn(&app), first, "lit: drawn again");
     let lit = app.world().resource::<SoftwareFrame>();
@@ -386,6 +391,58 @@ fn the_raster_system_draws_when_asked_and_when_something_changed() {
         image.pixels[240 * 640 + 320],
         "now lit"
     );
+}
+
+/// The render settings are three resources, each read by whom it concerns: switching the overlay
+/// or the background recomputes nothing of the pipeline's (the Close2GL frame keeps its change
+/// tick; the background redraws the software image alone), and switching the mode recomputes
+/// the frame in that same frame.
+#[test]
+fn only_the_pipelines_switches_recompute_the_close2gl_frame() {
+    let software = RenderSettings {
+        close2gl_raster: Rasterizer::Software,
+        ..RenderSettings::default()
+    };
+    let mut app = app_with(cube(), software);
+    app.init_resource::<Lighting>().add_plugins(RasterPlugin);
+    camera_mut(&mut app).position = Vec3::new(0.0, 0.0, 6.0);
+    app.update();
+    let computed = |app: &App| app.world().resource_ref::<Close2glFrame>().last_changed();
+    let drawn = |app: &App| app.world().resource_ref::<SoftwareFrame>().last_changed();
+    let (geometry, image) = (computed(&app), drawn(&app));
+
+    *app.world_mut().resource_mut::<Overlay>() = Overlay::Difference;
+    app.update();
+    assert_eq!(
+        computed(&app),
+        geometry,
+        "the overlay: the frame is left alone"
+    );
+    assert_eq!(drawn(&app), image, "the overlay: the image is left alone");
+
+    app.world_mut().resource_mut::<Appearance>().background = Vec3::ONE;
+    app.update();
+    assert_eq!(
+        computed(&app),
+        geometry,
+        "the background: the frame is left alone"
+    );
+    assert_ne!(
+        drawn(&app),
+        image,
+        "the background: the image is drawn again"
+    );
+    let corner = app.world().resource::<SoftwareFrame>().image.pixel(2, 2);
+    assert_eq!(corner[..3], [255, 255, 255], "in the new background");
+
+    app.world_mut().resource_mut::<PipelineSettings>().mode = RenderMode::Wireframe;
+    app.update();
+    assert_ne!(
+        computed(&app),
+        geometry,
+        "the mode: the frame is computed again"
+    );
+    assert_eq!(frame(&app).topology, Topology::Lines);
 }
 
 #[test]
@@ -494,14 +551,50 @@ fn every_system_sits_in_one_frame_set_of_the_one_schedule() {
     assert!(!per_set.contains(&0), "systems per FrameSet: {per_set:?}");
 }
 
-/// A shown trace has an output of its own: the pipeline's frame stays what the pipeline drew
-/// (its counts describe it), the trace's 2D output goes to `TraceOutput` in the view's pixels,
-/// and once no trace is shown there is none.
+/// The camera plugin is the one system of the viewer's app that writes the `Camera`: the others
+/// read it and ask through `CameraRequest`. Exclusive systems (the panel's, the watch's) could
+/// write anything; they are held to asking by their own tests (`plugins/ui/tests/panel.rs`,
+/// `tests/watch.rs`), and only they are let through here.
 #[test]
-fn a_shown_trace_writes_its_own_output_and_leaves_the_pipelines_frame_alone() {
-    use close2gl::core::TraceOutput;
-    use close2gl_trace::view::{TraceRequest, TraceView};
-    let dir = close2gl_testkit::TempDir::new("systems_trace_output");
+fn the_camera_plugin_is_the_one_system_that_writes_the_camera() {
+    let mut app = viewer_app();
+    let camera = app.world_mut().register_component::<Camera>();
+    let schedules = app.world().resource::<Schedules>();
+    let schedule = schedules.get(Update).expect("the frame schedule");
+    let camera_plugins = [
+        apply_camera_edit.into_system_set().intern(),
+        frame_new_model.into_system_set().intern(),
+        apply_camera_actions.into_system_set().intern(),
+        apply_camera_replacement.into_system_set().intern(),
+    ];
+    let of_the_camera_plugin = |key| {
+        camera_plugins.iter().any(|&set| {
+            (schedule.graph().systems_in_set(set)).is_ok_and(|systems| systems.contains(&key))
+        })
+    };
+    let mut writers = 0;
+    for (key, system) in schedule
+        .systems_with_access()
+        .expect("the schedule has run")
+    {
+        if let SystemAccess::Shared(access) = system.access()
+            && access.combined_access().has_write(camera)
+        {
+            writers += 1;
+            let name = system.system().name();
+            assert!(of_the_camera_plugin(key), "{name} writes the Camera");
+        }
+    }
+    assert_eq!(
+        writers,
+        camera_plugins.len(),
+        "each of the camera plugin's systems writes it"
+    );
+}
+
+/// The cube, just loaded, and a trace from (0, 0, 5) looking down −z asked for: one frame run.
+fn app_showing_one_trace(name: &str) -> App {
+    let dir = close2gl_testkit::TempDir::new(name);
     let path = dir.join("one.trace");
     let trace = "close2gl-trace 1\nwindow 640 480\ncamera position 0 0 5\ncamera u 1 0 0\n\
                  camera v 0 1 0\ncamera n 0 0 1\ncamera hfov 60\ncamera vfov 60\ncamera near 1\n\
@@ -520,8 +613,38 @@ fn a_shown_trace_writes_its_own_output_and_leaves_the_pipelines_frame_alone() {
     app.add_plugins(CameraPlugin)
         .add_plugins(Close2glPlugin)
         .add_plugins(close2gl_trace::TracePlugin);
-    app.world_mut().resource_mut::<TraceRequest>().0 = Some(path);
+    app.world_mut()
+        .resource_mut::<close2gl_trace::view::TraceRequest>()
+        .0 = Some(path);
     app.update();
+    app
+}
+
+/// A trace loaded in the frame a model arrives is drawn from the trace's camera in that frame:
+/// the camera plugin frames the new model, then sets the camera the trace asked for, before
+/// the pipeline runs.
+#[test]
+fn a_trace_loaded_with_a_new_model_is_drawn_from_its_camera_in_that_frame() {
+    let mut app = app_showing_one_trace("systems_trace_camera");
+    let shown = camera(&mut app);
+    assert_eq!(
+        (shown.position, shown.n, shown.hfov, shown.near, shown.far),
+        (Vec3::new(0.0, 0.0, 5.0), Vec3::Z, 60.0, 1.0, 10.0)
+    );
+    let switches = *app.world().resource::<PipelineSettings>();
+    let viewport = *app.world().resource::<Viewport>();
+    let expected = close2gl::pipeline::textbook::run(&cube(), &shown, &switches, viewport);
+    assert_eq!(frame(&app).vertices, expected.vertices);
+}
+
+/// A shown trace has an output of its own: the pipeline's frame stays what the pipeline drew
+/// (its counts describe it), the trace's 2D output goes to `TraceOutput` in the view's pixels,
+/// and once no trace is shown there is none.
+#[test]
+fn a_shown_trace_writes_its_own_output_and_leaves_the_pipelines_frame_alone() {
+    use close2gl::core::TraceOutput;
+    use close2gl_trace::view::TraceView;
+    let mut app = app_showing_one_trace("systems_trace_output");
     let shown = app.world().resource::<TraceOutput>().0.clone();
     // ortho2d 0 640 0 480 is y up; the view's pixels are y down.
     let expected = vec![[10.0, 470.0], [100.0, 470.0], [10.0, 380.0]];

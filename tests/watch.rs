@@ -7,7 +7,7 @@ use std::time::{Duration, Instant};
 
 use close2gl::config;
 use close2gl::core::glam::Vec3;
-use close2gl::core::{App, Camera, ModelStatus, RenderMode, RenderSettings, Viewport};
+use close2gl::core::{App, Camera, ModelStatus, PipelineSettings, RenderMode, Viewport};
 use close2gl::watch::WatchPlugin;
 use close2gl_testkit::{TempDir, camera};
 
@@ -162,13 +162,13 @@ fn a_saved_config_applies_its_settings_and_a_broken_one_changes_nothing() {
     let mut app = files.app();
     let pose = camera(&mut app);
     assert_eq!(
-        app.world().resource::<RenderSettings>().mode,
+        app.world().resource::<PipelineSettings>().mode,
         RenderMode::Solid
     );
 
     files.write_config("wireframe");
     frames_until(&mut app, "wireframe from the config", |app| {
-        app.world().resource::<RenderSettings>().mode == RenderMode::Wireframe
+        app.world().resource::<PipelineSettings>().mode == RenderMode::Wireframe
     });
     assert_eq!(camera(&mut app).position, pose.position, "the pose stays");
 
@@ -180,7 +180,7 @@ fn a_saved_config_applies_its_settings_and_a_broken_one_changes_nothing() {
         "{message}"
     );
     assert_eq!(
-        app.world().resource::<RenderSettings>().mode,
+        app.world().resource::<PipelineSettings>().mode,
         RenderMode::Wireframe,
         "nothing half-applied"
     );
@@ -201,7 +201,7 @@ fn a_saved_configs_lens_reaches_the_camera_and_its_pose_stays() {
     );
     write(&files.config, &text);
     frames_until(&mut app, "the saved config", |app| {
-        app.world().resource::<RenderSettings>().mode == RenderMode::Wireframe
+        app.world().resource::<PipelineSettings>().mode == RenderMode::Wireframe
     });
     let after = camera(&mut app);
     assert_eq!((after.hfov, after.vfov, after.near), (45.0, 30.0, near));

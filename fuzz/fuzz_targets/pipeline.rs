@@ -327,9 +327,9 @@ fuzz_target!(|input: Input| {
         let settings = settings(s);
         // The inspector records fates while one of its overlays is shown.
         fates.record = settings.overlay != Overlay::Off;
-        pipeline.run(&mesh, &camera, &settings, viewport, &mut frame, &mut fates);
+        pipeline.run(&mesh, &camera, &settings.pipeline(), viewport, &mut frame, &mut fates);
         let (expected, expected_fates) =
-            textbook::run_recording(&mesh, &camera, &settings, viewport);
+            textbook::run_recording(&mesh, &camera, &settings.pipeline(), viewport);
         assert_eq!(frame.counts, expected.counts);
         // Unrecorded, a frame asks none of the inspector's questions: no fates, no counts.
         if fates.record {
@@ -353,7 +353,7 @@ fuzz_target!(|input: Input| {
         if settings.close2gl_raster == Rasterizer::Software {
             rasterizer.set_texture(texture.as_ref());
             rasterizer.draw(
-                &frame, &camera, &settings, &lighting, &mut image, &mut fates,
+                &frame, &camera, &settings.appearance(), &lighting, &mut image, &mut fates,
             );
             let image = &image.image;
             assert_eq!(

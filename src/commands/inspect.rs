@@ -4,7 +4,7 @@
 //! triangle that reached it and why each lost. JSON, with the keys the panel shows.
 
 use close2gl_core::glam::DMat4;
-use close2gl_core::{App, Camera, Fates, Mesh, Mistake, RenderSettings, Scene, Viewport};
+use close2gl_core::{App, Camera, Fates, Mesh, Mistake, PipelineSettings, Scene, Viewport};
 use close2gl_gpu::{Gpu, ReferenceHit, probe_reference};
 use close2gl_pipeline::journey::{Journey, journey};
 use close2gl_pipeline::matrices;
@@ -72,13 +72,13 @@ fn parse_pixel(text: &str, viewport: Viewport) -> Result<(u32, u32), CliError> {
     }
 }
 
-/// The scene as the app left it: mesh, camera, settings.
-fn scene(app: &mut App) -> Result<(Mesh, Camera, RenderSettings), CliError> {
+/// The scene as the app left it: mesh, camera, the pipeline's switches.
+fn scene(app: &mut App) -> Result<(Mesh, Camera, PipelineSettings), CliError> {
     let world = app.world_mut();
     let mesh = world.query::<&Mesh>().single(world).ok().cloned();
     let camera = world.query::<&Camera>().single(world).ok().copied();
     match (mesh, camera) {
-        (Some(mesh), Some(camera)) => Ok((mesh, camera, *world.resource::<RenderSettings>())),
+        (Some(mesh), Some(camera)) => Ok((mesh, camera, *world.resource::<PipelineSettings>())),
         _ => Err(CliError::Runtime(
             "inspect: no model or camera was set up".into(),
         )),
@@ -117,7 +117,7 @@ fn mistake_json(
     mesh: &Mesh,
     index: usize,
     camera: &Camera,
-    settings: &RenderSettings,
+    settings: &PipelineSettings,
     viewport: Viewport,
 ) -> Value {
     let mistakes = Mistakes::one(settings.mistake);
@@ -226,7 +226,7 @@ fn pixel_report(app: &mut App, (x, y): (u32, u32), viewport: Viewport) -> Result
     let scene = Scene {
         mesh: &mesh,
         camera: &camera,
-        settings: &settings,
+        pipeline: &settings,
         viewport,
     };
     let close2gl = probe(scene, fates, (x, y), drawn);
@@ -261,7 +261,7 @@ fn close2gl_json(probe: &PixelProbe) -> Value {
 fn reference_probe(
     mesh: &Mesh,
     camera: &Camera,
-    settings: &RenderSettings,
+    settings: &PipelineSettings,
     viewport: Viewport,
     pixel: (u32, u32),
 ) -> Result<Option<ReferenceHit>, CliError> {
@@ -269,7 +269,7 @@ fn reference_probe(
     let scene = Scene {
         mesh,
         camera,
-        settings,
+        pipeline: settings,
         viewport,
     };
     probe_reference(&gpu, scene, pixel).map_err(CliError::Runtime)

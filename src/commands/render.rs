@@ -4,9 +4,10 @@
 use std::f32::consts::TAU;
 use std::path::{Path, PathBuf};
 
-use bevy_ecs::prelude::DetectChangesMut;
 use close2gl_core::parity::{ColorComparison, CoverageComparison, diff_image};
-use close2gl_core::{App, Camera, CameraAction, CameraActions, Fates, OutsideView, RecordFates};
+use close2gl_core::{
+    App, Camera, CameraAction, CameraActions, CameraRequest, Fates, OutsideView, RecordFates,
+};
 use close2gl_gpu::outside::render_outside;
 use close2gl_gpu::{Gpu, OffscreenPlugin, Snapshot, parse_backends, render_offscreen};
 use close2gl_pipeline::frustum::world_corners;
@@ -150,7 +151,8 @@ fn render_pose(app: &mut App, args: &RenderArgs, gpu: &Gpu, pose: u32) -> Result
 }
 
 /// Renders `frames` frames of the current pose; returns the last one and the median times.
-/// Every frame after the first marks the camera changed so the Close2GL stage really runs again.
+/// Every frame after the first asks the camera plugin to set the camera again (marking it
+/// changed), so the Close2GL stage really runs again.
 fn render_frames(
     app: &mut close2gl_core::App,
     frames: u32,
@@ -161,8 +163,8 @@ fn render_frames(
     for frame in 0..frames {
         if frame > 0 {
             let world = app.world_mut();
-            if let Ok(mut camera) = world.query::<&mut Camera>().single_mut(world) {
-                camera.set_changed();
+            if let Ok(&camera) = world.query::<&Camera>().single(world) {
+                world.resource_mut::<CameraRequest>().edited = Some(camera);
             }
         }
         let snapshot = render_offscreen(app).map_err(CliError::Runtime)?;

@@ -21,19 +21,32 @@ pub use big_model::{GridFile, write_grid_in, write_grid_obj};
 pub use meshes::{cube, sphere};
 pub use temp_dir::TempDir;
 
-/// An app whose world has `settings`, `viewport`, the default lighting, one `camera` and one
+/// An app whose world has `settings` (as its three resources), `viewport`, the default lighting, one `camera` and one
 /// `mesh` (what the settings plugin and a loaded model provide): add the plugins under test, then
 /// run frames.
 pub fn world_with(mesh: Mesh, camera: Camera, settings: RenderSettings, viewport: Viewport) -> App {
     let mut app = App::new();
-    app.insert_resource(settings)
-        .insert_resource(viewport)
+    settings.insert_into(app.world_mut());
+    app.insert_resource(viewport)
         .init_resource::<Lighting>()
         .init_resource::<SelectedTriangle>()
         .init_resource::<RecordFates>();
     app.world_mut().spawn(camera);
     app.world_mut().spawn(mesh);
     app
+}
+
+/// The app's render settings as the configuration's one table.
+pub fn settings(app: &App) -> RenderSettings {
+    RenderSettings::of_world(app.world()).expect("the app has the render settings")
+}
+
+/// Changes the app's render settings as the configuration's one table: its three resources are
+/// set again, each marked changed, as a configuration applied is.
+pub fn change_settings(app: &mut App, change: impl FnOnce(&mut RenderSettings)) {
+    let mut table = settings(app);
+    change(&mut table);
+    table.insert_into(app.world_mut());
 }
 
 /// The app's one camera.

@@ -1,12 +1,13 @@
 //! The control panel driven the way a user drives it, without a window: egui runs headless over
-//! a real App (the settings, the Close2GL pipeline and the panel; a triangle and a camera), widgets
+//! a real App (the settings, the Close2GL pipeline, the panel and the camera plugin's edit step; a
+//! triangle and a camera), widgets
 //! are found by their accessibility labels and clicked or set through AccessKit action requests.
 
 use close2gl_core::bevy_ecs::prelude::*;
 use close2gl_core::glam::Vec3;
 use close2gl_core::{
-    App, Camera, CameraActions, CameraSpeeds, Mesh, ModelRequest, ModelSource, ModelStatus,
-    SettingsPlugin, TextureRequest, ToolRequests, Viewport,
+    App, Camera, CameraActions, CameraRequest, CameraSpeeds, FrameSet, Mesh, ModelRequest,
+    ModelSource, ModelStatus, SettingsPlugin, TextureRequest, ToolRequests, Update, Viewport,
 };
 use close2gl_ui::{PanelInput, PanelOutput};
 use egui::accesskit::{Action, ActionData, ActionRequest, Node, NodeId, Role, TreeId};
@@ -33,7 +34,14 @@ impl Harness {
             .add_plugins(close2gl_pipeline::Close2glPlugin)
             .add_plugins(close2gl_raster::RasterPlugin)
             .add_plugins(close2gl_ui::UiPlugin)
+            // The camera plugin's edit step alone: the panel's camera edits land in the frame,
+            // and the actions it asks for stay in `CameraActions` for a test to read.
             .init_resource::<CameraActions>()
+            .init_resource::<CameraRequest>()
+            .add_systems(
+                Update,
+                close2gl_camera::apply_camera_edit.in_set(FrameSet::Camera),
+            )
             .init_resource::<CameraSpeeds>()
             .init_resource::<ModelRequest>()
             .init_resource::<TextureRequest>()

@@ -61,7 +61,7 @@ pub fn build_app(config: &Config, viewport: Viewport) -> Result<App, String> {
 /// primitives, the outside view, key bindings and the framing rules (the camera, the model and
 /// the speeds are the caller's, who knows whether they are new).
 pub fn apply_settings(world: &mut World, config: &Config) {
-    world.insert_resource(config.render);
+    config.render.insert_into(world);
     world.insert_resource(config.lighting);
     world.insert_resource(config.primitives);
     world.insert_resource(config.outside);

@@ -2,18 +2,20 @@
 //! show the whole model, honouring the `Framing` resource's explicit pose and pinned planes, and
 //! that pose is stored as `CameraHome`; `CameraSpeeds::model_radius` follows the model's size)
 //! and camera motion (it drains `CameraActions` into the `Camera`: translations along u, v, n,
-//! rotations about them, orbits of the look-at point, zoom, reset, mode toggle). It owns
-//! `CameraActions`, `CameraSpeeds`, `Framing` and `KeepPose` (set, a new mesh leaves the camera
-//! where it is: a watched file reloaded); its systems run in `FrameSet::Camera`, after
-//! `FrameSet::Load`, so a mesh loaded this frame is framed this frame.
+//! rotations about them, orbits of the look-at point, zoom, reset, mode toggle). It is the one
+//! writer of the `Camera` inside a frame: the others ask through `CameraRequest` (the panel's
+//! and a watched configuration's edits, applied first; a trace's camera, applied last). It owns
+//! `CameraActions`, `CameraRequest`, `CameraSpeeds`, `Framing` and `KeepPose` (set, a new mesh
+//! leaves the camera where it is: a watched file reloaded); its systems run in
+//! `FrameSet::Camera`, after `FrameSet::Load`, so a mesh loaded this frame is framed this frame.
 
 pub mod framing;
 pub mod motion;
 
 use bevy_ecs::prelude::*;
 use close2gl_core::{
-    App, Camera, CameraActions, CameraHome, CameraSpeeds, FrameSet, Framing, KeepPose, Mesh,
-    Plugin, Update,
+    App, Camera, CameraActions, CameraHome, CameraRequest, CameraSpeeds, FrameSet, Framing,
+    KeepPose, Mesh, Plugin, Update,
 };
 
 pub struct CameraPlugin;
@@ -21,15 +23,39 @@ pub struct CameraPlugin;
 impl Plugin for CameraPlugin {
     fn build(&self, app: &mut App) {
         app.init_resource::<CameraActions>()
+            .init_resource::<CameraRequest>()
             .init_resource::<CameraSpeeds>()
             .init_resource::<Framing>()
             .init_resource::<KeepPose>()
             .add_systems(
                 Update,
-                (frame_new_model, apply_camera_actions)
+                (
+                    apply_camera_edit,
+                    frame_new_model,
+                    apply_camera_actions,
+                    apply_camera_replacement,
+                )
                     .chain()
                     .in_set(FrameSet::Camera),
             );
+    }
+}
+
+/// The camera as edited this frame (the panel, a watched configuration, a redraw), before a new
+/// model is framed and the actions move it: as if it had been so when the frame began.
+pub fn apply_camera_edit(mut request: ResMut<CameraRequest>, mut camera: Single<&mut Camera>) {
+    if let Some(edited) = request.edited.take() {
+        **camera = edited;
+    }
+}
+
+/// A camera that replaces this frame's (a trace's own), over the framing and the actions.
+pub fn apply_camera_replacement(
+    mut request: ResMut<CameraRequest>,
+    mut camera: Single<&mut Camera>,
+) {
+    if let Some(replacement) = request.replacement.take() {
+        **camera = replacement;
     }
 }
 

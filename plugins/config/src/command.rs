@@ -33,7 +33,7 @@ pub fn of_world(world: &mut World) -> Option<Config> {
         texture: world
             .get_resource::<Texture>()
             .and_then(|t| t.source.clone()),
-        render: *world.get_resource::<RenderSettings>()?,
+        render: RenderSettings::of_world(world)?,
         lighting: *world.get_resource::<Lighting>()?,
         // Only a primitive's own view depends on them.
         primitives: world

@@ -150,6 +150,28 @@ pub enum CameraAction {
 #[derive(Resource, Default, Debug, Clone)]
 pub struct CameraActions(pub Vec<CameraAction>);
 
+/// What other plugins ask of the [`Camera`] during a frame. The camera plugin, the component's
+/// one writer inside a frame, applies it in `FrameSet::Camera`, so that whoever asks before that
+/// set sees the camera it asked for drawn in the same frame.
+#[derive(Resource, Clone, Copy, Debug, Default, PartialEq)]
+pub struct CameraRequest {
+    /// The camera as edited where it stands (the panel's lens, a watched configuration's, a
+    /// redraw asked for): set first, before a new model is framed and the frame's actions move
+    /// it, as if it had been so when the frame began.
+    pub edited: Option<Camera>,
+    /// A camera that replaces the frame's (a trace's own): set last, after the framing of a new
+    /// model and the actions, so that it is the one this frame draws.
+    pub replacement: Option<Camera>,
+}
+
+impl CameraRequest {
+    /// The camera to edit: the one already asked for this frame, else `current`, so that two
+    /// edits made in one frame both land.
+    pub fn edit(&mut self, current: &Camera) -> &mut Camera {
+        self.edited.get_or_insert(*current)
+    }
+}
+
 /// An explicit camera pose: where the camera is, what it looks at, and which way is up.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Pose {

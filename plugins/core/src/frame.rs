@@ -118,7 +118,7 @@ pub struct TraceFindings {
 pub struct Close2glFrame {
     pub topology: Topology,
     pub vertices: Vec<[f32; 2]>,
-    /// Filled only when `RenderSettings::close2gl_raster` is `Software`.
+    /// Filled only when `PipelineSettings::close2gl_raster` is `Software`.
     pub raster: RasterGeometry,
     pub counts: StageCounts,
     /// Viewport the vertices were mapped to.
@@ -152,12 +152,12 @@ pub struct SoftwareFrame {
     pub raster_ms: f64,
 }
 
-/// What one frame of the views is drawn from, borrowed: the mesh, the camera, the settings and
-/// the viewport. Both views' pixel probes take it, so that they ask about the same frame.
+/// What one frame of the views is drawn from, borrowed: the mesh, the camera, the pipeline's
+/// switches and the viewport (what decides which triangle covers a pixel; colours are not asked). Both views' pixel probes take it, so that they ask about the same frame.
 #[derive(Clone, Copy)]
 pub struct Scene<'a> {
     pub mesh: &'a crate::Mesh,
     pub camera: &'a crate::Camera,
-    pub settings: &'a crate::RenderSettings,
+    pub pipeline: &'a crate::PipelineSettings,
     pub viewport: crate::Viewport,
 }

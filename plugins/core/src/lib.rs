@@ -1,7 +1,8 @@
 //! The shared ECS vocabulary of close2gl. This crate owns the small `App`/`Plugin` pair (a World
 //! with its one frame schedule, and the [`FrameSet`]s that order every plugin's systems in it),
-//! every component and resource that more than one plugin touches (the camera, the mesh, the
-//! render settings and lighting, the outside view's settings and orbit, the raw input and the camera actions it becomes, the viewport,
+//! every component and resource that more than one plugin touches (the camera and the requests
+//! that edit it, the mesh, the render settings split by who reads them (the pipeline's
+//! switches, the appearance, the overlay) and lighting, the outside view's settings and orbit, the raw input and the camera actions it becomes, the viewport,
 //! and the Close2GL frame: the 2D vertex buffer and its stage counts, the fates and the selected
 //! triangle), the files the app opens by path ([`files`]: the disk, or the bytes a web page handed it), the one RGBA8 [`Image`] and how two are compared ([`parity`]), and the limits and
 //! names they share ([`limits`], [`NamedEnum`]). Its one plugin, [`SettingsPlugin`], owns the settings
@@ -35,8 +36,8 @@ mod wake;
 
 pub use app::{App, Owner, Plugin};
 pub use camera::{
-    Camera, CameraAction, CameraActions, CameraHome, CameraMode, CameraSpeeds, Framing, KeepPose,
-    Pose,
+    Camera, CameraAction, CameraActions, CameraHome, CameraMode, CameraRequest, CameraSpeeds,
+    Framing, KeepPose, Pose,
 };
 pub use excerpt::{EXCERPT_CHARS, excerpt};
 pub use fates::{
@@ -57,10 +58,10 @@ pub use model::{
 pub use named::NamedEnum;
 pub use outside::{OutsideOrbit, OutsideView, STAGE_NAMES};
 pub use reference_camera::camera_matrices;
-pub use schedule::{Close2glStep, FrameSet, Update};
+pub use schedule::{Close2glStep, FrameSet, LoadStep, Update};
 pub use settings::{
-    Clipping, FrontFace, Lighting, Mistake, Overlay, Rasterizer, RenderMode, RenderSettings,
-    Shading, TextureFilter,
+    Appearance, Clipping, FrontFace, Lighting, Mistake, Overlay, PipelineSettings, Rasterizer,
+    RenderMode, RenderSettings, Shading, TextureFilter,
 };
 pub use settings_plugin::SettingsPlugin;
 pub use texture::{Texture, checkerboard};

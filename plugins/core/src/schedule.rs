@@ -19,9 +19,11 @@ pub enum FrameSet {
     Input,
     /// The control panel (an exclusive system): what it changes lands in this same frame.
     Panel,
-    /// A requested model is loaded and replaces the mesh.
+    /// A requested model is loaded and replaces the mesh, then what is read against it (a
+    /// requested trace).
     Load,
-    /// Framing a new mesh, then the camera actions applied.
+    /// The camera's one writer: the edits asked for, framing a new mesh, the camera actions, then
+    /// a replacement asked for (a trace's camera).
     Camera,
     /// The Close2GL pipeline turns camera, mesh and settings into the 2D buffer, then the
     /// software rasterizer into pixels; what asks them to record more (the fates) runs first.
@@ -43,12 +45,27 @@ impl FrameSet {
     ];
 }
 
+/// The steps inside [`FrameSet::Load`], chained in this order, so that what is read against the
+/// mesh reads the one loaded this frame.
+#[derive(SystemSet, Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum LoadStep {
+    /// A requested model or texture is read; the model replaces the mesh.
+    Files,
+    /// What is checked against the mesh now shown: a requested trace, whose camera and switches
+    /// are asked for.
+    AgainstMesh,
+}
+
+impl LoadStep {
+    /// Every step, in the order it runs.
+    pub const ALL: [LoadStep; 2] = [LoadStep::Files, LoadStep::AgainstMesh];
+}
+
 /// The steps inside [`FrameSet::Close2gl`], chained in this order, so that no plugin orders
 /// itself by another crate's system.
 #[derive(SystemSet, Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum Close2glStep {
-    /// What asks the pipeline for more, or replaces what it shows: recording the fates while
-    /// they are shown, a requested trace read.
+    /// What asks the pipeline for more: recording the fates while they are shown.
     Prepare,
     /// The pipeline: camera, mesh and settings into the 2D buffer.
     Geometry,
@@ -65,12 +82,15 @@ impl Close2glStep {
     ];
 }
 
-/// The frame's schedule with the sets chained in [`FrameSet::ALL`]'s order, and the steps of
-/// [`FrameSet::Close2gl`] in [`Close2glStep::ALL`]'s.
+/// The frame's schedule with the sets chained in [`FrameSet::ALL`]'s order, the steps of
+/// [`FrameSet::Load`] in [`LoadStep::ALL`]'s and those of [`FrameSet::Close2gl`] in
+/// [`Close2glStep::ALL`]'s.
 pub(crate) fn frame_schedule() -> Schedule {
     let mut schedule = Schedule::new(Update);
     let [input, panel, load, camera, close2gl, output] = FrameSet::ALL;
     schedule.configure_sets((input, panel, load, camera, close2gl, output).chain());
+    let [files, against_mesh] = LoadStep::ALL;
+    schedule.configure_sets((files, against_mesh).chain().in_set(load));
     let [prepare, geometry, raster] = Close2glStep::ALL;
     schedule.configure_sets((prepare, geometry, raster).chain().in_set(close2gl));
     schedule

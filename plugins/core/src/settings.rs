@@ -1,5 +1,6 @@
-//! The render settings both views share, and the named choices in them (shading, clipping,
-//! overlay, the injected mistake, ...).
+//! The render settings both views share, split by who reads them (the pipeline's switches, the
+//! model's appearance, the overlay), and the named choices in them (shading, clipping, overlay,
+//! the injected mistake, ...).
 
 use bevy_ecs::prelude::*;
 use glam::Vec3;
@@ -53,9 +54,13 @@ named_enum!(
 );
 
 named_enum!(
-    /// What the two views show over the model: nothing, or one of the inspector's displays.
+    /// What the two views show over the model: nothing, or one of the inspector's displays. A
+    /// resource of its own: the GPU views, the panel's legends and the fate recording read it,
+    /// and switching it recomputes nothing of the pipeline's.
+    #[derive(Resource, Default)]
     Overlay {
         /// The model as rendered.
+        #[default]
         Off = "off",
         /// Close2GL's view coloured by each triangle's fate (`Fates`), with ghosts of what
         /// clipping and culling removed; the reference view with what its GPU knows (facing,
@@ -115,46 +120,167 @@ named_enum!(
     }
 );
 
-/// One set of switches for both views.
+/// How Close2GL's pipeline turns the mesh into primitives, as the assignment names its
+/// switches: glPolygonMode (`mode`), glFrontFace and backface culling, the clipping rule, the
+/// classic mistake it makes on purpose, and who rasterizes its output (the pipeline hands the
+/// software rasterizer its per-vertex data only when asked). The pipeline reads all of it; the
+/// reference view follows the same mode and culling, the raster plugin and the GPU upload ask who
+/// rasterizes. A change recomputes the Close2GL frame.
 #[derive(Resource, Clone, Copy, Debug, PartialEq)]
-pub struct RenderSettings {
+pub struct PipelineSettings {
     pub mode: RenderMode,
     pub front_face: FrontFace,
     pub backface_culling: bool,
     pub clipping: Clipping,
-    /// The model's colour, RGB in 0..1.
-    pub color: Vec3,
-    pub shading: Shading,
-    /// The background both views clear to.
-    pub background: Vec3,
     /// Who draws the Close2GL view's pixels.
     pub close2gl_raster: Rasterizer,
-    /// Whether a model with texture coordinates is textured (the texture modulates the shaded
-    /// colour).
-    pub texture: bool,
-    pub texture_filter: TextureFilter,
-    /// The inspector's display over both views.
-    pub overlay: Overlay,
     /// A classic mistake Close2GL makes on purpose (`none`: the right pipeline).
     pub mistake: Mistake,
 }
 
-impl Default for RenderSettings {
+impl Default for PipelineSettings {
     fn default() -> Self {
         Self {
             mode: RenderMode::Solid,
             front_face: FrontFace::Ccw,
             backface_culling: true,
             clipping: Clipping::Full,
+            close2gl_raster: Rasterizer::Gpu,
+            mistake: Mistake::None,
+        }
+    }
+}
+
+/// How the model looks in both views: its colour and shading, the background, its texture and
+/// the texture's filter. The software rasterizer and the GPU views read it; the pipeline never
+/// does, so a change redraws pixels without recomputing the geometry.
+#[derive(Resource, Clone, Copy, Debug, PartialEq)]
+pub struct Appearance {
+    /// The model's colour, RGB in 0..1.
+    pub color: Vec3,
+    pub shading: Shading,
+    /// The background both views clear to.
+    pub background: Vec3,
+    /// Whether a model with texture coordinates is textured (the texture modulates the shaded
+    /// colour).
+    pub texture: bool,
+    pub texture_filter: TextureFilter,
+}
+
+impl Default for Appearance {
+    fn default() -> Self {
+        Self {
             color: Vec3::new(0.85, 0.65, 0.25),
             shading: Shading::None,
             background: Vec3::new(0.08, 0.08, 0.1),
-            close2gl_raster: Rasterizer::Gpu,
             texture: true,
             texture_filter: TextureFilter::Trilinear,
-            overlay: Overlay::Off,
-            mistake: Mistake::None,
         }
+    }
+}
+
+/// The configuration's `[render]` table as one value, as a file, the command line, a web link
+/// or a test states it. The app never holds it: [`RenderSettings::insert_into`] splits it into
+/// the three resources each reader asks for ([`PipelineSettings`], [`Appearance`], [`Overlay`]),
+/// and [`RenderSettings::of_world`] joins them back (copy as command).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct RenderSettings {
+    pub mode: RenderMode,
+    pub front_face: FrontFace,
+    pub backface_culling: bool,
+    pub clipping: Clipping,
+    pub color: Vec3,
+    pub shading: Shading,
+    pub background: Vec3,
+    pub close2gl_raster: Rasterizer,
+    pub texture: bool,
+    pub texture_filter: TextureFilter,
+    /// The inspector's display over both views.
+    pub overlay: Overlay,
+    pub mistake: Mistake,
+}
+
+impl Default for RenderSettings {
+    fn default() -> Self {
+        Self::from_parts(
+            PipelineSettings::default(),
+            Appearance::default(),
+            Overlay::default(),
+        )
+    }
+}
+
+impl RenderSettings {
+    /// The table from its three parts.
+    pub fn from_parts(pipeline: PipelineSettings, look: Appearance, overlay: Overlay) -> Self {
+        let PipelineSettings {
+            mode,
+            front_face,
+            backface_culling,
+            clipping,
+            close2gl_raster,
+            mistake,
+        } = pipeline;
+        let Appearance {
+            color,
+            shading,
+            background,
+            texture,
+            texture_filter,
+        } = look;
+        Self {
+            mode,
+            front_face,
+            backface_culling,
+            clipping,
+            color,
+            shading,
+            background,
+            close2gl_raster,
+            texture,
+            texture_filter,
+            overlay,
+            mistake,
+        }
+    }
+
+    /// The pipeline's switches.
+    pub fn pipeline(&self) -> PipelineSettings {
+        PipelineSettings {
+            mode: self.mode,
+            front_face: self.front_face,
+            backface_culling: self.backface_culling,
+            clipping: self.clipping,
+            close2gl_raster: self.close2gl_raster,
+            mistake: self.mistake,
+        }
+    }
+
+    /// How the model looks.
+    pub fn appearance(&self) -> Appearance {
+        Appearance {
+            color: self.color,
+            shading: self.shading,
+            background: self.background,
+            texture: self.texture,
+            texture_filter: self.texture_filter,
+        }
+    }
+
+    /// Inserts the three resources (each marked changed, as a configuration applied is).
+    pub fn insert_into(self, world: &mut World) {
+        world.insert_resource(self.pipeline());
+        world.insert_resource(self.appearance());
+        world.insert_resource(self.overlay);
+    }
+
+    /// The table `world` holds, `None` while one of its three resources is missing.
+    pub fn of_world(world: &World) -> Option<Self> {
+        Some(Self::from_parts(
+            *world.get_resource::<PipelineSettings>()?,
+            *world.get_resource::<Appearance>()?,
+            *world.get_resource::<Overlay>()?,
+        ))
     }
 }
 

@@ -1,11 +1,13 @@
 //! The owner of the settings both views follow.
 
 use crate::{
-    App, Lighting, OutsideOrbit, OutsideView, Plugin, RecordFates, RenderSettings,
-    SelectedTriangle, Viewport, Wake,
+    App, Appearance, Lighting, OutsideOrbit, OutsideView, Overlay, PipelineSettings, Plugin,
+    RecordFates, SelectedTriangle, Viewport, Wake,
 };
 
-/// Owns [`RenderSettings`] (one set of switches for both views), [`Lighting`] (both views light
+/// Owns the render settings, one resource per kind of reader: [`PipelineSettings`] (the
+/// pipeline's switches), [`Appearance`] (how both views colour the model) and [`Overlay`] (the
+/// inspector's display), and [`Lighting`] (both views light
 /// the model with it) and [`Viewport`] (the size both views share): neither view owns what the
 /// other must follow too. The input plugin, the panel
 /// and the viewer write them; the Close2GL pipeline and the GPU views read them. Values inserted
@@ -19,7 +21,9 @@ pub struct SettingsPlugin;
 
 impl Plugin for SettingsPlugin {
     fn build(&self, app: &mut App) {
-        app.init_resource::<RenderSettings>()
+        app.init_resource::<PipelineSettings>()
+            .init_resource::<Appearance>()
+            .init_resource::<Overlay>()
             .init_resource::<Lighting>()
             .init_resource::<Viewport>()
             .init_resource::<OutsideView>()

@@ -11,9 +11,7 @@
 //! eye shows nothing and one reaching behind it shows the part in front.
 
 use bevy_ecs::prelude::*;
-use close2gl_core::{
-    Camera, FateKind, Fates, Mesh, Overlay, RecordFates, RenderSettings, TriangleFate,
-};
+use close2gl_core::{Camera, FateKind, Fates, Mesh, Overlay, RecordFates, TriangleFate};
 use close2gl_pipeline::matrices::ClipTransform;
 use glam::Vec4;
 
@@ -147,11 +145,11 @@ fn rgba(kind: FateKind) -> [u8; 4] {
 /// `Fates`, off when it leaves it (so that another reader's request, made while the view was
 /// off, is left alone).
 pub(crate) fn record_fates_while_shown(
-    settings: Res<RenderSettings>,
+    overlay: Res<Overlay>,
     mut request: ResMut<RecordFates>,
     mut shown: Local<bool>,
 ) {
-    let now = settings.overlay == Overlay::FateView;
+    let now = *overlay == Overlay::FateView;
     if now != *shown {
         request.0 = now;
         *shown = now;

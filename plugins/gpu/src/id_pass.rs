@@ -12,7 +12,7 @@
 //! A flat attribute works on every adapter and carries the mesh's own index.
 
 use bytemuck::{Pod, Zeroable};
-use close2gl_core::{Mesh, Scene, Viewport};
+use close2gl_core::{Mesh, Scene, Shading, Viewport};
 use wgpu::util::DeviceExt;
 
 use crate::attachments::DEPTH_FORMAT;
@@ -84,7 +84,7 @@ pub fn start_probe(
         .mesh
         .validate()
         .map_err(|e| format!("cannot probe an invalid mesh: {e}"))?;
-    let faces = id_faces(scene.mesh, scene.settings.backface_culling);
+    let faces = id_faces(scene.mesh, scene.pipeline.backface_culling);
     if faces.is_empty() {
         return Ok(ReferenceProbe(None));
     }
@@ -176,8 +176,9 @@ fn draw(gpu: &Gpu, scene: Scene<'_>, faces: &[IdFace], targets: &Targets) {
         contents: bytemuck::cast_slice(faces),
         usage: wgpu::BufferUsages::VERTEX,
     });
-    let key = PipelineKey::new(scene.settings);
-    let drawing = FaceDrawing::new(device.features(), scene.settings.mode);
+    // Ids are not shaded: the key's shading is never read here.
+    let key = PipelineKey::new(scene.pipeline, Shading::None);
+    let drawing = FaceDrawing::new(device.features(), scene.pipeline.mode);
     let pipeline = create_pipeline(device, &setup.layout, key, drawing);
     let id_view = targets.id.create_view(&Default::default());
     let depth_out_view = targets.depth_out.create_view(&Default::default());

@@ -6,7 +6,8 @@
 //! rasterizer's image drawn as one textured triangle, or in the fate view each triangle in its
 //! fate's colour, or in the live difference where the two views differ), both held in [`Views`],
 //! with the selected triangle's highlight. [`GpuPlugin`] adds
-//! the systems (in `FrameSet::Output`) that read `Camera`, `Mesh`, `RenderSettings`, `Lighting`,
+//! the systems (in `FrameSet::Output`) that read `Camera`, `Mesh`, `PipelineSettings` (mode,
+//! culling, who rasterizes), `Appearance`, `Overlay`, `Lighting`,
 //! `Texture`, `Close2glFrame`, `SoftwareFrame`, `SelectedTriangle`, `Viewport` and `Fates` (asking
 //! for it to be recorded while the fate view is shown) and upload what changed into `Views`; whoever
 //! owns the target (a window, or [`render_offscreen`]) records the draws.
@@ -16,7 +17,7 @@
 //! view is drawn with ([`submit_pass_timed`]) live here too (images and their comparison are the
 //! core's: `close2gl_core::Image`, `close2gl_core::parity`). [`outside`] is the
 //! third view, the pipeline seen from outside: its [`outside::OutsidePlugin`] reads the camera,
-//! the mesh, the settings, `OutsideView`, `OutsideOrbit` and `Fates`, and fills
+//! the mesh, the `Appearance`, the `Overlay`, `OutsideView`, `OutsideOrbit` and `Fates`, and fills
 //! [`outside::OutsideRenderer`]. No window or UI crate is a dependency.
 
 pub mod attachments;
@@ -43,8 +44,8 @@ mod views;
 
 use bevy_ecs::prelude::*;
 use close2gl_core::{
-    App, Close2glFrame, Close2glStep, Fates, FrameSet, Lighting, Owner, Plugin, RecordFates,
-    RenderSettings, SelectedTriangle, Update, Viewport,
+    App, Appearance, Close2glFrame, Close2glStep, Fates, FrameSet, Lighting, Overlay, Owner,
+    PipelineSettings, Plugin, RecordFates, SelectedTriangle, Update, Viewport,
 };
 
 use fate_view::record_fates_while_shown;
@@ -68,9 +69,9 @@ pub use wgpu;
 
 /// Adds the systems that upload what changed, by bevy's change ticks as the pipeline
 /// watches its inputs: the `Mesh` again only when it changed, the `Texture` likewise; the
-/// reference uniforms from `Camera`, `RenderSettings` and `Lighting`; the Close2GL 2D buffer
+/// reference uniforms from `Camera`, `PipelineSettings`, `Appearance` and `Lighting`; the Close2GL 2D buffer
 /// from `Close2glFrame`, or the software rasterizer's image from `SoftwareFrame`; in the fate
-/// view (`RenderSettings::overlay`), each triangle in its colour from `Fates`, which it asks
+/// view (the `Overlay`), each triangle in its colour from `Fates`, which it asks
 /// Close2GL to record (`RecordFates`) while that view is shown; the selected triangle's highlight (`SelectedTriangle`); in the live difference, both
 /// views drawn again into textures of the `Viewport`'s size and compared. They run once
 /// the `Gpu` and `Views` resources exist (inserted by whoever owns the target), so a window may
@@ -81,7 +82,9 @@ pub struct GpuPlugin;
 
 impl Plugin for GpuPlugin {
     fn build(&self, app: &mut App) {
-        app.requires::<RenderSettings>(Owner::Settings)
+        app.requires::<PipelineSettings>(Owner::Settings)
+            .requires::<Appearance>(Owner::Settings)
+            .requires::<Overlay>(Owner::Settings)
             .requires::<Lighting>(Owner::Settings)
             .requires::<Close2glFrame>(Owner::Close2gl)
             .requires::<Viewport>(Owner::Settings)

@@ -3,7 +3,8 @@
 
 use bevy_ecs::prelude::*;
 use close2gl_core::{
-    App, Close2glFrame, Plugin, Rasterizer, RenderSettings, SoftwareFrame, StageCounts, Viewport,
+    App, Appearance, Close2glFrame, PipelineSettings, Plugin, Rasterizer, SoftwareFrame,
+    StageCounts, Viewport,
 };
 
 use crate::GpuPlugin;
@@ -99,9 +100,8 @@ pub fn render_offscreen(app: &mut App) -> Result<Snapshot, String> {
         .ok_or("render_offscreen needs the Views resource (add OffscreenPlugin)")?;
     let target = world.resource::<Target>();
     let frame = world.resource::<Close2glFrame>();
-    let settings = world.resource::<RenderSettings>();
-    let background = to_rgb8(settings.background);
-    let software = settings.close2gl_raster == Rasterizer::Software;
+    let background = to_rgb8(world.resource::<Appearance>().background);
+    let software = world.resource::<PipelineSettings>().close2gl_raster == Rasterizer::Software;
 
     let reference_ms = draw(
         &gpu,

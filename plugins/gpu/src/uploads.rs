@@ -5,8 +5,8 @@ use bevy_ecs::prelude::*;
 use bevy_ecs::system::SystemParam;
 use close2gl_core::parity::to_rgb8;
 use close2gl_core::{
-    Camera, Close2glFrame, Fates, Lighting, Mesh, Overlay, RenderSettings, SelectedTriangle,
-    SoftwareFrame, Texture, TraceOutput, Viewport,
+    Appearance, Camera, Close2glFrame, Fates, Lighting, Mesh, Overlay, PipelineSettings,
+    SelectedTriangle, SoftwareFrame, Texture, TraceOutput, Viewport,
 };
 
 use crate::gpu::Gpu;
@@ -40,17 +40,17 @@ pub(crate) fn upload_texture(
 pub(crate) fn upload_reference(
     gpu: Res<Gpu>,
     camera: Single<&Camera>,
-    settings: Res<RenderSettings>,
+    (pipeline, look, overlay): (Res<PipelineSettings>, Res<Appearance>, Res<Overlay>),
     lighting: Res<Lighting>,
     viewport: Res<Viewport>,
     mut views: ResMut<Views>,
 ) {
-    views.background = clear_color(settings.background);
+    views.background = clear_color(look.background);
     views.reference.update(
         &gpu.device,
         &gpu.queue,
         (&camera, *viewport),
-        &settings,
+        (&pipeline, &look, *overlay),
         &lighting,
     );
 }
@@ -61,16 +61,16 @@ pub(crate) fn upload_close2gl(
     gpu: Res<Gpu>,
     frame: Res<Close2glFrame>,
     trace: Option<Res<TraceOutput>>,
-    settings: Res<RenderSettings>,
+    look: Res<Appearance>,
     mut views: ResMut<Views>,
 ) {
     let trace_changed = trace.as_ref().is_some_and(|t| t.is_changed());
-    if frame.is_changed() || trace_changed || settings.is_changed() || views.is_added() {
+    if frame.is_changed() || trace_changed || look.is_changed() || views.is_added() {
         let shown = trace.as_ref().and_then(|t| t.0.as_deref());
         let vertices = shown.unwrap_or(&frame.vertices);
         views
             .close2gl
-            .update(&gpu.device, &gpu.queue, &frame, vertices, settings.color);
+            .update(&gpu.device, &gpu.queue, &frame, vertices, look.color);
     }
 }
 
@@ -79,10 +79,10 @@ pub(crate) fn upload_close2gl(
 pub(crate) fn upload_software(
     gpu: Res<Gpu>,
     image: Option<Res<SoftwareFrame>>,
-    settings: Res<RenderSettings>,
+    pipeline: Res<PipelineSettings>,
     mut views: ResMut<Views>,
 ) {
-    views.rasterizer = settings.close2gl_raster;
+    views.rasterizer = pipeline.close2gl_raster;
     if let Some(image) = image
         && (image.is_changed() || views.is_added())
     {
@@ -108,11 +108,11 @@ pub(crate) fn upload_fates(
     gpu: Res<Gpu>,
     scene: MeshAndCamera,
     fates: Res<Fates>,
-    settings: Res<RenderSettings>,
+    overlay: Res<Overlay>,
     mut views: ResMut<Views>,
 ) {
-    views.overlay = settings.overlay;
-    if settings.overlay == Overlay::FateView {
+    views.overlay = *overlay;
+    if *overlay == Overlay::FateView {
         views
             .fates
             .update(&gpu.device, &gpu.queue, scene.get(), &fates);
@@ -137,11 +137,11 @@ pub(crate) fn upload_highlight(
 pub(crate) fn render_difference(
     gpu: Res<Gpu>,
     viewport: Res<Viewport>,
-    settings: Res<RenderSettings>,
+    (look, overlay): (Res<Appearance>, Res<Overlay>),
     mut views: ResMut<Views>,
 ) {
-    if settings.overlay == Overlay::Difference {
+    if *overlay == Overlay::Difference {
         let size = (viewport.width, viewport.height);
-        views.render_difference(&gpu, size, to_rgb8(settings.background));
+        views.render_difference(&gpu, size, to_rgb8(look.background));
     }
 }

@@ -44,7 +44,7 @@ impl Views {
             highlight: Highlight::new(&gpu.device, color_format),
             overlay: Overlay::Off,
             rasterizer: Rasterizer::Gpu,
-            background: clear_color(close2gl_core::RenderSettings::default().background),
+            background: clear_color(close2gl_core::Appearance::default().background),
         }
     }
 

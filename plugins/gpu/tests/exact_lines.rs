@@ -5,8 +5,7 @@
 //! and off it, sides exactly through pixel centres, and lines of no length.
 
 use close2gl_core::{
-    Camera, Close2glFrame, Lighting, RasterGeometry, RasterVertex, RenderSettings, Topology,
-    Viewport,
+    Appearance, Camera, Close2glFrame, Lighting, RasterGeometry, RasterVertex, Topology, Viewport,
 };
 use close2gl_gpu::wgpu;
 use close2gl_gpu::wgpu::util::DeviceExt;
@@ -120,7 +119,7 @@ fn software_rows(line: [f32; 4]) -> Vec<u32> {
         viewport,
         ..Default::default()
     };
-    let settings = RenderSettings::default();
+    let settings = Appearance::default();
     let drawn = close2gl_raster::textbook::draw(
         &frame,
         &Camera::default(),

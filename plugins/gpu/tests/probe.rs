@@ -36,7 +36,7 @@ fn probe(mesh: &Mesh, settings: &RenderSettings, pixel: (u32, u32)) -> Option<Re
     let scene = Scene {
         mesh,
         camera: &Camera::default(),
-        settings,
+        pipeline: &settings.pipeline(),
         viewport: Viewport {
             width: 64,
             height: 64,
@@ -72,7 +72,7 @@ fn the_probe_culls_as_the_reference_does_and_refuses_a_pixel_outside_the_viewpor
     let scene = Scene {
         mesh: &two_squares(false),
         camera: &Camera::default(),
-        settings: &settings,
+        pipeline: &settings.pipeline(),
         viewport: Viewport {
             width: 64,
             height: 64,

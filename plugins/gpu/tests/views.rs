@@ -7,8 +7,8 @@ use close2gl_core::bevy_ecs::change_detection::DetectChangesMut;
 use close2gl_core::glam::{Vec2, Vec3};
 use close2gl_core::parity::{CoverageComparison, ONLY_REFERENCE, coverage, diff_image, to_rgb8};
 use close2gl_core::{
-    App, Camera, Clipping, FrontFace, Image, Mesh, Overlay, RenderMode, RenderSettings, Scene,
-    Shading, Texture, TextureFilter, Viewport,
+    App, Appearance, Camera, Clipping, FrontFace, Image, Mesh, Overlay, RenderMode, RenderSettings,
+    Scene, Shading, Texture, TextureFilter, Viewport,
 };
 use close2gl_gpu::attachments::{READABLE_TARGET, texture_2d};
 use close2gl_gpu::{
@@ -334,7 +334,7 @@ fn without_polygon_modes_the_probe_hits_what_the_reference_draws() {
         let scene = Scene {
             mesh: &mesh,
             camera: &camera,
-            settings: &settings,
+            pipeline: &settings.pipeline(),
             viewport,
         };
         let (mut hits, mut misses) = (0, 0);
@@ -499,7 +499,7 @@ fn a_checkerboard_quad_shows_both_squares_and_none_with_texturing_off() {
     );
     assert!(white + grey > 0.99, "white {white}, grey {grey}");
     assert!((0.4..0.6).contains(&white), "white {white}, grey {grey}");
-    app.world_mut().resource_mut::<RenderSettings>().texture = false;
+    app.world_mut().resource_mut::<Appearance>().texture = false;
     let plain = render_offscreen(&mut app).expect("render");
     assert_eq!(share_of(&plain, 255), 1.0);
     assert_eq!(colors(&plain).len(), colors(&textured).len());
@@ -608,7 +608,7 @@ fn the_live_difference_is_the_render_commands_diff_image() {
         SMALL,
     );
     let plain = render_offscreen(&mut app).expect("both views render");
-    app.world_mut().resource_mut::<RenderSettings>().overlay = Overlay::Difference;
+    *app.world_mut().resource_mut::<Overlay>() = Overlay::Difference;
     let live = render_offscreen(&mut app).expect("the difference renders");
 
     let expected = diff_image(&plain.reference, &plain.close2gl, plain.background);

@@ -1,20 +1,21 @@
 //! The input plugin. It owns the mapping from raw input to intent: it reads `InputState` (keys
 //! held and pressed, mouse drag, scroll, frame time), `InputBindings` and `CameraSpeeds`, and
 //! writes `CameraActions` (moves scaled by the model's size, rotations, zoom, reset, mode toggle)
-//! and, for the lecture's Shift+D / Shift+P / Shift+G keys, `RenderSettings::shading`, and the
+//! and, for the lecture's Shift+D / Shift+P / Shift+G keys, `Appearance::shading`, the inspector's
+//! keys into `Overlay`, and the
 //! tool keys (cheat sheet, screenshot, copy as command) into `ToolRequests`, and the outside
 //! view's keys into `OutsideView::show` and `OutsideOrbit::whole_volume`. It knows no window
 //! system: the viewer fills `InputState`, and so can a test. It owns `InputState` and
 //! `InputBindings` and `ToolRequests`; the camera plugin provides the actions and speeds, the core's
-//! `SettingsPlugin` the render settings. Its system runs in `FrameSet::Input`.
+//! `SettingsPlugin` the appearance and the overlay. Its system runs in `FrameSet::Input`.
 
 mod outside_keys;
 
 use bevy_ecs::prelude::*;
 use close2gl_core::Owner;
 use close2gl_core::{
-    Action, App, CameraAction, CameraActions, CameraSpeeds, FrameSet, InputBindings, InputState,
-    Overlay, Plugin, RenderSettings, Shading, ToolRequests, Update,
+    Action, App, Appearance, CameraAction, CameraActions, CameraSpeeds, FrameSet, InputBindings,
+    InputState, Overlay, Plugin, Shading, ToolRequests, Update,
 };
 
 pub struct InputPlugin;
@@ -26,7 +27,8 @@ impl Plugin for InputPlugin {
             .init_resource::<ToolRequests>()
             .requires::<CameraActions>(Owner::Camera)
             .requires::<CameraSpeeds>(Owner::Camera)
-            .requires::<RenderSettings>(Owner::Settings)
+            .requires::<Appearance>(Owner::Settings)
+            .requires::<Overlay>(Owner::Settings)
             .add_systems(
                 Update,
                 (map_input, outside_keys::toggle_outside).in_set(FrameSet::Input),
@@ -46,7 +48,7 @@ pub fn map_input(
     bindings: Res<InputBindings>,
     speeds: Res<CameraSpeeds>,
     mut actions: ResMut<CameraActions>,
-    mut settings: ResMut<RenderSettings>,
+    (mut look, mut overlay): (ResMut<Appearance>, ResMut<Overlay>),
     mut tools: ResMut<ToolRequests>,
 ) {
     let dt = input.dt.clamp(0.0, MAX_DT);
@@ -86,20 +88,21 @@ pub fn map_input(
             pressed,
             &bindings,
             &mut actions.0,
-            &mut settings,
+            (&mut look, &mut overlay),
             &mut tools,
         );
     }
 }
 
-/// One key press: a camera action, the lecture's shading keys or a tool. `settings` and `tools`
+/// One key press: a camera action, the lecture's shading keys, an overlay or a tool. `look`,
+/// `overlay` and `tools`
 /// are written only when one of their keys is pressed, so that they are not marked changed
 /// every frame.
 fn apply_press(
     pressed: &str,
     bindings: &InputBindings,
     actions: &mut Vec<CameraAction>,
-    settings: &mut ResMut<RenderSettings>,
+    (look, overlay): (&mut ResMut<Appearance>, &mut ResMut<Overlay>),
     tools: &mut ResMut<ToolRequests>,
 ) {
     let is = |action: Action| bindings.matches(action, pressed);
@@ -108,11 +111,11 @@ fn apply_press(
     } else if is(Action::ToggleMode) {
         actions.push(CameraAction::ToggleMode);
     } else if is(Action::OriginalColor) {
-        settings.shading = Shading::None;
+        look.shading = Shading::None;
     } else if is(Action::Phong) {
-        settings.shading = Shading::Phong;
+        look.shading = Shading::Phong;
     } else if is(Action::Gouraud) {
-        settings.shading = Shading::GouraudAds;
+        look.shading = Shading::GouraudAds;
     } else if is(Action::Help) {
         tools.toggle_help = true;
     } else if is(Action::Screenshot) {
@@ -120,9 +123,9 @@ fn apply_press(
     } else if is(Action::CopyCommand) {
         tools.copy_command = true;
     } else if is(Action::FateView) {
-        settings.overlay = toggled(settings.overlay, Overlay::FateView);
+        **overlay = toggled(**overlay, Overlay::FateView);
     } else if is(Action::DifferenceView) {
-        settings.overlay = toggled(settings.overlay, Overlay::Difference);
+        **overlay = toggled(**overlay, Overlay::Difference);
     }
 }
 

@@ -8,7 +8,7 @@
 //! `ModelStatus::loading` saying how far it is, and is swapped in by the frame that finds it
 //! done (in a replay, the frame the recording says: `LoadPace`, which the viewer sets). It owns
 //! `ModelRequest`, `ModelStatus`, `PrimitiveParams`, `BackgroundLoad` and `LoadPace`, and runs
-//! in `FrameSet::Load`. It owns the model's `Texture` too (the course's checkerboard until a
+//! in `FrameSet::Load`'s first step (`LoadStep::Files`). It owns the model's `Texture` too (the course's checkerboard until a
 //! `TextureRequest` names a PNG or JPEG file; a file that does not load removes it, so the
 //! model shows untextured, and sets the error). Framing the camera on the new mesh is the
 //! camera plugin's job (it watches `Changed<Mesh>`, in `FrameSet::Camera`).
@@ -34,7 +34,7 @@ use std::path::Path;
 
 use bevy_ecs::prelude::*;
 use close2gl_core::{
-    App, FrameSet, LoadPace, Mesh, ModelRequest, ModelSource, ModelStatus, Plugin, PrimitiveParams,
+    App, LoadPace, LoadStep, Mesh, ModelRequest, ModelSource, ModelStatus, Plugin, PrimitiveParams,
     Texture, TextureRequest, Update,
 };
 
@@ -135,7 +135,7 @@ impl Plugin for ModelPlugin {
             .init_resource::<LoadPace>()
             .add_systems(
                 Update,
-                (load_requested_model, load_requested_texture).in_set(FrameSet::Load),
+                (load_requested_model, load_requested_texture).in_set(LoadStep::Files),
             );
     }
 }

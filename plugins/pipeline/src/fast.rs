@@ -6,8 +6,8 @@
 
 use bevy_ecs::prelude::Resource;
 use close2gl_core::{
-    Camera, Close2glFrame, FateCounts, Fates, Mesh, RasterGeometry, RasterVertex, Rasterizer,
-    RenderSettings, TriangleFate, Viewport,
+    Camera, Close2glFrame, FateCounts, Fates, Mesh, PipelineSettings, RasterGeometry, RasterVertex,
+    Rasterizer, TriangleFate, Viewport,
 };
 use glam::Vec3;
 use rayon::iter::Either;
@@ -65,7 +65,7 @@ impl FastPipeline {
         &mut self,
         mesh: &Mesh,
         camera: &Camera,
-        settings: &RenderSettings,
+        settings: &PipelineSettings,
         viewport: Viewport,
         frame: &mut Close2glFrame,
         fates: &mut Fates,

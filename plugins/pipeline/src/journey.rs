@@ -5,7 +5,7 @@
 //! so what the inspector shows is what the frame did.
 
 use close2gl_core::{
-    Camera, ClipPlane, Clipping, FateKind, Mesh, RenderSettings, TriangleFate, Viewport,
+    Camera, ClipPlane, Clipping, FateKind, Mesh, PipelineSettings, TriangleFate, Viewport,
 };
 use glam::{Vec3, Vec4};
 
@@ -56,7 +56,7 @@ pub fn journey(
     mesh: &Mesh,
     index: usize,
     camera: &Camera,
-    settings: &RenderSettings,
+    settings: &PipelineSettings,
     viewport: Viewport,
 ) -> Option<Journey> {
     let corners = *mesh.triangles.get(index)?;
@@ -143,14 +143,14 @@ mod tests {
         let viewport = random_triangles::VIEWPORT;
         let mut seen = close2gl_core::FateCounts::default();
         for (i, mesh) in random_triangles::triangles(0x9e37_79b9_7f4a_7c15, 3000).enumerate() {
-            let settings = RenderSettings {
+            let settings = PipelineSettings {
                 backface_culling: i % 2 == 0,
                 clipping: if i % 7 == 0 {
                     Clipping::Simple
                 } else {
                     Clipping::Full
                 },
-                ..RenderSettings::default()
+                ..PipelineSettings::default()
             };
             let (frame, fates) = textbook::run_recording(&mesh, &camera, &settings, viewport);
             let j = journey(&mesh, 0, &camera, &settings, viewport).expect("triangle 0");

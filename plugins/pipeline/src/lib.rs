@@ -1,7 +1,7 @@
 //! Close2GL: the geometry half of the OpenGL pipeline, in software. This crate owns the
 //! hand-written matrices (modelview M, projection P, viewport V), clipping in homogeneous space,
 //! the perspective division, backface culling, and the `Close2glPlugin` whose system reads the
-//! `Camera` and `Mesh` components and the `RenderSettings` and `Viewport` resources (owned by the
+//! `Camera` and `Mesh` components and the `PipelineSettings` and `Viewport` resources (owned by the
 //! core's `SettingsPlugin`), and writes the `Close2glFrame` resource, which it owns: the 2D vertex
 //! buffer in window pixels (which the GPU only draws) and the stage counts. It also owns the
 //! core's `Fates` resource: every frame it writes each fate's count, and, while `RecordFates`
@@ -31,8 +31,8 @@ use web_time::Instant;
 use bevy_ecs::prelude::*;
 use close2gl_core::Owner;
 use close2gl_core::{
-    App, Camera, Close2glFrame, Close2glStep, FateCounts, FateKind, Fates, Mesh, Mistake, Plugin,
-    RecordFates, RenderSettings, StageCounts, Update, Viewport,
+    App, Camera, Close2glFrame, Close2glStep, FateCounts, FateKind, Fates, Mesh, Mistake,
+    PipelineSettings, Plugin, RecordFates, StageCounts, Update, Viewport,
 };
 
 pub use fast::FastPipeline;
@@ -48,7 +48,7 @@ impl Plugin for Close2glPlugin {
         app.init_resource::<FastPipeline>()
             .init_resource::<Close2glFrame>()
             .init_resource::<Fates>()
-            .requires::<RenderSettings>(Owner::Settings)
+            .requires::<PipelineSettings>(Owner::Settings)
             .requires::<Viewport>(Owner::Settings)
             .requires::<RecordFates>(Owner::Settings)
             .add_systems(Update, close2gl_system.in_set(Close2glStep::Geometry));
@@ -60,7 +60,7 @@ impl Plugin for Close2glPlugin {
 pub fn close2gl_system(
     camera: Single<Ref<Camera>>,
     mesh: Single<Ref<Mesh>>,
-    settings: Res<RenderSettings>,
+    settings: Res<PipelineSettings>,
     viewport: Res<Viewport>,
     mut pipeline: ResMut<FastPipeline>,
     mut frame: ResMut<Close2glFrame>,

@@ -4,7 +4,7 @@
 
 use close2gl_core::limits::has_no_area;
 use close2gl_core::{
-    Clipping, CutVertex, FateKind, FrontFace, RenderMode, RenderSettings, Topology, TriangleFate,
+    Clipping, CutVertex, FateKind, FrontFace, PipelineSettings, RenderMode, Topology, TriangleFate,
     Viewport,
 };
 use glam::{Mat4, Vec4};
@@ -23,7 +23,7 @@ pub struct FrameConstants {
 }
 
 impl FrameConstants {
-    pub fn new(settings: &RenderSettings, viewport: Viewport) -> Self {
+    pub fn new(settings: &PipelineSettings, viewport: Viewport) -> Self {
         Self {
             mode: settings.mode,
             clipping: settings.clipping,

@@ -3,8 +3,8 @@
 //! check; the fast path must produce exactly its output.
 
 use close2gl_core::{
-    Camera, Close2glFrame, CutVertex, Fates, Mesh, RasterGeometry, Rasterizer, RenderMode,
-    RenderSettings, Viewport,
+    Camera, Close2glFrame, CutVertex, Fates, Mesh, PipelineSettings, RasterGeometry, Rasterizer,
+    RenderMode, Viewport,
 };
 
 use crate::Tally;
@@ -19,7 +19,7 @@ use crate::stage::{Fate, FrameConstants, corner, process};
 pub fn run(
     mesh: &Mesh,
     camera: &Camera,
-    settings: &RenderSettings,
+    settings: &PipelineSettings,
     viewport: Viewport,
 ) -> Close2glFrame {
     run_recording(mesh, camera, settings, viewport).0
@@ -29,7 +29,7 @@ pub fn run(
 pub fn run_recording(
     mesh: &Mesh,
     camera: &Camera,
-    settings: &RenderSettings,
+    settings: &PipelineSettings,
     viewport: Viewport,
 ) -> (Close2glFrame, Fates) {
     let transform = ClipTransform::new(camera);
@@ -72,7 +72,7 @@ pub fn run_recording(
 pub fn run_mistaken(
     mesh: &Mesh,
     camera: &Camera,
-    settings: &RenderSettings,
+    settings: &PipelineSettings,
     viewport: Viewport,
     mistakes: Mistakes,
 ) -> (Close2glFrame, Fates) {

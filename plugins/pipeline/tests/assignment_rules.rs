@@ -8,7 +8,7 @@
 use close2gl_core::glam::{DVec3, DVec4, Vec3};
 use close2gl_core::limits::ZERO_AREA;
 use close2gl_core::{
-    Camera, Clipping, Close2glFrame, FrontFace, Mesh, RenderSettings, StageCounts, Viewport,
+    Camera, Clipping, Close2glFrame, FrontFace, Mesh, PipelineSettings, StageCounts, Viewport,
 };
 use close2gl_pipeline::FastPipeline;
 
@@ -42,7 +42,7 @@ impl Random {
 fn counts_by_the_rules(
     triangles: &[[DVec3; 3]],
     camera: &Camera,
-    settings: &RenderSettings,
+    settings: &PipelineSettings,
     viewport: Viewport,
 ) -> StageCounts {
     let to_clip = clip_transform(camera);
@@ -125,7 +125,7 @@ fn clip(mut polygon: Vec<DVec4>) -> Vec<DVec4> {
 
 /// Whether the clipped polygon faces away on screen, or has no area to speak of (a back face,
 /// as in OpenGL).
-fn is_back_face(polygon: &[DVec4], settings: &RenderSettings, viewport: Viewport) -> bool {
+fn is_back_face(polygon: &[DVec4], settings: &PipelineSettings, viewport: Viewport) -> bool {
     // Window pixels, y down as the window counts them: counter-clockwise on screen is a
     // negative area here.
     let (w, h) = (viewport.width as f64, viewport.height as f64);
@@ -175,8 +175,8 @@ fn random_camera(random: &mut Random, centre: DVec3, size: f64) -> Option<Camera
     .looking_at(position, target, Vec3::Y)
 }
 
-fn random_settings(random: &mut Random) -> RenderSettings {
-    RenderSettings {
+fn random_settings(random: &mut Random) -> PipelineSettings {
+    PipelineSettings {
         clipping: if random.next() < 0.5 {
             Clipping::Simple
         } else {
@@ -188,7 +188,7 @@ fn random_settings(random: &mut Random) -> RenderSettings {
             FrontFace::Cw
         },
         backface_culling: random.next() < 0.8,
-        ..RenderSettings::default()
+        ..PipelineSettings::default()
     }
 }
 

@@ -3,7 +3,7 @@
 
 use close2gl_core::glam::Vec3;
 use close2gl_core::{
-    Camera, Clipping, Close2glFrame, Mesh, Rasterizer, RenderMode, RenderSettings, Viewport,
+    Camera, Clipping, Close2glFrame, Mesh, PipelineSettings, Rasterizer, RenderMode, Viewport,
 };
 use close2gl_pipeline::{FastPipeline, textbook};
 
@@ -35,12 +35,12 @@ fn a_triangle_near_f32_limits_clips_without_overrunning_the_polygon() {
     };
     for mode in RenderMode::ALL {
         for close2gl_raster in Rasterizer::ALL {
-            let settings = RenderSettings {
+            let settings = PipelineSettings {
                 mode: *mode,
                 clipping: Clipping::Full,
                 backface_culling: false,
                 close2gl_raster: *close2gl_raster,
-                ..RenderSettings::default()
+                ..PipelineSettings::default()
             };
             let mut frame = Close2glFrame::default();
             FastPipeline::default().run(

@@ -4,8 +4,8 @@
 
 use close2gl_core::glam::Vec3;
 use close2gl_core::{
-    Camera, Clipping, Close2glFrame, FateCounts, Fates, FrontFace, Mesh, RenderMode,
-    RenderSettings, Viewport,
+    Camera, Clipping, Close2glFrame, FateCounts, Fates, FrontFace, Mesh, PipelineSettings,
+    RenderMode, Viewport,
 };
 use close2gl_pipeline::{FastPipeline, textbook};
 use proptest::prelude::*;
@@ -61,13 +61,13 @@ fn camera() -> impl Strategy<Value = Camera> {
         )
 }
 
-fn settings() -> impl Strategy<Value = RenderSettings> {
-    (0usize..3, any::<bool>(), any::<bool>()).prop_map(|(mode, cw, culling)| RenderSettings {
+fn settings() -> impl Strategy<Value = PipelineSettings> {
+    (0usize..3, any::<bool>(), any::<bool>()).prop_map(|(mode, cw, culling)| PipelineSettings {
         mode: [RenderMode::Points, RenderMode::Wireframe, RenderMode::Solid][mode],
         front_face: if cw { FrontFace::Cw } else { FrontFace::Ccw },
         backface_culling: culling,
         clipping: Clipping::Full,
-        ..RenderSettings::default()
+        ..PipelineSettings::default()
     })
 }
 
@@ -106,7 +106,7 @@ proptest! {
             *p = camera.position + camera.u * local.dot(camera.u) + camera.v * local.dot(camera.v) + camera.n * depth;
         }
         for clipping in [Clipping::Full, Clipping::Simple] {
-            let frame = textbook::run(&behind, &camera, &RenderSettings { clipping, ..settings }, viewport);
+            let frame = textbook::run(&behind, &camera, &PipelineSettings { clipping, ..settings }, viewport);
             prop_assert!(frame.vertices.is_empty(), "{:?} drew {} vertices", clipping, frame.vertices.len());
             prop_assert_eq!(frame.counts.clipped, behind.triangles.len());
         }
@@ -116,7 +116,7 @@ proptest! {
     fn the_fast_path_writes_the_textbook_buffer_and_fates(
         mesh in mesh(200), camera in camera(), settings in settings(), viewport in viewport(), simple in any::<bool>(),
     ) {
-        let settings = RenderSettings {
+        let settings = PipelineSettings {
             clipping: if simple { Clipping::Simple } else { Clipping::Full },
             ..settings
         };

@@ -10,7 +10,7 @@
 
 use bevy_ecs::world::World;
 use close2gl_core::{
-    Clipping, FateKind, Fates, Rasterizer, RenderSettings, Scene, SoftwareFrame, Viewport,
+    Clipping, FateKind, Fates, PipelineSettings, Rasterizer, Scene, SoftwareFrame, Viewport,
 };
 use close2gl_pipeline::clip::{NEAR, Polygon, clip_polygon, outcode};
 use close2gl_pipeline::matrices::{ClipTransform, viewport as viewport_matrix};
@@ -83,7 +83,7 @@ pub struct Drawn<'a> {
 impl<'a> Drawn<'a> {
     /// What the software rasterizer drew in `world`'s last frame, when it is the one drawing
     /// Close2GL's view: the viewer's Ctrl+click and `close2gl inspect` probe the same image.
-    pub fn last_frame(world: &'a World, settings: &RenderSettings) -> Option<Self> {
+    pub fn last_frame(world: &'a World, settings: &PipelineSettings) -> Option<Self> {
         (settings.close2gl_raster == Rasterizer::Software).then(|| Drawn {
             rasterizer: world.resource::<SoftwareRasterizer>(),
             image: world.resource::<SoftwareFrame>(),
@@ -156,7 +156,7 @@ fn covering(scene: Scene<'_>, fates: &Fates, x: u32, y: u32) -> Vec<Candidate> {
         };
         let clip = corners.map(|i| transform.apply(scene.mesh.positions[i as usize]));
         let removed = fate.kind == FateKind::Clipped;
-        let polygon = projected(clip, removed, scene.settings.clipping);
+        let polygon = projected(clip, removed, scene.pipeline.clipping);
         let Some((coverage, depth)) = cover(&polygon, &viewport, scene.viewport, x, y) else {
             continue;
         };

@@ -4,8 +4,9 @@
 //! four shadings lit exactly as the reference's shader lights them, and perspective-correct
 //! interpolation; tiled (64×64 bins, each triangle binned once) and drawn in parallel. Its
 //! `RasterPlugin` owns the `SoftwareFrame` image and writes it, in the `Close2gl` set after the
-//! pipeline, when `RenderSettings::close2gl_raster` is `software`; it reads `Close2glFrame`
-//! (the Close2GL plugin's), `Camera`, `RenderSettings` and `Lighting` (the settings plugin's),
+//! pipeline, when `PipelineSettings::close2gl_raster` is `software`; it reads `Close2glFrame`
+//! (the Close2GL plugin's), `Camera`, `PipelineSettings` (who rasterizes), `Appearance` (colour,
+//! shading, background, texture and filter) and `Lighting` (the settings plugin's),
 //! and the model's `Texture` when there is one. Textures are sampled by its own code, from its
 //! own mipmap chain (nearest, bilinear, trilinear). While `Fates::record` is set it also writes
 //! the `Fates` resource (the pipeline's): the drawn triangles that covered no pixel centre or
@@ -67,8 +68,8 @@ use web_time::Instant;
 use bevy_ecs::prelude::*;
 use close2gl_core::Owner;
 use close2gl_core::{
-    App, Camera, Close2glFrame, Close2glStep, Fates, Lighting, Plugin, Rasterizer, RenderSettings,
-    SoftwareFrame, Texture, Update,
+    App, Appearance, Camera, Close2glFrame, Close2glStep, Fates, Lighting, PipelineSettings,
+    Plugin, Rasterizer, SoftwareFrame, Texture, Update,
 };
 
 pub use rasterizer::SoftwareRasterizer;
@@ -81,7 +82,8 @@ impl Plugin for RasterPlugin {
         app.init_resource::<SoftwareRasterizer>()
             .init_resource::<SoftwareFrame>()
             .requires::<Close2glFrame>(Owner::Close2gl)
-            .requires::<RenderSettings>(Owner::Settings)
+            .requires::<PipelineSettings>(Owner::Settings)
+            .requires::<Appearance>(Owner::Settings)
             .requires::<Lighting>(Owner::Settings)
             .requires::<Fates>(Owner::Close2gl)
             .add_systems(Update, raster_system.in_set(Close2glStep::Raster));
@@ -93,13 +95,13 @@ impl Plugin for RasterPlugin {
 pub fn raster_system(
     camera: Single<&Camera>,
     frame: Res<Close2glFrame>,
-    settings: Res<RenderSettings>,
+    (pipeline, look): (Res<PipelineSettings>, Res<Appearance>),
     lighting: Res<Lighting>,
     texture: Option<Res<Texture>>,
     mut rasterizer: ResMut<SoftwareRasterizer>,
     (mut image, mut fates): (ResMut<SoftwareFrame>, ResMut<Fates>),
 ) {
-    let wanted = settings.close2gl_raster == Rasterizer::Software;
+    let wanted = pipeline.close2gl_raster == Rasterizer::Software;
     // Set even while the GPU draws the view, so that switching to software finds it ready.
     let new_texture = texture
         .as_ref()
@@ -107,7 +109,8 @@ pub fn raster_system(
     if new_texture {
         rasterizer.set_texture(texture.as_deref());
     }
-    let stale = frame.is_changed() || lighting.is_changed() || settings.is_changed() || new_texture;
+    // A change of the pipeline's switches changes the frame too; the look only the pixels.
+    let stale = frame.is_changed() || lighting.is_changed() || look.is_changed() || new_texture;
     if !wanted || !stale {
         return;
     }
@@ -117,6 +120,6 @@ pub fn raster_system(
         true => fates.into_inner(),
         false => fates.bypass_change_detection(),
     };
-    rasterizer.draw(&frame, &camera, &settings, &lighting, &mut image, fates);
+    rasterizer.draw(&frame, &camera, &look, &lighting, &mut image, fates);
     image.raster_ms = start.elapsed().as_secs_f64() * 1e3;
 }

@@ -10,7 +10,7 @@
 
 use bevy_ecs::prelude::Resource;
 use close2gl_core::{
-    Camera, Close2glFrame, Fates, Lighting, RenderSettings, Shading, SoftwareFrame, Texture,
+    Appearance, Camera, Close2glFrame, Fates, Lighting, Shading, SoftwareFrame, Texture,
     TextureFilter,
 };
 use close2gl_pipeline::matrices::ClipTransform;
@@ -74,7 +74,7 @@ impl SoftwareRasterizer {
         &mut self,
         geometry: &Close2glFrame,
         camera: &Camera,
-        settings: &RenderSettings,
+        settings: &Appearance,
         lighting: &Lighting,
         out: &mut SoftwareFrame,
         fates: &mut Fates,
@@ -144,7 +144,7 @@ impl SoftwareRasterizer {
     }
 
     /// The tiles drawn with the frame's shading.
-    fn shade(&mut self, constants: &RasterConstants<'_>, settings: &RenderSettings) {
+    fn shade(&mut self, constants: &RasterConstants<'_>, settings: &Appearance) {
         let background = pack(settings.background);
         let color = settings.color;
         match settings.shading {
@@ -176,7 +176,7 @@ impl SoftwareRasterizer {
         background: u32,
         colour: C,
         constants: &RasterConstants<'_>,
-        settings: &RenderSettings,
+        settings: &Appearance,
     ) {
         let tiles = Tiles {
             target: &mut self.target,
@@ -332,10 +332,10 @@ mod tests {
     #[test]
     fn phong_shaded_after_the_depth_test_or_queued_is_phong_shaded_as_fragments_pass() {
         let (mesh, camera) = scene();
-        let settings = RenderSettings {
+        let settings = close2gl_core::RenderSettings {
             shading: Shading::Phong,
             close2gl_raster: close2gl_core::Rasterizer::Software,
-            ..RenderSettings::default()
+            ..Default::default()
         };
         let lighting = Lighting::default();
         let viewport = Viewport {
@@ -346,7 +346,7 @@ mod tests {
         FastPipeline::default().run(
             &mesh,
             &camera,
-            &settings,
+            &settings.pipeline(),
             viewport,
             &mut geometry,
             &mut fates,
@@ -354,7 +354,12 @@ mod tests {
         let mut rasterizer = SoftwareRasterizer::default();
         let mut image = SoftwareFrame::default();
         rasterizer.draw(
-            &geometry, &camera, &settings, &lighting, &mut image, &mut fates,
+            &geometry,
+            &camera,
+            &settings.appearance(),
+            &lighting,
+            &mut image,
+            &mut fates,
         );
         let drawn = rasterizer.target.color.clone();
         let background = pack(settings.background);

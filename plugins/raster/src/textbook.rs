@@ -14,7 +14,7 @@
 //! nearest texel may differ where (s, t) falls exactly on a texel's edge).
 
 use close2gl_core::{
-    Camera, Close2glFrame, Image, Lighting, RasterGeometry, RenderSettings, Shading, Texture,
+    Appearance, Camera, Close2glFrame, Image, Lighting, RasterGeometry, Shading, Texture,
     TextureFilter, Topology,
 };
 use close2gl_pipeline::matrices::ClipTransform;
@@ -53,7 +53,7 @@ struct Vertex {
 pub fn draw(
     geometry: &Close2glFrame,
     camera: &Camera,
-    settings: &RenderSettings,
+    settings: &Appearance,
     lighting: &Lighting,
     texture: Option<&Texture>,
 ) -> Buffers {

@@ -296,7 +296,7 @@ fn the_textbook_covers_the_fast_rasterizers_pixels_and_agrees_within_rounding() 
             let textbook = textbook::draw(
                 &drawing.frame,
                 &scene.camera,
-                &p.settings,
+                &p.settings.appearance(),
                 &scene.lighting,
                 scene.texture,
             );

@@ -3,21 +3,24 @@
 //! it against the shown mesh (`close2gl_check`), takes its camera and settings, and puts its 2D
 //! output in the Close2GL view ([`view`]). It owns the resources that hold the trace
 //! (`TraceRequest`, `TraceView`, `TraceOutput`, and `TraceFindings`, check's findings in the
-//! panel's words); it reads the mesh and `Viewport`, and writes the `Camera` and
-//! `RenderSettings` when a trace is taken.
+//! panel's words); it reads the mesh and `Viewport`, asks the camera plugin for the trace's
+//! camera (`CameraRequest`) and writes `PipelineSettings` when a trace is taken.
 
 pub mod view;
 
 use bevy_ecs::prelude::*;
 use close2gl_core::{
-    App, Close2glStep, Owner, Plugin, RenderSettings, TraceFindings, TraceOutput, Update, Viewport,
+    App, CameraRequest, Close2glStep, LoadStep, Owner, PipelineSettings, Plugin, TraceFindings,
+    TraceOutput, Update, Viewport,
 };
 use view::{TraceRequest, TraceView, load_requested_trace, show_trace, word_findings};
 
-/// Reads requested traces (in `FrameSet::Close2gl`, before the pipeline: after the framing of a
-/// new model, whose camera the trace's replaces) and shows the current one's 2D output (after
-/// the pipeline's own frame). Owns `TraceRequest` and `TraceView`;
-/// reads the mesh and `Viewport`, writes the `Camera`, `RenderSettings` and `Close2glFrame`.
+/// Reads requested traces (in `FrameSet::Load`, against the mesh loaded there: its camera asked
+/// of the camera plugin through `CameraRequest`, which sets it over the framing of a new model,
+/// its switches written into `PipelineSettings`) and shows the current one's 2D output (after
+/// the pipeline's own frame, into `TraceOutput`). Owns `TraceRequest`, `TraceView`,
+/// `TraceOutput` and `TraceFindings`; reads the mesh, the `Camera`, `Close2glFrame` and
+/// `Viewport`.
 pub struct TracePlugin;
 
 impl Plugin for TracePlugin {
@@ -26,14 +29,15 @@ impl Plugin for TracePlugin {
             .init_resource::<TraceView>()
             .init_resource::<TraceOutput>()
             .init_resource::<TraceFindings>()
-            .requires::<RenderSettings>(Owner::Settings)
+            .requires::<PipelineSettings>(Owner::Settings)
+            .requires::<CameraRequest>(Owner::Camera)
             .requires::<Viewport>(Owner::Settings)
             .add_systems(
                 Update,
                 (
                     (load_requested_trace, word_findings)
                         .chain()
-                        .in_set(Close2glStep::Prepare),
+                        .in_set(LoadStep::AgainstMesh),
                     show_trace.in_set(Close2glStep::Raster),
                 ),
             );

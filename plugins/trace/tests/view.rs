@@ -3,7 +3,7 @@
 //! settings become the viewer's.
 
 use close2gl_check::program_for;
-use close2gl_core::{Camera, Clipping, FrontFace, RenderMode, RenderSettings, Viewport};
+use close2gl_core::{Camera, Clipping, FrontFace, PipelineSettings, RenderMode, Viewport};
 use close2gl_pipeline::mistakes::Mistakes;
 use close2gl_pipeline::program::{ClipPlanes, ClipRule};
 use close2gl_trace::view::probe::probe;
@@ -111,7 +111,7 @@ fn the_viewer_takes_the_traces_camera_and_settings() {
     let camera = close2gl_trace::view::trace_camera(&trace, &Camera::default(), &mesh);
     assert_eq!(camera.position, glam::Vec3::new(0.3, 0.2, 4.0));
     assert_eq!((camera.hfov, camera.near, camera.far), (60.0, 1.0, 10.0));
-    let settings = close2gl_trace::view::trace_settings(&trace, RenderSettings::default());
+    let settings = close2gl_trace::view::trace_settings(&trace, PipelineSettings::default());
     assert_eq!(settings.clipping, Clipping::Full);
     assert!(settings.backface_culling);
     assert_eq!(settings.close2gl_raster, close2gl_core::Rasterizer::Gpu);

@@ -1,25 +1,29 @@
 use bevy_ecs::prelude::*;
 use close2gl_camera::motion::{zoom, zoom_factor};
 use close2gl_core::limits::{FOV_RANGE, MOVE_SPEED_RANGE, ROTATE_SPEED_RANGE};
-use close2gl_core::{Camera, CameraAction, CameraActions, CameraMode, CameraSpeeds};
+use close2gl_core::{Camera, CameraAction, CameraActions, CameraMode, CameraRequest, CameraSpeeds};
 
 use crate::state::PanelState;
 
 /// Mode, hfov and vfov (locked together, they zoom as the scroll wheel does), near, far, speeds,
-/// and reset.
+/// and reset. An edit is asked of the camera plugin, which sets it in this frame.
 pub fn section(
     InMut(ui): InMut<egui::Ui>,
-    mut cameras: Query<&mut Camera>,
+    (cameras, mut request): (Query<&Camera>, ResMut<CameraRequest>),
     mut speeds: ResMut<CameraSpeeds>,
     mut actions: ResMut<CameraActions>,
     mut state: ResMut<PanelState>,
 ) {
-    let Ok(mut camera) = cameras.single_mut() else {
+    let Ok(camera) = cameras.single() else {
         return;
     };
-    let mut edited = *camera;
+    // An edit already asked for this frame (a watched configuration's) is the one shown.
+    let current = request.edited.unwrap_or(*camera);
+    let mut edited = current;
     lens(ui, &mut edited, &mut state.lock_fov);
-    camera.set_if_neq(edited);
+    if edited != current {
+        request.edited = Some(edited);
+    }
 
     let mut edited_speeds = *speeds;
     ui.horizontal(|ui| {

@@ -6,7 +6,7 @@
 
 use bevy_ecs::prelude::*;
 use close2gl_core::parity::{ONLY_CLOSE2GL, ONLY_REFERENCE};
-use close2gl_core::{FateKind, OutsideView, Overlay, RenderSettings};
+use close2gl_core::{FateKind, OutsideView, Overlay};
 
 use crate::state::PanelState;
 use crate::view_areas::{View, Views, view_rects};
@@ -66,17 +66,17 @@ fn rows(view: View, overlay: Overlay) -> Option<(&'static str, Vec<Row>)> {
 /// The legends in the corners of the views that show an overlay, unless hidden.
 pub fn show(
     (InRef(ui), In(views)): (InRef<egui::Ui>, In<Views>),
-    settings: Res<RenderSettings>,
+    overlay: Res<Overlay>,
     outside: Option<Res<OutsideView>>,
     mut state: ResMut<PanelState>,
 ) {
-    if state.hide_legends || settings.overlay == Overlay::Off {
+    if state.hide_legends || *overlay == Overlay::Off {
         return;
     }
     let outside = outside.is_some_and(|o| o.show);
     let mut hide = false;
     for (view, rect) in view_rects(views, outside) {
-        if let Some((title, rows)) = rows(view, settings.overlay) {
+        if let Some((title, rows)) = rows(view, *overlay) {
             hide |= legend(ui.ctx(), view, rect, title, &rows);
         }
     }

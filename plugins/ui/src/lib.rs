@@ -1,8 +1,9 @@
 //! The control panel: an egui side panel over the ECS world, in nine sections, and what it paints
 //! over the views. Model reads `ModelStatus` and `Mesh` and writes `ModelRequest` (a path, a
-//! primitive, a reload). Render reads and writes `RenderSettings`; Texture too, and writes
-//! `TextureRequest`. Camera reads and writes the `Camera` component and `CameraSpeeds`, and pushes
-//! `CameraAction::Reset` into `CameraActions`. Outside view reads and writes `OutsideView` (shown,
+//! primitive, a reload). Render reads and writes `PipelineSettings` and `Appearance`; Texture
+//! `Appearance` too, and writes `TextureRequest`. Camera reads the `Camera` component and asks
+//! for its edits through `CameraRequest` (the camera plugin applies them in this frame), writes
+//! `CameraSpeeds`, and pushes `CameraAction::Reset` into `CameraActions`. Outside view reads and writes `OutsideView` (shown,
 //! stage) and `OutsideOrbit` (a reset, the whole volume framed). Stats reads `Close2glFrame` and
 //! [`ViewStats`] (frame times, the adapter's name and limitations, which the viewer fills). Tools
 //! sets `ToolRequests` (the input plugin's), carries out copy as command (clipboard and terminal,
@@ -10,7 +11,7 @@
 //! shows the [`Notice`] a tool leaves. Trace, shown while the Close2GL view shows a program's
 //! trace, reads `TraceFindings` (the file, check's findings in words, why a trace was refused). Inspector reads `Fates`, `Mesh`, `Camera` and `Viewport`
 //! (the legend's counts, the picked triangle's fate, the matrices) and writes
-//! `RenderSettings::overlay` and `SelectedTriangle`. Over the views it names them, shows the
+//! the `Overlay` and `SelectedTriangle` (reading `PipelineSettings` for the journey). Over the views it names them, shows the
 //! legend of the overlay each shows, and opens the probe's [`ProbeAnswer`] beside the clicked
 //! pixel (Esc, from egui or `InputState`, closes it; its button selects the triangle). It owns
 //! [`PanelState`], `ViewStats` and `Notice`; the other plugins provide what it reads.
@@ -38,8 +39,9 @@ mod trace_panel;
 mod view_areas;
 
 use close2gl_core::{
-    App, CameraActions, CameraSpeeds, Close2glFrame, FrameSet, ModelRequest, ModelStatus, Owner,
-    Plugin, RenderSettings, TextureRequest, ToolRequests, Update,
+    App, Appearance, CameraActions, CameraRequest, CameraSpeeds, Close2glFrame, FrameSet,
+    ModelRequest, ModelStatus, Overlay, Owner, PipelineSettings, Plugin, TextureRequest,
+    ToolRequests, Update,
 };
 
 pub use inspector::ProbeAnswer;
@@ -61,8 +63,11 @@ impl Plugin for UiPlugin {
             .requires::<ModelStatus>(Owner::Model)
             .requires::<ModelRequest>(Owner::Model)
             .requires::<TextureRequest>(Owner::Model)
-            .requires::<RenderSettings>(Owner::Settings)
+            .requires::<PipelineSettings>(Owner::Settings)
+            .requires::<Appearance>(Owner::Settings)
+            .requires::<Overlay>(Owner::Settings)
             .requires::<CameraActions>(Owner::Camera)
+            .requires::<CameraRequest>(Owner::Camera)
             .requires::<CameraSpeeds>(Owner::Camera)
             .requires::<Close2glFrame>(Owner::Close2gl)
             .requires::<ToolRequests>(Owner::Input)

@@ -1,13 +1,17 @@
 use bevy_ecs::prelude::*;
 use close2gl_core::glam::Vec3;
 use close2gl_core::{
-    Clipping, FrontFace, Mistake, Rasterizer, RenderMode, RenderSettings, Shading,
+    Appearance, Clipping, FrontFace, Mistake, PipelineSettings, Rasterizer, RenderMode, Shading,
 };
 
 /// Mode, front face, culling, clipping, shading, who rasterizes Close2GL and the model's colour:
-/// one `RenderSettings` for both views.
-pub fn section(InMut(ui): InMut<egui::Ui>, mut current: ResMut<RenderSettings>) {
-    let mut settings = *current;
+/// the pipeline's switches and the appearance, for both views.
+pub fn section(
+    InMut(ui): InMut<egui::Ui>,
+    mut current: ResMut<PipelineSettings>,
+    mut current_look: ResMut<Appearance>,
+) {
+    let (mut settings, mut look) = (*current, *current_look);
     ui.horizontal(|ui| {
         ui.label("Mode");
         choice(ui, &mut settings.mode, RenderMode::ALL, RenderMode::name);
@@ -27,16 +31,17 @@ pub fn section(InMut(ui): InMut<egui::Ui>, mut current: ResMut<RenderSettings>) 
         choice(ui, &mut settings.clipping, Clipping::ALL, Clipping::name);
     });
     mistake(ui, &mut settings.mistake);
-    shading(ui, &mut settings.shading);
+    shading(ui, &mut look.shading);
     rasterizer(ui, &mut settings.close2gl_raster);
     ui.horizontal(|ui| {
         ui.label("Colour");
-        color(ui, &mut settings.color);
+        color(ui, &mut look.color);
         ui.label("Background");
-        color(ui, &mut settings.background);
+        color(ui, &mut look.background);
     });
     // Unchanged, it stays so: an idle panel must not mark the settings changed every frame.
     current.set_if_neq(settings);
+    current_look.set_if_neq(look);
 }
 
 /// A classic mistake for Close2GL to make, from a list: its symptom shows beside the reference.

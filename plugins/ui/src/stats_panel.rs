@@ -2,7 +2,7 @@ use std::collections::VecDeque;
 use web_time::{Duration, Instant};
 
 use bevy_ecs::prelude::*;
-use close2gl_core::{Close2glFrame, Rasterizer, RenderSettings, SoftwareFrame};
+use close2gl_core::{Close2glFrame, PipelineSettings, Rasterizer, SoftwareFrame};
 
 /// What the viewer measured, for the Stats section: one timer per view, the adapter, and what
 /// the adapter cannot do.
@@ -61,7 +61,7 @@ pub fn section(
     InMut(ui): InMut<egui::Ui>,
     stats: Res<ViewStats>,
     frame: Option<Res<Close2glFrame>>,
-    settings: Option<Res<RenderSettings>>,
+    settings: Option<Res<PipelineSettings>>,
     software: Option<Res<SoftwareFrame>>,
 ) {
     let timed = stats.replay.is_none();

@@ -1,7 +1,7 @@
 use std::path::PathBuf;
 
 use bevy_ecs::prelude::*;
-use close2gl_core::{Mesh, RenderSettings, Texture, TextureFilter, TextureRequest};
+use close2gl_core::{Appearance, Mesh, Texture, TextureFilter, TextureRequest};
 
 use crate::path_entry::path_entry;
 use crate::state::PanelState;
@@ -11,7 +11,7 @@ use crate::state::PanelState;
 /// coordinates says so, since nothing then shows.
 pub fn section(
     InMut(ui): InMut<egui::Ui>,
-    mut current: ResMut<RenderSettings>,
+    mut current: ResMut<Appearance>,
     mut requested: ResMut<TextureRequest>,
     texture: Option<Res<Texture>>,
     meshes: Query<&Mesh>,

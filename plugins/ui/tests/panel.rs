@@ -5,9 +5,9 @@
 
 use close2gl_core::glam::Vec2;
 use close2gl_core::{
-    Action, CameraAction, CameraActions, Close2glFrame, CommandLine, FateKind, Fates,
-    InputBindings, ModelRequest, ModelSource, ModelStatus, OutsideView, Overlay, PrimitiveKind,
-    RenderMode, RenderSettings, SelectedTriangle, TextureFilter, TextureRequest, ToolRequests,
+    Action, Appearance, CameraAction, CameraActions, Close2glFrame, CommandLine, FateKind, Fates,
+    InputBindings, ModelRequest, ModelSource, ModelStatus, OutsideView, Overlay, PipelineSettings,
+    PrimitiveKind, RenderMode, SelectedTriangle, TextureFilter, TextureRequest, ToolRequests,
     Topology,
 };
 use close2gl_core::{Camera, Mesh, ProbeClick, RecordFates, Scene, Viewport};
@@ -28,7 +28,7 @@ fn unticking_backface_culling_reaches_the_settings_and_the_close2gl_frame() {
 
     h.click(Role::CheckBox, "Backface culling");
 
-    assert!(!h.world().resource::<RenderSettings>().backface_culling);
+    assert!(!h.world().resource::<PipelineSettings>().backface_culling);
     let after = h.world().resource::<Close2glFrame>().counts;
     assert_eq!(
         (after.culled, after.drawn),
@@ -43,7 +43,7 @@ fn choosing_wireframe_changes_the_mode_and_the_topology() {
     h.click(Role::CheckBox, "Backface culling");
     h.click(Role::Button, "wireframe");
     assert_eq!(
-        h.world().resource::<RenderSettings>().mode,
+        h.world().resource::<PipelineSettings>().mode,
         RenderMode::Wireframe
     );
     let frame = h.world().resource::<Close2glFrame>();
@@ -168,10 +168,10 @@ fn the_views_get_the_window_beside_the_panel_whatever_it_shows() {
 #[test]
 fn the_texture_section_switches_texturing_and_the_filter_and_asks_for_an_image() {
     let mut h = Harness::new();
-    assert!(h.world().resource::<RenderSettings>().texture);
+    assert!(h.world().resource::<Appearance>().texture);
     h.click(Role::CheckBox, "Texture");
     h.click(Role::Button, "nearest");
-    let settings = *h.world().resource::<RenderSettings>();
+    let settings = *h.world().resource::<Appearance>();
     assert!(!settings.texture);
     assert_eq!(settings.texture_filter, TextureFilter::Nearest);
     h.world().resource_mut::<PanelState>().texture_path = "wood.png".into();
@@ -256,10 +256,7 @@ fn the_inspector_switches_the_fate_view_and_shows_the_picked_triangles_fate_and_
     // The GPU plugin asks for fates while the fate view is shown; the harness has no GPU.
     h.world().resource_mut::<RecordFates>().0 = true;
     h.click(Role::Button, "fate_view");
-    assert_eq!(
-        h.world().resource::<RenderSettings>().overlay,
-        Overlay::FateView
-    );
+    assert_eq!(*h.world().resource::<Overlay>(), Overlay::FateView);
     // The real pipeline recorded the harness's back face.
     let fate = *h.world().resource::<Fates>().of(0).expect("recorded");
     assert_eq!(fate.kind, FateKind::Culled);
@@ -402,7 +399,7 @@ fn a_probe_opens_its_answer_beside_the_click_until_escape() {
     let scene = Scene {
         mesh: &mesh,
         camera: &camera,
-        settings: world.resource::<RenderSettings>(),
+        pipeline: world.resource::<PipelineSettings>(),
         viewport: *world.resource::<Viewport>(),
     };
     let close2gl = probe(scene, world.resource::<Fates>(), (100, 50), None);

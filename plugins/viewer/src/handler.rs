@@ -5,7 +5,7 @@ use web_time::{Duration, Instant};
 
 use bevy_ecs::world::World;
 use close2gl_core::parity::{CoverageComparison, to_rgb8};
-use close2gl_core::{App, InputState, OutsideView, RenderSettings, ToolRequests, Viewport, Wake};
+use close2gl_core::{App, Appearance, InputState, OutsideView, ToolRequests, Viewport, Wake};
 use close2gl_ui::{Notice, PanelState, ViewStats};
 use winit::application::ApplicationHandler;
 use winit::event::WindowEvent;
@@ -376,7 +376,7 @@ fn save(
             }),
             _,
         ) => {
-            let background = to_rgb8(world.resource::<RenderSettings>().background);
+            let background = to_rgb8(world.resource::<Appearance>().background);
             let compared = CoverageComparison::of_images(&reference, &close2gl, background);
             world.resource_mut::<ViewStats>().coverage_agreement =
                 Some(compared.coverage_agreement);

@@ -8,7 +8,8 @@
 use bevy_ecs::prelude::*;
 use close2gl_core::Mistake;
 use close2gl_core::{
-    Camera, Fates, InputState, Mesh, ProbeClick, RenderSettings, Scene, SelectedTriangle, Viewport,
+    Camera, Fates, InputState, Mesh, PipelineSettings, ProbeClick, Scene, SelectedTriangle,
+    Viewport,
 };
 use close2gl_gpu::{Gpu, ReferenceHit};
 use close2gl_pipeline::mistakes::Mistakes;
@@ -26,7 +27,7 @@ fn recorded_fates(scene: Scene<'_>) -> Fates {
     let Scene {
         mesh,
         camera,
-        settings,
+        pipeline: settings,
         viewport,
     } = scene;
     match settings.mistake {
@@ -51,11 +52,11 @@ pub fn answer(world: &mut World, gpu: &Gpu, placement: &Placement) {
     let (Some(mesh), Some(camera)) = (mesh, camera) else {
         return;
     };
-    let settings = *world.resource::<RenderSettings>();
+    let settings = *world.resource::<PipelineSettings>();
     let scene = Scene {
         mesh: &mesh,
         camera: &camera,
-        settings: &settings,
+        pipeline: &settings,
         viewport,
     };
     let reference = reference_answer(world, gpu, scene, pixel);

@@ -7,7 +7,7 @@
 //! on the same work; only the structure differs.
 
 use close2gl_core::glam::{Vec3, Vec4};
-use close2gl_core::{Camera, FrontFace, Mesh, RenderSettings, Viewport};
+use close2gl_core::{Camera, FrontFace, Mesh, PipelineSettings, Viewport};
 use close2gl_pipeline::clip::{Polygon, clip_polygon, outcode};
 use close2gl_pipeline::matrices::{projection_modelview, viewport as viewport_matrix};
 
@@ -15,7 +15,7 @@ use close2gl_pipeline::matrices::{projection_modelview, viewport as viewport_mat
 pub fn frame(
     mesh: &Mesh,
     camera: &Camera,
-    settings: &RenderSettings,
+    settings: &PipelineSettings,
     viewport: Viewport,
 ) -> Vec<f32> {
     let triangles: Vec<[Vec3; 3]> = mesh

@@ -120,7 +120,7 @@ fn geometry(args: &BenchArgs, pool: &rayon::ThreadPool) -> Result<serde_json::Va
     let viewport = viewport(args.size.as_deref(), &config)?;
     let mut app = close2gl_app::build_app(&config, viewport).map_err(CliError::Input)?;
     let (mesh, camera) = &scene(&mut app)?;
-    let settings = config.render;
+    let settings = config.render.pipeline();
     let mut pipeline = FastPipeline::default();
     let mut frame = Close2glFrame::default();
     let mut fates = Default::default();

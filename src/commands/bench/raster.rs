@@ -120,7 +120,7 @@ impl SoftwareTimer {
         self.pipeline.run(
             mesh,
             camera,
-            settings,
+            &settings.pipeline(),
             viewport,
             &mut self.geometry,
             &mut self.fates,
@@ -128,7 +128,7 @@ impl SoftwareTimer {
         self.rasterizer.draw(
             &self.geometry,
             camera,
-            settings,
+            &settings.appearance(),
             lighting,
             &mut self.image,
             &mut self.fates,

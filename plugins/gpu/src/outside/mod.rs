@@ -10,8 +10,8 @@ mod renderer;
 
 use bevy_ecs::prelude::*;
 use close2gl_core::{
-    App, Camera, Fates, FrameSet, Mesh, OutsideOrbit, OutsideView, Owner, Plugin, RenderSettings,
-    Update, Viewport,
+    App, Appearance, Camera, Fates, FrameSet, Mesh, OutsideOrbit, OutsideView, Overlay, Owner,
+    Plugin, Update, Viewport,
 };
 use close2gl_pipeline::morph::{OutsideFraming, StageMorph};
 
@@ -27,7 +27,7 @@ use crate::gpu::Gpu;
 /// into [`OutsideRenderer`] (inserted by whoever owns the target). Nothing runs while
 /// `OutsideView::show` is off (or missing: it and `OutsideOrbit` are the settings plugin's, and
 /// an app without them, a test of the two compared views, say, never shows this one). It reads
-/// `Fates` (the pipeline's), `Camera`, `Mesh`, `RenderSettings` and `Viewport` too.
+/// `Fates` (the pipeline's), `Camera`, `Mesh`, `Appearance`, `Overlay` and `Viewport` too.
 pub struct OutsidePlugin;
 
 impl Plugin for OutsidePlugin {
@@ -56,7 +56,7 @@ fn upload_outside(
     gpu: Res<Gpu>,
     camera: Single<&Camera>,
     mesh: Single<&Mesh>,
-    settings: Res<RenderSettings>,
+    (look, overlay): (Res<Appearance>, Res<Overlay>),
     viewport: Res<Viewport>,
     outside: Res<OutsideView>,
     orbit: Res<OutsideOrbit>,
@@ -76,7 +76,8 @@ fn upload_outside(
     renderer.scene.build(&SceneInput {
         camera: &camera,
         mesh: &mesh,
-        settings: &settings,
+        look: &look,
+        overlay: *overlay,
         fates: &fates,
         frame: &frame,
         stage: outside.stage,

@@ -6,7 +6,7 @@
 //! enough.
 
 use bytemuck::{Pod, Zeroable};
-use close2gl_core::{Camera, FateKind, Fates, Mesh, Overlay, RenderSettings};
+use close2gl_core::{Appearance, Camera, FateKind, Fates, Mesh, Overlay};
 use close2gl_pipeline::frustum::{EDGES, world_corners};
 use close2gl_pipeline::morph::{OutsideFraming, Placed, StageMorph, has_image};
 use glam::Vec3;
@@ -90,7 +90,8 @@ pub(crate) struct OutsideScene {
 pub(crate) struct SceneInput<'a> {
     pub camera: &'a Camera,
     pub mesh: &'a Mesh,
-    pub settings: &'a RenderSettings,
+    pub look: &'a Appearance,
+    pub overlay: Overlay,
     pub fates: &'a Fates,
     pub frame: &'a OutsideFraming,
     pub stage: f32,
@@ -113,9 +114,9 @@ impl OutsideScene {
         self.placed
             .extend(mesh.positions.iter().map(|p| morph.place(*p)));
         let fates = Some(input.fates).filter(|f| {
-            input.settings.overlay == Overlay::FateView && f.triangles.len() == mesh.triangles.len()
+            input.overlay == Overlay::FateView && f.triangles.len() == mesh.triangles.len()
         });
-        let model = rgba(input.settings.color);
+        let model = rgba(input.look.color);
         self.mesh.clear();
         for (t, corners) in mesh.triangles.iter().enumerate() {
             let corners = corners.map(|i| self.placed[i as usize]);

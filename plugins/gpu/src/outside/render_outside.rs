@@ -2,7 +2,7 @@
 //! renderer the window draws with.
 
 use bevy_ecs::prelude::*;
-use close2gl_core::{App, RenderSettings, Viewport};
+use close2gl_core::{App, Appearance, Viewport};
 
 use super::OutsideRenderer;
 use crate::attachments::{READABLE_TARGET, texture_2d};
@@ -57,7 +57,7 @@ pub fn render_outside(app: &mut App) -> Result<Image, String> {
         return Err("the outside view was not shown in the last frame (set outside.show)".into());
     }
     let target = world.resource::<OutsideTarget>();
-    let background = world.resource::<RenderSettings>().background;
+    let background = world.resource::<Appearance>().background;
     let color = target.color.create_view(&Default::default());
     let depth = target.depth.create_view(&Default::default());
     let clear = wgpu::LoadOp::Clear(clear_color(background));

@@ -12,8 +12,8 @@ use bytemuck::{Pod, Zeroable};
 use close2gl_core::camera_matrices;
 use close2gl_core::limits::has_no_area;
 use close2gl_core::{
-    Camera, FrontFace, Lighting, Mesh, Overlay, RenderMode, RenderSettings, Shading, Texture,
-    TextureFilter, Viewport,
+    Appearance, Camera, FrontFace, Lighting, Mesh, Overlay, PipelineSettings, RenderMode, Shading,
+    Texture, TextureFilter, Viewport,
 };
 use glam::{Mat4, Vec3};
 use wgpu::util::DeviceExt;
@@ -58,7 +58,7 @@ impl Uniforms {
     /// camera and the light are moved by the same amount, so eye space is unchanged.
     fn new(
         camera: &Camera,
-        settings: &RenderSettings,
+        look: &Appearance,
         lighting: &Lighting,
         origin: Vec3,
         textured: bool,
@@ -74,7 +74,7 @@ impl Uniforms {
             light: light.extend(1.0).to_array(),
             ambient: (lighting.ia * lighting.ka).extend(1.0).to_array(),
             intensity: lighting.il.extend(1.0).to_array(),
-            color: settings.color.extend(1.0).to_array(),
+            color: look.color.extend(1.0).to_array(),
             material: [lighting.kd, lighting.ks, lighting.shininess, 0.0],
             attenuation: [c0, c1, c2, 0.0],
             texturing: [f32::from(u8::from(textured)), 0.0, 0.0, 0.0],
@@ -93,12 +93,12 @@ pub(crate) struct PipelineKey {
 }
 
 impl PipelineKey {
-    pub(crate) fn new(settings: &RenderSettings) -> Self {
+    pub(crate) fn new(pipeline: &PipelineSettings, shading: Shading) -> Self {
         Self {
-            shading: settings.shading,
-            mode: settings.mode,
-            backface_culling: settings.backface_culling,
-            front_face: settings.front_face,
+            shading,
+            mode: pipeline.mode,
+            backface_culling: pipeline.backface_culling,
+            front_face: pipeline.front_face,
         }
     }
 }
@@ -249,26 +249,26 @@ impl Reference {
         device: &wgpu::Device,
         queue: &wgpu::Queue,
         (camera, viewport): (&Camera, Viewport),
-        settings: &RenderSettings,
+        (pipeline, look, overlay): (&PipelineSettings, &Appearance, Overlay),
         lighting: &Lighting,
     ) {
         let (origin, has_uvs) = self
             .mesh
             .as_ref()
             .map_or((Vec3::ZERO, false), |m| (m.origin, m.has_uvs));
-        let textured = settings.texture && has_uvs && self.bindings.has_texture();
-        let uniforms = Uniforms::new(camera, settings, lighting, origin, textured, viewport);
+        let textured = look.texture && has_uvs && self.bindings.has_texture();
+        let uniforms = Uniforms::new(camera, look, lighting, origin, textured, viewport);
         queue.write_buffer(self.bindings.uniforms(), 0, bytemuck::bytes_of(&uniforms));
-        let key = PipelineKey::new(settings);
+        let key = PipelineKey::new(pipeline, look.shading);
         if !self.pipelines.contains_key(&key) {
             let pipeline = self.create_pipeline(device, key);
             self.pipelines.insert(key, pipeline);
         }
-        if settings.overlay == Overlay::FateView && !self.overlays.contains_key(&key) {
+        if overlay == Overlay::FateView && !self.overlays.contains_key(&key) {
             let overlays = self.create_overlays(device, key);
             self.overlays.insert(key, overlays);
         }
-        self.current = Some((key, settings.texture_filter));
+        self.current = Some((key, look.texture_filter));
     }
 
     /// The shaded model, and with `overlays` the GPU's own facing and depth-test answers over it.
@@ -483,7 +483,7 @@ mod tests {
             height: 400,
         };
         let mut frame = Close2glFrame::default();
-        let settings = RenderSettings::default();
+        let settings = PipelineSettings::default();
         FastPipeline::default().run(
             &mesh,
             &camera,

@@ -9,7 +9,7 @@
 //! the one that reproduces it.
 
 use close2gl_core::{
-    Camera, Clipping, FrontFace, Mesh, Mistake, RenderMode, RenderSettings, Viewport,
+    Camera, Clipping, FrontFace, Mesh, Mistake, PipelineSettings, RenderMode, Viewport,
 };
 use glam::{DMat4, DVec3};
 
@@ -136,7 +136,7 @@ impl Declared {
 
     /// What close2gl's own view declares with `settings` in `viewport`: its pixels (origin
     /// top-left, y down), its culling, clipping and mode. [`Declared::onto`] goes back.
-    pub fn of_view(settings: &RenderSettings, viewport: Viewport) -> Self {
+    pub fn of_view(settings: &PipelineSettings, viewport: Viewport) -> Self {
         Self::new(
             (viewport.width, viewport.height),
             System2d::pixels(viewport.width, viewport.height),
@@ -152,8 +152,8 @@ impl Declared {
     /// `settings` switched to this declaration's culling, clipping and mode: what close2gl's
     /// view shows of a program that declares it (one that clips nothing is shown with full
     /// clipping, the nearest close2gl draws).
-    pub fn onto(&self, settings: RenderSettings) -> RenderSettings {
-        RenderSettings {
+    pub fn onto(&self, settings: PipelineSettings) -> PipelineSettings {
+        PipelineSettings {
             mode: self.mode,
             backface_culling: self.culling.is_some(),
             front_face: self.culling.unwrap_or(FrontFace::Ccw),
@@ -242,7 +242,7 @@ impl Program {
     /// settings, into the view's pixels (close2gl's 2D buffer: the origin top-left, y down).
     pub fn for_view(
         camera: &Camera,
-        settings: &RenderSettings,
+        settings: &PipelineSettings,
         viewport: Viewport,
         mistakes: Mistakes,
     ) -> Self {
@@ -288,15 +288,15 @@ mod tests {
             height: 48,
         };
         for i in 0..24 {
-            let settings = RenderSettings {
+            let settings = PipelineSettings {
                 backface_culling: i % 2 == 0,
                 front_face: [FrontFace::Ccw, FrontFace::Cw][i / 2 % 2],
                 clipping: [Clipping::Simple, Clipping::Full][i / 4 % 2],
                 mode: [RenderMode::Solid, RenderMode::Wireframe, RenderMode::Points][i / 8],
-                ..RenderSettings::default()
+                ..PipelineSettings::default()
             };
-            let back = Declared::of_view(&settings, viewport).onto(RenderSettings::default());
-            let front = |s: &RenderSettings| s.backface_culling.then_some(s.front_face);
+            let back = Declared::of_view(&settings, viewport).onto(PipelineSettings::default());
+            let front = |s: &PipelineSettings| s.backface_culling.then_some(s.front_face);
             assert_eq!(
                 (front(&back), back.clipping, back.mode),
                 (front(&settings), settings.clipping, settings.mode),
@@ -314,14 +314,14 @@ mod tests {
         let camera = random_triangles::camera(Vec3::new(0.5, 0.2, 6.0));
         let viewport = random_triangles::VIEWPORT;
         for (i, mesh) in random_triangles::triangles(0x2545_f491_4f6c_dd1d, 3000).enumerate() {
-            let settings = RenderSettings {
+            let settings = PipelineSettings {
                 backface_culling: i % 2 == 0,
                 clipping: if i % 3 == 0 {
                     Clipping::Simple
                 } else {
                     Clipping::Full
                 },
-                ..RenderSettings::default()
+                ..PipelineSettings::default()
             };
             let (frame, fates) = textbook::run_recording(&mesh, &camera, &settings, viewport);
             let program = Program::for_view(&camera, &settings, viewport, Mistakes::NONE);

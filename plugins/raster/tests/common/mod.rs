@@ -55,7 +55,7 @@ impl Drawing {
         self.pipeline.run(
             scene.mesh,
             &scene.camera,
-            settings,
+            &settings.pipeline(),
             scene.viewport,
             &mut self.frame,
             &mut self.fates,
@@ -68,7 +68,7 @@ impl Drawing {
             self.rasterizer.draw(
                 &self.frame,
                 &scene.camera,
-                settings,
+                &settings.appearance(),
                 &scene.lighting,
                 &mut self.image,
                 &mut self.fates,

@@ -1,7 +1,7 @@
 //! A trace in the viewer: `close2gl MODEL --trace FILE`, a trace file dropped on the window, and
 //! with `--watch` the same file written again. [`crate::TracePlugin`] reads the requested trace, checks
-//! it against the shown mesh, takes its camera and settings (so that the reference shows the
-//! frame the program drew), and puts the trace's own 2D output in the Close2GL view in place of
+//! it against the shown mesh, asks the camera plugin for its camera and takes its pipeline
+//! switches (so that the reference shows the frame the program drew), and puts the trace's own 2D output in the Close2GL view in place of
 //! close2gl's, for the GPU to draw as the assignment's 2D output is drawn. The live difference
 //! and the probe then work on it; [`probe`] answers a probe from the trace's side.
 

@@ -1,9 +1,10 @@
-//! Reading a requested trace: checked against the shown mesh, its camera and settings taken.
+//! Reading a requested trace: checked against the shown mesh, its camera asked for and its
+//! switches taken.
 
 use std::path::Path;
 
 use bevy_ecs::prelude::*;
-use close2gl_core::{Camera, Mesh, Mistake, Rasterizer, RenderSettings};
+use close2gl_core::{Camera, CameraRequest, Mesh, Mistake, PipelineSettings, Rasterizer};
 use close2gl_pipeline::program::WindingSpace;
 use close2gl_trace_format::{Trace, read_trace};
 
@@ -11,13 +12,14 @@ use super::{Shown, TraceRequest, TraceView};
 
 /// Serves a pending `TraceRequest` once a mesh is shown; a new mesh has the shown trace checked
 /// again (or refused, when it does not fit the new model). A trace that does not read or fit
-/// leaves its error in `TraceView` and the trace shown before in place.
+/// leaves its error in `TraceView` and the trace shown before in place. The trace's camera is
+/// asked of the camera plugin, which sets it over the framing of a new model in this frame.
 pub fn load_requested_trace(
     mut request: ResMut<TraceRequest>,
     mut view: ResMut<TraceView>,
     mesh: Option<Single<Ref<Mesh>>>,
-    camera: Option<Single<&mut Camera>>,
-    mut settings: ResMut<RenderSettings>,
+    (camera, mut camera_request): (Option<Single<&Camera>>, ResMut<CameraRequest>),
+    mut settings: ResMut<PipelineSettings>,
 ) {
     let Some(mesh) = mesh else {
         return;
@@ -30,8 +32,8 @@ pub fn load_requested_trace(
     };
     match read(&path, &mesh) {
         Ok(shown) => {
-            if let Some(mut camera) = camera {
-                **camera = trace_camera(&shown.trace, &camera, &mesh);
+            if let Some(camera) = camera {
+                camera_request.replacement = Some(trace_camera(&shown.trace, &camera, &mesh));
             }
             *settings = trace_settings(&shown.trace, *settings);
             view.shown = Some(shown);
@@ -73,8 +75,8 @@ pub fn trace_camera(trace: &Trace, camera: &Camera, mesh: &Mesh) -> Camera {
 /// The trace's settings over `settings`: its mode, culling and clipping (its `clipping none`
 /// shown as full clipping, the nearest close2gl draws), the GPU drawing the 2D output, no
 /// mistake of close2gl's own.
-pub fn trace_settings(trace: &Trace, settings: RenderSettings) -> RenderSettings {
-    RenderSettings {
+pub fn trace_settings(trace: &Trace, settings: PipelineSettings) -> PipelineSettings {
+    PipelineSettings {
         mode: trace.mode.unwrap_or(settings.mode),
         close2gl_raster: Rasterizer::Gpu,
         mistake: Mistake::None,

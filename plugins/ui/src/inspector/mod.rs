@@ -9,7 +9,7 @@ use bevy_ecs::prelude::*;
 use bevy_ecs::system::SystemParam;
 use close2gl_core::glam::Mat4;
 use close2gl_core::{
-    Camera, ClipPlane, FateKind, Fates, Mesh, Overlay, RenderSettings, Scene, SelectedTriangle,
+    Camera, ClipPlane, FateKind, Fates, Mesh, Overlay, PipelineSettings, Scene, SelectedTriangle,
     TriangleFate, Viewport, camera_matrices,
 };
 use close2gl_pipeline::journey::{Journey, journey};
@@ -35,15 +35,15 @@ pub struct Frame<'w, 's> {
 
 pub fn section(
     InMut(ui): InMut<egui::Ui>,
-    mut settings: ResMut<RenderSettings>,
+    (mut overlay, pipeline): (ResMut<Overlay>, Res<PipelineSettings>),
     mut state: ResMut<PanelState>,
     mut selected: Option<ResMut<SelectedTriangle>>,
     answer: Option<Res<ProbeAnswer>>,
     frame: Frame,
 ) {
-    overlay_switch(ui, &mut settings);
+    overlay_switch(ui, &mut overlay);
     legends_switch(ui, &mut state);
-    match settings.overlay {
+    match *overlay {
         Overlay::Difference => difference_legend(ui),
         _ => fates_legend(ui, frame.fates.as_deref()),
     }
@@ -56,7 +56,7 @@ pub fn section(
         let scene = Scene {
             mesh,
             camera,
-            settings: &settings,
+            pipeline: &pipeline,
             viewport,
         };
         triangle(ui, scene, frame.fates.as_deref(), selected, &mut state);
@@ -70,12 +70,12 @@ pub fn section(
         });
 }
 
-fn overlay_switch(ui: &mut egui::Ui, current: &mut ResMut<RenderSettings>) {
-    let mut settings = **current;
+fn overlay_switch(ui: &mut egui::Ui, current: &mut ResMut<Overlay>) {
+    let mut shown = **current;
     ui.horizontal(|ui| {
         ui.label("Overlay");
         for &overlay in Overlay::ALL {
-            ui.selectable_value(&mut settings.overlay, overlay, overlay.name());
+            ui.selectable_value(&mut shown, overlay, overlay.name());
         }
     })
     .response
@@ -85,7 +85,7 @@ fn overlay_switch(ui: &mut egui::Ui, current: &mut ResMut<RenderSettings>) {
          and depth-test answers.\ndifference: Close2GL's view replaced by where the two views \
          differ (as `close2gl render` writes diff.png); Ctrl+click any pixel to probe it.",
     );
-    current.set_if_neq(settings);
+    current.set_if_neq(shown);
 }
 
 /// The legends in the views' corners, shown unless hidden here or by their own close button.
@@ -154,7 +154,7 @@ fn triangle(
         scene.mesh,
         index,
         scene.camera,
-        scene.settings,
+        scene.pipeline,
         scene.viewport,
     ) else {
         return;
