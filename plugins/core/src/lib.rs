@@ -57,7 +57,7 @@ pub use model::{
 pub use named::NamedEnum;
 pub use outside::{OutsideOrbit, OutsideView, STAGE_NAMES};
 pub use reference_camera::camera_matrices;
-pub use schedule::{Close2glStep, FrameSet, Update};
+pub use schedule::{Close2glStep, FrameSet, OutputStep, Update};
 pub use settings::{
     Clipping, FrontFace, Lighting, Mistake, Overlay, Rasterizer, RenderMode, RenderSettings,
     Shading, TextureFilter,

@@ -65,13 +65,31 @@ impl Close2glStep {
     ];
 }
 
-/// The frame's schedule with the sets chained in [`FrameSet::ALL`]'s order, and the steps of
-/// [`FrameSet::Close2gl`] in [`Close2glStep::ALL`]'s.
+/// The steps inside [`FrameSet::Output`], chained in this order, so that what reports on the
+/// frame sees it as uploaded without naming the uploads.
+#[derive(SystemSet, Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum OutputStep {
+    /// What changed goes to the GPU views.
+    Upload,
+    /// What answers a question about the frame as it is drawn: the viewer's pixel probe.
+    Report,
+}
+
+impl OutputStep {
+    /// Every step, in the order it runs.
+    pub const ALL: [OutputStep; 2] = [OutputStep::Upload, OutputStep::Report];
+}
+
+/// The frame's schedule with the sets chained in [`FrameSet::ALL`]'s order, the steps of
+/// [`FrameSet::Close2gl`] in [`Close2glStep::ALL`]'s and those of [`FrameSet::Output`] in
+/// [`OutputStep::ALL`]'s.
 pub(crate) fn frame_schedule() -> Schedule {
     let mut schedule = Schedule::new(Update);
     let [input, panel, load, camera, close2gl, output] = FrameSet::ALL;
     schedule.configure_sets((input, panel, load, camera, close2gl, output).chain());
     let [prepare, geometry, raster] = Close2glStep::ALL;
     schedule.configure_sets((prepare, geometry, raster).chain().in_set(close2gl));
+    let [upload, report] = OutputStep::ALL;
+    schedule.configure_sets((upload, report).chain().in_set(output));
     schedule
 }
