@@ -226,9 +226,11 @@ fn depth_to_unit_range() -> Mat4 {
 fn pixel_report(app: &mut App, (x, y): (u32, u32), viewport: Viewport) -> Result<Value, CliError> {
     let gpu = Gpu::headless(close2gl_gpu::wgpu::Backends::PRIMARY).map_err(CliError::Runtime)?;
     let world = app.world_mut();
-    let mut frame = SystemState::<ProbedFrame>::new(world);
-    let answer = frame.get(world).answer(&gpu, viewport, (x, y));
-    let answer = answer.ok_or_else(no_scene)?;
+    let mut state = SystemState::<ProbedFrame>::new(world);
+    let frame = state
+        .get(world)
+        .map_err(|e| CliError::Runtime(format!("inspect: {e}")))?;
+    let answer = frame.answer(&gpu, viewport, (x, y)).ok_or_else(no_scene)?;
     let reference = answer
         .reference
         .and_then(|probe| probe.wait(&gpu))
