@@ -45,6 +45,8 @@ fn panel_changes_reach_both_gpu_views() {
 #[test]
 fn a_recorded_ctrl_click_opens_the_probe_window_with_both_answers() {
     use close2gl_core::InputState;
+    use close2gl_core::bevy_ecs::system::RunSystemOnce;
+    use close2gl_viewer::placed_views::ViewPlacement;
     use close2gl_viewer::view_layout::{self, PixelRect};
 
     let mut h = Harness::new();
@@ -65,7 +67,11 @@ fn a_recorded_ctrl_click_opens_the_probe_window_with_both_answers() {
     recording.frames[0].apply(&mut input);
     h.world().insert_resource(input);
     let placement = view_layout::split(PixelRect::whole(400, 100), false);
-    close2gl_viewer::pixel_probe::answer(h.world(), &gpu(), &placement);
+    h.world().insert_resource(gpu());
+    h.world().insert_resource(ViewPlacement(placement));
+    h.world()
+        .run_system_once(close2gl_viewer::pixel_probe::answer_probe)
+        .expect("the probe's system runs");
     // A new egui window sizes itself unseen in its first frame.
     h.frame(Vec::new());
     h.frame(Vec::new());

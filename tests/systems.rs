@@ -500,12 +500,13 @@ fn a_plugin_without_the_resources_it_needs_names_the_plugin_that_provides_them()
 }
 
 /// The app the viewer runs, headless: the default plugins, the GPU's uploads, the outside view,
-/// the panel and the file watch.
+/// the panel, the viewer's own systems and the file watch.
 fn viewer_app() -> App {
     let mut app = close2gl::build_app(&Config::default(), Viewport::default()).expect("loads");
     app.add_plugins(close2gl_gpu::GpuPlugin)
         .add_plugins(close2gl_gpu::outside::OutsidePlugin)
         .add_plugins(close2gl_ui::UiPlugin)
+        .add_plugins(close2gl_viewer::ViewerSystemsPlugin)
         .add_plugins(WatchPlugin {
             config_file: None,
             reload: Arc::new(|| Ok(Config::default())),

@@ -3,14 +3,15 @@
 //! reference's); `--pixel X,Y` prints who drew that pixel in each view, and for Close2GL every
 //! triangle that reached it and why each lost. JSON, with the keys the panel shows.
 
+use bevy_ecs::system::SystemState;
 use close2gl_core::glam::DMat4;
-use close2gl_core::{App, Camera, Fates, Mesh, Mistake, PipelineSettings, Scene, Viewport};
-use close2gl_gpu::{Gpu, ReferenceHit, probe_reference};
+use close2gl_core::{App, Camera, Fates, Mesh, Mistake, PipelineSettings, Viewport};
+use close2gl_gpu::{Gpu, ProbedFrame};
 use close2gl_pipeline::journey::{Journey, journey};
 use close2gl_pipeline::matrices;
 use close2gl_pipeline::mistakes::Mistakes;
 use close2gl_pipeline::program::Program;
-use close2gl_raster::coverage_probe::{Drawn, PixelProbe, probe};
+use close2gl_raster::coverage_probe::PixelProbe;
 use glam::{Mat4, Vec3, Vec4};
 use serde_json::{Value, json};
 
@@ -79,10 +80,12 @@ fn scene(app: &mut App) -> Result<(Mesh, Camera, PipelineSettings), CliError> {
     let camera = world.query::<&Camera>().single(world).ok().copied();
     match (mesh, camera) {
         (Some(mesh), Some(camera)) => Ok((mesh, camera, *world.resource::<PipelineSettings>())),
-        _ => Err(CliError::Runtime(
-            "inspect: no model or camera was set up".into(),
-        )),
+        _ => Err(no_scene()),
     }
+}
+
+fn no_scene() -> CliError {
+    CliError::Runtime("inspect: no model or camera was set up".into())
 }
 
 fn triangle_report(app: &mut App, index: usize, viewport: Viewport) -> Result<Value, CliError> {
@@ -218,19 +221,21 @@ fn depth_to_unit_range() -> Mat4 {
     )
 }
 
+/// Both views' answers for the pixel, from the probe's one home (the viewer's Ctrl+click asks
+/// the same), the reference's from a GPU of its own.
 fn pixel_report(app: &mut App, (x, y): (u32, u32), viewport: Viewport) -> Result<Value, CliError> {
-    let (mesh, camera, settings) = scene(app)?;
-    let world = app.world();
-    let fates = world.resource::<Fates>();
-    let drawn = Drawn::last_frame(world, &settings);
-    let scene = Scene {
-        mesh: &mesh,
-        camera: &camera,
-        pipeline: &settings,
-        viewport,
-    };
-    let close2gl = probe(scene, fates, (x, y), drawn);
-    let reference = reference_probe(&mesh, &camera, &settings, viewport, (x, y))?;
+    let gpu = Gpu::headless(close2gl_gpu::wgpu::Backends::PRIMARY).map_err(CliError::Runtime)?;
+    let world = app.world_mut();
+    let mut state = SystemState::<ProbedFrame>::new(world);
+    let frame = state
+        .get(world)
+        .map_err(|e| CliError::Runtime(format!("inspect: {e}")))?;
+    let answer = frame.answer(&gpu, viewport, (x, y)).ok_or_else(no_scene)?;
+    let reference = answer
+        .reference
+        .and_then(|probe| probe.wait(&gpu))
+        .map_err(CliError::Runtime)?;
+    let close2gl = answer.close2gl;
     let agree = reference.as_ref().map(|r| r.triangle) == close2gl.triangle;
     Ok(json!({
         "pixel": [x, y],
@@ -255,22 +260,4 @@ fn close2gl_json(probe: &PixelProbe) -> Value {
         "color": probe.color,
         "candidates": candidates,
     })
-}
-
-/// The reference view's answer, from the GPU's own ID pass.
-fn reference_probe(
-    mesh: &Mesh,
-    camera: &Camera,
-    settings: &PipelineSettings,
-    viewport: Viewport,
-    pixel: (u32, u32),
-) -> Result<Option<ReferenceHit>, CliError> {
-    let gpu = Gpu::headless(close2gl_gpu::wgpu::Backends::PRIMARY).map_err(CliError::Runtime)?;
-    let scene = Scene {
-        mesh,
-        camera,
-        pipeline: settings,
-        viewport,
-    };
-    probe_reference(&gpu, scene, pixel).map_err(CliError::Runtime)
 }

@@ -219,7 +219,7 @@ fn short_type_name<T>() -> &'static str {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::{FrameSet, Update};
+    use crate::{FrameSet, OutputStep, Update};
 
     #[derive(Resource, Default)]
     struct Log(Vec<&'static str>);
@@ -317,5 +317,22 @@ mod tests {
             app.world().resource::<Log>().0,
             ["input", "panel", "load", "camera", "close2gl", "output"]
         );
+    }
+
+    #[test]
+    fn a_report_sees_the_frame_as_uploaded() {
+        let mut app = App::new();
+        app.init_resource::<Log>();
+        for (step, name) in [
+            (OutputStep::Report, "report"),
+            (OutputStep::Upload, "upload"),
+        ] {
+            app.add_systems(
+                Update,
+                (move |mut log: ResMut<Log>| log.0.push(name)).in_set(step),
+            );
+        }
+        app.update();
+        assert_eq!(app.world().resource::<Log>().0, ["upload", "report"]);
     }
 }

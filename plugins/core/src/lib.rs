@@ -58,7 +58,7 @@ pub use model::{
 pub use named::NamedEnum;
 pub use outside::{OutsideOrbit, OutsideView, STAGE_NAMES};
 pub use reference_camera::camera_matrices;
-pub use schedule::{Close2glStep, FrameSet, LoadStep, Update};
+pub use schedule::{Close2glStep, FrameSet, LoadStep, OutputStep, Update};
 pub use settings::{
     Appearance, Clipping, FrontFace, Lighting, Mistake, Overlay, PipelineSettings, Rasterizer,
     RenderMode, RenderSettings, Shading, TextureFilter,

@@ -82,9 +82,24 @@ impl Close2glStep {
     ];
 }
 
+/// The steps inside [`FrameSet::Output`], chained in this order, so that what reports on the
+/// frame sees it as uploaded without naming the uploads.
+#[derive(SystemSet, Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum OutputStep {
+    /// What changed goes to the GPU views.
+    Upload,
+    /// What answers a question about the frame as it is drawn: the viewer's pixel probe.
+    Report,
+}
+
+impl OutputStep {
+    /// Every step, in the order it runs.
+    pub const ALL: [OutputStep; 2] = [OutputStep::Upload, OutputStep::Report];
+}
+
 /// The frame's schedule with the sets chained in [`FrameSet::ALL`]'s order, the steps of
-/// [`FrameSet::Load`] in [`LoadStep::ALL`]'s and those of [`FrameSet::Close2gl`] in
-/// [`Close2glStep::ALL`]'s.
+/// [`FrameSet::Load`] in [`LoadStep::ALL`]'s, those of [`FrameSet::Close2gl`] in
+/// [`Close2glStep::ALL`]'s and those of [`FrameSet::Output`] in [`OutputStep::ALL`]'s.
 pub(crate) fn frame_schedule() -> Schedule {
     let mut schedule = Schedule::new(Update);
     let [input, panel, load, camera, close2gl, output] = FrameSet::ALL;
@@ -93,5 +108,7 @@ pub(crate) fn frame_schedule() -> Schedule {
     schedule.configure_sets((files, against_mesh).chain().in_set(load));
     let [prepare, geometry, raster] = Close2glStep::ALL;
     schedule.configure_sets((prepare, geometry, raster).chain().in_set(close2gl));
+    let [upload, report] = OutputStep::ALL;
+    schedule.configure_sets((upload, report).chain().in_set(output));
     schedule
 }

@@ -61,10 +61,7 @@ pub fn probe_reference(
     scene: Scene<'_>,
     pixel: (u32, u32),
 ) -> Result<Option<ReferenceHit>, String> {
-    match &start_probe(gpu, scene, pixel)?.0 {
-        Some(mapping) => mapping.wait(gpu, WHAT, read_hit),
-        None => Ok(None),
-    }
+    start_probe(gpu, scene, pixel)?.wait(gpu)
 }
 
 /// [`probe_reference`] without the wait: the pass is drawn and its texel's copy submitted, and
@@ -102,6 +99,15 @@ impl ReferenceProbe {
         match &self.0 {
             Some(mapping) => mapping.finish(gpu, WHAT, read_hit),
             None => Some(Ok(None)),
+        }
+    }
+
+    /// The reference's answer, waiting for the GPU (which a browser cannot do: it asks
+    /// [`Self::finish`] frame after frame).
+    pub fn wait(&self, gpu: &Gpu) -> Result<Option<ReferenceHit>, String> {
+        match &self.0 {
+            Some(mapping) => mapping.wait(gpu, WHAT, read_hit),
+            None => Ok(None),
         }
     }
 }

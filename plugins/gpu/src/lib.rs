@@ -6,14 +6,16 @@
 //! rasterizer's image drawn as one textured triangle, or in the fate view each triangle in its
 //! fate's colour, or in the live difference where the two views differ), both held in [`Views`],
 //! with the selected triangle's highlight. [`GpuPlugin`] adds
-//! the systems (in `FrameSet::Output`) that read `Camera`, `Mesh`, `PipelineSettings` (mode,
-//! culling, who rasterizes), `Appearance`, `Overlay`, `Lighting`,
+//! the systems (in `FrameSet::Output`'s `OutputStep::Upload`) that read `Camera`, `Mesh`,
+//! `PipelineSettings` (mode, culling, who rasterizes), `Appearance`, `Overlay`, `Lighting`,
 //! `Texture`, `Close2glFrame`, `SoftwareFrame`, `SelectedTriangle`, `Viewport` and `Fates` (asking
 //! for it to be recorded while the fate view is shown) and upload what changed into `Views`; whoever
 //! owns the target (a window, or [`render_offscreen`]) records the draws.
 //! Offscreen rendering, reading textures back ([`Readback`]), the texture and attachment
 //! descriptions every target shares ([`attachments`]), the reference probe (an ID pass that says which
-//! mesh triangle the GPU drew at a pixel, [`probe_reference`]) and the timed submission every
+//! mesh triangle the GPU drew at a pixel, [`probe_reference`]), the pixel probe's one home
+//! ([`ProbedFrame::answer`]: both views' answers for a pixel, the reference's beside Close2GL's
+//! from the raster crate, for the viewer's Ctrl+click and `close2gl inspect`) and the timed submission every
 //! view is drawn with ([`submit_pass_timed`]) live here too (images and their comparison are the
 //! core's: `close2gl_core::Image`, `close2gl_core::parity`). [`outside`] is the
 //! third view, the pipeline seen from outside: its [`outside::OutsidePlugin`] reads the camera,
@@ -33,6 +35,7 @@ mod id_pass;
 mod offscreen;
 pub mod outside;
 mod pass;
+mod pixel_answer;
 mod readback;
 mod reference;
 mod reference_texture;
@@ -44,7 +47,7 @@ mod views;
 
 use bevy_ecs::prelude::*;
 use close2gl_core::{
-    App, Appearance, Close2glFrame, Close2glStep, Fates, FrameSet, Lighting, Overlay, Owner,
+    App, Appearance, Close2glFrame, Close2glStep, Fates, Lighting, OutputStep, Overlay, Owner,
     PipelineSettings, Plugin, RecordFates, SelectedTriangle, Update, Viewport,
 };
 
@@ -61,6 +64,7 @@ pub use gpu::{Gpu, NO_POLYGON_MODE_VAR, parse_backends};
 pub use id_pass::{ReferenceHit, ReferenceProbe, probe_reference, start_probe};
 pub use offscreen::{OFFSCREEN_FORMAT, OffscreenPlugin, Snapshot, render_offscreen};
 pub use pass::{submit_pass, submit_pass_timed};
+pub use pixel_answer::{PixelAnswer, ProbedFrame};
 pub use readback::{Pending, Readback};
 pub use reference::clear_color;
 pub use views::Views;
@@ -108,7 +112,7 @@ impl Plugin for GpuPlugin {
                     render_difference,
                 )
                     .chain()
-                    .in_set(FrameSet::Output)
+                    .in_set(OutputStep::Upload)
                     .run_if(resource_exists::<Gpu>.and_then(resource_exists::<Views>)),
             );
     }

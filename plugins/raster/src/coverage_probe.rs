@@ -8,7 +8,6 @@
 //! areas, as in solid mode; in wireframe and point modes the winner is still the rasterizer's own
 //! when it drew the view.
 
-use bevy_ecs::world::World;
 use close2gl_core::{
     Clipping, FateKind, Fates, PipelineSettings, Rasterizer, Scene, SoftwareFrame, Viewport,
 };
@@ -81,13 +80,16 @@ pub struct Drawn<'a> {
 }
 
 impl<'a> Drawn<'a> {
-    /// What the software rasterizer drew in `world`'s last frame, when it is the one drawing
-    /// Close2GL's view: the viewer's Ctrl+click and `close2gl inspect` probe the same image.
-    pub fn last_frame(world: &'a World, settings: &PipelineSettings) -> Option<Self> {
-        (settings.close2gl_raster == Rasterizer::Software).then(|| Drawn {
-            rasterizer: world.resource::<SoftwareRasterizer>(),
-            image: world.resource::<SoftwareFrame>(),
-        })
+    /// What the software rasterizer drew in the world's last frame (its `rasterizer` and
+    /// `image` resources), when it is the one drawing Close2GL's view: the viewer's Ctrl+click
+    /// and `close2gl inspect` probe the same image.
+    pub fn last_frame(
+        settings: &PipelineSettings,
+        rasterizer: Option<&'a SoftwareRasterizer>,
+        image: Option<&'a SoftwareFrame>,
+    ) -> Option<Self> {
+        let (rasterizer, image) = (rasterizer?, image?);
+        (settings.close2gl_raster == Rasterizer::Software).then_some(Drawn { rasterizer, image })
     }
 }
 

@@ -4,8 +4,7 @@
 use web_time::{Duration, Instant};
 
 use bevy_ecs::world::World;
-use close2gl_core::parity::{CoverageComparison, to_rgb8};
-use close2gl_core::{App, Appearance, InputState, OutsideView, ToolRequests, Viewport, Wake};
+use close2gl_core::{App, InputState, OutsideView, Wake};
 use close2gl_ui::{Notice, PanelState, ViewStats};
 use winit::application::ApplicationHandler;
 use winit::event::WindowEvent;
@@ -13,10 +12,13 @@ use winit::event_loop::{ActiveEventLoop, ControlFlow};
 use winit::window::WindowId;
 
 use crate::ViewerOptions;
+use crate::frame_capture::FrameCapture;
 use crate::input_tracker::InputTracker;
 use crate::orbit_input::OrbitInput;
 use crate::pacing::Pacing;
-use crate::present::{self, Capture, PendingShot, Shot};
+use crate::pixel_probe::on_its_way;
+use crate::placed_views::ViewPlacement;
+use crate::present;
 use crate::routing::{apply_input, offer_to_panel};
 use crate::session::Session;
 use crate::surface_source::Connections;
@@ -37,11 +39,8 @@ pub struct Viewer {
     session: Session,
     /// Windows whose drawing could not be set up, kept for a moment: see [`Opening`].
     opening: Option<Opening>,
-    /// A frame's capture still on its way back from the GPU (in a browser, where it cannot be
-    /// waited for).
-    shot: Option<PendingShot>,
-    /// The screenshot key asked for the views being captured: they are saved when they arrive.
-    save_views: bool,
+    /// What frames asked to keep of themselves (screenshots, comparisons of the views).
+    capture: FrameCapture,
     /// In a browser: the windows waiting for their GPU, which arrives later.
     #[cfg(target_arch = "wasm32")]
     arriving: Option<crate::browser::Arriving>,
@@ -90,8 +89,7 @@ impl Viewer {
             frames: 0,
             session,
             opening: None,
-            shot: None,
-            save_views: false,
+            capture: FrameCapture::default(),
             #[cfg(target_arch = "wasm32")]
             arriving: None,
         }
@@ -111,7 +109,8 @@ impl Viewer {
     }
 
     /// One app frame, in the wgpu examples' steps: size (the input and the layout), update (the
-    /// app's systems), draw (every window, then what the frame captured).
+    /// app's systems, the viewport and the probe among them), draw and present (every window,
+    /// then what the frame captured).
     fn redraw(&mut self, event_loop: &ActiveEventLoop) {
         let Some(start) = self.size_frame(event_loop) else {
             return;
@@ -125,8 +124,9 @@ impl Viewer {
     }
 
     /// The frame's input handed to the panel and the world, the outside view's window shown or
-    /// hidden, the views laid out and their viewport told to the world. None when the frame is
-    /// not drawn (the window is still being resized, or the session failed).
+    /// hidden, the views laid out and their placement told to the world (a system sets the
+    /// viewport from it). None when the frame is not drawn (the window is still being resized,
+    /// or the session failed).
     fn size_frame(&mut self, event_loop: &ActiveEventLoop) -> Option<FrameStart> {
         let windows = self.windows.as_mut()?;
         if self.session.wait_for_resize(self.frames, &windows.main) {
@@ -156,7 +156,7 @@ impl Viewer {
             .gui
             .views_area(&windows.main.window, surface, hidden);
         let placement = windows.placement(views, outside);
-        update_viewport(world, placement.viewport);
+        world.insert_resource(ViewPlacement(placement.clone()));
         Some(FrameStart {
             now,
             surface,
@@ -165,9 +165,9 @@ impl Viewer {
         })
     }
 
-    /// The panel finished, the probe answered, every window drawn and presented, and what the
-    /// frame captured saved: whether input is still held and how long the panel may wait for
-    /// its next frame. None when the session failed.
+    /// The panel finished, every window drawn and presented, and what the frame captured kept:
+    /// whether input is still held and how long the panel may wait for its next frame. None
+    /// when the session failed.
     fn draw_frame(
         &mut self,
         event_loop: &ActiveEventLoop,
@@ -181,34 +181,15 @@ impl Viewer {
         windows.gui.upload_textures(&windows.gpu, &mut gui_frame);
         // The panel showed or hid the outside view this frame: lay the views out again at once.
         let relayout = world.get_resource::<OutsideView>().is_some_and(|o| o.show) != start.outside;
-        crate::pixel_probe::answer(self.app.world_mut(), &windows.gpu, &start.placement);
-        #[cfg(target_arch = "wasm32")]
-        let probing = crate::pixel_probe::arrive(self.app.world_mut(), &windows.gpu);
-        #[cfg(not(target_arch = "wasm32"))]
-        let probing = false;
-
-        let (capture, key) = capture(&self.options, self.frames, self.app.world_mut());
-        self.save_views |= key && capture == Capture::Views;
-        let drawn = present::draw(
-            windows,
-            self.app.world_mut(),
-            &gui_frame,
-            &start.placement,
-            capture,
-        );
+        let capture = self.capture.asked(&self.options, self.frames, world);
+        let drawn = present::draw(windows, world, &gui_frame, &start.placement, capture);
         windows.gui.free_textures(&mut gui_frame);
-        let held = end_input_frame(self.app.world_mut());
-        let shot = drawn.and_then(|pending| arrived_shot(&mut self.shot, pending, &windows.gpu));
-        let saved = shot.and_then(|shot| {
-            let views = matches!(shot, Some(Shot::Views { .. }));
-            let save_views = views && std::mem::take(&mut self.save_views);
-            save(&self.options, self.app.world_mut(), shot, save_views)
-        });
+        let held = end_input_frame(world);
+        let kept =
+            drawn.and_then(|shot| self.capture.keep(&self.options, world, &windows.gpu, shot));
         // In a browser a shot or a probe arrives frames later: draw until it has.
-        let held = held || self.shot.is_some() || probing;
-        if let Err(e) =
-            saved.and_then(|()| self.session.end_frame(self.frames, self.app.world_mut()))
-        {
+        let held = held || self.capture.waiting() || on_its_way(world);
+        if let Err(e) = kept.and_then(|()| self.session.end_frame(self.frames, world)) {
             self.fail(event_loop, e);
             return None;
         }
@@ -289,115 +270,11 @@ fn is_close(event: &WindowEvent) -> bool {
     matches!(event, WindowEvent::CloseRequested | WindowEvent::Destroyed)
 }
 
-/// What frame number `frame` keeps of itself: the window for `--screenshot` on its frame, each
-/// view when the screenshot key (or button) asked, or a comparison of the views; and whether
-/// the screenshot key asked (the views are saved then, once they arrive).
-fn capture(options: &ViewerOptions, frame: u32, world: &mut World) -> (Capture, bool) {
-    let (key, compare) = match world.get_resource_mut::<ToolRequests>() {
-        Some(mut tools) => (
-            std::mem::take(&mut tools.screenshot),
-            std::mem::take(&mut tools.compare_views),
-        ),
-        None => (false, false),
-    };
-    let capture = if options.screenshot.is_some() && options.screenshot_frame == Some(frame + 1) {
-        Capture::Window
-    } else if key || compare {
-        Capture::Views
-    } else {
-        Capture::Nothing
-    };
-    (capture, key)
-}
-
-/// The frame's shot, or in a browser one captured before that has now arrived (`waiting` holds
-/// it meanwhile; a newer capture replaces it).
-#[cfg(not(target_arch = "wasm32"))]
-fn arrived_shot(
-    _waiting: &mut Option<PendingShot>,
-    drawn: Option<PendingShot>,
-    gpu: &close2gl_gpu::Gpu,
-) -> Result<Option<Shot>, String> {
-    drawn.map_or(Ok(None), |pending| pending.wait(gpu))
-}
-
-#[cfg(target_arch = "wasm32")]
-fn arrived_shot(
-    waiting: &mut Option<PendingShot>,
-    drawn: Option<PendingShot>,
-    gpu: &close2gl_gpu::Gpu,
-) -> Result<Option<Shot>, String> {
-    if drawn.is_some() {
-        *waiting = drawn;
-    }
-    let Some(pending) = waiting else {
-        return Ok(None);
-    };
-    match pending.finish(gpu) {
-        None => Ok(None),
-        Some(shot) => {
-            *waiting = None;
-            shot
-        }
-    }
-}
-
-/// Keeps `Viewport` equal to the Close2GL view's size; written only when it changed, so that the
-/// pipeline does not run again for nothing.
-fn update_viewport(world: &mut World, viewport: Option<Viewport>) {
-    if let Some(viewport) = viewport
-        && *world.resource::<Viewport>() != viewport
-    {
-        world.insert_resource(viewport);
-    }
-}
-
 /// Clears this frame's presses, drags and scrolls; returns whether keys are still held.
 fn end_input_frame(world: &mut World) -> bool {
     let mut input = world.resource_mut::<InputState>();
     input.end_frame();
     !input.held.is_empty()
-}
-
-/// Writes what the frame captured: the window where `--screenshot` says, or both views (the
-/// screenshot key) beside the command that renders them again, with a notice naming the files.
-fn save(
-    options: &ViewerOptions,
-    world: &mut World,
-    shot: Option<Shot>,
-    save_views: bool,
-) -> Result<(), String> {
-    match (shot, &options.screenshot) {
-        (Some(Shot::Window(image)), Some(path)) => image.write_png(path),
-        (
-            Some(Shot::Views {
-                reference,
-                close2gl,
-            }),
-            _,
-        ) => {
-            let background = to_rgb8(world.resource::<Appearance>().background);
-            let compared = CoverageComparison::of_images(&reference, &close2gl, background);
-            world.resource_mut::<ViewStats>().coverage_agreement =
-                Some(compared.coverage_agreement);
-            if !save_views {
-                return Ok(());
-            }
-            let notice = match crate::screenshot::save_views(
-                &options.screenshot_dir,
-                &reference,
-                &close2gl,
-                world,
-            ) {
-                Ok(saved) => saved,
-                Err(e) => format!("Screenshot not saved: {e}"),
-            };
-            eprintln!("close2gl: {notice}");
-            world.insert_resource(Notice::new(notice));
-            Ok(())
-        }
-        _ => Ok(()),
-    }
 }
 
 impl Viewer {

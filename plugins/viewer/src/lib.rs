@@ -1,31 +1,38 @@
 //! The interactive viewer: winit windows with wgpu surfaces, the egui control panel, and the
 //! event loop that drives the app. It owns the windows (one split window, or a "Reference
 //! (wgpu)" and a "Close2GL" window), turns window events into `InputState` (keys, drags,
-//! scroll) and dropped files into `ModelRequest` (an image into `TextureRequest`), keeps `Viewport` equal to the Close2GL view's
-//! size, runs one app frame per redraw, and draws both views and the panel (skipping a window
+//! scroll) and dropped files into `ModelRequest` (an image into `TextureRequest`), places the
+//! views before each frame (`ViewPlacement`, from which its system keeps `Viewport` equal to the
+//! Close2GL view's size), runs one app frame per redraw, and draws both views and the panel (skipping a window
 //! without pixels, drawing one wider than the GPU's largest texture up to that size, and ending
 //! the run with its reason when the GPU device is lost). It inserts the `Gpu`
 //! and `Views` resources the GPU plugin's upload systems need (and the `OutsideRenderer` of the
 //! third view, the pipeline seen from outside, a third column of the split layout, whose orbit
 //! camera takes the drags and scrolls over it), and fills `ViewStats`. Redraws
 //! are on demand (input, held keys, the panel's own animations, a `Wake` from background work),
-//! so an idle viewer sleeps. It carries out the screenshot key (`ToolRequests::screenshot`:
-//! both views as PNGs beside the command that renders them again, and a `Notice`), and records
-//! or replays every frame's input (`--record`, `--replay`). It
-//! adds the GPU and UI plugins unless the app has them, and needs the input, model and settings
-//! plugins' resources (checked before the windows open). It has no systems: its event loop runs
-//! the app's frames.
+//! so an idle viewer sleeps. A Ctrl+click is answered by its probe system
+//! (`pixel_probe::answer_probe`, asking the probe's one home, `close2gl_gpu::ProbedFrame`), which
+//! writes `ProbeAnswer` (a type of the ui crate) and `SelectedTriangle`. After drawing it
+//! carries out the screenshot key (`ToolRequests::screenshot`: both views as PNGs beside the
+//! command that renders them again, and a `Notice`) and a comparison of the views
+//! (`ToolRequests::compare_views`, into `ViewStats`), and records or replays every frame's input
+//! (`--record`, `--replay`). It adds the GPU and UI plugins unless the app has them, and needs
+//! the input, model, settings and Close2GL plugins' resources (checked before the windows
+//! open). Its event loop only sizes (input, layout), updates (the app's frame), draws and
+//! presents.
 
 mod acquire;
 #[cfg(target_arch = "wasm32")]
 pub mod browser;
 mod draw;
+mod frame_capture;
 mod gui;
 mod handler;
 pub mod input_tracker;
 mod orbit_input;
 mod pacing;
 pub mod pixel_probe;
+pub mod placed_views;
 mod present;
 mod recording;
 mod routing;
@@ -38,9 +45,14 @@ mod windows;
 
 use std::path::PathBuf;
 
+use bevy_ecs::prelude::*;
 pub use close2gl_core::Layout;
 use close2gl_core::Owner;
-use close2gl_core::{App, InputState, ModelRequest, Plugin, Viewport, Wake};
+use close2gl_core::{
+    App, Fates, FrameSet, InputState, ModelRequest, OutputStep, PipelineSettings, Plugin,
+    SelectedTriangle, Update, Viewport, Wake,
+};
+use close2gl_gpu::Gpu;
 pub use recording::Recording;
 pub use routing::drop_file;
 use winit::event_loop::{ControlFlow, EventLoop};
@@ -70,8 +82,9 @@ pub struct ViewerOptions {
     pub replay: Option<Recording>,
 }
 
-/// Adds the GPU upload systems and the panel (unless the app has them already), and makes
-/// `app.run()` open the windows and run the event loop until they close.
+/// Adds the GPU upload systems, the panel (unless the app has them already) and the viewer's
+/// own systems ([`ViewerSystemsPlugin`]), and makes `app.run()` open the windows and run the
+/// event loop until they close.
 pub struct ViewerPlugin(pub ViewerOptions);
 
 impl Plugin for ViewerPlugin {
@@ -79,12 +92,40 @@ impl Plugin for ViewerPlugin {
         app.add_plugin_once(close2gl_gpu::GpuPlugin)
             .add_plugin_once(close2gl_gpu::outside::OutsidePlugin)
             .add_plugin_once(close2gl_ui::UiPlugin)
-            .requires::<InputState>(Owner::Input)
+            .add_plugin_once(ViewerSystemsPlugin)
             .requires::<ModelRequest>(Owner::Model)
-            .requires::<Viewport>(Owner::Settings)
             .requires::<Wake>(Owner::Settings);
         let options = self.0.clone();
         app.set_runner(move |app| run(app, options));
+    }
+}
+
+/// The viewer's systems in the frame: the `Viewport` from the views it placed
+/// (`placed_views::set_viewport`, in `FrameSet::Input`), and the Ctrl+click probe answered once
+/// the frame is uploaded (`pixel_probe::answer_probe`, in `OutputStep::Report`, while there is
+/// a `Gpu`). [`ViewerPlugin`] adds it; an app that runs the viewer's frames without windows
+/// (a test's) may add it alone.
+pub struct ViewerSystemsPlugin;
+
+impl Plugin for ViewerSystemsPlugin {
+    fn build(&self, app: &mut App) {
+        app.init_resource::<placed_views::ViewPlacement>()
+            .requires::<InputState>(Owner::Input)
+            .requires::<Viewport>(Owner::Settings)
+            .requires::<PipelineSettings>(Owner::Settings)
+            .requires::<SelectedTriangle>(Owner::Settings)
+            .requires::<Fates>(Owner::Close2gl)
+            .add_systems(Update, placed_views::set_viewport.in_set(FrameSet::Input));
+        #[cfg(not(target_arch = "wasm32"))]
+        let probe = pixel_probe::answer_probe;
+        #[cfg(target_arch = "wasm32")]
+        let probe = (pixel_probe::answer_probe, pixel_probe::arrive_probe).chain();
+        app.add_systems(
+            Update,
+            probe
+                .in_set(OutputStep::Report)
+                .run_if(resource_exists::<Gpu>),
+        );
     }
 }
 

@@ -1,100 +1,63 @@
-//! The pixel probe a Ctrl+click asks for (`InputState::probe`): which view was clicked (from the
-//! layout), the pixel in that view's coordinates, and both answers for it: the reference's from
-//! the GPU's ID pass, Close2GL's (winner and every candidate) from the raster crate's probe.
-//! While the Close2GL view shows a program's trace, the answer also says what the trace drew
-//! there and what check found of it. The answer goes to the panel ([`ProbeAnswer`]), and its
-//! winner becomes the selected triangle.
+//! The Ctrl+click probe as systems of the frame (`OutputStep::Report`, once the frame is
+//! uploaded): which view the click (`InputState::probe`) is in, from the views the viewer placed
+//! ([`ViewPlacement`]), and the pixel in that view's coordinates; both views' answers come from
+//! the probe's one home (`close2gl_gpu::ProbedFrame`). While the Close2GL view shows a program's
+//! trace, the answer also says what the trace drew there and what check found of it. The answer
+//! goes to the panel ([`ProbeAnswer`]), and its winner becomes the selected triangle.
 
 use bevy_ecs::prelude::*;
-use close2gl_core::Mistake;
-use close2gl_core::{
-    Camera, Fates, InputState, Mesh, PipelineSettings, ProbeClick, Scene, SelectedTriangle,
-    Viewport,
-};
-use close2gl_gpu::{Gpu, ReferenceHit};
-use close2gl_pipeline::mistakes::Mistakes;
-use close2gl_pipeline::textbook;
-use close2gl_raster::coverage_probe::{Drawn, probe};
+use close2gl_core::{InputState, ProbeClick, SelectedTriangle, Viewport};
+use close2gl_gpu::{Gpu, ProbedFrame, ReferenceProbe};
 use close2gl_trace::view::TraceView;
 use close2gl_trace::view::probe::probe as trace_probe;
 use close2gl_ui::ProbeAnswer;
 
+use crate::placed_views::ViewPlacement;
 use crate::view_layout::{Placed, Placement, View};
 
-/// Every triangle's fate in `scene`, as Close2GL's pipeline (with its mistake, if one is set)
-/// records them.
-fn recorded_fates(scene: Scene<'_>) -> Fates {
-    let Scene {
-        mesh,
-        camera,
-        pipeline: settings,
-        viewport,
-    } = scene;
-    match settings.mistake {
-        Mistake::None => textbook::run_recording(mesh, camera, settings, viewport).1,
-        mistake => {
-            let mistakes = Mistakes::one(mistake);
-            textbook::run_mistaken(mesh, camera, settings, viewport, mistakes).1
-        }
-    }
-}
-
-/// Answers this frame's probe click, if any, once the frame's pipeline has run.
-pub fn answer(world: &mut World, gpu: &Gpu, placement: &Placement) {
-    let Some(at) = world.resource::<InputState>().probe else {
+/// Answers this frame's probe click, if any.
+pub fn answer_probe(
+    input: Res<InputState>,
+    placement: Res<ViewPlacement>,
+    gpu: Res<Gpu>,
+    frame: ProbedFrame,
+    trace: Option<Res<TraceView>>,
+    mut selected: ResMut<SelectedTriangle>,
+    mut commands: Commands,
+) {
+    let Some(at) = input.probe else {
         return;
     };
-    let Some((placed, pixel, viewport)) = clicked_view(placement, &at) else {
+    let Some((placed, pixel, viewport)) = clicked_view(&placement.0, &at) else {
         return;
     };
-    let mesh = world.query::<&Mesh>().iter(world).next().cloned();
-    let camera = world.query::<&Camera>().iter(world).next().copied();
-    let (Some(mesh), Some(camera)) = (mesh, camera) else {
+    let Some(answer) = frame.answer(&gpu, viewport, pixel) else {
         return;
-    };
-    let settings = *world.resource::<PipelineSettings>();
-    let scene = Scene {
-        mesh: &mesh,
-        camera: &camera,
-        pipeline: &settings,
-        viewport,
-    };
-    let reference = reference_answer(world, gpu, scene, pixel);
-    let drawn = Drawn::last_frame(world, &settings);
-    let close2gl = match world.resource::<Fates>() {
-        fates if fates.triangles.len() == mesh.triangles.len() => probe(scene, fates, pixel, drawn),
-        // Nothing records fates while the fate view is off: this frame's, worked out once.
-        _ => probe(scene, &recorded_fates(scene), pixel, drawn),
     };
     let trace = match placed.view {
-        View::Close2gl => world
-            .get_resource::<TraceView>()
-            .and_then(|view| trace_probe(view, pixel, viewport)),
+        View::Close2gl => trace.and_then(|view| trace_probe(&view, pixel, viewport)),
         _ => None,
     };
     // In a trace's view, the triangle under the click is the one the trace drew there.
     let trace_triangle = trace.as_ref().and_then(|t| t.triangle).map(|t| t as u32);
+    let close2gl = trace_triangle.or(answer.close2gl.triangle);
+    let reference = reference_answer(&mut commands, &gpu, answer.reference, close2gl.is_none());
     let answer = ProbeAnswer {
         view: match placed.view {
             View::Reference => "reference",
             View::Close2gl | View::Outside => "Close2GL",
         },
         reference: reference.map(|hit| hit.map(|h| (h.triangle, h.depth))),
-        close2gl,
+        close2gl: answer.close2gl,
         trace: trace.map(|t| t.lines),
         click: at,
-        camera,
+        camera: answer.camera,
         window: true,
     };
-    let close2gl = trace_triangle.or(answer.close2gl.triangle);
     if let Some(triangle) = close2gl.or(answer.reference_triangle()) {
-        world.resource_mut::<SelectedTriangle>().0 = Some(triangle);
+        selected.0 = Some(triangle);
     }
-    #[cfg(target_arch = "wasm32")]
-    if let Some(mut arriving) = world.get_resource_mut::<ArrivingProbe>() {
-        arriving.select = close2gl.is_none();
-    }
-    world.insert_resource(answer);
+    commands.insert_resource(answer);
 }
 
 /// The view the click is in, the pixel in that view's coordinates, and the views' viewport.
@@ -113,31 +76,31 @@ fn clicked_view<'a>(
     Some((placed, (x - placed.rect.x, y - placed.rect.y), viewport))
 }
 
+type ReferenceAnswer = Result<Option<close2gl_gpu::ReferenceHit>, String>;
+
 /// The reference's answer: at once on the desktop.
 #[cfg(not(target_arch = "wasm32"))]
 fn reference_answer(
-    _world: &mut World,
+    _commands: &mut Commands,
     gpu: &Gpu,
-    scene: Scene<'_>,
-    pixel: (u32, u32),
-) -> Result<Option<ReferenceHit>, String> {
-    close2gl_gpu::probe_reference(gpu, scene, pixel)
+    started: Result<ReferenceProbe, String>,
+    _select: bool,
+) -> ReferenceAnswer {
+    started?.wait(gpu)
 }
 
 /// In a browser the GPU cannot be waited for: the reference's answer arrives frames later
-/// ([`arrive`]), and the probe says so meanwhile.
+/// ([`arrive_probe`]), and the probe says so meanwhile; `select` when its triangle is to become
+/// the selected one.
 #[cfg(target_arch = "wasm32")]
 fn reference_answer(
-    world: &mut World,
-    gpu: &Gpu,
-    scene: Scene<'_>,
-    pixel: (u32, u32),
-) -> Result<Option<ReferenceHit>, String> {
-    let probe = close2gl_gpu::start_probe(gpu, scene, pixel)?;
-    world.insert_resource(ArrivingProbe {
-        probe,
-        select: false,
-    });
+    commands: &mut Commands,
+    _gpu: &Gpu,
+    started: Result<ReferenceProbe, String>,
+    select: bool,
+) -> ReferenceAnswer {
+    let probe = started?;
+    commands.insert_resource(ArrivingProbe { probe, select });
     Err("on its way back from the GPU".into())
 }
 
@@ -146,29 +109,45 @@ fn reference_answer(
 #[cfg(target_arch = "wasm32")]
 #[derive(Resource)]
 pub struct ArrivingProbe {
-    probe: close2gl_gpu::ReferenceProbe,
+    probe: ReferenceProbe,
     select: bool,
 }
 
-/// In a browser: puts the reference's answer into the probe's once the GPU has it. Returns
-/// whether one is still on its way (the viewer draws until it has arrived).
+/// In a browser: puts the reference's answer into the probe's once the GPU has it.
 #[cfg(target_arch = "wasm32")]
-pub fn arrive(world: &mut World, gpu: &Gpu) -> bool {
-    let Some(arriving) = world.get_resource::<ArrivingProbe>() else {
-        return false;
+pub fn arrive_probe(
+    arriving: Option<Res<ArrivingProbe>>,
+    gpu: Res<Gpu>,
+    answer: Option<ResMut<ProbeAnswer>>,
+    mut selected: ResMut<SelectedTriangle>,
+    mut commands: Commands,
+) {
+    let Some(arriving) = arriving else {
+        return;
     };
-    let Some(reference) = arriving.probe.finish(gpu) else {
-        return true;
+    let Some(reference) = arriving.probe.finish(&gpu) else {
+        return;
     };
-    let select = arriving.select;
-    world.remove_resource::<ArrivingProbe>();
+    commands.remove_resource::<ArrivingProbe>();
     let reference = reference.map(|hit| hit.map(|h| (h.triangle, h.depth)));
     let triangle = reference.as_ref().ok().copied().flatten().map(|(t, _)| t);
-    if let Some(mut answer) = world.get_resource_mut::<ProbeAnswer>() {
+    if let Some(mut answer) = answer {
         answer.reference = reference;
     }
-    if let Some(triangle) = triangle.filter(|_| select) {
-        world.resource_mut::<SelectedTriangle>().0 = Some(triangle);
+    if let Some(triangle) = triangle.filter(|_| arriving.select) {
+        selected.0 = Some(triangle);
     }
+}
+
+/// Whether a probe's answer is still on its way back from the GPU: in a browser, where the
+/// viewer draws until it has arrived.
+#[cfg(target_arch = "wasm32")]
+pub fn on_its_way(world: &World) -> bool {
+    world.contains_resource::<ArrivingProbe>()
+}
+
+/// On the desktop the answer is waited for: it never is.
+#[cfg(not(target_arch = "wasm32"))]
+pub fn on_its_way(_world: &World) -> bool {
     false
 }
