@@ -210,7 +210,7 @@ impl App {
     }
 }
 
-/// `close2gl_core::settings::RenderSettings` → `RenderSettings`.
+/// `close2gl_core::settings::PipelineSettings` → `PipelineSettings`.
 fn short_type_name<T>() -> &'static str {
     let full = std::any::type_name::<T>();
     full.rsplit("::").next().unwrap_or(full)

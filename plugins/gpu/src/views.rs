@@ -99,7 +99,7 @@ impl Views {
         });
     }
 
-    /// RenderSettings.background as a clear colour: both views clear to it.
+    /// `Appearance::background` as a clear colour: both views clear to it.
     pub fn clear_color(&self) -> wgpu::Color {
         self.background
     }
