@@ -356,3 +356,42 @@ fn a_recorded_probe_click_selects_the_triangle_under_it_and_highlights_it_in_bot
         }
     }
 }
+
+/// A first run on a small screen opens its window fitted to the monitor, smaller than the
+/// configuration asks: the recording remembers the fitted size, so that its replay (which
+/// opens at the recorded size, not fitted) shows the views as they were recorded and a
+/// recorded click lands on the same pixel.
+#[test]
+fn a_recording_made_in_a_window_fitted_to_a_small_screen_replays_at_that_size() {
+    let dir = TempDir::new("tools-fitted");
+    let xvfb = Xvfb::with_screen("1366x768x24");
+    let recording = dir.join("fitted.rec");
+    let recorded_shot = dir.join("recorded.png");
+    run_app(
+        &xvfb,
+        &[
+            "--record",
+            &recording.display().to_string(),
+            "--screenshot",
+            &recorded_shot.display().to_string(),
+        ],
+    );
+    let recorded = png(&recorded_shot);
+    assert!(recorded.width <= 1366, "fitted: {}", recorded.width);
+    let replayed_shot = dir.join("replayed.png");
+    run_app(
+        &xvfb,
+        &[
+            "--replay",
+            &recording.display().to_string(),
+            "--screenshot",
+            &replayed_shot.display().to_string(),
+        ],
+    );
+    let replayed = png(&replayed_shot);
+    assert_eq!(
+        (replayed.width, replayed.height),
+        (recorded.width, recorded.height),
+        "the replay's window is the recorded one's"
+    );
+}

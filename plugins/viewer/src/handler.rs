@@ -280,6 +280,9 @@ fn end_input_frame(world: &mut World) -> bool {
 impl Viewer {
     /// The windows are drawn into from now on: background work wakes the main one.
     fn opened(&mut self, windows: Windows) {
+        // The window may have opened smaller than asked (fitted to the monitor): a recording
+        // replays at the size it was made at, so that a recorded click lands on the same pixel.
+        self.session.window_resized(windows.main.window_size());
         let window = windows.main.window.clone();
         if let Some(wake) = self.app.world().get_resource::<Wake>() {
             wake.install(move || window.request_redraw());
