@@ -365,30 +365,17 @@ fn a_recorded_probe_click_selects_the_triangle_under_it_and_highlights_it_in_bot
 fn a_recording_made_in_a_window_fitted_to_a_small_screen_replays_at_that_size() {
     let dir = TempDir::new("tools-fitted");
     let xvfb = Xvfb::with_screen("1366x768x24");
-    let recording = dir.join("fitted.rec");
-    let recorded_shot = dir.join("recorded.png");
-    run_app(
-        &xvfb,
-        &[
-            "--record",
-            &recording.display().to_string(),
-            "--screenshot",
-            &recorded_shot.display().to_string(),
-        ],
-    );
-    let recorded = png(&recorded_shot);
+    let recording = dir.join("fitted.rec").display().to_string();
+    // The app's window as `--screenshot` saves it, run as `mode` (`--record` or `--replay`) says.
+    let shot = |mode: &str, name: &str| {
+        let path = dir.join(name);
+        let path_text = path.display().to_string();
+        run_app(&xvfb, &[mode, &recording, "--screenshot", &path_text]);
+        png(&path)
+    };
+    let recorded = shot("--record", "recorded.png");
     assert!(recorded.width <= 1366, "fitted: {}", recorded.width);
-    let replayed_shot = dir.join("replayed.png");
-    run_app(
-        &xvfb,
-        &[
-            "--replay",
-            &recording.display().to_string(),
-            "--screenshot",
-            &replayed_shot.display().to_string(),
-        ],
-    );
-    let replayed = png(&replayed_shot);
+    let replayed = shot("--replay", "replayed.png");
     assert_eq!(
         (replayed.width, replayed.height),
         (recorded.width, recorded.height),

@@ -153,7 +153,8 @@ pub struct SoftwareFrame {
 }
 
 /// What one frame of the views is drawn from, borrowed: the mesh, the camera, the pipeline's
-/// switches and the viewport (what decides which triangle covers a pixel; colours are not asked). Both views' pixel probes take it, so that they ask about the same frame.
+/// switches and the viewport (what decides which triangle covers a pixel; colours are not
+/// asked). Both views' pixel probes take it, so that they ask about the same frame.
 #[derive(Clone, Copy)]
 pub struct Scene<'a> {
     pub mesh: &'a crate::Mesh,
