@@ -35,6 +35,8 @@ pub enum Ending {
     TimedOut,
     /// Its directory grew past the disk limit; it was killed.
     TooMuchDisk,
+    /// It had more processes at once than the limit (a fork bomb); it was killed, all of them.
+    TooManyProcesses(u32),
     /// Grading was interrupted (Ctrl+C); it was killed, or not started.
     Interrupted,
     /// It could not be started (no such program, not executable, empty command).
@@ -53,6 +55,9 @@ impl Outcome {
             Ending::TimedOut => format!("timed out after {after} s"),
             Ending::TooMuchDisk => {
                 format!("killed after {after} s: its directory grew past the disk limit")
+            }
+            Ending::TooManyProcesses(limit) => {
+                format!("killed after {after} s: it made more than {limit} processes at once")
             }
             Ending::Interrupted => format!("stopped after {after} s: grading was interrupted"),
             Ending::CouldNotStart(why) => format!("could not start: {why}"),

@@ -3,6 +3,7 @@
 
 use std::collections::{HashMap, HashSet};
 use std::fs;
+use std::path::Path;
 
 /// One process, as `/proc/<pid>/stat` describes it.
 #[derive(Clone, Copy, Debug)]
@@ -69,6 +70,40 @@ impl ProcTable {
     }
 }
 
+/// How many processes `pid`'s tree holds (itself included), counted up to `enough` and a
+/// little past: each process's children as its threads list them (`/proc/PID/task/TID/children`),
+/// so that only the tree is read, not every process of the machine. A kernel built without
+/// those files is read whole instead.
+pub(crate) fn tree_size(pid: i32, enough: usize) -> usize {
+    if !Path::new("/proc/self/task")
+        .join(std::process::id().to_string())
+        .join("children")
+        .exists()
+    {
+        return 1 + ProcTable::read().descendants(pid).len();
+    }
+    let mut count = 0;
+    let mut pending = vec![pid];
+    while let Some(pid) = pending.pop() {
+        count += 1;
+        if count > enough {
+            break;
+        }
+        let tasks = fs::read_dir(format!("/proc/{pid}/task"))
+            .into_iter()
+            .flatten();
+        for task in tasks.flatten() {
+            let children = fs::read_to_string(task.path().join("children")).unwrap_or_default();
+            pending.extend(
+                children
+                    .split_whitespace()
+                    .filter_map(|c| c.parse::<i32>().ok()),
+            );
+        }
+    }
+    count
+}
+
 /// `pid (comm) state ppid pgrp session ...`: the command name may hold spaces and parentheses,
 /// so the fields are read after its last `)`.
 fn parse_stat(pid: i32, stat: &str) -> Option<Process> {
@@ -116,6 +151,25 @@ mod tests {
         };
         let below: Vec<i32> = table.descendants(1).iter().map(|p| p.pid).collect();
         assert_eq!(below, [2, 3, 4]);
+    }
+
+    #[test]
+    fn a_tree_counts_its_children() {
+        let mut children: Vec<_> = (0..3)
+            .map(|_| {
+                std::process::Command::new("sleep")
+                    .arg("5")
+                    .spawn()
+                    .expect("sleep")
+            })
+            .collect();
+        let me = std::process::id() as i32;
+        let counted = tree_size(me, 100);
+        for child in &mut children {
+            let _ = child.kill();
+            let _ = child.wait();
+        }
+        assert!(counted >= 4, "{counted}");
     }
 
     #[test]

@@ -86,6 +86,11 @@ fn become_subreaper() {
 }
 
 impl Registration {
+    /// The program's pid (with a PID namespace, the relay's: the process the grader started).
+    pub(crate) fn pid(&self) -> i32 {
+        self.pid
+    }
+
     /// Kills the still running program, its process group and all its descendants, and the
     /// orphans of its session. The program itself is left to be reaped by its `Child`.
     pub(crate) fn kill_tree(&self) {

@@ -1,6 +1,7 @@
 //! What a program may use. The defaults suit a student's geometry pipeline run on one scene: it
 //! should take well under a second, a few hundred megabytes and write one trace file.
 
+use std::io;
 use std::time::Duration;
 
 /// The limits of one [`run`](crate::run()).
@@ -21,6 +22,11 @@ pub struct Limits {
     pub disk: u64,
     /// Bytes kept of each of stdout and stderr: the last ones (default 64 KiB).
     pub output: usize,
+    /// Processes the run may have at once, the program's own included (default 256): one
+    /// more, and the whole run is killed with [`Ending::TooManyProcesses`](crate::Ending).
+    /// In a PID namespace of its own on Linux 5.14 or later the kernel enforces it too
+    /// (`RLIMIT_NPROC`, counted in the run's user namespace), so a fork bomb's forks fail.
+    pub processes: u32,
 }
 
 impl Default for Limits {
@@ -31,6 +37,29 @@ impl Default for Limits {
             file_size: 64 << 20,
             disk: 256 << 20,
             output: 64 << 10,
+            processes: 256,
         }
     }
+}
+
+/// Lowers a resource limit to `soft`/`hard`, never above the current hard limit (raising it
+/// needs privileges the grader may not have). Between fork and exec: only system calls.
+pub(crate) fn lower(resource: libc::__rlimit_resource_t, soft: u64, hard: u64) -> io::Result<()> {
+    let mut current = libc::rlimit {
+        rlim_cur: 0,
+        rlim_max: 0,
+    };
+    // SAFETY: `current` is a live local rlimit the kernel fills in.
+    if unsafe { libc::getrlimit(resource, &mut current) } == -1 {
+        return Err(io::Error::last_os_error());
+    }
+    let wanted = libc::rlimit {
+        rlim_cur: soft.min(current.rlim_max),
+        rlim_max: hard.min(current.rlim_max),
+    };
+    // SAFETY: `wanted` is a live local rlimit the kernel only reads.
+    if unsafe { libc::setrlimit(resource, &wanted) } == -1 {
+        return Err(io::Error::last_os_error());
+    }
+    Ok(())
 }

@@ -10,7 +10,7 @@ use std::process::{Child, Command, Stdio};
 use std::time::Duration;
 
 use crate::reap::{self, Registration};
-use crate::resource_limits::Limits;
+use crate::resource_limits::{Limits, lower};
 use crate::sandbox::{self, InChild, Prepared, Sandbox};
 
 /// The kernel-enforced limits, computed before the fork (the child must not allocate).
@@ -41,7 +41,7 @@ pub(crate) fn start(
     // Found here, as the child would: in the sandbox it could not look in every folder of
     // PATH, and might find another program of the same name further on.
     let found = sandbox::find_program(program, &path).unwrap_or_else(|| program.into());
-    let prepared = Prepared::new(sandbox, words, &home, &path)?;
+    let prepared = Prepared::new(sandbox, words, &home, &path, limits.processes)?;
     let in_sandbox = prepared.in_child();
     let lang = std::env::var_os("LANG").unwrap_or_else(|| "C.UTF-8".into());
     let child_limits = ChildLimits {
@@ -65,8 +65,8 @@ pub(crate) fn start(
         .stdout(Stdio::piped())
         .stderr(Stdio::piped());
     // SAFETY: the hook runs in the forked child before exec and only makes async-signal-safe
-    // system calls (setsid, getrlimit, setrlimit, prctl, getppid, unshare,
-    // landlock_restrict_self) on copied plain values.
+    // system calls (setsid, getrlimit, setrlimit, prctl, getppid, unshare, fork, waitpid,
+    // pipe2, read, write, dup2, close, kill, landlock_restrict_self) on copied plain values.
     unsafe {
         std::os::unix::process::CommandExt::pre_exec(&mut command, move || {
             in_child(child_limits, grader, in_sandbox)
@@ -101,32 +101,10 @@ fn in_child(limits: ChildLimits, grader: libc::pid_t, in_sandbox: InChild) -> io
             return Err(io::Error::from_raw_os_error(libc::ESRCH));
         }
     }
-    set_limit(libc::RLIMIT_AS, limits.address_space, limits.address_space)?;
-    set_limit(libc::RLIMIT_FSIZE, limits.file_size, limits.file_size)?;
-    set_limit(libc::RLIMIT_CORE, 0, 0)?;
+    lower(libc::RLIMIT_AS, limits.address_space, limits.address_space)?;
+    lower(libc::RLIMIT_FSIZE, limits.file_size, limits.file_size)?;
+    lower(libc::RLIMIT_CORE, 0, 0)?;
     // The soft limit sends SIGXCPU, the hard one a second later SIGKILL (if SIGXCPU is caught).
-    set_limit(libc::RLIMIT_CPU, limits.cpu_seconds, limits.cpu_seconds + 1)?;
+    lower(libc::RLIMIT_CPU, limits.cpu_seconds, limits.cpu_seconds + 1)?;
     sandbox::enter(in_sandbox)
-}
-
-/// Lowers a resource limit to `soft`/`hard`, never above the current hard limit (raising it
-/// needs privileges the grader may not have).
-fn set_limit(resource: libc::__rlimit_resource_t, soft: u64, hard: u64) -> io::Result<()> {
-    let mut current = libc::rlimit {
-        rlim_cur: 0,
-        rlim_max: 0,
-    };
-    // SAFETY: `current` is a live local rlimit the kernel fills in.
-    if unsafe { libc::getrlimit(resource, &mut current) } == -1 {
-        return Err(io::Error::last_os_error());
-    }
-    let wanted = libc::rlimit {
-        rlim_cur: soft.min(current.rlim_max),
-        rlim_max: hard.min(current.rlim_max),
-    };
-    // SAFETY: `wanted` is a live local rlimit the kernel only reads.
-    if unsafe { libc::setrlimit(resource, &wanted) } == -1 {
-        return Err(io::Error::last_os_error());
-    }
-    Ok(())
 }

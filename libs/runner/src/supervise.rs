@@ -1,6 +1,6 @@
 //! One run of one program: start it, watch it, stop it, clean up after it. The watcher is the
 //! calling thread itself, ticking every [`TICK`]: it reads the output, and checks for the
-//! program's exit, the time limit, the disk limit and an interrupt. Runs on several threads at
+//! program's exit, the time limit, the disk limit, the process limit and an interrupt. Runs on several threads at
 //! once share nothing but the reaper's list of running programs.
 
 use std::os::unix::process::ExitStatusExt;
@@ -15,7 +15,7 @@ use crate::reap::Registration;
 use crate::resource_limits::Limits;
 use crate::sandbox::Sandbox;
 use crate::signals::signal_name;
-use crate::{disk, spawn};
+use crate::{disk, proc_table, spawn};
 
 /// How often the watcher checks: small next to any time limit, rare enough to cost nothing.
 const TICK: Duration = Duration::from_millis(20);
@@ -40,7 +40,13 @@ pub fn run(words: &[String], dir: &Path, limits: &Limits, sandbox: &Sandbox) -> 
         Err(e) => return not_run(Ending::CouldNotStart(start_error(words, dir, &e))),
     };
     let mut output = Output::new(child.stdout.take(), child.stderr.take(), limits.output);
-    let (ended, elapsed) = watch(&mut child, &registration, &mut output, dir, limits, started);
+    let watched = Watched {
+        dir,
+        limits,
+        // The relay and the init above a program in its own PID namespace are the run's too.
+        processes: limits.processes as usize + sandboxed.waiting_processes(),
+    };
+    let (ended, elapsed) = watch(&mut child, &registration, &mut output, &watched, started);
     // Only once the program is reaped may the reaper take the orphans it left.
     drop(registration);
     let (stdout_tail, stderr_tail) = output.finish();
@@ -57,24 +63,36 @@ pub fn run(words: &[String], dir: &Path, limits: &Limits, sandbox: &Sandbox) -> 
     }
 }
 
+/// What the watcher holds a run to: its directory's size, its time, its processes.
+struct Watched<'a> {
+    dir: &'a Path,
+    limits: &'a Limits,
+    /// The processes the run may have at once, counting those the sandbox puts above it.
+    processes: usize,
+}
+
 /// Ticks until the program exits or must be stopped; returns how it ended and when. On return
 /// the program is reaped.
 fn watch(
     child: &mut Child,
     registration: &Registration,
     output: &mut Output,
-    dir: &Path,
-    limits: &Limits,
+    watched: &Watched,
     started: Instant,
 ) -> (Ending, Duration) {
-    let mut disk_checked = Instant::now();
-    let mut disk_full = || {
-        // A chatty program wakes the watcher often: the directory is walked once a tick.
-        let due = disk_checked.elapsed() >= TICK;
-        if due {
-            disk_checked = Instant::now();
+    let (dir, limits) = (watched.dir, watched.limits);
+    let mut checked = Instant::now() - TICK;
+    let mut over_a_limit = || {
+        // A chatty program wakes the watcher often: the directory and the process tree are
+        // walked once a tick.
+        if checked.elapsed() < TICK {
+            return None;
         }
-        due && disk::exceeds(dir, limits.disk)
+        checked = Instant::now();
+        if proc_table::tree_size(registration.pid(), watched.processes) > watched.processes {
+            return Some(Ending::TooManyProcesses(limits.processes));
+        }
+        disk::exceeds(dir, limits.disk).then_some(Ending::TooMuchDisk)
     };
     loop {
         output.pump(TICK);
@@ -91,8 +109,10 @@ fn watch(
             }
             Ok(None) if interrupted() => Ending::Interrupted,
             Ok(None) if elapsed >= limits.time => Ending::TimedOut,
-            Ok(None) if disk_full() => Ending::TooMuchDisk,
-            Ok(None) => continue,
+            Ok(None) => match over_a_limit() {
+                Some(ending) => ending,
+                None => continue,
+            },
             Err(e) => Ending::CouldNotStart(format!("could not wait for it: {e}")),
         };
         registration.kill_tree();

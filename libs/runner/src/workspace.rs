@@ -6,9 +6,14 @@
 use std::fs::{self, DirBuilder};
 use std::hash::{BuildHasher, RandomState};
 use std::io::{self, ErrorKind};
-use std::os::unix::fs::{DirBuilderExt, PermissionsExt};
+use std::os::unix::fs::DirBuilderExt;
 use std::path::{Path, PathBuf};
 use std::sync::{Mutex, PoisonError};
+
+use rustix::fs::{CWD, FileType};
+
+use crate::beneath;
+use crate::own_file::{self, NotItsOwn};
 
 /// The workspaces not yet dropped.
 static LIVE: Mutex<Vec<PathBuf>> = Mutex::new(Vec::new());
@@ -43,6 +48,13 @@ impl Workspace {
     pub fn path(&self) -> &Path {
         &self.path
     }
+
+    /// The bytes of the file `name` the program wrote here, at most `max` of them: only a
+    /// regular file of its own is read, never a link, a FIFO or a device, nor a file with
+    /// another name elsewhere ([`NotItsOwn`] says which it was).
+    pub fn read_own(&self, name: &str, max: u64) -> Result<Vec<u8>, NotItsOwn> {
+        own_file::read(&self.path, name, max)
+    }
 }
 
 impl Drop for Workspace {
@@ -64,24 +76,34 @@ fn live() -> std::sync::MutexGuard<'static, Vec<PathBuf>> {
     LIVE.lock().unwrap_or_else(PoisonError::into_inner)
 }
 
-/// Removes `dir` and everything in it. A program may have made directories unreadable or
-/// unwritable (it runs as the same user); then every directory is given back to its owner and
-/// the removal is tried again.
+/// Removes `dir` and everything in it (the standard library's removal never follows a link).
+/// A program may have made directories unreadable or unwritable (it runs as the same user);
+/// then every directory is given back to its owner and the removal is tried again.
 fn remove(dir: &Path) {
     match fs::remove_dir_all(dir) {
         Err(e) if e.kind() != ErrorKind::NotFound => {
-            let mut pending = vec![dir.to_path_buf()];
-            while let Some(dir) = pending.pop() {
-                let _ = fs::set_permissions(&dir, fs::Permissions::from_mode(0o700));
-                let entries = fs::read_dir(&dir).into_iter().flatten();
-                for entry in entries.flatten() {
-                    if entry.file_type().is_ok_and(|kind| kind.is_dir()) {
-                        pending.push(entry.path());
-                    }
-                }
-            }
+            give_back_tree(dir);
             let _ = fs::remove_dir_all(dir);
         }
         _ => {}
+    }
+}
+
+/// Gives `dir` and every directory below it back to their owner (read, write, search), each
+/// reached from its parent's descriptor, never through a link the program made.
+fn give_back_tree(dir: &Path) {
+    if let Ok(root) = beneath::handle(CWD, dir) {
+        let _ = beneath::give_back(&root, 0o700);
+    }
+    let mut pending: Vec<_> = beneath::open_run_dir(dir).into_iter().collect();
+    while let Some(dir) = pending.pop() {
+        let below = beneath::entries(&dir);
+        for entry in below.iter().filter(|e| e.kind() == FileType::Directory) {
+            let name = entry.name.as_c_str();
+            if let Ok(handle) = beneath::handle(&dir, name) {
+                let _ = beneath::give_back(&handle, 0o700);
+            }
+            pending.extend(beneath::open_dir(&dir, name).ok());
+        }
     }
 }

@@ -1,5 +1,6 @@
 //! What this kernel can enforce, probed once per process: the Landlock ABI (each version adds
-//! protections), and whether an unprivileged process may make a user and network namespace.
+//! protections), whether an unprivileged process may make a user, network and PID namespace,
+//! and whether the kernel counts processes per user namespace (Linux 5.14).
 //! The same words go to the start of grading and to every report.
 
 use std::sync::OnceLock;
@@ -37,8 +38,10 @@ const LANDLOCK_PROTECTIONS: [(&str, i32, &str, &str); 4] = [
 pub struct Protections {
     /// The Landlock ABI version, or why there is none.
     pub landlock_abi: Result<i32, String>,
-    /// Whether a run can have a user and network namespace of its own, or why not.
+    /// Whether a run can have a user, network and PID namespace of its own, or why not.
     pub namespaces: Result<(), String>,
+    /// The kernel's version, `(major, minor)`, as `uname` gives it; none when unreadable.
+    pub linux: Option<(u32, u32)>,
 }
 
 /// One protection, enforced or missing, in words a report shows.
@@ -56,7 +59,15 @@ impl Protections {
         PROBED.get_or_init(|| Protections {
             landlock_abi: landlock_abi(),
             namespaces: namespaces::probe(),
+            linux: linux_version(),
         })
+    }
+
+    /// Whether `RLIMIT_NPROC` counts a run's processes alone: in its own user namespace, from
+    /// Linux 5.14 (before, it counts every process of the user's, across namespaces). The
+    /// kernel exempts root from it: a grader run as root relies on the watcher alone.
+    pub fn process_count_per_namespace(&self) -> bool {
+        self.namespaces.is_ok() && self.linux.is_some_and(|v| v >= (5, 14))
     }
 
     /// Why nothing can be sandboxed here (no Landlock), in one line; none when it can.
@@ -85,6 +96,23 @@ impl Protections {
                 Err(why) => format!("no network namespace ({why}): UDP and DNS are not blocked"),
             },
         };
+        let processes = Protection {
+            name: "processes",
+            enforced: self.namespaces.is_ok(),
+            detail: match (&self.namespaces, self.process_count_per_namespace()) {
+                (Ok(()), true) => "a PID namespace of its own: nothing it starts outlives it; \
+                                   its process count limited by the kernel"
+                    .into(),
+                (Ok(()), false) => "a PID namespace of its own: nothing it starts outlives it; \
+                                    its process count only watched (the kernel's count per \
+                                    namespace needs Linux 5.14)"
+                    .into(),
+                (Err(why), _) => format!(
+                    "no PID namespace ({why}): what it starts is found and killed through \
+                     /proc, and its process count is only watched"
+                ),
+            },
+        };
         let mut list = vec![landlock];
         list.extend(
             LANDLOCK_PROTECTIONS
@@ -99,6 +127,7 @@ impl Protections {
                 }),
         );
         list.push(namespace);
+        list.push(processes);
         list
     }
 
@@ -120,6 +149,21 @@ impl Protections {
         }
         line
     }
+}
+
+/// `(major, minor)` of the running kernel's release ("6.18.44-generic" gives (6, 18)).
+fn linux_version() -> Option<(u32, u32)> {
+    // SAFETY: utsname is plain bytes; uname fills the live local in.
+    let mut names: libc::utsname = unsafe { std::mem::zeroed() };
+    if unsafe { libc::uname(&mut names) } == -1 {
+        return None;
+    }
+    let release: Vec<u8> = names.release.iter().map(|&c| c as u8).collect();
+    let release = String::from_utf8_lossy(&release);
+    let mut numbers = release
+        .split(|c: char| !c.is_ascii_digit())
+        .map(|n| n.parse().ok());
+    Some((numbers.next()??, numbers.next()??))
 }
 
 /// The kernel's Landlock ABI, or why there is none (as `landlock_create_ruleset` says).

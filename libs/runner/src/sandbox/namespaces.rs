@@ -1,20 +1,25 @@
-//! A user and network namespace of the program's own: its network has only a loopback device,
-//! down, so nothing leaves it (UDP and DNS included, which Landlock does not cover). Made with
-//! `unshare` in the child; no uid map is written, so the program runs as the overflow user
-//! ("nobody") inside it, holding no capability once it executes, while the kernel still
-//! checks its file accesses as the user's.
+//! Namespaces of the program's own: a user namespace (which lets an unprivileged process make
+//! the others), a network namespace whose only device is a loopback that is down, so nothing
+//! leaves it (UDP and DNS included, which Landlock does not cover), and a PID namespace, so
+//! that every process the run starts ends with it (`pid_namespace`). Made with `unshare` in the
+//! child; no uid map is written, so the program runs as the overflow user ("nobody") inside,
+//! holding no capability once it executes, while the kernel still checks its file accesses as
+//! the user's.
 
 use std::io;
 
-const FLAGS: libc::c_int = libc::CLONE_NEWUSER | libc::CLONE_NEWNET;
+use super::pid_namespace;
 
-/// In the child, between fork and exec: only the system call.
-pub(super) fn unshare_network() -> io::Result<()> {
+const FLAGS: libc::c_int = libc::CLONE_NEWUSER | libc::CLONE_NEWNET | libc::CLONE_NEWPID;
+
+/// In the child, between fork and exec: only system calls. Returns in the program's process,
+/// the second of its PID namespace.
+pub(super) fn enter() -> io::Result<()> {
     // SAFETY: unshare takes flags and touches no memory of ours.
     if unsafe { libc::unshare(FLAGS) } == -1 {
         return Err(io::Error::last_os_error());
     }
-    Ok(())
+    pid_namespace::fork_program()
 }
 
 /// Whether an unprivileged `unshare` works here (distributions may forbid it): tried in a

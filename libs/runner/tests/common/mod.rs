@@ -171,6 +171,37 @@ const PROGRAMS: &[(&str, &str)] = &[
         "print_cwd",
         r#"int main(void) { char b[4096]; puts(getcwd(b, sizeof b)); return 0; }"#,
     ),
+    (
+        "fork_twenty",
+        r#"int main(void) {
+            for (int i = 0; i < 20; i++) {
+                pid_t child = fork();
+                if (child == 0) sleep_forever();
+                if (child < 0) { fprintf(stderr, "fork failed after %d\n", i); break; }
+            }
+            sleep_forever();
+        }"#,
+    ),
+    (
+        "fork_bomb",
+        r#"int main(void) { write_pid("pid"); for (;;) fork(); }"#,
+    ),
+    (
+        "daemon_then_exit",
+        r#"int main(void) {
+            if (fork() == 0) {
+                setsid();
+                if (fork() == 0) { write_pid("daemon"); sleep_forever(); }
+                _exit(0);
+            }
+            wait_for("daemon");
+            return 0;
+        }"#,
+    ),
+    (
+        "links_its_trace",
+        r#"int main(int argc, char **argv) { return symlink(argv[1], "trace.txt") != 0; }"#,
+    ),
 ];
 
 /// The compiled program `name`, compiled once per test binary.
