@@ -34,9 +34,10 @@ enum Command {
     /// Check a program's trace of one frame against close2gl's pipeline, stage by stage, and
     /// name the classic mistake that reproduces it (exit 0 agree, 1 differs, 2 bad input).
     Check(check::CheckArgs),
-    /// Grade a program on the assignment's rubric: run it on the rubric's scenes under limits
-    /// (no sandbox: see docs/grading.md) and score its 200 points line by line with the
-    /// evidence; --submissions grades a folder of them into grades.csv.
+    /// Grade a program on the assignment's rubric: run it on the rubric's scenes under limits,
+    /// each run sandboxed (Landlock; its own user, network and PID namespace where the kernel
+    /// allows them: docs/grading.md), and score its 200 points line by line with the evidence;
+    /// --submissions grades a folder of them into grades.csv.
     Grade(grade::GradeArgs),
 }
 

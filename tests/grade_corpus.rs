@@ -173,34 +173,54 @@ fn mismatches(expected: &Expected, grade: &Value) -> Vec<String> {
     wrong
 }
 
-/// A line that names a mistake must have it named in every scene it failed: a mistake that
-/// explains one scene of a line and not the others did not cost the line.
+/// A line names a mistake only with the number of its failing scenes that name it, never one
+/// that none names; its unexplained scenes are those that name none of its mistakes.
 fn false_names(expected: &Expected, grade: &Value) -> Vec<String> {
     let scenes = grade["scenes"].as_array().expect("scenes");
-    let named_in = |scene: &str, mistake: &Value| {
+    let named_in = |scene: &str| -> Vec<Value> {
         let scene = scenes.iter().find(|s| s["id"] == scene);
-        scene.is_some_and(|s| {
-            s["mistakes"]
-                .as_array()
-                .expect("mistakes")
-                .contains(mistake)
+        scene.map_or(Vec::new(), |s| {
+            s["mistakes"].as_array().expect("mistakes").clone()
         })
     };
     let mut wrong = Vec::new();
+    let build = format!(
+        "{}:{} {}",
+        expected.program.display(),
+        expected.line_no,
+        expected.flags.join(" ")
+    );
     for line in grade["lines"].as_array().expect("lines") {
-        for mistake in line["mistakes"].as_array().expect("mistakes") {
-            for failure in line["failures"].as_array().expect("failures") {
-                let scene = failure["scene"].as_str().expect("scene");
-                if !named_in(scene, mistake) {
-                    wrong.push(format!(
-                        "{}:{} {}: {} names {mistake}, which scene {scene} does not",
-                        expected.program.display(),
-                        expected.line_no,
-                        expected.flags.join(" "),
-                        line["id"]
-                    ));
-                }
+        let failing: Vec<Vec<Value>> = line["failures"]
+            .as_array()
+            .expect("failures")
+            .iter()
+            .map(|f| named_in(f["scene"].as_str().expect("scene")))
+            .collect();
+        let mistakes = line["mistakes"].as_array().expect("mistakes");
+        for mistake in mistakes {
+            let naming = failing
+                .iter()
+                .filter(|names| names.contains(mistake))
+                .count();
+            let said = line["explained"][mistake.as_str().unwrap_or_default()].as_u64();
+            if naming == 0 || said != Some(naming as u64) {
+                wrong.push(format!(
+                    "{build}: {} names {mistake} for {said:?} scenes; {naming} of its failing \
+                     scenes name it",
+                    line["id"]
+                ));
             }
+        }
+        let unexplained = failing
+            .iter()
+            .filter(|names| !mistakes.iter().any(|m| names.contains(m)))
+            .count();
+        if line["unexplained"].as_u64() != Some(unexplained as u64) {
+            wrong.push(format!(
+                "{build}: {} says {} unexplained, {unexplained} name none of its mistakes",
+                line["id"], line["unexplained"]
+            ));
         }
     }
     wrong
@@ -222,6 +242,37 @@ fn every_corpus_build_scores_what_its_header_expects_and_names_no_mistake_falsel
         })
         .collect();
     assert!(wrong.is_empty(), "{}", wrong.join("\n"));
+}
+
+#[test]
+fn a_line_names_each_mistake_with_the_scenes_it_explains() {
+    // Its culling switch inverts counter-clockwise culling and never culls clockwise: the
+    // culling line's four failing scenes are two of each; neither explains them all, and a
+    // line once named neither ("unexplained").
+    let dir = TempDir::new("grade_corpus_mixup");
+    let program = corpus().join("c_rowmajor.c");
+    let expected = expectations()
+        .into_iter()
+        .find(|e| e.program == program && e.flags == ["-DCULL_SWITCH_MIXUP"])
+        .expect("c_rowmajor's -DCULL_SWITCH_MIXUP build");
+    let grade = graded(&run_command(&expected, &dir), &dir);
+    let culling = grade["lines"]
+        .as_array()
+        .and_then(|lines| lines.iter().find(|l| l["id"] == "culling"))
+        .expect("the culling line");
+    assert_eq!(culling["explained"]["culling_inverted"], 2, "{culling:#}");
+    assert_eq!(culling["explained"]["never_culls"], 2, "{culling:#}");
+    assert_eq!(culling["unexplained"], 0, "{culling:#}");
+    let causes: Vec<&str> = grade["to_fix"]
+        .as_array()
+        .into_iter()
+        .flatten()
+        .filter_map(|bug| bug["cause"].as_str())
+        .collect();
+    assert!(
+        causes.iter().any(|c| c.contains("culling_inverted")),
+        "{causes:?}"
+    );
 }
 
 #[test]

@@ -421,7 +421,8 @@ fn the_report_says_what_the_sandbox_enforces() {
             "network",
             "signals",
             "unix sockets",
-            "namespaces"
+            "namespaces",
+            "processes"
         ]
     );
     let unsandboxed = run(&["--unsandboxed"]);

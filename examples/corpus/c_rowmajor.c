@@ -7,7 +7,9 @@
  *
  * Variants (compile-time): -DNEVER_CULLS its culling switch (a key in the real program) is never
  * set from the scene, so it never culls, while the trace declares the scene's culling; -DDROP_SMALL it skips triangles under 1 px^2 ("too small to
- * see"), a rule of its own.
+ * see"), a rule of its own; -DCULL_SWITCH_MIXUP the culling switch's cases are wired wrong: with
+ * counter-clockwise front faces it culls the front faces, with clockwise ones it never culls
+ * (one line of the rubric, two mistakes, each on the scenes of its front face).
  *
  * Lines ending in "[trace]" were added only to write the trace.
  *
@@ -19,9 +21,12 @@
  * expect knot_cw -DNEVER_CULLS: differs stage=culling names=never_culls
  * expect knot_small -DDROP_SMALL: differs stage=culling unexplained
  * expect knot_turned -DDROP_SMALL: differs stage=culling unexplained
+ * expect knot_turned -DCULL_SWITCH_MIXUP: differs stage=culling names=aspect_from_angles,culling_ignores_front_face,culling_inverted,divide_before_clip,fovs_swapped,no_clipping
+ * expect knot_cw -DCULL_SWITCH_MIXUP: differs stage=culling names=never_culls
  * expect-grade cube: 200
  * expect-grade cube -DNEVER_CULLS: culling=12 synchronized=23
  * expect-grade cube -DDROP_SMALL: synchronized=24
+ * expect-grade cube -DCULL_SWITCH_MIXUP: culling=12 synchronized=23
  */
 #define CLOSE2GL_TRACE_IMPLEMENTATION /* [trace] */
 #include "close2gl_trace.h"
@@ -158,7 +163,11 @@ int main(int argc, char **argv)
         }
         if (!drop) area = (win[2] - win[0]) * (win[5] - win[1]) - (win[4] - win[0]) * (win[3] - win[1]);
         /* y down: a triangle counter-clockwise on screen has a negative area in these numbers */
+#ifdef CULL_SWITCH_MIXUP
+        if (cull_enabled && (s.culling == C2G_CULL_CCW ? area <= 0 : 0)) drop = 1;
+#else
         if (cull_enabled && (s.culling == C2G_CULL_CCW ? area >= 0 : area <= 0)) drop = 1;
+#endif
 #ifdef DROP_SMALL
         if (fabs(area) / 2 < 1) drop = 1;
 #endif

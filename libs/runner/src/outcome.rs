@@ -72,6 +72,27 @@ impl Outcome {
         }
         reason
     }
+
+    /// How it ended without the times and its stderr ("timed out", "killed by SIGSEGV", with
+    /// what the sandbox denied it): the same words for every run that failed the same way, so
+    /// that a report can say it once.
+    pub fn in_brief(&self) -> String {
+        let brief = match &self.ended {
+            Ending::Exited(status) => format!("exited with status {status}"),
+            Ending::Signalled { name, .. } => format!("killed by {name}"),
+            Ending::TimedOut => "timed out".into(),
+            Ending::TooMuchDisk => "its directory grew past the disk limit".into(),
+            Ending::TooManyProcesses(limit) => {
+                format!("it made more than {limit} processes at once")
+            }
+            Ending::Interrupted => "grading was interrupted".into(),
+            Ending::CouldNotStart(why) => format!("could not start: {why}"),
+        };
+        match &self.denied {
+            Some(denied) => format!("{brief}; the sandbox stopped it: {}", printable(denied)),
+            None => brief,
+        }
+    }
 }
 
 /// Seconds for a report: two decimals under a second ("0.12"), otherwise one, without a
@@ -151,6 +172,20 @@ mod tests {
         assert_eq!(
             outcome(Ending::Exited(3), 5, b"").reason(),
             "exited with status 3"
+        );
+    }
+
+    #[test]
+    fn in_brief_leaves_out_the_times_and_stderr() {
+        let late = outcome(Ending::TimedOut, 3_020, b"waiting\n");
+        let later = outcome(Ending::TimedOut, 3_100, b"still waiting\n");
+        assert_eq!(late.in_brief(), "timed out");
+        assert_eq!(late.in_brief(), later.in_brief());
+        let bomb = outcome(Ending::TooManyProcesses(256), 50, b"");
+        assert_eq!(bomb.in_brief(), "it made more than 256 processes at once");
+        assert_eq!(
+            bomb.reason(),
+            "killed after 0.05 s: it made more than 256 processes at once"
         );
     }
 

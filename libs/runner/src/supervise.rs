@@ -82,6 +82,10 @@ fn watch(
 ) -> (Ending, Duration) {
     let (dir, limits) = (watched.dir, watched.limits);
     let mut checked = Instant::now() - TICK;
+    let too_many_processes = || {
+        let size = proc_table::tree_size(registration.pid(), watched.processes);
+        (size > watched.processes).then_some(Ending::TooManyProcesses(limits.processes))
+    };
     let mut over_a_limit = || {
         // A chatty program wakes the watcher often: the directory and the process tree are
         // walked once a tick.
@@ -89,10 +93,8 @@ fn watch(
             return None;
         }
         checked = Instant::now();
-        if proc_table::tree_size(registration.pid(), watched.processes) > watched.processes {
-            return Some(Ending::TooManyProcesses(limits.processes));
-        }
-        disk::exceeds(dir, limits.disk).then_some(Ending::TooMuchDisk)
+        too_many_processes()
+            .or_else(|| disk::exceeds(dir, limits.disk).then_some(Ending::TooMuchDisk))
     };
     loop {
         output.pump(TICK);
@@ -108,7 +110,9 @@ fn watch(
                 return (ended, elapsed);
             }
             Ok(None) if interrupted() => Ending::Interrupted,
-            Ok(None) if elapsed >= limits.time => Ending::TimedOut,
+            // A fork bomb held at the kernel's limit starves the watcher on a small machine:
+            // it may first be seen when its time is up, and that is still why it failed.
+            Ok(None) if elapsed >= limits.time => too_many_processes().unwrap_or(Ending::TimedOut),
             Ok(None) => match over_a_limit() {
                 Some(ending) => ending,
                 None => continue,

@@ -27,7 +27,7 @@ pub use names::{CLIPPINGS, CULLINGS, clipping_name, culling_name};
 pub use output::{ClipLine, Piece};
 pub use scene::{Motion, SceneCamera, SceneFile, parse_scene, read_scene};
 pub use syntax::FormatError;
-pub use trace::{Trace, parse_trace, read_trace};
+pub use trace::{Trace, parse_trace, parse_trace_bytes, read_trace};
 
 /// The most `clip`, `tri` and `poly` lines one trace may hold, together: a mesh of millions of
 /// triangles fits, and a hostile file cannot make the values outgrow memory.

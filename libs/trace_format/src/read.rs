@@ -31,14 +31,19 @@ pub(crate) fn text(path: &Path) -> Result<(String, String), FormatError> {
     if bytes.len() as u64 > MAX_FILE_BYTES {
         return Err(too_big("more"));
     }
+    Ok((decode(bytes, &file)?, file))
+}
+
+/// `bytes` as text, or the line of the first byte that is not UTF-8; `file` labels the error.
+pub(crate) fn decode(bytes: Vec<u8>, file: &str) -> Result<String, FormatError> {
     match String::from_utf8(bytes) {
-        Ok(text) => Ok((text, file)),
+        Ok(text) => Ok(text),
         Err(e) => {
             let at = e.utf8_error().valid_up_to();
             let bytes = e.as_bytes();
             let line = 1 + bytes[..at].iter().filter(|&&b| b == b'\n').count();
             let message = format!("expected UTF-8 text, found the byte 0x{:02x}", bytes[at]);
-            Err(FormatError::new(&file, line, message))
+            Err(FormatError::new(file, line, message))
         }
     }
 }

@@ -72,6 +72,12 @@ pub fn read_trace(path: &Path) -> Result<Trace, FormatError> {
     parse_trace(&text, &file)
 }
 
+/// Reads a trace from the bytes of a file (read by the caller: a program's, read only as its
+/// own); `file` labels its errors.
+pub fn parse_trace_bytes(bytes: Vec<u8>, file: &str) -> Result<Trace, FormatError> {
+    parse_trace(&read::decode(bytes, file)?, file)
+}
+
 /// [`parse_trace`] with `limit` in place of [`MAX_RECORDS`], so that a test can reach it.
 pub(crate) fn parse_limited(text: &str, file: &str, limit: usize) -> Result<Trace, FormatError> {
     let mut lines = records(text, file);

@@ -31,7 +31,7 @@ use super::CliError;
 use close2gl_app::progress_bar::TerminalProgress;
 use graded::Grade;
 use sandboxing::Sandboxing;
-use scene_run::SceneResult;
+use scene_run::{RunFailure, SceneResult};
 
 #[derive(clap::Args, Debug)]
 pub struct GradeArgs {
@@ -188,7 +188,7 @@ fn run_tasks(
                         let run = scene_run::Run::new(plan.words, dir, &plan.limits, &sandbox);
                         scene_run::run_scene(&run, model, scene)
                     }))
-                    .unwrap_or_else(|_| SceneResult::failed(scene, BUG.into()));
+                    .unwrap_or_else(|_| SceneResult::failed(scene, RunFailure::plain(BUG.into())));
                     let i = task.submission * rubric.scenes.len() + task.scene;
                     *lock(&slots[i]) = Some(result);
                     let finished = done.fetch_add(1, Ordering::Relaxed) + 1;

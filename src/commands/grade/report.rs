@@ -1,6 +1,7 @@
 //! The grade for a person (the rubric as a table on the terminal) and for a script (one JSON
 //! object whose keys and line ids are binding: `total`, `max`, `lines` with `id`, `points`,
-//! `max`, `scenes`, `passed`, `mistakes`, `failures`; `scenes`; `sandbox` with `enforced`,
+//! `max`, `scenes`, `passed`, `mistakes` (the most explaining first), `explained` (each one's
+//! failing scenes), `unexplained`, `failures`; `scenes`; `sandbox` with `enforced`,
 //! `landlock_abi`, `protections`, `summary`).
 
 use std::fmt::Write;
@@ -63,7 +64,7 @@ pub fn failure_lines(grade: &Grade, line: &LineScore) -> Vec<String> {
         lines.push(format!("  check's first difference: {difference}"));
     }
     if !line.mistakes.is_empty() {
-        lines.push(format!("  mistake named: {}", line.mistakes.join(", ")));
+        lines.push(format!("  mistakes named: {}", line.mistakes_in_words()));
     }
     lines
 }
@@ -96,13 +97,21 @@ fn line_json(grade: &Grade, line: &LineScore) -> Value {
         .iter()
         .map(|(i, why)| json!({"scene": grade.scenes[*i].id, "reason": why}))
         .collect();
+    let names: Vec<&str> = line.mistakes.iter().map(|m| m.name).collect();
+    let explained: serde_json::Map<String, Value> = line
+        .mistakes
+        .iter()
+        .map(|m| (m.name.to_string(), json!(m.scenes)))
+        .collect();
     json!({
         "id": line.line.id(),
         "points": line.points,
         "max": line.line.max_points(),
         "scenes": line.scenes,
         "passed": line.passed,
-        "mistakes": line.mistakes,
+        "mistakes": names,
+        "explained": explained,
+        "unexplained": line.unexplained,
         "failures": failures,
         "accepted": line.notes,
     })
@@ -124,7 +133,7 @@ fn scene_json(scene: &SceneResult) -> Value {
     json!({
         "id": scene.id,
         "lines": verdicts,
-        "run_failure": scene.run_failure,
+        "run_failure": scene.run_failure.as_ref().map(|f| &f.reason),
         "first_difference": evidence.and_then(|e| e.first_difference.clone()),
         "mistakes": evidence.map_or(Vec::new(), |e| e.mistakes.clone()),
     })

@@ -8,10 +8,13 @@ use std::path::Path;
 
 use close2gl_check::rubric::{self, Judged, LineId, RubricScene, Verdict};
 use close2gl_check::{self as check, Report, picture, report};
-use close2gl_runner::{Ending, Limits, Sandbox, Workspace};
-use close2gl_trace_format::{Trace, read_trace};
+use close2gl_runner::{Ending, Limits, NotItsOwn, Sandbox, Workspace};
+use close2gl_trace_format::{Trace, parse_trace_bytes};
 
 use super::Model;
+
+/// The trace's name in the run's directory (`{trace}`).
+const TRACE: &str = "trace.txt";
 
 /// What one scene showed.
 pub struct SceneResult {
@@ -20,9 +23,29 @@ pub struct SceneResult {
     /// Each line the scene counts for, judged.
     pub verdicts: Vec<(LineId, Verdict)>,
     /// Why the run itself failed (then every line failed with it).
-    pub run_failure: Option<String>,
+    pub run_failure: Option<RunFailure>,
     /// Check's evidence, for a scene whose trace differs from close2gl or failed a line.
     pub evidence: Option<Evidence>,
+}
+
+/// Why a run failed before its trace could be judged.
+pub struct RunFailure {
+    /// The words every run that failed the same way shares ("timed out", "its trace is a link
+    /// to /proc/self/environ, not a file it wrote"): one bug in the report, however many
+    /// scenes and lines it cost.
+    pub cause: String,
+    /// The whole reason this scene shows, with its times and the program's last words.
+    pub reason: String,
+}
+
+impl RunFailure {
+    /// A failure whose reason is its cause.
+    pub fn plain(why: String) -> Self {
+        Self {
+            cause: why.clone(),
+            reason: why,
+        }
+    }
 }
 
 /// What check found in a trace the report shows.
@@ -39,17 +62,17 @@ pub struct Evidence {
 }
 
 impl SceneResult {
-    /// A scene that could not be judged: every line it counts for fails with `why`.
-    pub fn failed(scene: &RubricScene, why: String) -> Self {
+    /// A scene that could not be judged: every line it counts for fails with its reason.
+    pub fn failed(scene: &RubricScene, failure: RunFailure) -> Self {
         Self {
             id: scene.id.clone(),
             scene_text: scene.scene.to_text(),
             verdicts: scene
                 .lines
                 .iter()
-                .map(|&line| (line, Verdict::fail(why.clone())))
+                .map(|&line| (line, Verdict::fail(failure.reason.clone())))
                 .collect(),
-            run_failure: Some(why),
+            run_failure: Some(failure),
             evidence: None,
         }
     }
@@ -91,14 +114,16 @@ impl<'a> Run<'a> {
 /// Runs the program on `scene`.
 pub fn run_scene(run: &Run, model: &Model, scene: &RubricScene) -> SceneResult {
     let scene_text = scene.scene.to_text();
-    let failed = |why: String| SceneResult::failed(scene, why);
     let trace = match run_program(run, model, &scene_text) {
         Ok(trace) => trace,
-        Err(why) => return failed(why),
+        Err(failure) => return SceneResult::failed(scene, failure),
     };
     let mut report = match check::compare_only(&model.mesh, &trace) {
         Ok(report) => report,
-        Err(e) => return failed(format!("its trace does not fit the model: {}", e.message)),
+        Err(e) => {
+            let why = format!("its trace does not fit the model: {}", e.message);
+            return SceneResult::failed(scene, RunFailure::plain(why));
+        }
     };
     let verdicts = rubric::judge(scene, &model.mesh, &trace, &report);
     let evidence = (!report.agrees() || verdicts.iter().any(|(_, v)| !v.passed)).then(|| {
@@ -116,14 +141,16 @@ pub fn run_scene(run: &Run, model: &Model, scene: &RubricScene) -> SceneResult {
 
 /// The program run in a fresh directory holding `scene.txt` and the model; its trace, or why
 /// there is none. The directory is gone when this returns.
-fn run_program(run: &Run, model: &Model, scene_text: &str) -> Result<Trace, String> {
-    let workspace = Workspace::new().map_err(|e| format!("could not make its directory: {e}"))?;
+fn run_program(run: &Run, model: &Model, scene_text: &str) -> Result<Trace, RunFailure> {
+    let workspace = Workspace::new()
+        .map_err(|e| RunFailure::plain(format!("could not make its directory: {e}")))?;
     let (scene, trace) = (
         workspace.path().join("scene.txt"),
-        workspace.path().join("trace.txt"),
+        workspace.path().join(TRACE),
     );
     let write = |path: &Path, bytes: &[u8]| {
-        std::fs::write(path, bytes).map_err(|e| format!("could not write {}: {e}", path.display()))
+        std::fs::write(path, bytes)
+            .map_err(|e| RunFailure::plain(format!("could not write {}: {e}", path.display())))
     };
     write(&workspace.path().join(&model.file_name), &model.bytes)?;
     write(&scene, scene_text.as_bytes())?;
@@ -138,14 +165,26 @@ fn run_program(run: &Run, model: &Model, scene_text: &str) -> Result<Trace, Stri
     let command = close2gl_runner::substitute(run.words, &values);
     let outcome = close2gl_runner::run(&command, workspace.path(), run.limits, run.sandbox);
     if outcome.ended != Ending::Exited(0) {
-        return Err(outcome.reason());
+        return Err(RunFailure {
+            cause: outcome.in_brief(),
+            reason: outcome.reason(),
+        });
     }
-    if !trace.is_file() {
-        return Err(format!("it wrote no trace ({})", outcome.reason()));
-    }
-    read_trace(&trace).map_err(|mut e| {
-        e.file = "its trace".into();
-        format!("{e}")
+    // Read as the program's own: never through a link it made (to the grader's environment, a
+    // classmate's file), never a FIFO or a device. What it was is said; nothing of it quoted.
+    let bytes = match workspace.read_own(TRACE, run.limits.file_size) {
+        Ok(bytes) => bytes,
+        Err(NotItsOwn::Missing) => {
+            return Err(RunFailure {
+                cause: "it wrote no trace".into(),
+                reason: format!("it wrote no trace ({})", outcome.reason()),
+            });
+        }
+        Err(not_its_own) => return Err(RunFailure::plain(not_its_own.describe("its trace"))),
+    };
+    parse_trace_bytes(bytes, "its trace").map_err(|e| RunFailure {
+        cause: "it wrote a trace close2gl cannot read".into(),
+        reason: format!("{e}"),
     })
 }
 

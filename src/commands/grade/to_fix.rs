@@ -42,17 +42,24 @@ pub fn bugs(grade: &Grade) -> Vec<Bug> {
     bugs
 }
 
-/// Why `line` failed, as the key lines of one bug share. Without a named mistake, the stage
-/// where check first finds the program different in the line's first failing scene: a later
-/// stage's difference, and each line's own wording of it ("drew nothing where its clip
-/// coordinates show 12", "nothing wide in NDC"), may follow from that one, and the earliest is
-/// what to fix first. A scene check could not compare (the run failed) gives its reason.
+/// Why `line` failed, as the key lines of one bug share. When every failing scene's run
+/// failed (it timed out, crashed, wrote no trace, made too many processes), the way most of
+/// them failed is the cause: one bug, however many lines it cost. Then the mistakes that explain the most
+/// of its failing scenes. Without a named mistake, the stage where check first finds the
+/// program different in the line's first failing scene: a later stage's difference, and each
+/// line's own wording of it ("drew nothing where its clip coordinates show 12", "nothing wide
+/// in NDC"), may follow from that one, and the earliest is what to fix first.
 fn cause(grade: &Grade, line: &LineScore) -> (String, Option<String>) {
-    if !line.mistakes.is_empty() {
-        return (line.mistakes.join(" or "), None);
+    if let Some(cause) = run_failure_cause(grade, line) {
+        return (cause.to_string(), None);
     }
-    let (scene, why) = &line.failures[0];
-    let evidence = grade.scenes[*scene].evidence.as_ref();
+    let leading = line.leading_mistakes();
+    if !leading.is_empty() {
+        return (leading.join(" or "), None);
+    }
+    let (first_scene, why) = &line.failures[0];
+    let scene = &grade.scenes[*first_scene];
+    let evidence = scene.evidence.as_ref();
     match evidence.and_then(|e| e.first_difference.as_ref()) {
         Some(difference) => {
             let stage = difference.split(':').next().unwrap_or(difference);
@@ -60,10 +67,31 @@ fn cause(grade: &Grade, line: &LineScore) -> (String, Option<String>) {
             (cause, Some(difference.clone()))
         }
         None => {
-            let first = why.lines().next().unwrap_or("");
+            let first = match &scene.run_failure {
+                Some(failure) => failure.cause.as_str(),
+                None => why.lines().next().unwrap_or(""),
+            };
             (format!("unexplained: {first}"), None)
         }
     }
+}
+
+/// The way most of `line`'s failing scenes failed to run (the first met of those as many),
+/// when every one of them failed to run.
+fn run_failure_cause<'a>(grade: &'a Grade, line: &LineScore) -> Option<&'a str> {
+    let mut causes: Vec<(&str, usize)> = Vec::new();
+    for (scene, _) in &line.failures {
+        let cause = grade.scenes[*scene].run_failure.as_ref()?.cause.as_str();
+        match causes.iter_mut().find(|(c, _)| *c == cause) {
+            Some((_, count)) => *count += 1,
+            None => causes.push((cause, 1)),
+        }
+    }
+    let most = causes.iter().map(|&(_, count)| count).max()?;
+    causes
+        .into_iter()
+        .find(|&(_, count)| count == most)
+        .map(|(cause, _)| cause)
 }
 
 /// The bugs as lines of text: "1. never_culls: culling (-20), first in culling_inside".

@@ -14,4 +14,4 @@ pub mod score;
 pub use judge::{Turn, Verdict, judge};
 pub use lines::{LineId, MAX_TOTAL};
 pub use scenes::{RubricScene, scenes};
-pub use score::{Judged, LineScore, Score};
+pub use score::{Judged, LineScore, NamedMistake, Score};

@@ -14,16 +14,24 @@ pub struct Judged<'a> {
     pub mistakes: &'a [&'static str],
 }
 
+/// A mistake a line names, and how many of its failing scenes it explains.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct NamedMistake {
+    pub name: &'static str,
+    pub scenes: usize,
+}
+
 /// One line's score.
 pub struct LineScore {
     pub line: LineId,
     pub points: u32,
     pub scenes: usize,
     pub passed: usize,
-    /// The catalogue mistakes of the line's stage check named in every one of its failing
-    /// scenes (a scene names all those it cannot tell apart; across scenes only the
-    /// explanation of them all stays).
-    pub mistakes: Vec<&'static str>,
+    /// The catalogue mistakes of the line's stage check named in some of its failing scenes,
+    /// each with how many, the most first (a scene names all those it cannot tell apart).
+    pub mistakes: Vec<NamedMistake>,
+    /// Failing scenes that name none of them.
+    pub unexplained: usize,
     /// The failing scenes (indices into the scenes scored) with why each failed the line.
     pub failures: Vec<(usize, String)>,
     /// What its passing scenes had to say ("an arc around the look-at point"), each once.
@@ -58,6 +66,7 @@ fn score(line: LineId, scenes: &[Judged]) -> LineScore {
         scenes: 0,
         passed: 0,
         mistakes: Vec::new(),
+        unexplained: 0,
         failures: Vec::new(),
         notes: Vec::new(),
     };
@@ -75,32 +84,69 @@ fn score(line: LineId, scenes: &[Judged]) -> LineScore {
         }
         score.failures.push((i, verdict.detail.clone()));
     }
-    let failing = score.failures.iter().map(|(i, _)| scenes[*i].mistakes);
-    score.mistakes = consistent_mistakes(failing, line);
+    let failing: Vec<_> = score
+        .failures
+        .iter()
+        .map(|(i, _)| scenes[*i].mistakes)
+        .collect();
+    (score.mistakes, score.unexplained) = named_mistakes(&failing, line);
     score.points = line.points(score.passed, score.scenes);
     score
 }
 
-/// The mistakes of the line's stage named in every failing scene. A scene no mistake
-/// explains leaves none: a mistake that explains only some of a line's failures is not what
-/// cost the line (each scene's own names stay in its evidence).
-fn consistent_mistakes<'a>(
-    mut scenes: impl Iterator<Item = &'a [&'static str]>,
-    line: LineId,
-) -> Vec<&'static str> {
-    let named = |mistakes: &[&'static str]| -> Vec<&'static str> {
-        let of_stage = |name: &&'static str| {
-            line.stage_mistakes()
-                .is_none_or(|stage| stage.iter().any(|m| m.name() == *name))
-        };
-        mistakes.iter().copied().filter(of_stage).collect()
+impl LineScore {
+    /// The mistakes named, in a report's words: "culling_inverted: 12 of 16 failing scenes;
+    /// 4 unexplained"; empty when none is.
+    pub fn mistakes_in_words(&self) -> String {
+        let failing = self.failures.len();
+        let mut parts: Vec<String> = self
+            .mistakes
+            .iter()
+            .map(|m| format!("{}: {} of {failing} failing scenes", m.name, m.scenes))
+            .collect();
+        if !parts.is_empty() && self.unexplained > 0 {
+            parts.push(format!("{} unexplained", self.unexplained));
+        }
+        parts.join("; ")
+    }
+
+    /// The mistakes that explain the most failing scenes (several when as many), when they
+    /// explain at least half of them: what to fix first for this line. None when no mistake
+    /// explains that many: a mistake that fits a few scenes of a program that goes wrong
+    /// everywhere (one that draws nothing looks like inverted culling on some frames) is not
+    /// its cause.
+    pub fn leading_mistakes(&self) -> Vec<&'static str> {
+        let most = self.mistakes.first().map_or(0, |m| m.scenes);
+        if most == 0 || 2 * most < self.failures.len() {
+            return Vec::new();
+        }
+        let leading = self.mistakes.iter().take_while(|m| m.scenes == most);
+        leading.map(|m| m.name).collect()
+    }
+}
+
+/// Each mistake of the line's stage named in some failing scene, with how many it explains
+/// (the most first, then in the order met), and how many failing scenes name none. A mistake
+/// no failing scene names is never named: it did not cost the line.
+fn named_mistakes(scenes: &[&[&'static str]], line: LineId) -> (Vec<NamedMistake>, usize) {
+    let of_stage = |name: &&'static str| {
+        line.stage_mistakes()
+            .is_none_or(|stage| stage.iter().any(|m| m.name() == *name))
     };
-    let Some(first) = scenes.next() else {
-        return Vec::new();
-    };
-    scenes.fold(named(first), |mut everywhere, scene| {
-        let here = named(scene);
-        everywhere.retain(|m| here.contains(m));
-        everywhere
-    })
+    let mut named: Vec<NamedMistake> = Vec::new();
+    let mut unexplained = 0;
+    for scene in scenes {
+        let mut explained = false;
+        for name in scene.iter().copied().filter(of_stage) {
+            explained = true;
+            match named.iter_mut().find(|m| m.name == name) {
+                Some(mistake) => mistake.scenes += 1,
+                None => named.push(NamedMistake { name, scenes: 1 }),
+            }
+        }
+        unexplained += usize::from(!explained);
+    }
+    // Stable: ties keep the order in which the scenes met them.
+    named.sort_by_key(|m| std::cmp::Reverse(m.scenes));
+    (named, unexplained)
 }

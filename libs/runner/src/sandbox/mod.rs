@@ -94,11 +94,12 @@ impl Prepared {
         let ruleset = ruleset::make(&read, dir)?;
         let mut allowed = read;
         allowed.push(dir.to_path_buf());
-        // The relay and the init above the program count in its namespace too; and one more
-        // than the limit, so that the watcher sees a bomb pass it (`supervise`).
+        // The relay and the init above the program count in its namespace too, and so does a
+        // process until it is reaped; a few more, so that a bomb held by the kernel is always
+        // seen past the limit by the watcher (`supervise`).
         let process_limit = protections
             .process_count_per_namespace()
-            .then_some(u64::from(processes) + 3);
+            .then_some(u64::from(processes) + 8);
         // SAFETY: getuid has no preconditions.
         let root = unsafe { libc::getuid() } == 0;
         Ok(Self {
