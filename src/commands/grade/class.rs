@@ -1,22 +1,26 @@
 //! `--submissions DIR`: every folder in DIR graded (`{dir}` in the command is that folder), all
-//! their scenes sharing the jobs, then `DIR/grades.csv` (one row per submission in name order:
-//! each line's points and the total, in the rubric's order) and `DIR/NAME.html` for each.
+//! their scenes sharing the jobs, then `DIR/grades.csv` (one row per submission in name order,
+//! in the gradebook format `--csv-format` asks: `gradebook`) and `DIR/NAME.html` for each.
 //! Nothing in the CSV depends on timing or order of work: the same submissions give the same
 //! file.
 
-use std::fmt::Write;
 use std::path::{Path, PathBuf};
 
-use close2gl_check::rubric::{LineId, MAX_TOTAL};
+use close2gl_check::rubric::MAX_TOTAL;
 
 use super::graded::Grade;
-use super::{CliError, GradeArgs, Plan, html, run_tasks};
+use super::{CliError, GradeArgs, Plan, gradebook, html, run_tasks};
 
 pub(super) fn grade_class(dir: &Path, args: &GradeArgs, plan: &Plan) -> Result<(), CliError> {
-    if args.html.is_some() || args.json {
+    if args.html.is_some()
+        || args.json
+        || args.line.is_some()
+        || args.gradescope.is_some()
+        || args.classroom
+    {
         return Err(CliError::Input(
             "--submissions writes grades.csv and one HTML page per submission: \
-             --html and --json are for one program"
+             --html, --json, --line, --gradescope and --classroom are for one program"
                 .into(),
         ));
     }
@@ -26,6 +30,15 @@ pub(super) fn grade_class(dir: &Path, args: &GradeArgs, plan: &Plan) -> Result<(
             "{}: expected a folder per submission, found none",
             dir.display()
         )));
+    }
+    let students = match &args.students {
+        Some(path) => gradebook::read_students(path)?,
+        None => Default::default(),
+    };
+    for (folder, _) in &submissions {
+        if args.students.is_some() && !students.contains_key(folder) {
+            eprintln!("warning: {folder} is not in --students: its folder's name stands for it");
+        }
     }
     let dirs: Vec<Option<PathBuf>> = submissions.iter().map(|(_, p)| Some(p.clone())).collect();
     let label = format!(
@@ -47,7 +60,14 @@ pub(super) fn grade_class(dir: &Path, args: &GradeArgs, plan: &Plan) -> Result<(
             html::page(grade, name, &args.run, &plan.sandboxing),
         )?;
     }
-    write(dir.join("grades.csv"), csv(&submissions, &grades))?;
+    let csv = gradebook::csv(
+        args.csv_format,
+        &submissions,
+        &grades,
+        &students,
+        &args.assignment,
+    );
+    write(dir.join("grades.csv"), csv)?;
     println!("{}", plan.sandboxing.summary());
     for ((name, _), grade) in submissions.iter().zip(&grades) {
         println!("{name}: {}/{MAX_TOTAL}", grade.total);
@@ -74,29 +94,4 @@ fn folders(dir: &Path) -> Result<Vec<(String, PathBuf)>, CliError> {
         .collect();
     folders.sort();
     Ok(folders)
-}
-
-fn csv(submissions: &[(String, PathBuf)], grades: &[Grade]) -> String {
-    let mut out = String::from("submission");
-    for line in LineId::ALL {
-        out.push(',');
-        out.push_str(line.id());
-    }
-    out.push_str(",total\n");
-    for ((name, _), grade) in submissions.iter().zip(grades) {
-        out.push_str(&field(name));
-        for line in &grade.lines {
-            let _ = write!(out, ",{}", line.points);
-        }
-        let _ = writeln!(out, ",{}", grade.total);
-    }
-    out
-}
-
-/// A CSV field, quoted when it holds a comma, a quote or a line break (RFC 4180).
-fn field(text: &str) -> String {
-    match text.contains([',', '"', '\n', '\r']) {
-        true => format!("\"{}\"", text.replace('"', "\"\"")),
-        false => text.to_string(),
-    }
 }

@@ -6,12 +6,15 @@
 //! `scene_run.rs` one scene through the runner and the judges; `graded.rs` the scenes' results
 //! with the rubric's lines scored on them (the scoring is check's `rubric::score`);
 //! `report.rs` the terminal table and the JSON; `html.rs` the page;
-//! `class.rs` a folder of submissions and its CSV; `sandboxing.rs` the sandbox each run is in,
-//! and what every report says of it.
+//! `class.rs` a folder of submissions, with `gradebook.rs` its CSV for a gradebook;
+//! `platforms.rs` one grade as Gradescope and GitHub Classroom read it; `sandboxing.rs` the
+//! sandbox each run is in, and what every report says of it.
 
 mod class;
+mod gradebook;
 mod graded;
 mod html;
+mod platforms;
 mod report;
 mod sandboxing;
 mod scene_run;
@@ -23,7 +26,7 @@ use std::sync::Mutex;
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::time::Duration;
 
-use close2gl_check::rubric::{self, RubricScene};
+use close2gl_check::rubric::{self, LineId, RubricScene};
 use close2gl_core::{Mesh, ModelSource, PrimitiveParams};
 use close2gl_runner::Limits;
 
@@ -66,6 +69,33 @@ pub struct GradeArgs {
     /// 5.13, WSL1), where grade otherwise refuses. Only for programs you trust.
     #[arg(long)]
     pub unsandboxed: bool,
+    /// Grade one rubric line only (its id, as --json names it: culling, hfov, ...): its scenes
+    /// alone, one line of summary, exit status 1 when it lost points (a CI step's pass/fail).
+    #[arg(long, value_name = "ID")]
+    pub line: Option<String>,
+    /// Also write Gradescope's results.json into DIR (default /autograder/results).
+    #[arg(long, value_name = "DIR", num_args = 0..=1,
+          default_missing_value = "/autograder/results")]
+    pub gradescope: Option<PathBuf>,
+    /// Who sees, on Gradescope, the scenes' exact numbers (why each scene failed, the scene
+    /// files): the answer key. A line's points, scenes passed and mistakes are always visible.
+    #[arg(long, value_name = "VISIBILITY", default_value = "hidden")]
+    pub details: platforms::Visibility,
+    /// Also write GitHub Classroom's grading-reporter result (partial credit, a test per line)
+    /// to $GITHUB_OUTPUT as `result=`.
+    #[arg(long)]
+    pub classroom: bool,
+    /// With --submissions, the gradebook grades.csv is for: plain (ours), moodle or canvas.
+    #[arg(long, value_name = "FORMAT", default_value = "plain")]
+    pub csv_format: gradebook::CsvFormat,
+    /// With --submissions, who each folder is in the gradebook: a CSV of
+    /// `folder,identifier[,name]` rows (otherwise the folder's name).
+    #[arg(long, value_name = "FILE")]
+    pub students: Option<PathBuf>,
+    /// With --csv-format canvas, the assignment's column as Canvas exported it
+    /// ("Close2GL (12345)").
+    #[arg(long, value_name = "NAME", default_value = "close2gl")]
+    pub assignment: String,
 }
 
 /// A model the rubric's scenes are made on: its file (copied beside each scene, so that a
@@ -104,9 +134,19 @@ struct Task {
     scene: usize,
 }
 
-/// Exit 0 once graded (the grade is the answer), 2 for bad input, 130 when interrupted.
+/// Exit 0 once graded (the grade is the answer; with --line, 1 when the line lost points), 2
+/// for bad input, 130 when interrupted.
 pub fn run(args: GradeArgs) -> Result<(), CliError> {
-    let words = close2gl_runner::split_words(&args.run).map_err(CliError::Input)?;
+    let mut words = close2gl_runner::split_words(&args.run).map_err(CliError::Input)?;
+    // `./pipeline` means the one here, not one in each run's fresh directory.
+    if let Some(program) = words.first_mut()
+        && program.contains('/')
+        && !program.starts_with('/')
+        && !program.starts_with('{')
+        && let Ok(absolute) = std::path::absolute(&*program)
+    {
+        *program = absolute.display().to_string();
+    }
     if !(args.time_limit > 0.0 && args.time_limit <= 86_400.0) {
         return Err(CliError::Input(format!(
             "--time-limit: expected seconds in (0, 86400], found {}",
@@ -123,7 +163,16 @@ pub fn run(args: GradeArgs) -> Result<(), CliError> {
         None => std::thread::available_parallelism().map_or(1, |n| n.get()),
     };
     let sandboxing = Sandboxing::new(args.unsandboxed, &args.allow_read)?;
-    let rubric = load_rubric(&args.models)?;
+    let mut rubric = load_rubric(&args.models)?;
+    if let Some(id) = &args.line {
+        let line = LineId::ALL.iter().find(|l| l.id() == id).ok_or_else(|| {
+            let ids: Vec<&str> = LineId::ALL.iter().map(|l| l.id()).collect();
+            CliError::Input(format!("--line {id}: expected one of {}", ids.join(", ")))
+        })?;
+        rubric
+            .scenes
+            .retain(|(_, scene)| scene.lines.contains(line));
+    }
     let plan = Plan {
         words: &words,
         rubric: &rubric,
@@ -143,18 +192,42 @@ pub fn run(args: GradeArgs) -> Result<(), CliError> {
 fn grade_one(args: &GradeArgs, plan: &Plan) -> Result<(), CliError> {
     let label = format!("grading {} scenes", plan.rubric.scenes.len());
     eprintln!("{}", plan.sandboxing.banner(plan.words, false));
+    let started = std::time::Instant::now();
     let mut results = run_tasks(plan, &[None], label)?;
     let grade = Grade::new(results.remove(0));
+    let only = args.line.as_deref();
+    if let Some(dir) = &args.gradescope {
+        let results = platforms::gradescope(&grade, only, args.details, started.elapsed());
+        platforms::write_gradescope(dir, &results)?;
+    }
+    if args.classroom {
+        platforms::write_classroom(&platforms::classroom(&grade, only))?;
+    }
     if let Some(path) = &args.html {
         let page = html::page(&grade, "close2gl grade", &args.run, &plan.sandboxing);
         std::fs::write(path, page)
             .map_err(|e| CliError::Runtime(format!("{}: cannot write: {e}", path.display())))?;
     }
-    match args.json {
-        true => println!("{}", report::json(&grade, &plan.sandboxing)),
-        false => print!("{}", report::table(&grade, &args.run, &plan.sandboxing)),
+    // What the student's log shows (a CI step) holds no scene's numbers.
+    match (only, args.classroom, args.json) {
+        (Some(id), _, _) => return line_only(&grade, id),
+        (None, true, _) => print!("{}", platforms::student_table(&grade, None)),
+        (None, false, true) => println!("{}", report::json(&grade, &plan.sandboxing)),
+        (None, false, false) => print!("{}", report::table(&grade, &args.run, &plan.sandboxing)),
     }
     Ok(())
+}
+
+/// `--line`: its one line of summary; exit 1 when it lost points.
+fn line_only(grade: &Grade, id: &str) -> Result<(), CliError> {
+    let Some(line) = grade.lines.iter().find(|l| l.line.id() == id) else {
+        return Ok(());
+    };
+    println!("{}", platforms::summary(line));
+    match line.points == line.line.max_points() {
+        true => Ok(()),
+        false => Err(CliError::Verdict),
+    }
 }
 
 /// Runs every scene for every submission (`dirs`: each one's folder for `{dir}`, `None` for a
