@@ -229,6 +229,26 @@ fn a_hostile_class_leaks_nothing_leaves_nothing_and_does_not_stall() {
             hostile.name
         );
     }
+    // One program alone, as JSON: the same words, nothing of the target.
+    let environ = class.join("environ/prog");
+    let json = Command::new(env!("CARGO_BIN_EXE_close2gl"))
+        .args(["grade", "--json", "--jobs", "2", "--time-limit", "3"])
+        .args(["--model", &asset("cube.in").display().to_string()])
+        .arg("--run")
+        .arg(format!("'{}' {{scene}} {{trace}}", environ.display()))
+        .env("TMPDIR", &tmp)
+        .env("GRADER_TOKEN", TOKEN)
+        .output()
+        .expect("grade --json");
+    let json = String::from_utf8_lossy(&json.stdout);
+    assert!(
+        json.contains("its trace is a link to /proc/self/environ"),
+        "{json}"
+    );
+    assert!(
+        !json.contains(TOKEN) && !json.contains("GRADER_TOKEN"),
+        "{json}"
+    );
     assert!(
         home.join("answer-key.txt").exists(),
         "a file behind a link was removed"
