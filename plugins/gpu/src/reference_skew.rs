@@ -7,6 +7,7 @@
 
 use bevy_ecs::prelude::*;
 use close2gl_core::Appearance;
+use close2gl_core::parity::to_rgb8;
 use glam::Vec3;
 
 /// Steps of 1/255 added to each channel of the reference view's colours (none by default).
@@ -20,12 +21,8 @@ pub struct ReferenceSkew {
 }
 
 impl ReferenceSkew {
-    /// The appearance the reference draws with: `look`, its two colours moved by the skew and
-    /// kept in 0..1.
+    /// The appearance the reference draws with: `look`, its two colours moved by the skew.
     pub(crate) fn apply(self, look: Appearance) -> Appearance {
-        let moved = |c: Vec3, steps: i32| {
-            (c + Vec3::splat(steps as f32 / 255.0)).clamp(Vec3::ZERO, Vec3::ONE)
-        };
         Appearance {
             color: moved(look.color, self.color),
             background: moved(look.background, self.background),
@@ -34,10 +31,26 @@ impl ReferenceSkew {
     }
 }
 
+/// `color` moved `steps` whole steps of 1/255 from the byte a target stores for it, kept in
+/// 0..255, as an exact byte over 255: adding the steps to the float could land on x.5 (the
+/// default background's blue, 0.1, is 25.5 steps), which one GPU rounds up and another down.
+fn moved(color: Vec3, steps: i32) -> Vec3 {
+    if steps == 0 {
+        return color;
+    }
+    let byte = |b: u8| (i32::from(b) + steps).clamp(0, 255) as f32 / 255.0;
+    Vec3::from(to_rgb8(color).map(byte))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
-    use close2gl_core::parity::to_rgb8;
+
+    /// The bytes each channel moved from `from` to `to`.
+    fn steps(from: Vec3, to: Vec3) -> [i32; 3] {
+        let (a, b) = (to_rgb8(from), to_rgb8(to));
+        [0, 1, 2].map(|k| i32::from(b[k]) - i32::from(a[k]))
+    }
 
     #[test]
     fn a_step_moves_each_stored_byte_by_one() {
@@ -47,25 +60,13 @@ mod tests {
             color: -1,
         };
         let moved = skew.apply(look);
-        let bytes = |c| to_rgb8(c).map(i32::from);
-        let [before, after] = [look.background, moved.background].map(bytes);
-        assert_eq!(
-            [
-                after[0] - before[0],
-                after[1] - before[1],
-                after[2] - before[2]
-            ],
-            [1; 3]
-        );
-        let [before, after] = [look.color, moved.color].map(bytes);
-        assert_eq!(
-            [
-                after[0] - before[0],
-                after[1] - before[1],
-                after[2] - before[2]
-            ],
-            [-1; 3]
-        );
+        assert_eq!(steps(look.background, moved.background), [1; 3]);
+        assert_eq!(steps(look.color, moved.color), [-1; 3]);
         assert_eq!(ReferenceSkew::default().apply(look), look);
+        let white = ReferenceSkew {
+            background: 300,
+            color: 0,
+        };
+        assert_eq!(white.apply(look).background, Vec3::ONE, "kept in 0..255");
     }
 }
