@@ -11,7 +11,9 @@ use close2gl_core::parity::to_rgb8;
 use glam::Vec3;
 
 /// Steps of 1/255 added to each channel of the reference view's colours (none by default).
-/// Owned by [`crate::GpuPlugin`]; the headless commands and the tests set it.
+/// Owned by [`crate::GpuPlugin`]; `close2gl render` and the tests set it. Offscreen and in the
+/// live difference each view clears its own target, so both colours move; a window clears once
+/// for both views, so there only the model colour would.
 #[derive(Resource, Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct ReferenceSkew {
     /// Added to the reference's background (its clear colour).
