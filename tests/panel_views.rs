@@ -13,7 +13,7 @@ fn panel_changes_reach_both_gpu_views() {
     let covered = |h: &mut Harness| {
         let shot = close2gl_gpu::render_offscreen(&mut h.app).unwrap_or_else(|e| panic!("{e}"));
         let count = |image| {
-            close2gl_core::parity::coverage(image, shot.background)
+            close2gl_core::parity::coverage(image)
                 .into_iter()
                 .filter(|&c| c)
                 .count()

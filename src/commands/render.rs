@@ -1,5 +1,6 @@
 //! `close2gl render`: both views offscreen, with exactly the systems and draw calls the windows
-//! use, written as reference.png, close2gl.png, diff.png and report.json.
+//! use, written as reference.png, close2gl.png (transparent where the view drew nothing: the
+//! coverage the report compares), diff.png and report.json.
 
 use std::f32::consts::TAU;
 use std::path::{Path, PathBuf};
@@ -9,7 +10,9 @@ use close2gl_core::{
     App, Camera, CameraAction, CameraActions, CameraRequest, Fates, OutsideView, RecordFates,
 };
 use close2gl_gpu::outside::render_outside;
-use close2gl_gpu::{Gpu, OffscreenPlugin, Snapshot, parse_backends, render_offscreen};
+use close2gl_gpu::{
+    Gpu, OffscreenPlugin, ReferenceSkew, Snapshot, parse_backends, render_offscreen,
+};
 use close2gl_pipeline::frustum::world_corners;
 use serde_json::{Value, json};
 
@@ -44,6 +47,24 @@ pub struct RenderArgs {
     /// outside.stage=...).
     #[arg(long, value_name = "STAGE")]
     pub stage: Option<String>,
+    /// Moves the reference's background N steps of 1/255 (each channel), as a GPU that rounds
+    /// the clear colour differently would (NVIDIA stores 0.1 as 25/255, lavapipe as 26): the
+    /// coverage reported must not change.
+    #[arg(
+        long,
+        value_name = "N",
+        default_value_t = 0,
+        allow_negative_numbers = true
+    )]
+    pub skew_background: i32,
+    /// Moves the reference's model colour N steps of 1/255 (each channel), likewise.
+    #[arg(
+        long,
+        value_name = "N",
+        default_value_t = 0,
+        allow_negative_numbers = true
+    )]
+    pub skew_color: i32,
 }
 
 pub fn run(args: RenderArgs) -> Result<(), CliError> {
@@ -56,6 +77,10 @@ pub fn run(args: RenderArgs) -> Result<(), CliError> {
     let gpu = Gpu::headless(backends).map_err(CliError::Runtime)?;
     app.add_plugins(OffscreenPlugin(gpu.clone()));
     app.world_mut().resource_mut::<RecordFates>().0 = true;
+    app.insert_resource(ReferenceSkew {
+        background: args.skew_background,
+        color: args.skew_color,
+    });
     std::fs::create_dir_all(&args.out).map_err(|e| {
         CliError::Runtime(format!(
             "{}: cannot create the directory: {e}",
@@ -188,11 +213,10 @@ fn median(mut values: Vec<f64>) -> f64 {
 
 /// Writes the three images of one pose and returns its report; the caller adds the times.
 fn write_pose(dir: &Path, suffix: &str, snapshot: &Snapshot, gpu: &Gpu) -> Result<Value, CliError> {
-    let comparison =
-        CoverageComparison::of_images(&snapshot.reference, &snapshot.close2gl, snapshot.background);
-    let colors =
-        ColorComparison::of_images(&snapshot.reference, &snapshot.close2gl, snapshot.background);
-    let diff = diff_image(&snapshot.reference, &snapshot.close2gl, snapshot.background);
+    let (reference, close2gl) = (&snapshot.reference, &snapshot.close2gl);
+    let comparison = CoverageComparison::of_images(reference, close2gl);
+    let colors = ColorComparison::of_images(reference, close2gl, snapshot.tolerance);
+    let diff = diff_image(reference, close2gl);
     let names = ["reference", "close2gl", "diff"].map(|n| format!("{n}{suffix}.png"));
     for (image, name) in [&snapshot.reference, &snapshot.close2gl, &diff]
         .iter()
@@ -212,9 +236,16 @@ fn write_pose(dir: &Path, suffix: &str, snapshot: &Snapshot, gpu: &Gpu) -> Resul
         "covered_pixels": comparison.covered_pixels,
         "reference_only_pixels": comparison.only_first,
         "close2gl_only_pixels": comparison.only_second,
+        "color_tolerance": {
+            "feature": colors.tolerance.name(),
+            "steps": colors.tolerance.steps(),
+            "share": colors.tolerance.share(),
+        },
+        "color_compared_pixels": colors.compared_pixels,
         "color_mean_abs_diff": colors.mean_abs_diff,
-        "color_within_2_fraction": colors.within_2_fraction,
-        "background": snapshot.background,
+        "color_max_abs_diff": colors.max_abs_diff,
+        "color_within_tolerance": colors.within_fraction,
+        "color_agrees": colors.agrees(),
         "stats": snapshot.counts,
         "images": {"reference": names[0], "close2gl": names[1], "diff": names[2]},
     }))

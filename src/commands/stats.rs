@@ -40,16 +40,16 @@ pub fn run(args: StatsArgs) -> Result<(), CliError> {
         report["geometry_ms"] = json!(frame.geometry_ms);
         let image = app.world().resource::<SoftwareFrame>();
         report["raster_ms"] = json!(image.raster_ms);
-        report["covered_pixels"] = json!(covered(&image.image, config.render.background));
+        report["covered_pixels"] = json!(covered(&image.image));
     }
     println!("{report}");
     Ok(())
 }
 
-/// The pixels of the software image that are not the background.
-pub fn covered(image: &Image, background: glam::Vec3) -> usize {
-    let background = close2gl_core::parity::to_rgb8(background);
-    image.pixels.iter().filter(|p| p[..3] != background).count()
+/// The pixels the software image covers (its alpha says which).
+pub fn covered(image: &Image) -> usize {
+    let covered = close2gl_core::parity::is_covered;
+    image.pixels.iter().filter(|p| covered(p)).count()
 }
 
 /// The 2D buffer as JSON (when the file ends in .json) or as CSV, one vertex a line.

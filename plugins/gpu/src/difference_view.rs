@@ -3,12 +3,9 @@
 //! exactly as `close2gl render` writes diff.png ([`close2gl_core::parity::diff_image`]). A student who
 //! switches to simple clipping sees at once, in magenta, what Close2GL no longer draws.
 
-use wgpu::util::DeviceExt;
-
 use crate::attachments::DEPTH_FORMAT;
 use crate::attachments::texture_2d;
 use crate::fullscreen;
-use crate::uniforms::uniform_entry;
 
 /// The two views' images for one viewport size, and the bind group that compares them.
 pub(crate) struct Inputs {
@@ -23,49 +20,35 @@ pub(crate) struct DifferenceView {
     pipeline: wgpu::RenderPipeline,
     layout: wgpu::BindGroupLayout,
     color_format: wgpu::TextureFormat,
-    /// The background as a UNORM target stores it (0..255), what "not covered" looks like.
-    background: wgpu::Buffer,
     /// None until the first frame of the difference.
     inputs: Option<Inputs>,
 }
 
 impl DifferenceView {
     pub(crate) fn new(device: &wgpu::Device, color_format: wgpu::TextureFormat) -> Self {
-        let uniform = uniform_entry(2, wgpu::ShaderStages::FRAGMENT);
         let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
             label: Some("difference"),
-            entries: &[
-                fullscreen::texture_entry(0),
-                fullscreen::texture_entry(1),
-                uniform,
-            ],
+            entries: &[fullscreen::texture_entry(0), fullscreen::texture_entry(1)],
         });
         let fragment = include_str!("difference.wgsl");
-        let background = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
-            label: Some("difference background"),
-            contents: bytemuck::cast_slice(&[0.0f32; 4]),
-            usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
-        });
         Self {
-            pipeline: fullscreen::pipeline(device, "difference", fragment, &layout, color_format),
+            pipeline: fullscreen::pipeline(
+                device,
+                "difference",
+                fragment,
+                &layout,
+                (color_format, None),
+            ),
             layout,
             color_format,
-            background,
             inputs: None,
         }
     }
 
     /// Makes the textures the two views are drawn into for a `size` viewport (again when the
-    /// size changes), and sets the background they are compared against.
-    pub(crate) fn prepare(
-        &mut self,
-        device: &wgpu::Device,
-        queue: &wgpu::Queue,
-        size: (u32, u32),
-        background: [u8; 3],
-    ) {
-        let [r, g, b] = background.map(f32::from);
-        queue.write_buffer(&self.background, 0, bytemuck::cast_slice(&[r, g, b, 255.0]));
+    /// size changes). The views are compared by their alpha, so they must be cleared with
+    /// alpha 0 (`Views::clear_color`).
+    pub(crate) fn prepare(&mut self, device: &wgpu::Device, size: (u32, u32)) {
         if self
             .inputs
             .as_ref()
@@ -102,10 +85,6 @@ impl DifferenceView {
                 wgpu::BindGroupEntry {
                     binding: 1,
                     resource: wgpu::BindingResource::TextureView(&close2gl),
-                },
-                wgpu::BindGroupEntry {
-                    binding: 2,
-                    resource: self.background.as_entire_binding(),
                 },
             ],
         });

@@ -17,13 +17,14 @@ pub(crate) fn texture_entry(binding: u32) -> wgpu::BindGroupLayoutEntry {
 }
 
 /// The pipeline of one image view: `fullscreen.wgsl`'s vertex stage, `fragment`'s `fs_main`
-/// (WGSL that may use `Varyings` and `texel_at`), one bind group of `layout`.
+/// (WGSL that may use `Varyings` and `texel_at`), one bind group of `layout`, writing
+/// `color_format` with `blend` (`None`: replacing what is there).
 pub(crate) fn pipeline(
     device: &wgpu::Device,
     label: &str,
     fragment: &str,
     layout: &wgpu::BindGroupLayout,
-    color_format: wgpu::TextureFormat,
+    (color_format, blend): (wgpu::TextureFormat, Option<wgpu::BlendState>),
 ) -> wgpu::RenderPipeline {
     let source = format!("{}\n{fragment}", include_str!("fullscreen.wgsl"));
     let shader = device.create_shader_module(wgpu::ShaderModuleDescriptor {
@@ -51,7 +52,11 @@ pub(crate) fn pipeline(
             module: &shader,
             entry_point: Some("fs_main"),
             compilation_options: Default::default(),
-            targets: &[Some(color_format.into())],
+            targets: &[Some(wgpu::ColorTargetState {
+                format: color_format,
+                blend,
+                write_mask: wgpu::ColorWrites::ALL,
+            })],
         }),
         multiview_mask: None,
         cache: None,

@@ -38,6 +38,7 @@ mod pass;
 mod pixel_answer;
 mod readback;
 mod reference;
+mod reference_skew;
 mod reference_texture;
 mod software_view;
 mod uniforms;
@@ -67,6 +68,7 @@ pub use pass::{submit_pass, submit_pass_timed};
 pub use pixel_answer::{PixelAnswer, ProbedFrame};
 pub use readback::{Pending, Readback};
 pub use reference::clear_color;
+pub use reference_skew::ReferenceSkew;
 pub use views::Views;
 /// Re-exported so that users of this crate name the same wgpu types.
 pub use wgpu;
@@ -79,9 +81,10 @@ pub use wgpu;
 /// Close2GL to record (`RecordFates`) while that view is shown; the selected triangle's highlight (`SelectedTriangle`); in the live difference, both
 /// views drawn again into textures of the `Viewport`'s size and compared. They run once
 /// the `Gpu` and `Views` resources exist (inserted by whoever owns the target), so a window may
-/// arrive late. It owns no resource: the model, settings and Close2GL plugins provide what it
-/// reads, the model plugin the texture (without one the reference draws untextured), and the
-/// raster plugin, when there is one, the software image.
+/// arrive late. It owns one resource, [`ReferenceSkew`] (none by default: the reference's
+/// colours moved a few steps, as another GPU's rounding would move them); the model, settings
+/// and Close2GL plugins provide what it reads, the model plugin the texture (without one the
+/// reference draws untextured), and the raster plugin, when there is one, the software image.
 pub struct GpuPlugin;
 
 impl Plugin for GpuPlugin {
@@ -95,6 +98,7 @@ impl Plugin for GpuPlugin {
             .requires::<SelectedTriangle>(Owner::Settings)
             .requires::<Fates>(Owner::Close2gl)
             .requires::<RecordFates>(Owner::Settings)
+            .init_resource::<ReferenceSkew>()
             .add_systems(
                 Update,
                 record_fates_while_shown.in_set(Close2glStep::Prepare),

@@ -1,10 +1,11 @@
 //! Offscreen rendering with exactly the systems and draw calls a window uses: the same `Views`,
-//! the same upload systems, a texture instead of a surface, and a readback to RGBA8.
+//! the same upload systems, a texture instead of a surface, and a readback to RGBA8 whose alpha
+//! says which pixels each view covered.
 
 use bevy_ecs::prelude::*;
+use close2gl_core::parity::ColorTolerance;
 use close2gl_core::{
-    App, Appearance, Close2glFrame, PipelineSettings, Plugin, Rasterizer, SoftwareFrame,
-    StageCounts, Viewport,
+    App, Close2glFrame, PipelineSettings, Plugin, Rasterizer, SoftwareFrame, StageCounts, Viewport,
 };
 
 use crate::GpuPlugin;
@@ -16,10 +17,9 @@ use crate::pass::submit_pass_timed;
 use crate::readback::Readback;
 use crate::views::Views;
 use close2gl_core::Image;
-use close2gl_core::parity::to_rgb8;
 
 /// The offscreen colour format: linear 8-bit, so an image's bytes are the colour values the
-/// shaders wrote (times 255) and the background can be recognised exactly.
+/// shaders wrote (times 255), and its alpha the coverage (0: nothing drawn, 255: drawn).
 pub const OFFSCREEN_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rgba8Unorm;
 
 /// Makes an app render offscreen on `gpu`: inserts `Gpu`, `Views` and the outside view's
@@ -40,7 +40,8 @@ impl Plugin for OffscreenPlugin {
     }
 }
 
-/// Both views of one frame, read back.
+/// Both views of one frame, read back: each image's alpha is 255 where its view drew and 0
+/// where it did not ([`close2gl_core::parity::coverage`]).
 #[derive(Clone, Debug)]
 pub struct Snapshot {
     pub reference: Image,
@@ -51,8 +52,8 @@ pub struct Snapshot {
     /// with the software rasterizer, the geometry stage plus the rasterizer's whole frame.
     pub close2gl_ms: f64,
     pub counts: StageCounts,
-    /// The background as stored in the images: what "not covered" looks like.
-    pub background: [u8; 3],
+    /// What the two views' colours are held to, by what they drew.
+    pub tolerance: ColorTolerance,
 }
 
 /// The textures one viewport size needs, kept between frames.
@@ -100,19 +101,20 @@ pub fn render_offscreen(app: &mut App) -> Result<Snapshot, String> {
         .ok_or("render_offscreen needs the Views resource (add OffscreenPlugin)")?;
     let target = world.resource::<Target>();
     let frame = world.resource::<Close2glFrame>();
-    let background = to_rgb8(world.resource::<Appearance>().background);
     let software = world.resource::<PipelineSettings>().close2gl_raster == Rasterizer::Software;
 
     let reference_ms = draw(
         &gpu,
-        views,
-        &target.reference,
-        Some(&target.depth),
-        |views, pass| views.draw_reference(pass),
+        (&target.reference, Some(&target.depth)),
+        views.reference_clear_color(),
+        |pass| views.draw_reference(pass),
     );
-    let close2gl_draw_ms = draw(&gpu, views, &target.close2gl, None, |views, pass| {
-        views.draw_close2gl(pass)
-    });
+    let close2gl_draw_ms = draw(
+        &gpu,
+        (&target.close2gl, None),
+        views.clear_color(),
+        |pass| views.draw_close2gl(pass),
+    );
     let close2gl_ms = frame.geometry_ms
         + match world.get_resource::<SoftwareFrame>() {
             Some(image) if software => image.raster_ms,
@@ -125,7 +127,7 @@ pub fn render_offscreen(app: &mut App) -> Result<Snapshot, String> {
         reference_ms,
         close2gl_ms,
         counts: frame.counts,
-        background,
+        tolerance: views.color_tolerance(),
     })
 }
 
@@ -148,20 +150,18 @@ fn sized_target(world: &mut World, gpu: &Gpu, size: Viewport) -> Result<(), Stri
     Ok(())
 }
 
-/// One view into `color`, cleared to the background: record, submit, wait. Returns milliseconds.
+/// One view into `color` (with `depth`), cleared to `clear` (alpha 0, so that the alpha read
+/// back is the view's coverage): record, submit, wait. Returns milliseconds.
 fn draw(
     gpu: &Gpu,
-    views: &Views,
-    color: &wgpu::Texture,
-    depth: Option<&wgpu::Texture>,
-    record: impl FnOnce(&Views, &mut wgpu::RenderPass<'_>),
+    (color, depth): (&wgpu::Texture, Option<&wgpu::Texture>),
+    clear: wgpu::Color,
+    record: impl FnOnce(&mut wgpu::RenderPass<'_>),
 ) -> f64 {
     let color_view = color.create_view(&Default::default());
     let depth_view = depth.map(|d| d.create_view(&Default::default()));
-    let clear = wgpu::LoadOp::Clear(views.clear_color());
-    submit_pass_timed(gpu, &color_view, depth_view.as_ref(), clear, |pass| {
-        record(views, pass)
-    })
+    let clear = wgpu::LoadOp::Clear(clear);
+    submit_pass_timed(gpu, &color_view, depth_view.as_ref(), clear, record)
 }
 
 /// Both colour textures read back as images.

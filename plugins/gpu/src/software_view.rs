@@ -5,6 +5,20 @@ use close2gl_core::Image;
 
 use crate::fullscreen;
 
+/// The image's colour replaces the target's; its alpha (0 where the rasterizer drew nothing, 1
+/// where it drew) is the larger of the two: the coverage on a target cleared with alpha 0 (as
+/// `close2gl render` and the live difference clear theirs), and still opaque on a window,
+/// which is cleared opaque because a web page or a compositor may show what its alpha lets
+/// through.
+const KEEP_OPAQUE: wgpu::BlendState = wgpu::BlendState {
+    color: wgpu::BlendComponent::REPLACE,
+    alpha: wgpu::BlendComponent {
+        src_factor: wgpu::BlendFactor::One,
+        dst_factor: wgpu::BlendFactor::One,
+        operation: wgpu::BlendOperation::Max,
+    },
+};
+
 pub(crate) struct SoftwareView {
     pipeline: wgpu::RenderPipeline,
     layout: wgpu::BindGroupLayout,
@@ -25,7 +39,7 @@ impl SoftwareView {
                 "software image",
                 fragment,
                 &layout,
-                color_format,
+                (color_format, Some(KEEP_OPAQUE)),
             ),
             layout,
             image: None,

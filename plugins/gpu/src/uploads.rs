@@ -3,14 +3,13 @@
 
 use bevy_ecs::prelude::*;
 use bevy_ecs::system::SystemParam;
-use close2gl_core::parity::to_rgb8;
 use close2gl_core::{
     Appearance, Camera, Close2glFrame, Fates, Lighting, Mesh, Overlay, PipelineSettings,
     SelectedTriangle, SoftwareFrame, Texture, TraceOutput, Viewport,
 };
 
 use crate::gpu::Gpu;
-use crate::reference::clear_color;
+use crate::reference_skew::ReferenceSkew;
 use crate::views::Views;
 
 /// The mesh again when it changed (bevy's change ticks, as the pipeline watches it), or when
@@ -36,21 +35,24 @@ pub(crate) fn upload_texture(
     }
 }
 
-/// Every frame: the uniforms are a few hundred bytes, cheaper than tracking what moved.
+/// Every frame: the uniforms are a few hundred bytes, cheaper than tracking what moved. The
+/// reference draws with its colours moved by the [`ReferenceSkew`] (none unless one is set).
 pub(crate) fn upload_reference(
     gpu: Res<Gpu>,
     camera: Single<&Camera>,
     (pipeline, look, overlay): (Res<PipelineSettings>, Res<Appearance>, Res<Overlay>),
-    lighting: Res<Lighting>,
+    (lighting, skew): (Res<Lighting>, Res<ReferenceSkew>),
     viewport: Res<Viewport>,
     mut views: ResMut<Views>,
 ) {
-    views.background = clear_color(look.background);
+    let skewed = skew.apply(*look);
+    views.background = look.background;
+    views.reference_background = skewed.background;
     views.reference.update(
         &gpu.device,
         &gpu.queue,
         (&camera, *viewport),
-        (&pipeline, &look, *overlay),
+        (&pipeline, &skewed, *overlay),
         &lighting,
     );
 }
@@ -137,11 +139,10 @@ pub(crate) fn upload_highlight(
 pub(crate) fn render_difference(
     gpu: Res<Gpu>,
     viewport: Res<Viewport>,
-    (look, overlay): (Res<Appearance>, Res<Overlay>),
+    overlay: Res<Overlay>,
     mut views: ResMut<Views>,
 ) {
     if *overlay == Overlay::Difference {
-        let size = (viewport.width, viewport.height);
-        views.render_difference(&gpu, size, to_rgb8(look.background));
+        views.render_difference(&gpu, (viewport.width, viewport.height));
     }
 }

@@ -1,10 +1,12 @@
 //! Both views' GPU state, as one resource.
 
 use bevy_ecs::prelude::*;
+use close2gl_core::parity::ColorTolerance;
+use close2gl_core::{Overlay, Rasterizer};
+use glam::Vec3;
 
 use crate::gpu::Gpu;
 use crate::pass::submit_pass;
-use close2gl_core::{Overlay, Rasterizer};
 
 use crate::close2gl_view::Close2glView;
 use crate::difference_view::DifferenceView;
@@ -28,7 +30,11 @@ pub struct Views {
     pub(crate) overlay: Overlay,
     /// Which of the two Close2GL views is shown.
     pub(crate) rasterizer: Rasterizer,
-    pub(crate) background: wgpu::Color,
+    /// `Appearance::background`.
+    pub(crate) background: Vec3,
+    /// The background the reference clears to: `background`, unless a [`crate::ReferenceSkew`]
+    /// moves it.
+    pub(crate) reference_background: Vec3,
 }
 
 impl Views {
@@ -44,7 +50,8 @@ impl Views {
             highlight: Highlight::new(&gpu.device, color_format),
             overlay: Overlay::Off,
             rasterizer: Rasterizer::Gpu,
-            background: clear_color(close2gl_core::Appearance::default().background),
+            background: close2gl_core::Appearance::default().background,
+            reference_background: close2gl_core::Appearance::default().background,
         }
     }
 
@@ -81,32 +88,66 @@ impl Views {
     }
 
     /// For the live difference: draws this frame's two views, as they are without an overlay,
-    /// into the difference's own `size` textures, which `draw_close2gl` then compares against
-    /// `background` (as the target stores it).
-    pub(crate) fn render_difference(&mut self, gpu: &Gpu, size: (u32, u32), background: [u8; 3]) {
-        self.difference
-            .prepare(&gpu.device, &gpu.queue, size, background);
+    /// into the difference's own `size` textures, each cleared as [`Self::clear_color`] says
+    /// (alpha 0), which `draw_close2gl` then compares by their alpha.
+    pub(crate) fn render_difference(&mut self, gpu: &Gpu, size: (u32, u32)) {
+        self.difference.prepare(&gpu.device, size);
         let Some(inputs) = self.difference.inputs() else {
             return;
         };
-        let clear = wgpu::LoadOp::Clear(self.background);
         let depth = Some(&inputs.depth);
+        let clear = wgpu::LoadOp::Clear(self.reference_clear_color());
         submit_pass(gpu, &inputs.reference, depth, clear, |pass| {
             self.reference.draw(pass, false)
         });
+        let clear = wgpu::LoadOp::Clear(self.clear_color());
         submit_pass(gpu, &inputs.close2gl, None, clear, |pass| {
             self.draw_compared_close2gl(pass)
         });
     }
 
-    /// `Appearance::background` as a clear colour: both views clear to it.
+    /// `Appearance::background` as the Close2GL view's clear colour, with alpha 0: every view
+    /// draws alpha 1 where it covers a pixel, so that a target cleared to this says in its
+    /// alpha which pixels the view drew ([`close2gl_core::parity::coverage`]). Every GPU stores
+    /// alpha 0 and 1 exactly, where it may round the colour to either byte.
     pub fn clear_color(&self) -> wgpu::Color {
-        self.background
+        uncovered(self.background)
+    }
+
+    /// The reference view's clear colour: [`Self::clear_color`], moved by the
+    /// [`crate::ReferenceSkew`] when one is set.
+    pub fn reference_clear_color(&self) -> wgpu::Color {
+        uncovered(self.reference_background)
+    }
+
+    /// The background, opaque: for a window, whose alpha the desktop or the web page may blend
+    /// with (the software image's uncovered pixels keep a window's alpha; see
+    /// `software_view.rs`).
+    pub fn opaque_clear_color(&self) -> wgpu::Color {
+        wgpu::Color {
+            a: 1.0,
+            ..self.clear_color()
+        }
+    }
+
+    /// The tolerance the two views' colours are held to, by what the reference draws (the
+    /// shading, the texture's filter) and who rasterizes Close2GL.
+    pub fn color_tolerance(&self) -> ColorTolerance {
+        let (shading, texture) = self.reference.drawn_look();
+        ColorTolerance::for_views(self.rasterizer, shading, texture)
     }
 
     /// Shown in the UI when the device lacks POLYGON_MODE_LINE / POINT (how lines and points are
     /// drawn instead), else None.
     pub fn limitations(&self) -> Option<String> {
         self.reference.limitations()
+    }
+}
+
+/// `color` as a clear colour that says "nothing drawn here": alpha 0.
+fn uncovered(color: Vec3) -> wgpu::Color {
+    wgpu::Color {
+        a: 0.0,
+        ..clear_color(color)
     }
 }

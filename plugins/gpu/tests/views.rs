@@ -5,14 +5,16 @@ use std::path::PathBuf;
 
 use close2gl_core::bevy_ecs::change_detection::DetectChangesMut;
 use close2gl_core::glam::{Vec2, Vec3};
-use close2gl_core::parity::{CoverageComparison, ONLY_REFERENCE, coverage, diff_image, to_rgb8};
+use close2gl_core::parity::{
+    CoverageComparison, ONLY_CLOSE2GL, ONLY_REFERENCE, coverage, diff_image, is_covered, to_rgb8,
+};
 use close2gl_core::{
-    App, Appearance, Camera, Clipping, FrontFace, Image, Mesh, Overlay, RenderMode, RenderSettings,
-    Scene, Shading, Texture, TextureFilter, Viewport,
+    App, Appearance, Camera, Clipping, FrontFace, Image, Mesh, Overlay, Rasterizer, RenderMode,
+    RenderSettings, Scene, Shading, Texture, TextureFilter, Viewport,
 };
 use close2gl_gpu::attachments::{READABLE_TARGET, texture_2d};
 use close2gl_gpu::{
-    DEPTH_FORMAT, Gpu, OFFSCREEN_FORMAT, OffscreenPlugin, Readback, Snapshot, Views,
+    DEPTH_FORMAT, Gpu, OFFSCREEN_FORMAT, OffscreenPlugin, Readback, ReferenceSkew, Snapshot, Views,
     probe_reference, render_offscreen, submit_pass, wgpu,
 };
 use close2gl_pipeline::Close2glPlugin;
@@ -48,8 +50,7 @@ fn camera_at(position: Vec3, target: Vec3) -> Camera {
 
 /// Compares both views; on failure writes them and the diff under target/gpu-views/<case>/.
 fn check(case: &str, snapshot: &Snapshot, threshold: f64) -> CoverageComparison {
-    let comparison =
-        CoverageComparison::of_images(&snapshot.reference, &snapshot.close2gl, snapshot.background);
+    let comparison = CoverageComparison::of_images(&snapshot.reference, &snapshot.close2gl);
     if comparison.coverage_agreement < threshold {
         let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR"))
             .join("../../target/gpu-views")
@@ -63,7 +64,7 @@ fn check(case: &str, snapshot: &Snapshot, threshold: f64) -> CoverageComparison 
             .close2gl
             .write_png(&dir.join("close2gl.png"))
             .unwrap();
-        diff_image(&snapshot.reference, &snapshot.close2gl, snapshot.background)
+        diff_image(&snapshot.reference, &snapshot.close2gl)
             .write_png(&dir.join("diff.png"))
             .unwrap();
         panic!(
@@ -130,13 +131,12 @@ fn a_model_behind_the_camera_leaves_both_views_background_and_scores_zero() {
     );
     let snapshot = render_offscreen(&mut app).expect("render");
     let background = to_rgb8(RenderSettings::default().background);
-    assert_eq!(snapshot.background, background);
     for image in [&snapshot.reference, &snapshot.close2gl] {
         assert_eq!((image.width, image.height), (160, 120));
-        assert!(image.pixels.iter().all(|p| p[..3] == background));
+        let uncovered = [background[0], background[1], background[2], 0];
+        assert!(image.pixels.iter().all(|p| *p == uncovered));
     }
-    let comparison =
-        CoverageComparison::of_images(&snapshot.reference, &snapshot.close2gl, snapshot.background);
+    let comparison = CoverageComparison::of_images(&snapshot.reference, &snapshot.close2gl);
     assert_eq!(comparison.covered_pixels, 0);
     assert_eq!(comparison.coverage_agreement, 0.0);
     assert_eq!(snapshot.counts.drawn, 0);
@@ -144,7 +144,7 @@ fn a_model_behind_the_camera_leaves_both_views_background_and_scores_zero() {
 
 /// The covered pixels' colours, in a fixed order.
 fn colors(snapshot: &Snapshot) -> Vec<[u8; 4]> {
-    let covered = coverage(&snapshot.reference, snapshot.background);
+    let covered = coverage(&snapshot.reference);
     snapshot
         .reference
         .pixels
@@ -299,7 +299,7 @@ fn without_polygon_modes_the_views_say_what_they_draw_instead() {
         let sphere = sphere(Vec3::ZERO, 1.0, 16, 32);
         let mut app = app_on(bare.clone(), sphere, camera, settings, SMALL);
         let snapshot = render_offscreen(&mut app).expect("render");
-        let covered = coverage(&snapshot.reference, snapshot.background)
+        let covered = coverage(&snapshot.reference)
             .into_iter()
             .filter(|c| *c)
             .count();
@@ -330,7 +330,7 @@ fn without_polygon_modes_the_probe_hits_what_the_reference_draws() {
         };
         let mut app = app_on(bare.clone(), mesh.clone(), camera, settings, viewport);
         let snapshot = render_offscreen(&mut app).expect("render");
-        let covered = coverage(&snapshot.reference, snapshot.background);
+        let covered = coverage(&snapshot.reference);
         let scene = Scene {
             mesh: &mesh,
             camera: &camera,
@@ -474,7 +474,7 @@ fn share_of(snapshot: &Snapshot, level: u8) -> f64 {
 fn left_corner(snapshot: &Snapshot, bottom: bool) -> u8 {
     let image = &snapshot.reference;
     let width = image.width as usize;
-    let covered = coverage(image, snapshot.background);
+    let covered = coverage(image);
     let mut indices = (0..covered.len()).filter(|i| covered[*i]);
     let index = if bottom {
         indices.next_back()
@@ -522,19 +522,13 @@ fn the_texture_is_uploaded_again_only_when_it_changes() {
     assert_eq!(stale.reference, first.reference);
     app.world_mut().resource_mut::<Texture>().set_changed();
     let fresh = render_offscreen(&mut app).expect("render");
-    let background = [
-        fresh.background[0],
-        fresh.background[1],
-        fresh.background[2],
-        255,
-    ];
     let black = [0, 0, 0, 255];
     assert!(
         fresh
             .reference
             .pixels
             .iter()
-            .all(|p| *p == black || *p == background)
+            .all(|p| *p == black || !is_covered(p))
     );
 }
 
@@ -559,7 +553,7 @@ fn grazing_floor(filter: TextureFilter) -> Snapshot {
 /// floor (the upper half of the rows it covers).
 fn far_half_energy(snapshot: &Snapshot) -> f64 {
     let image = &snapshot.reference;
-    let covered = coverage(image, snapshot.background);
+    let covered = coverage(image);
     let width = image.width as usize;
     let rows: Vec<usize> = (0..image.height as usize)
         .filter(|y| covered[y * width..(y + 1) * width].iter().any(|c| *c))
@@ -611,7 +605,7 @@ fn the_live_difference_is_the_render_commands_diff_image() {
     *app.world_mut().resource_mut::<Overlay>() = Overlay::Difference;
     let live = render_offscreen(&mut app).expect("the difference renders");
 
-    let expected = diff_image(&plain.reference, &plain.close2gl, plain.background);
+    let expected = diff_image(&plain.reference, &plain.close2gl);
     let missing = expected
         .pixels
         .iter()
@@ -629,4 +623,97 @@ fn the_live_difference_is_the_render_commands_diff_image() {
         live.reference.pixels == plain.reference.pixels,
         "the reference is left alone"
     );
+}
+
+/// The pixels the live difference paints as covered by one view only.
+fn painted(live: &Snapshot) -> usize {
+    let one_view_only = |p: &&[u8; 4]| **p == ONLY_REFERENCE || **p == ONLY_CLOSE2GL;
+    live.close2gl.pixels.iter().filter(one_view_only).count()
+}
+
+/// The framed sphere, solid, with both rasterizers, its reference's colours moved by `skew` as
+/// another GPU's rounding moves them: coverage agrees exactly, as without the skew, and the live
+/// difference paints nothing. `check_skew` says the skew took: it gets the reference's pixel and
+/// Close2GL's at a covered `(true)` or uncovered `(false)` place.
+fn assert_a_skew_changes_no_coverage(
+    settings: RenderSettings,
+    skew: ReferenceSkew,
+    check_skew: impl Fn(bool, [u8; 4], [u8; 4]),
+) {
+    for rasterizer in Rasterizer::ALL.iter().copied() {
+        let settings = RenderSettings {
+            close2gl_raster: rasterizer,
+            ..settings
+        };
+        let mut app = framed_sphere(settings, SMALL);
+        app.add_plugins(close2gl_raster::RasterPlugin)
+            .insert_resource(skew);
+        let snapshot = render_offscreen(&mut app).expect("render");
+        let covered = coverage(&snapshot.close2gl);
+        for place in [true, false] {
+            let i = covered
+                .iter()
+                .position(|&c| c == place)
+                .expect("both kinds");
+            check_skew(
+                place,
+                snapshot.reference.pixels[i],
+                snapshot.close2gl.pixels[i],
+            );
+        }
+        let case = format!("skew_{}_{}", skew.background, rasterizer.name());
+        let comparison = check(&case, &snapshot, 1.0);
+        assert!(comparison.covered_pixels > 1000, "{case}: {comparison:?}");
+        *app.world_mut().resource_mut::<Overlay>() = Overlay::Difference;
+        let live = render_offscreen(&mut app).expect("the difference renders");
+        assert_eq!(
+            painted(&live),
+            0,
+            "{case}: the live difference paints pixels"
+        );
+    }
+}
+
+/// NVIDIA clears to 0.1 as 25/255 where lavapipe and the software rasterizer store 26: here the
+/// reference's background is moved one step on lavapipe, in each direction.
+#[test]
+fn a_reference_background_one_step_away_changes_no_coverage() {
+    for steps in [1, -1] {
+        let skew = ReferenceSkew {
+            background: steps,
+            color: 0,
+        };
+        assert_a_skew_changes_no_coverage(RenderSettings::default(), skew, |covered, r, c| {
+            if !covered {
+                let moved = [0, 1, 2].map(|k| i32::from(r[k]) - i32::from(c[k]));
+                assert_eq!(moved, [steps; 3], "the reference's background moved");
+            }
+        });
+    }
+}
+
+/// A model drawn in the background's colour is covered all the same: Close2GL's model one step
+/// above the background, the reference's moved one step down onto it.
+#[test]
+fn a_model_in_the_backgrounds_colour_is_covered() {
+    let background = Vec3::new(20.0, 20.0, 26.0) / 255.0;
+    let settings = RenderSettings {
+        color: background + Vec3::splat(1.0 / 255.0),
+        background,
+        ..Default::default()
+    };
+    let skew = ReferenceSkew {
+        background: 0,
+        color: -1,
+    };
+    assert_a_skew_changes_no_coverage(settings, skew, |covered, r, c| {
+        if covered {
+            assert_eq!(
+                r[..3],
+                [20, 20, 26],
+                "the reference's model in the background's colour"
+            );
+            assert_eq!(c[..3], [21, 21, 27], "Close2GL's one step above");
+        }
+    });
 }

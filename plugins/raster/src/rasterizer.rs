@@ -25,7 +25,7 @@ use crate::sampling::{Bilinear, Filter, Mips, Nearest, Trilinear};
 use crate::shading::{
     Colour, Flat, Gouraud, LaneShader, Phong, PixelShader, Shaded, Textured, Untextured,
 };
-use crate::target::{NO_TRIANGLE, Target, pack};
+use crate::target::{NO_TRIANGLE, Target, pack_background};
 use crate::tile::{TileJob, draw_tile, draw_tile_unqueued};
 use crate::tile_runs::TileRuns;
 use crate::varyings::{Used, varyings_used};
@@ -145,7 +145,7 @@ impl SoftwareRasterizer {
 
     /// The tiles drawn with the frame's shading.
     fn shade(&mut self, constants: &RasterConstants<'_>, settings: &Appearance) {
-        let background = pack(settings.background);
+        let background = pack_background(settings.background);
         let color = settings.color;
         match settings.shading {
             Shading::None => self.shade_tiles(background, Flat(color), constants, settings),
@@ -362,7 +362,7 @@ mod tests {
             &mut fates,
         );
         let drawn = rasterizer.target.color.clone();
-        let background = pack(settings.background);
+        let background = pack_background(settings.background);
         let covered = drawn.iter().filter(|&&c| c != background).count();
         assert!(
             covered > drawn.len() / 2,

@@ -126,6 +126,13 @@ pub(crate) fn pack(rgb: Vec3) -> u32 {
     pack8(V8::splat(rgb))[0]
 }
 
+/// The background as the image stores it: its colour with alpha 0, where no primitive drew, as
+/// the GPU views clear theirs. Coverage is read from alpha, never from colour (a GPU may round
+/// the same background colour to another byte).
+pub(crate) fn pack_background(rgb: Vec3) -> u32 {
+    pack(rgb) & 0x00ff_ffff
+}
+
 #[inline(always)]
 pub(crate) fn pack8(rgb: V8) -> [u32; LANES] {
     let byte = |c: F8| {
@@ -161,6 +168,12 @@ mod tests {
         assert_eq!(
             pack(Vec3::new(-1.0, 2.0, 0.1)).to_le_bytes(),
             [0, 255, 26, 255]
+        );
+        let background = pack_background(Vec3::new(0.08, 0.08, 0.1));
+        assert_eq!(
+            background.to_le_bytes(),
+            [20, 20, 26, 0],
+            "uncovered: alpha 0"
         );
     }
 }

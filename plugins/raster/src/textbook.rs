@@ -72,7 +72,7 @@ pub fn draw(
     let (width, height) = (geometry.viewport.width, geometry.viewport.height);
     let pixels = (width * height) as usize;
     let mut buffers = Buffers {
-        image: Image::filled(width, height, pack(settings.background)),
+        image: Image::filled(width, height, background(settings.background)),
         depth: vec![1.0; pixels],
         owners: vec![None; pixels],
     };
@@ -340,6 +340,13 @@ impl Shader {
         let f_att = (1.0 / (c0 + c1 * d + c2 * d * d)).min(1.0);
         k.ia * k.ka + k.il * f_att * (diffuse + specular)
     }
+}
+
+/// The background: its colour with alpha 0, which says that nothing was drawn there (the
+/// views' coverage is their alpha, never their colour).
+fn background(rgb: Vec3) -> [u8; 4] {
+    let [r, g, b, _] = pack(rgb);
+    [r, g, b, 0]
 }
 
 /// A colour in 0..1 as the RGBA8 a UNORM target stores: clamped, rounded to nearest.

@@ -137,48 +137,48 @@ fn pinned() -> Vec<Pinned> {
         }
     };
     vec![
-        scene("flat", 0x69ab173e139877c8, |s| s.shading = None),
-        scene("gouraud_ad", 0x7a6e8f0d5f25b596, |s| s.shading = GouraudAd),
-        scene("gouraud_ads", 0x64a31769e23184d7, |s| {
+        scene("flat", 0xd8e00aecbfd29fec, |s| s.shading = None),
+        scene("gouraud_ad", 0x83c0bcd0767a71ca, |s| s.shading = GouraudAd),
+        scene("gouraud_ads", 0xee6d31d5217f4073, |s| {
             s.shading = GouraudAds
         }),
-        scene("phong", 0x38bb8b873515339a, |s| s.shading = Phong),
-        scene("nearest_flat", 0xbf13d3482eb3b0ac, textured(Nearest, None)),
+        scene("phong", 0xf5541036dd9fc8aa, |s| s.shading = Phong),
+        scene("nearest_flat", 0x66ecde7546c4c498, textured(Nearest, None)),
         scene(
             "bilinear_gouraud",
-            0x6909fcb9b65cc1dc,
+            0xf5aa4abd8a57fed4,
             textured(Bilinear, GouraudAds),
         ),
         scene(
             "trilinear_phong",
-            0x0d5a05696fecb078,
+            0xd6811f4f16b36d90,
             textured(Trilinear, Phong),
         ),
         scene(
             "trilinear_flat",
-            0x7e82b39f8be46675,
+            0xcd715d8494b20ab5,
             textured(Trilinear, None),
         ),
-        scene("wireframe_phong", 0xb6011ac65b729a43, |s| {
+        scene("wireframe_phong", 0xee515db2d113d56f, |s| {
             (s.mode, s.shading) = (RenderMode::Wireframe, Phong)
         }),
-        scene("points_gouraud", 0x25b03173e147c062, |s| {
+        scene("points_gouraud", 0x511497eb377956ea, |s| {
             (s.mode, s.shading) = (RenderMode::Points, GouraudAd)
         }),
-        scene("simple_clipping_culled", 0x54aa7bbc3bf70f79, |s| {
+        scene("simple_clipping_culled", 0xb8520e7fa636e859, |s| {
             (s.clipping, s.backface_culling, s.shading) = (Clipping::Simple, true, Phong)
         }),
         Pinned {
             record: true,
             ..scene(
                 "recorded_trilinear_phong",
-                0xd93af1c4c89e234d,
+                0xf01e34943bd2b765,
                 textured(Trilinear, Phong),
             )
         },
         Pinned {
             record: true,
-            ..scene("recorded_wireframe", 0x59e4590afb0ba759, |s| {
+            ..scene("recorded_wireframe", 0xc6d8d5d9c3d680dd, |s| {
                 s.mode = RenderMode::Wireframe
             })
         },

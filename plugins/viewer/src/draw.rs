@@ -22,18 +22,19 @@ pub struct ViewTimes {
     close2gl: Option<(Instant, Duration)>,
 }
 
-/// Clears `target` to the background and draws `placed` into it. Each view is its own
-/// submission, waited on, so that its time covers the GPU's work as well as the recording;
-/// the two compared views' times go to `times` when given.
+/// Clears `target` to `clear` (the background: opaque for a window, alpha 0 for a capture whose
+/// alpha is the views' coverage) and draws `placed` into it. Each view is its own submission,
+/// waited on, so that its time covers the GPU's work as well as the recording; the two compared
+/// views' times go to `times` when given.
 pub fn draw_views(
     gpu: &Gpu,
     all: AllViews<'_>,
-    target: &wgpu::TextureView,
-    depth: &wgpu::TextureView,
+    (target, depth): (&wgpu::TextureView, &wgpu::TextureView),
+    clear: wgpu::Color,
     placed: &[Placed],
     mut times: Option<&mut ViewTimes>,
 ) {
-    let mut load = wgpu::LoadOp::Clear(all.views.clear_color());
+    let mut load = wgpu::LoadOp::Clear(clear);
     if placed.is_empty() {
         submit_pass_timed(gpu, target, None, load, |_| ());
     }

@@ -7,8 +7,8 @@
 //! a replay's last frame must write its shot before the run ends.
 
 use bevy_ecs::world::World;
-use close2gl_core::parity::{CoverageComparison, to_rgb8};
-use close2gl_core::{Appearance, ToolRequests};
+use close2gl_core::ToolRequests;
+use close2gl_core::parity::CoverageComparison;
 use close2gl_gpu::Gpu;
 use close2gl_ui::{Notice, ViewStats};
 
@@ -119,8 +119,8 @@ fn save(
             },
             _,
         ) => {
-            let background = to_rgb8(world.resource::<Appearance>().background);
-            let compared = CoverageComparison::of_images(&reference, &close2gl, background);
+            // Captured with alpha 0 where a view drew nothing: its coverage.
+            let compared = CoverageComparison::of_images(&reference, &close2gl);
             world.resource_mut::<ViewStats>().coverage_agreement =
                 Some(compared.coverage_agreement);
             if !save_views {

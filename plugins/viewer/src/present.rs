@@ -67,11 +67,23 @@ impl PendingShot {
 }
 
 /// How one drawing of a window goes: `timed` when it is the frame shown (its times are the
-/// stats'), `panel` when the panel is painted over the views.
+/// stats'), `panel` when the panel is painted over the views, `coverage` when it is a capture
+/// of the views, cleared with alpha 0 so that its alpha says which pixels each view covered (a
+/// window shown is cleared opaque: its alpha is how it blends with the desktop or the page).
 #[derive(Clone, Copy)]
 struct Pass {
     timed: bool,
     panel: bool,
+    coverage: bool,
+}
+
+impl Pass {
+    fn clear(self, views: &Views) -> wgpu::Color {
+        match self.coverage {
+            true => views.clear_color(),
+            false => views.opaque_clear_color(),
+        }
+    }
 }
 
 /// Draws every window, and returns what `capture` asks to keep.
@@ -120,7 +132,8 @@ fn draw_with(
     let mut shots = Vec::new();
     let main_shot = draw_window(gpu, main, capture, |target, depth, pass| {
         let times = pass.timed.then_some(&mut *times);
-        draw_views(gpu, views, target, depth, &placement.main, times);
+        let clear = pass.clear(views.views);
+        draw_views(gpu, views, (target, depth), clear, &placement.main, times);
         if pass.panel {
             gui.paint(gpu, gui_frame, target);
         }
@@ -135,7 +148,8 @@ fn draw_with(
         };
         let shot = draw_window(gpu, window, capture, |target, depth, pass| {
             let times = pass.timed.then_some(&mut *times);
-            draw_views(gpu, views, target, depth, placed, times);
+            let clear = pass.clear(views.views);
+            draw_views(gpu, views, (target, depth), clear, placed, times);
         })?;
         shots.extend(shot.map(|shot| (shot, placed.clone())));
     }
@@ -187,10 +201,11 @@ fn draw_window(
             let shown = Pass {
                 timed: true,
                 panel: true,
+                coverage: false,
             };
             draw(&target, depth, shown);
             if capture == Capture::Window && window.readable() {
-                shot = Some(screenshot::read_back(gpu, &texture.texture)?);
+                shot = Some(screenshot::read_back(gpu, &texture.texture, false)?);
             }
         }
         window.present(texture);
@@ -204,10 +219,9 @@ fn draw_window(
     let kept = Pass {
         timed: false,
         panel: capture == Capture::Window,
+        coverage: capture == Capture::Views,
     };
     let (width, height) = window.size();
-    screenshot::capture(gpu, window.format(), width, height, |target| {
-        draw(target, depth, kept)
-    })
-    .map(Some)
+    let size = (window.format(), width, height);
+    screenshot::capture(gpu, size, kept.coverage, |target| draw(target, depth, kept)).map(Some)
 }

@@ -52,12 +52,12 @@ pub fn save_views(
 }
 
 /// Draws with `draw` into a `width` x `height` texture of `format` and starts reading it back
-/// as RGBA: for a window whose surface cannot be read back itself.
+/// as RGBA: for a window whose surface cannot be read back itself, or for the views alone.
+/// `coverage`: the alpha drawn is the views' coverage, kept (see [`read_back`]).
 pub fn capture(
     gpu: &Gpu,
-    format: wgpu::TextureFormat,
-    width: u32,
-    height: u32,
+    (format, width, height): (wgpu::TextureFormat, u32, u32),
+    coverage: bool,
     draw: impl FnOnce(&wgpu::TextureView),
 ) -> Result<PendingImage, String> {
     let texture = texture_2d(
@@ -68,19 +68,28 @@ pub fn capture(
         READABLE_TARGET,
     );
     draw(&texture.create_view(&Default::default()));
-    read_back(gpu, &texture)
+    read_back(gpu, &texture, coverage)
 }
 
 /// A window's frame on its way back from the GPU, as RGBA once it is in.
 pub struct PendingImage {
     pending: Pending,
     swap_red_blue: bool,
+    /// Whether the alpha is the views' coverage (kept) or the window's (made opaque).
+    coverage: bool,
     width: u32,
     height: u32,
 }
 
 /// Starts reading back what `texture` (a window's frame, in its 8-bit colour format) holds.
-pub fn read_back(gpu: &Gpu, texture: &wgpu::Texture) -> Result<PendingImage, String> {
+/// With `coverage` its alpha is kept: the views drawn on a target cleared with alpha 0 say in
+/// it which pixels they covered. Without, the image is opaque: a window's alpha is how it
+/// blends with the desktop, not part of the picture.
+pub fn read_back(
+    gpu: &Gpu,
+    texture: &wgpu::Texture,
+    coverage: bool,
+) -> Result<PendingImage, String> {
     let swap_red_blue = match texture.format() {
         wgpu::TextureFormat::Bgra8Unorm | wgpu::TextureFormat::Bgra8UnormSrgb => true,
         wgpu::TextureFormat::Rgba8Unorm | wgpu::TextureFormat::Rgba8UnormSrgb => false,
@@ -91,6 +100,7 @@ pub fn read_back(gpu: &Gpu, texture: &wgpu::Texture) -> Result<PendingImage, Str
     Ok(PendingImage {
         pending,
         swap_red_blue,
+        coverage,
         width,
         height,
     })
@@ -100,8 +110,8 @@ impl PendingImage {
     /// The image once the GPU has copied it; `None` while it has not yet.
     pub fn finish(&self, gpu: &Gpu) -> Option<Result<Image, String>> {
         let stored = self.pending.finish(gpu)?;
-        // A window's alpha is how it blends with the desktop, not part of the picture.
         let swap = self.swap_red_blue;
+        let alpha = |a: u8| if self.coverage { a } else { 255 };
         Some(stored.map(|layers| {
             Image {
                 width: self.width,
@@ -110,8 +120,8 @@ impl PendingImage {
                     .concat()
                     .into_iter()
                     .map(|p| match swap {
-                        true => [p[2], p[1], p[0], 255],
-                        false => [p[0], p[1], p[2], 255],
+                        true => [p[2], p[1], p[0], alpha(p[3])],
+                        false => [p[0], p[1], p[2], alpha(p[3])],
                     })
                     .collect(),
             }

@@ -78,7 +78,7 @@ pub fn fill(args: &BenchArgs, pool: &rayon::ThreadPool) -> Result<Value, CliErro
         })
     });
     let pixels = (viewport.width * viewport.height) as f64 * LAYERS as f64;
-    let covered = software.covered(settings.background);
+    let covered = software.covered();
     Ok(json!({
         "size": [viewport.width, viewport.height],
         "layers": LAYERS,
@@ -135,9 +135,9 @@ impl SoftwareTimer {
         );
     }
 
-    /// The share of the last image's pixels that are not the background.
-    fn covered(&self, background: Vec3) -> f64 {
-        let covered = crate::commands::stats::covered(&self.image.image, background);
+    /// The share of the last image's pixels it covers.
+    fn covered(&self) -> f64 {
+        let covered = crate::commands::stats::covered(&self.image.image);
         covered as f64 / self.image.image.pixels.len().max(1) as f64
     }
 }

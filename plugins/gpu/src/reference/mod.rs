@@ -166,6 +166,8 @@ pub(crate) struct Reference {
     /// The fate view's overlays for each key, made the first time they are shown.
     overlays: HashMap<PipelineKey, OverlayPipelines>,
     current: Option<(PipelineKey, TextureFilter)>,
+    /// Whether the model is drawn textured (the settings, the mesh's coordinates and a texture).
+    textured: bool,
     mesh: Option<GpuMesh>,
 }
 
@@ -185,6 +187,7 @@ impl Reference {
             pipelines: HashMap::new(),
             overlays: HashMap::new(),
             current: None,
+            textured: false,
             mesh: None,
         }
     }
@@ -269,6 +272,15 @@ impl Reference {
             self.overlays.insert(key, overlays);
         }
         self.current = Some((key, look.texture_filter));
+        self.textured = textured;
+    }
+
+    /// The shading the model is drawn with, and the texture's filter when it is textured.
+    pub(crate) fn drawn_look(&self) -> (Shading, Option<TextureFilter>) {
+        match self.current {
+            Some((key, filter)) => (key.shading, self.textured.then_some(filter)),
+            None => (Shading::None, None),
+        }
     }
 
     /// The shaded model, and with `overlays` the GPU's own facing and depth-test answers over it.
