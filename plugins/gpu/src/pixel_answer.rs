@@ -10,7 +10,7 @@ use close2gl_core::{
     Camera, Fates, Mesh, Mistake, PipelineSettings, Scene, SoftwareFrame, Viewport,
 };
 use close2gl_pipeline::mistakes::Mistakes;
-use close2gl_pipeline::textbook;
+use close2gl_pipeline::{program, textbook};
 use close2gl_raster::SoftwareRasterizer;
 use close2gl_raster::coverage_probe::{Drawn, PixelProbe, probe};
 
@@ -81,7 +81,7 @@ fn recorded_fates(scene: Scene<'_>) -> Fates {
         Mistake::None => textbook::run_recording(mesh, camera, settings, viewport).1,
         mistake => {
             let mistakes = Mistakes::one(mistake);
-            textbook::run_mistaken(mesh, camera, settings, viewport, mistakes).1
+            program::view::run(mesh, camera, settings, viewport, mistakes).1
         }
     }
 }

@@ -81,8 +81,7 @@ pub fn close2gl_system(
     let start = Instant::now();
     if settings.mistake != Mistake::None {
         let mistakes = mistakes::Mistakes::one(settings.mistake);
-        let (mistaken, all) =
-            textbook::run_mistaken(&mesh, &camera, &settings, *viewport, mistakes);
+        let (mistaken, all) = program::view::run(&mesh, &camera, &settings, *viewport, mistakes);
         *frame = mistaken;
         let record = fates.record;
         *fates = all;

@@ -2,13 +2,13 @@
 //! program's rule), divide, map by V, cull (by the program's rule, where it tests the winding),
 //! and what float32 rounding could do to each number the program writes.
 
-use close2gl_core::{FateKind, FrontFace, Mesh, TriangleFate};
+use close2gl_core::{FateKind, FrontFace, Mesh, Topology, TriangleFate};
 use glam::{DMat3, DMat4, DVec2, DVec3, DVec4};
 
 use super::{ClipRule, CullRule, Program, WindingSpace};
 use crate::clip::{NEAR, Polygon, clip_polygon, outcode};
-use crate::rounding;
 use crate::stage::face;
+use crate::{emit, rounding};
 
 impl Program {
     /// Mesh triangle `index` down the stages: its clip coordinates, its fate, and what it drew.
@@ -49,10 +49,7 @@ impl Program {
         outcome: &mut Outcome,
     ) {
         let ndc: Vec<DVec3> = piece.iter().map(|p| p.truncate() / p.w).collect();
-        let system: Vec<DVec2> = ndc
-            .iter()
-            .map(|p| (self.v * p.extend(1.0)).truncate().truncate())
-            .collect();
+        let system: Vec<DVec2> = ndc.iter().map(|&p| self.in_system(p)).collect();
         if system.iter().any(|p| !p.is_finite()) {
             outcome.fate.kind = FateKind::Clipped;
             return;
@@ -82,6 +79,45 @@ impl Program {
             .collect();
         outcome.inv_w = piece.iter().map(|p| 1.0 / p.w).collect();
         outcome.polygon = system;
+    }
+
+    /// An NDC point mapped by V into the declared 2D system.
+    fn in_system(&self, ndc: DVec3) -> DVec2 {
+        (self.v * ndc.extend(1.0)).truncate().truncate()
+    }
+
+    /// The corners `topology` draws of what `outcome` drew, each with what the rasterizer
+    /// needs: its polygon's, or in point mode, of a triangle clipping cut, [`emit::points`] of
+    /// its corners (f32 clip coordinates, as its clipping), divided and mapped as the polygon.
+    /// Empty when it drew nothing.
+    pub fn drawn_corners(&self, outcome: &Outcome, topology: Topology) -> Vec<DrawnCorner> {
+        if topology == Topology::Points && outcome.fate.kind == FateKind::Cut {
+            let single = outcome.clip.map(|c| c.as_vec4());
+            let triangle = Polygon::triangle(single[0], single[1], single[2]);
+            let points = emit::points(&triangle, outcome.fate.planes, self.declared.planes.mask());
+            return (points.vertices().iter().zip(points.weights))
+                .map(|(p, weights)| {
+                    let clip = p.as_dvec4();
+                    let ndc = clip.truncate() / clip.w;
+                    DrawnCorner {
+                        at: self.in_system(ndc),
+                        depth: ndc.z,
+                        inv_w: 1.0 / clip.w,
+                        weights: weights.to_array(),
+                        own: true,
+                    }
+                })
+                .collect();
+        }
+        (0..outcome.polygon.len())
+            .map(|i| DrawnCorner {
+                at: outcome.polygon[i],
+                depth: outcome.depths[i],
+                inv_w: outcome.inv_w[i],
+                weights: outcome.weights[i],
+                own: outcome.edges[i],
+            })
+            .collect()
     }
 
     /// The piece's corners on screen (window pixels, y down) and where the program tests the
@@ -239,6 +275,21 @@ impl Outcome {
     pub fn drawn(&self) -> bool {
         !self.polygon.is_empty()
     }
+}
+
+/// A corner of what a program drew, as its mode draws it ([`Program::drawn_corners`]).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct DrawnCorner {
+    /// Where, in the declared 2D system.
+    pub at: DVec2,
+    /// Its NDC depth (z/w).
+    pub depth: f64,
+    /// 1/w, for perspective-correct interpolation.
+    pub inv_w: f64,
+    /// Where it lies in the triangle: its corners' weights.
+    pub weights: [f32; 3],
+    /// Whether the edge it starts is part of one of the triangle's own edges.
+    pub own: bool,
 }
 
 /// The file's face normal of triangle `index`; for a model without them (an OBJ), the mean of
