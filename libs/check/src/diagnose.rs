@@ -36,7 +36,7 @@ pub fn diagnose(mesh: &Mesh, trace: &Trace) -> Vec<Mistakes> {
 /// Where a program with `set` may test the winding: where the trace says; when it does not, on
 /// screen (version 1's meaning), and also where it changes what `set` culls: in NDC when V is
 /// flipped by the mistake, in the 2D numbers when the declared system runs mirrored on screen.
-fn spaces(trace: &Trace, set: Mistakes) -> Vec<WindingSpace> {
+pub(crate) fn spaces(trace: &Trace, set: Mistakes) -> Vec<WindingSpace> {
     if let Some(space) = trace.winding {
         return vec![space];
     }
@@ -68,7 +68,12 @@ fn candidates(trace: &Trace) -> Vec<Mistakes> {
 /// Whether `program` reproduces the trace: what [`compare::compare`] would say agrees, found
 /// stage by stage from the cheapest, stopping at the first difference (most mistakes show in a
 /// matrix, before any triangle is sent down the pipeline).
-fn reproduces(program: &Program, mesh: &Mesh, trace: &Trace, pieces: &[Vec<usize>]) -> bool {
+pub(crate) fn reproduces(
+    program: &Program,
+    mesh: &Mesh,
+    trace: &Trace,
+    pieces: &[Vec<usize>],
+) -> bool {
     let agrees = |s: &compare::StageResult| s.status != compare::Status::Differs;
     if !agrees(&compare::camera(program, trace))
         || !compare::matrices(program, trace).iter().all(agrees)

@@ -2,7 +2,8 @@
 //! (read by `close2gl_trace_format`) against close2gl's pipeline on the same mesh, stage by
 //! stage ([`compare`]; each stage on the program's own input, [`own_input`]; pieces against a
 //! polygon, [`region`]), and, when it differs, the catalogue mistakes that reproduce it
-//! ([`diagnose`], [`apart`]); when none does, [`clues`] say what the differences share. [`report`] and [`picture`] write what was found as
+//! ([`diagnose`], [`apart`]; and what it may be under another declaration, [`redeclared`]);
+//! when none does, [`clues`] say what the differences share. [`report`] and [`picture`] write what was found as
 //! text, JSON and images. [`rubric`] makes the assignment's rubric into scenes, judges a
 //! program's traces of them and scores the judged scenes into the lines' points. It reads values
 //! (a mesh, traces, scenes) and returns values: no files, processes, GPU or window.
@@ -13,6 +14,7 @@ pub mod compare;
 pub mod diagnose;
 pub mod own_input;
 pub mod picture;
+pub mod redeclared;
 pub mod region;
 pub mod report;
 pub mod rubric;
@@ -24,6 +26,7 @@ use close2gl_trace_format::{FormatError, Trace};
 use glam::DMat4;
 
 pub use compare::{Comparison, Kind, Stage, StageResult, Status};
+pub use redeclared::Redeclared;
 
 /// What check found: the comparison with close2gl, close2gl's own frame, and the mistakes that
 /// reproduce the trace (each set on its own; empty when it agrees, or when none does).
@@ -35,6 +38,9 @@ pub struct Report {
     /// When the trace differs and no mistake reproduces it: the first difference, as precisely
     /// as the data allows.
     pub unexplained: Option<String>,
+    /// Sets that reproduce the trace as well under another declaration than the trace's (a
+    /// program that clips near and far only, where `no_clipping` is named).
+    pub redeclared: Vec<Redeclared>,
     /// When several sets reproduce the trace: what would tell them apart.
     pub apart: Vec<String>,
     /// When none reproduces it whole: the mistakes that explain some of its differing stages,
@@ -166,6 +172,7 @@ pub fn compare_only(mesh: &Mesh, trace: &Trace) -> Result<Report, FormatError> {
         comparison,
         expected,
         diagnoses: Vec::new(),
+        redeclared: Vec::new(),
         unexplained: None,
         apart: Vec::new(),
         partial: Vec::new(),
@@ -180,6 +187,10 @@ pub fn explain(report: &mut Report, mesh: &Mesh, trace: &Trace) {
     }
     report.diagnoses = diagnose::diagnose(mesh, trace);
     report.apart = apart::tell_apart(trace, &report.diagnoses);
+    report.redeclared = redeclared::redeclared(mesh, trace, &report.diagnoses);
+    if !report.redeclared.is_empty() {
+        report.apart.push(redeclared::APART.into());
+    }
     if report.diagnoses.is_empty() {
         report.partial = diagnose::partial(mesh, trace, &report.comparison);
         let explained: Vec<Stage> = report

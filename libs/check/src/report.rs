@@ -57,18 +57,22 @@ fn stage_text(out: &mut String, s: &StageResult, c: &Comparison) {
     }
 }
 
-/// The mistakes named (with what would tell them apart), those explaining some stages, and
-/// what is left unexplained.
+/// The mistakes named (with the declarations under which another set reproduces the trace,
+/// and what would tell them apart), those explaining some stages, and what is left
+/// unexplained.
 fn explanation_text(out: &mut String, report: &Report) {
-    match report.diagnoses.as_slice() {
-        [] => {}
-        [one] => out.push_str(&format!("mistake: {}\n", one.names())),
-        many => {
+    match (report.diagnoses.as_slice(), report.redeclared.as_slice()) {
+        ([], _) => {}
+        ([one], []) => out.push_str(&format!("mistake: {}\n", one.names())),
+        (many, redeclared) => {
             let names: Vec<String> = many.iter().map(|m| m.names()).collect();
             out.push_str(&format!(
                 "mistakes (the trace cannot tell them apart): {}\n",
                 names.join(", ")
             ));
+            for other in redeclared {
+                out.push_str(&format!("  or: {}\n", other.words()));
+            }
             let hints = &report.apart;
             if !hints.is_empty() {
                 out.push_str(&format!("  to tell them apart: {}\n", hints.join("; ")));
@@ -134,6 +138,10 @@ pub fn json(report: &Report) -> Value {
         "first_difference": first_difference,
         "mistakes": report.mistakes(),
         "diagnoses": diagnoses,
+        "redeclared": report.redeclared.iter().map(|r| json!({
+            "mistakes": r.mistakes.iter().map(|m| m.name()).collect::<Vec<_>>(),
+            "declaration": r.declaration,
+        })).collect::<Vec<_>>(),
         "tell_apart": report.apart,
         "explains": report.partial.iter().map(|(set, stages)| json!({
             "mistakes": set.iter().map(|m| m.name()).collect::<Vec<_>>(),
