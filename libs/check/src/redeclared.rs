@@ -10,7 +10,8 @@ use close2gl_pipeline::mistakes::Mistakes;
 use close2gl_pipeline::program::{ClipPlanes, Declared, Program};
 use close2gl_trace_format::{Trace, clipping_name};
 
-use crate::declared;
+use crate::compare::triangle::pieces_by_triangle;
+use crate::declared::declared;
 use crate::diagnose::{reproduces, spaces};
 
 /// A set of mistakes that reproduces a trace when the program declares something else.
@@ -47,7 +48,7 @@ pub fn redeclared(mesh: &Mesh, trace: &Trace, diagnoses: &[Mistakes]) -> Vec<Red
     if trace.planes == ClipPlanes::NearFar {
         return Vec::new();
     }
-    let pieces = crate::compare::pieces_by_triangle(trace, mesh.triangles.len());
+    let pieces = pieces_by_triangle(trace, mesh.triangles.len());
     let declaration = format!("clipping {} near_far", clipping_name(trace.clipping));
     let mut found: Vec<Redeclared> = Vec::new();
     for set in diagnoses.iter().filter(|set| set.has(Mistake::NoClipping)) {

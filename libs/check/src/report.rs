@@ -1,10 +1,52 @@
-//! check's report, for a person (text) and for a script (one JSON object, whose keys are
-//! binding: `agree`, `first_difference`, `mistakes`, `stages`, `triangles`).
+//! What check found ([`Report`]), and its report for a person (text) and for a script (one
+//! JSON object, whose keys are binding: `agree`, `first_difference`, `mistakes`, `stages`,
+//! `triangles`).
 
+use close2gl_pipeline::mistakes::Mistakes;
+use close2gl_pipeline::program::Outcome;
 use serde_json::{Value, json};
 
-use super::Report;
-use super::compare::{Comparison, StageResult, Status};
+use crate::redeclared::Redeclared;
+use crate::vocabulary::{Comparison, Stage, StageResult, Status};
+
+/// What check found: the comparison with close2gl, close2gl's own frame, and the mistakes that
+/// reproduce the trace (each set on its own; empty when it agrees, or when none does).
+#[derive(Clone, Debug)]
+pub struct Report {
+    pub comparison: Comparison,
+    pub expected: Vec<Outcome>,
+    pub diagnoses: Vec<Mistakes>,
+    /// When the trace differs and no mistake reproduces it: the first difference, as precisely
+    /// as the data allows.
+    pub unexplained: Option<String>,
+    /// Sets that reproduce the trace as well under another declaration than the trace's (a
+    /// program that clips near and far only, where `no_clipping` is named).
+    pub redeclared: Vec<Redeclared>,
+    /// When several sets reproduce the trace: what would tell them apart.
+    pub apart: Vec<String>,
+    /// When none reproduces it whole: the mistakes that explain some of its differing stages,
+    /// each with those stages.
+    pub partial: Vec<(Mistakes, Vec<Stage>)>,
+}
+
+impl Report {
+    pub fn agrees(&self) -> bool {
+        self.comparison.agrees()
+    }
+
+    /// The catalogue ids named, each once, in the catalogue's order.
+    pub fn mistakes(&self) -> Vec<&'static str> {
+        let partial = self.partial.iter().map(|(set, _)| set);
+        let all = self
+            .diagnoses
+            .iter()
+            .chain(partial)
+            .fold(Mistakes::NONE, |all, set| {
+                set.iter().fold(all, |a, m| a.with(m))
+            });
+        all.iter().map(|m| m.name()).collect()
+    }
+}
 
 /// The most triangle indices listed per kind of disagreement in the JSON (the totals are all).
 pub const MAX_LISTED: usize = 100;

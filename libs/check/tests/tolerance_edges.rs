@@ -2,7 +2,7 @@
 //! a right frame, and refuse a program that leaves out triangles of 0.05 px² or more (a rule of
 //! its own about small triangles, not rounding) or draws nothing at all.
 
-use close2gl_check::{self as check, Report, compare::Kind};
+use close2gl_check::{self as check, Kind, Report};
 use close2gl_core::{Mesh, ModelSource, PrimitiveParams};
 use close2gl_pipeline::mistakes::Mistakes;
 use close2gl_pipeline::program::Outcome;

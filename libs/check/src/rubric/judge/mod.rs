@@ -35,8 +35,10 @@ use glam::DVec3;
 
 use super::lines::LineId;
 use super::scenes::RubricScene;
-use crate::compare::{Comparison, Stage, StageResult, Status, number};
-use crate::{Report, program_for};
+use crate::declared::program_for;
+use crate::report::Report;
+use crate::vocabulary::{Comparison, Stage, StageResult, Status};
+use crate::words::number;
 pub use final_camera::Turn;
 pub(crate) use final_camera::settle_rotations;
 
