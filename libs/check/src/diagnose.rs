@@ -5,7 +5,7 @@
 
 use close2gl_core::{Mesh, Mistake};
 use close2gl_pipeline::mistakes::Mistakes;
-use close2gl_pipeline::program::{ClipPlanes, Outcome, Program, WindingSpace};
+use close2gl_pipeline::program::{ClipPlanes, Program, TriangleOutcome, WindingSpace};
 use close2gl_trace_format::Trace;
 use rayon::prelude::*;
 
@@ -142,7 +142,7 @@ pub fn unexplained(
     program: &Program,
     mesh: &Mesh,
     comparison: &Comparison,
-    expected: &[Outcome],
+    expected: &[TriangleOutcome],
     explained: &[Stage],
 ) -> String {
     let first = comparison
@@ -225,7 +225,7 @@ fn whereabouts(
     program: &Program,
     mesh: &Mesh,
     triangles: &[usize],
-    expected: &[Outcome],
+    expected: &[TriangleOutcome],
 ) -> String {
     let seen: Vec<clues::Seen> = triangles
         .iter()

@@ -3,7 +3,7 @@
 //! `triangles`).
 
 use close2gl_pipeline::mistakes::Mistakes;
-use close2gl_pipeline::program::Outcome;
+use close2gl_pipeline::program::TriangleOutcome;
 use serde_json::{Value, json};
 
 use crate::redeclared::Redeclared;
@@ -14,7 +14,7 @@ use crate::vocabulary::{Comparison, Stage, StageResult, Status};
 #[derive(Clone, Debug)]
 pub struct Report {
     pub comparison: Comparison,
-    pub expected: Vec<Outcome>,
+    pub expected: Vec<TriangleOutcome>,
     pub diagnoses: Vec<Mistakes>,
     /// When the trace differs and no mistake reproduces it: the first difference, as precisely
     /// as the data allows.

@@ -3,11 +3,11 @@
 //! trace viewer's probe all say them the same way.
 
 use close2gl_core::FateKind;
-use close2gl_pipeline::program::Outcome;
+use close2gl_pipeline::program::TriangleOutcome;
 use glam::{DVec2, DVec4};
 
 /// What close2gl did with a triangle, in words.
-pub fn fate_words(outcome: &Outcome) -> String {
+pub fn fate_words(outcome: &TriangleOutcome) -> String {
     let planes: Vec<&str> = close2gl_core::ClipPlane::in_outcode(outcome.fate.planes)
         .map(|p| p.name())
         .collect();

@@ -2,7 +2,7 @@
 //! culling, the window and depth, each triangle judged once ([`super::triangle`]) and its
 //! difference counted at the stage its kind belongs to.
 
-use close2gl_pipeline::program::{Outcome, Program};
+use close2gl_pipeline::program::{Program, TriangleOutcome};
 use close2gl_trace_format::Trace;
 
 use super::triangle::{TriangleVerdict, judge_triangle, pieces_by_triangle};
@@ -12,7 +12,7 @@ use crate::vocabulary::{Kind, Stage, StageResult};
 pub fn compare(
     program: &Program,
     trace: &Trace,
-    expected: &[Outcome],
+    expected: &[TriangleOutcome],
     mark: &mut impl FnMut(Kind, usize),
 ) -> [StageResult; 4] {
     if !trace.gives_output() {

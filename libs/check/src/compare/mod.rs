@@ -7,7 +7,7 @@
 //! tolerances a float32 program meets (docs/checking.md, "Tolerances").
 
 use close2gl_core::Mesh;
-use close2gl_pipeline::program::{Outcome, Program};
+use close2gl_pipeline::program::{Program, TriangleOutcome};
 use close2gl_trace_format::Trace;
 
 use crate::own_input::own_program;
@@ -23,7 +23,12 @@ pub mod triangle;
 /// Compares `trace` with what `program` computes for `mesh` (`expected`: its frame), the whole
 /// chain from the camera. The trace's triangle indices must be the mesh's (checked when the
 /// trace was read).
-pub fn compare(program: &Program, mesh: &Mesh, trace: &Trace, expected: &[Outcome]) -> Comparison {
+pub fn compare(
+    program: &Program,
+    mesh: &Mesh,
+    trace: &Trace,
+    expected: &[TriangleOutcome],
+) -> Comparison {
     compare_stages([program, program, program], mesh, trace, expected)
 }
 
@@ -47,7 +52,7 @@ fn compare_stages(
     [matrices_of, clip_of, output]: [&Program; 3],
     mesh: &Mesh,
     trace: &Trace,
-    expected: &[Outcome],
+    expected: &[TriangleOutcome],
 ) -> Comparison {
     let mut triangles: Vec<(Kind, Vec<usize>)> = Vec::new();
     let mut mark = |kind: Kind, t: usize| match triangles.iter_mut().find(|(k, _)| *k == kind) {

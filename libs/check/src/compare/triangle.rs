@@ -4,7 +4,7 @@
 //! candidate program, triangle by triangle, stopping at the first that differs.
 
 use close2gl_core::FateKind;
-use close2gl_pipeline::program::{Outcome, Program};
+use close2gl_pipeline::program::{Program, TriangleOutcome};
 use close2gl_pipeline::rounding;
 use close2gl_trace_format::Trace;
 use glam::DVec2;
@@ -41,7 +41,7 @@ pub fn judge_triangle(
     program: &Program,
     trace: &Trace,
     t: usize,
-    ours: &Outcome,
+    ours: &TriangleOutcome,
     pieces: &[usize],
 ) -> TriangleVerdict {
     let theirs: Vec<&[DVec2]> = pieces
@@ -71,7 +71,7 @@ struct OneTriangle<'a> {
     program: &'a Program,
     trace: &'a Trace,
     t: usize,
-    ours: &'a Outcome,
+    ours: &'a TriangleOutcome,
     pieces: &'a [usize],
     theirs: Vec<&'a [DVec2]>,
 }
@@ -194,7 +194,7 @@ const AGREE: TriangleVerdict = TriangleVerdict::Agree {
 
 /// How far a float32 program may put the corners of a triangle close2gl did not draw: the
 /// largest error of its corners in front of the eye (those behind it are not placed at all).
-fn corner_error(program: &Program, ours: &Outcome) -> f64 {
+fn corner_error(program: &Program, ours: &TriangleOutcome) -> f64 {
     ours.clip
         .iter()
         .filter(|c| c.w > 0.0)
@@ -207,7 +207,11 @@ fn corner_error(program: &Program, ours: &Outcome) -> f64 {
 
 /// How many of the trace's pieces for this triangle give depths, and the first depth that is
 /// off, with close2gl's depth at that corner and the trace's line.
-fn depths(ours: &Outcome, pieces: &[usize], trace: &Trace) -> (usize, Option<(f64, f64, usize)>) {
+fn depths(
+    ours: &TriangleOutcome,
+    pieces: &[usize],
+    trace: &Trace,
+) -> (usize, Option<(f64, f64, usize)>) {
     let (mut checked, mut first) = (0, None);
     for &i in pieces {
         let piece = &trace.pieces[i];

@@ -22,7 +22,7 @@ mod triangle;
 pub mod view;
 
 pub use given::{ProgramCamera, System2d};
-pub use triangle::{DrawnCorner, Outcome};
+pub use triangle::{DrawnCorner, TriangleOutcome};
 
 impl From<&Camera> for ProgramCamera {
     fn from(c: &Camera) -> Self {
@@ -263,7 +263,7 @@ impl Program {
     }
 
     /// Every triangle of `mesh`, in order.
-    pub fn frame(&self, mesh: &Mesh) -> Vec<Outcome> {
+    pub fn frame(&self, mesh: &Mesh) -> Vec<TriangleOutcome> {
         (0..mesh.triangles.len())
             .filter_map(|t| self.triangle(mesh, t))
             .collect()

@@ -13,12 +13,12 @@ use crate::{emit, rounding};
 impl Program {
     /// Mesh triangle `index` down the stages: its clip coordinates, its fate, and what it drew.
     /// None when the mesh has no such triangle.
-    pub fn triangle(&self, mesh: &Mesh, index: usize) -> Option<Outcome> {
+    pub fn triangle(&self, mesh: &Mesh, index: usize) -> Option<TriangleOutcome> {
         let corners = *mesh.triangles.get(index)?;
         let world = corners.map(|i| self.world(mesh, i));
         let clip = world.map(|p| self.clip_matrix * p.extend(1.0));
         let terms = rounding::clip_terms(self.clip_matrix, self.camera.position, &world);
-        let mut outcome = Outcome {
+        let mut outcome = TriangleOutcome {
             clip,
             fate: TriangleFate::default(),
             polygon: Vec::new(),
@@ -46,7 +46,7 @@ impl Program {
         index: usize,
         world: &[DVec3; 3],
         piece: &[DVec4],
-        outcome: &mut Outcome,
+        outcome: &mut TriangleOutcome,
     ) {
         let ndc: Vec<DVec3> = piece.iter().map(|p| p.truncate() / p.w).collect();
         let system: Vec<DVec2> = ndc.iter().map(|&p| self.in_system(p)).collect();
@@ -90,7 +90,7 @@ impl Program {
     /// needs: its polygon's, or in point mode, of a triangle clipping cut, [`emit::points`] of
     /// its corners (f32 clip coordinates, as its clipping), divided and mapped as the polygon.
     /// Empty when it drew nothing.
-    pub fn drawn_corners(&self, outcome: &Outcome, topology: Topology) -> Vec<DrawnCorner> {
+    pub fn drawn_corners(&self, outcome: &TriangleOutcome, topology: Topology) -> Vec<DrawnCorner> {
         if topology == Topology::Points && outcome.fate.kind == FateKind::Cut {
             let single = outcome.clip.map(|c| c.as_vec4());
             let triangle = Polygon::triangle(single[0], single[1], single[2]);
@@ -142,7 +142,7 @@ impl Program {
     /// The clip rule: the polygon to divide (clip coordinates) and, in `outcome`, which planes
     /// cut it and which of its edges are the triangle's own; None when the triangle is removed
     /// whole (its fate then says why).
-    fn clipped(&self, clip: &[DVec4; 3], outcome: &mut Outcome) -> Option<Vec<DVec4>> {
+    fn clipped(&self, clip: &[DVec4; 3], outcome: &mut TriangleOutcome) -> Option<Vec<DVec4>> {
         let single = clip.map(|c| c.as_vec4());
         let mask = self.declared.planes.mask();
         let codes = single.map(|c| outcode(c) & mask);
@@ -150,12 +150,12 @@ impl Program {
             codes[0] | codes[1] | codes[2],
             codes[0] & codes[1] & codes[2],
         );
-        let whole = |outcome: &mut Outcome| {
+        let whole = |outcome: &mut TriangleOutcome| {
             outcome.edges = vec![true; 3];
             outcome.weights = vec![[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
             Some(clip.to_vec())
         };
-        let removed = |outcome: &mut Outcome, planes: u8| {
+        let removed = |outcome: &mut TriangleOutcome, planes: u8| {
             outcome.fate.kind = FateKind::Clipped;
             outcome.fate.planes = planes;
             outcome.fate.behind_eye = clip.iter().all(|c| c.w <= 0.0);
@@ -200,7 +200,7 @@ impl Program {
         index: usize,
         world: &[DVec3; 3],
         [pixels, tested]: [&[[f32; 2]]; 2],
-        outcome: &mut Outcome,
+        outcome: &mut TriangleOutcome,
     ) -> (f32, Option<FateKind>) {
         let (_, winding) = face::<true>(
             tested,
@@ -237,7 +237,7 @@ impl Program {
 
 /// What one mesh triangle became in a program's Close2GL.
 #[derive(Clone, Debug, PartialEq)]
-pub struct Outcome {
+pub struct TriangleOutcome {
     /// Its corners' clip coordinates, before clipping.
     pub clip: [DVec4; 3],
     /// Drawn, cut, clipped, culled or zero_area, with the planes and the signed area (the
@@ -270,7 +270,7 @@ pub struct Outcome {
     pub depth_errors: Vec<f64>,
 }
 
-impl Outcome {
+impl TriangleOutcome {
     /// Whether it drew anything.
     pub fn drawn(&self) -> bool {
         !self.polygon.is_empty()

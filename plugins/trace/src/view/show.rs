@@ -11,7 +11,7 @@ use super::TraceView;
 
 /// The shown trace's 2D output, in the view's pixels, whenever the pipeline's frame (its
 /// topology), the trace or the view's size changed; none once no trace is shown.
-pub fn show_trace(
+pub fn trace_output_system(
     view: Res<TraceView>,
     viewport: Res<Viewport>,
     frame: Res<Close2glFrame>,

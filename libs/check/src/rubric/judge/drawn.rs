@@ -2,7 +2,7 @@
 //! own geometry, the fields of view, resizing, and the whole frame for `synchronized`.
 
 use close2gl_core::FrontFace;
-use close2gl_pipeline::program::{CullRule, Outcome, Program};
+use close2gl_pipeline::program::{CullRule, Program, TriangleOutcome};
 use glam::{DMat4, DVec2};
 
 use super::{Judge, Verdict, drew_nothing, required, stage_verdict, stages_agree};
@@ -100,7 +100,7 @@ impl Judge<'_> {
             expected
                 .frame(self.mesh)
                 .iter()
-                .flat_map(|o: &Outcome| o.polygon.iter().copied()),
+                .flat_map(|o: &TriangleOutcome| o.polygon.iter().copied()),
             self.ours.v,
             row,
         );

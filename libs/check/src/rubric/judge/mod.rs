@@ -27,7 +27,7 @@ mod drawn;
 mod final_camera;
 
 use close2gl_core::{FrontFace, Mesh};
-use close2gl_pipeline::program::{ClipRule, Outcome, Program, WindingSpace};
+use close2gl_pipeline::program::{ClipRule, Program, TriangleOutcome, WindingSpace};
 use close2gl_trace_format::{
     CameraLines, SceneCamera, SceneFile, Trace, clipping_name, culling_name,
 };
@@ -248,7 +248,7 @@ fn on_screen(trace: &Trace) -> Option<FrontFace> {
 
 /// A trace that drew nothing: right when `expected` draws nothing either (everything culled
 /// or outside), a failure saying how much `whose` pipeline draws otherwise.
-fn drew_nothing(expected: &[Outcome], whose: &str) -> Verdict {
+fn drew_nothing(expected: &[TriangleOutcome], whose: &str) -> Verdict {
     match expected.iter().filter(|o| o.drawn()).count() {
         0 => Verdict::pass(""),
         n => Verdict::fail(format!("it drew nothing, where {whose} {n} triangles")),
