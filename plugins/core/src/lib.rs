@@ -14,6 +14,7 @@ mod named;
 
 mod app;
 mod camera;
+pub mod declaration;
 mod excerpt;
 mod fates;
 pub mod files;

@@ -14,42 +14,15 @@ use close2gl_core::{
 };
 use glam::{DMat4, DVec3};
 
-use crate::clip::{FAR, NEAR, Outcode};
 use crate::mistakes::Mistakes;
 
-pub(crate) mod given;
+pub mod given;
 mod triangle;
 pub mod view;
 
-pub use given::{ProgramCamera, System2d};
+pub use close2gl_core::declaration::{ClipPlanes, ClipRule, ProgramCamera, System2d, WindingSpace};
+pub use given::planes_mask;
 pub use triangle::{DrawnCorner, TriangleOutcome};
-
-impl From<&Camera> for ProgramCamera {
-    fn from(c: &Camera) -> Self {
-        Self {
-            position: c.position.as_dvec3(),
-            u: c.u.as_dvec3(),
-            v: c.v.as_dvec3(),
-            n: c.n.as_dvec3(),
-            hfov: f64::from(c.hfov),
-            vfov: f64::from(c.vfov),
-            near: f64::from(c.near),
-            far: f64::from(c.far),
-        }
-    }
-}
-
-/// How the program clips: what a scene or a trace says (`clipping simple|full|none`), and
-/// what it does unless it divides first ([`Program::divides_first`]).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum ClipRule {
-    /// The assignment's: drop a triangle with any corner outside the view volume.
-    Simple,
-    /// Cut against the six planes, as a GPU does.
-    Full,
-    /// Nothing clipped, but a corner at w = 0 exactly (no division is possible).
-    Nothing,
-}
 
 /// How the program culls, and which winding (or side) is front.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -61,42 +34,6 @@ pub enum CullRule {
     FileNormals(FrontFace),
     /// `culling_by_view_axis`: back when ((p1 − p0) × (p2 − p0)) · n < 0 (reversed for cw).
     ViewAxis(FrontFace),
-}
-
-/// Where a program tests a triangle's winding (`trace-format.md`, culling's space).
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum WindingSpace {
-    /// As seen on screen (version 1's `culling ccw`): the 2D output mapped to the window.
-    Screen,
-    /// NDC x, y, y up, before V: a mistake in V does not change it.
-    Ndc,
-    /// The 2D output's own numbers (x right, y growing upward in the numbers): with a y-down
-    /// system, the mirror of the screen.
-    Window,
-}
-
-impl WindingSpace {
-    pub const ALL: [WindingSpace; 3] = [Self::Screen, Self::Ndc, Self::Window];
-}
-
-/// Which planes the program clips against itself.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
-pub enum ClipPlanes {
-    /// All six.
-    #[default]
-    All,
-    /// Near and far only: x and y are left to the 2D rasteriser, which cuts at the window.
-    NearFar,
-}
-
-impl ClipPlanes {
-    /// The planes' bits in an outcode.
-    pub fn mask(self) -> Outcode {
-        match self {
-            ClipPlanes::All => 0x3f,
-            ClipPlanes::NearFar => NEAR | FAR,
-        }
-    }
 }
 
 /// What the program is told to do, or says it did: the settings a scene or a trace declares.
@@ -200,9 +137,9 @@ impl Program {
         if mistakes.has(LeftHanded) {
             camera.u = camera.n.cross(camera.v);
         }
-        let m = camera.modelview(mistakes);
-        let p = camera.projection(mistakes);
-        let v = declared.system.viewport(mistakes);
+        let m = given::modelview(&camera, mistakes);
+        let p = given::projection(&camera, mistakes);
+        let v = given::viewport(&declared.system, mistakes);
         let clip_matrix = match mistakes.has(ProductOrder) {
             true => m * p,
             false => p * m,

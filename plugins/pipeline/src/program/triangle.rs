@@ -5,7 +5,7 @@
 use close2gl_core::{FateKind, FrontFace, Mesh, Topology, TriangleFate};
 use glam::{DMat3, DMat4, DVec2, DVec3, DVec4};
 
-use super::{ClipRule, CullRule, Program, WindingSpace};
+use super::{ClipRule, CullRule, Program, WindingSpace, planes_mask};
 use crate::clip::{NEAR, Polygon, clip_polygon, outcode};
 use crate::stage::face;
 use crate::{emit, rounding};
@@ -94,7 +94,11 @@ impl Program {
         if topology == Topology::Points && outcome.fate.kind == FateKind::Cut {
             let single = outcome.clip.map(|c| c.as_vec4());
             let triangle = Polygon::triangle(single[0], single[1], single[2]);
-            let points = emit::points(&triangle, outcome.fate.planes, self.declared.planes.mask());
+            let points = emit::points(
+                &triangle,
+                outcome.fate.planes,
+                planes_mask(self.declared.planes),
+            );
             return (points.vertices().iter().zip(points.weights))
                 .map(|(p, weights)| {
                     let clip = p.as_dvec4();
@@ -144,7 +148,7 @@ impl Program {
     /// whole (its fate then says why).
     fn clipped(&self, clip: &[DVec4; 3], outcome: &mut TriangleOutcome) -> Option<Vec<DVec4>> {
         let single = clip.map(|c| c.as_vec4());
-        let mask = self.declared.planes.mask();
+        let mask = planes_mask(self.declared.planes);
         let codes = single.map(|c| outcode(c) & mask);
         let (any, all) = (
             codes[0] | codes[1] | codes[2],
