@@ -11,7 +11,7 @@ use close2gl::core::{
     Camera, Fates, Mesh, PipelineSettings, RecordFates, Scene, SoftwareFrame, Viewport,
 };
 use close2gl::raster::SoftwareRasterizer;
-use close2gl::raster::coverage_probe::{Drawn, Outcome, PixelProbe, probe};
+use close2gl::raster::coverage_probe::{Drawn, PixelOutcome, PixelProbe, probe};
 use close2gl_gpu::{Gpu, OffscreenPlugin, probe_reference, render_offscreen};
 use serde_json::Value;
 
@@ -353,7 +353,7 @@ fn the_probe_names_what_simple_clipping_removed() {
     let candidate = close2gl.candidates.iter().find(|c| c.triangle == 13);
     assert_eq!(
         candidate.map(|c| c.outcome),
-        Some(Outcome::Clipped),
+        Some(PixelOutcome::Clipped),
         "{close2gl:?}"
     );
     // And where triangle 10 hides 11, the probe says who lost the depth test.
@@ -363,7 +363,10 @@ fn the_probe_names_what_simple_clipping_removed() {
         .iter()
         .map(|c| (c.triangle, c.outcome))
         .collect();
-    assert_eq!(outcomes, [(10, Outcome::Won), (11, Outcome::Depth)]);
+    assert_eq!(
+        outcomes,
+        [(10, PixelOutcome::Won), (11, PixelOutcome::Depth)]
+    );
 }
 
 #[test]

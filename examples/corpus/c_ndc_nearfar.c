@@ -16,7 +16,9 @@
  * expect knot_through: agree
  * expect knot_cw: agree
  * expect inside_cube: agree
+ * expect knot_aside: agree
  * expect knot_through -DDECLARE_SIMPLE: differs stage=clipping unexplained
+ * expect knot_aside -DDECLARE_SIMPLE: differs stage=clipping names=no_clipping fits=clipping_simple_near_far
  * expect-grade cube: 200
  * expect-grade cube -DIDENTITY_V: 200
  * expect-grade cube -DDECLARE_SIMPLE: simple_clipping=3 synchronized=22

@@ -65,7 +65,7 @@ pub fn run(args: RunArgs) -> Result<(), CliError> {
     let mut app = close2gl_app::build_app(&config, size).map_err(CliError::Input)?;
     print_warnings(&app);
     if let Some(path) = &args.trace {
-        show_trace(&mut app, path)?;
+        open_trace_at_start(&mut app, path)?;
     }
     let (exit_after_frames, screenshot_frame) = last_frames(&args, replay.as_ref());
     if args.watch {
@@ -89,7 +89,10 @@ pub fn run(args: RunArgs) -> Result<(), CliError> {
 
 /// Shows the trace at `path` from the first frame on; a trace that does not read or does not
 /// fit the model is an error here, before anything is shown.
-fn show_trace(app: &mut close2gl_core::App, path: &std::path::Path) -> Result<(), CliError> {
+fn open_trace_at_start(
+    app: &mut close2gl_core::App,
+    path: &std::path::Path,
+) -> Result<(), CliError> {
     app.world_mut().resource_mut::<TraceRequest>().0 = Some(path.to_path_buf());
     app.update();
     match &app.world().resource::<TraceView>().error {

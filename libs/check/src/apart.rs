@@ -7,7 +7,7 @@ use close2gl_pipeline::program::Program;
 use close2gl_trace_format::Trace;
 use glam::DMat4;
 
-use super::program_for;
+use crate::declared::program_for;
 
 /// What would tell `sets` apart, each hint once, in a stable order; empty for fewer than two.
 pub fn tell_apart(trace: &Trace, sets: &[Mistakes]) -> Vec<String> {

@@ -11,7 +11,9 @@ use close2gl_pipeline::program::{Program, ProgramCamera};
 use close2gl_trace_format::Trace;
 use glam::DMat4;
 
-use super::compare::{ALL_ROWS, Stage, StageResult, Status, V_ROWS, number};
+use crate::compare::matrices::{ALL_ROWS, V_ROWS};
+use crate::vocabulary::{Stage, StageResult, Status};
+use crate::words::number;
 pub use camera_moves::{axes_after_move, travel};
 pub use matrix_ratio::matrix;
 pub use triangle_sizes::{Seen, on_screen, seen, triangles};

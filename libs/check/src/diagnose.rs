@@ -5,18 +5,20 @@
 
 use close2gl_core::{Mesh, Mistake};
 use close2gl_pipeline::mistakes::Mistakes;
-use close2gl_pipeline::program::{ClipPlanes, Outcome, Program, WindingSpace};
+use close2gl_pipeline::program::{ClipPlanes, Program, TriangleOutcome, WindingSpace};
 use close2gl_trace_format::Trace;
 use rayon::prelude::*;
 
-use super::clues;
-use super::compare::{self, Comparison, Kind, Stage};
-use super::{program_for, program_winding};
+use crate::clues;
+use crate::compare::triangle::{TriangleVerdict, judge_triangle, pieces_by_triangle};
+use crate::compare::{self, camera, clip, matrices};
+use crate::declared::{program_for, program_winding};
+use crate::vocabulary::{Comparison, Kind, Stage, StageResult, Status};
 
 /// The sets of mistakes that reproduce `trace`: single mistakes first; a pair only when neither
 /// of its mistakes alone does (the other one would change nothing the trace shows).
 pub fn diagnose(mesh: &Mesh, trace: &Trace) -> Vec<Mistakes> {
-    let pieces = compare::pieces_by_triangle(trace, mesh.triangles.len());
+    let pieces = pieces_by_triangle(trace, mesh.triangles.len());
     let reproduces = |set: &Mistakes| {
         spaces(trace, *set).into_iter().any(|space| {
             let program = program_winding(trace, *set, space);
@@ -36,7 +38,7 @@ pub fn diagnose(mesh: &Mesh, trace: &Trace) -> Vec<Mistakes> {
 /// Where a program with `set` may test the winding: where the trace says; when it does not, on
 /// screen (version 1's meaning), and also where it changes what `set` culls: in NDC when V is
 /// flipped by the mistake, in the 2D numbers when the declared system runs mirrored on screen.
-fn spaces(trace: &Trace, set: Mistakes) -> Vec<WindingSpace> {
+pub(crate) fn spaces(trace: &Trace, set: Mistakes) -> Vec<WindingSpace> {
     if let Some(space) = trace.winding {
         return vec![space];
     }
@@ -68,11 +70,16 @@ fn candidates(trace: &Trace) -> Vec<Mistakes> {
 /// Whether `program` reproduces the trace: what [`compare::compare`] would say agrees, found
 /// stage by stage from the cheapest, stopping at the first difference (most mistakes show in a
 /// matrix, before any triangle is sent down the pipeline).
-fn reproduces(program: &Program, mesh: &Mesh, trace: &Trace, pieces: &[Vec<usize>]) -> bool {
-    let agrees = |s: &compare::StageResult| s.status != compare::Status::Differs;
-    if !agrees(&compare::camera(program, trace))
-        || !compare::matrices(program, trace).iter().all(agrees)
-        || !agrees(&compare::clip(program, mesh, trace, &mut |_, _| {}))
+pub(crate) fn reproduces(
+    program: &Program,
+    mesh: &Mesh,
+    trace: &Trace,
+    pieces: &[Vec<usize>],
+) -> bool {
+    let agrees = |s: &StageResult| s.status != Status::Differs;
+    if !agrees(&camera::compare(program, trace))
+        || !matrices::compare(program, trace).iter().all(agrees)
+        || !agrees(&clip::compare(program, mesh, trace, &mut |_, _| {}))
     {
         return false;
     }
@@ -82,8 +89,8 @@ fn reproduces(program: &Program, mesh: &Mesh, trace: &Trace, pieces: &[Vec<usize
     (0..mesh.triangles.len()).all(|t| {
         program.triangle(mesh, t).is_some_and(|ours| {
             matches!(
-                compare::judge_triangle(program, trace, t, &ours, &pieces[t]),
-                compare::TriangleVerdict::Agree { .. }
+                judge_triangle(program, trace, t, &ours, &pieces[t]),
+                TriangleVerdict::Agree { .. }
             )
         })
     })
@@ -96,7 +103,7 @@ pub fn partial(mesh: &Mesh, trace: &Trace, comparison: &Comparison) -> Vec<(Mist
     let differing: Vec<Stage> = comparison
         .stages
         .iter()
-        .filter(|s| s.status == compare::Status::Differs)
+        .filter(|s| s.status == Status::Differs)
         .map(|s| s.stage)
         .collect();
     let singles = candidates(trace)
@@ -106,7 +113,7 @@ pub fn partial(mesh: &Mesh, trace: &Trace, comparison: &Comparison) -> Vec<(Mist
         .par_bridge()
         .filter_map(|set| {
             let with = compare::compare_own_input(&program_for(trace, set), mesh, trace);
-            let differs = |s: Stage| with.stage(s).status == compare::Status::Differs;
+            let differs = |s: Stage| with.stage(s).status == Status::Differs;
             let new = with
                 .stages
                 .iter()
@@ -135,13 +142,13 @@ pub fn unexplained(
     program: &Program,
     mesh: &Mesh,
     comparison: &Comparison,
-    expected: &[Outcome],
+    expected: &[TriangleOutcome],
     explained: &[Stage],
 ) -> String {
     let first = comparison
         .stages
         .iter()
-        .find(|s| s.status == compare::Status::Differs && !explained.contains(&s.stage));
+        .find(|s| s.status == Status::Differs && !explained.contains(&s.stage));
     let Some(first) = first else {
         return "the trace agrees".into();
     };
@@ -218,7 +225,7 @@ fn whereabouts(
     program: &Program,
     mesh: &Mesh,
     triangles: &[usize],
-    expected: &[Outcome],
+    expected: &[TriangleOutcome],
 ) -> String {
     let seen: Vec<clues::Seen> = triangles
         .iter()

@@ -1,96 +1,39 @@
 //! `close2gl check` and the rubric `close2gl grade` scores by, as a library: a program's trace
-//! (read by `close2gl_trace_format`) against close2gl's pipeline on the same mesh, stage by
-//! stage ([`compare`]; each stage on the program's own input, [`own_input`]; pieces against a
-//! polygon, [`region`]), and, when it differs, the catalogue mistakes that reproduce it
-//! ([`diagnose`], [`apart`]); when none does, [`clues`] say what the differences share. [`report`] and [`picture`] write what was found as
-//! text, JSON and images. [`rubric`] makes the assignment's rubric into scenes, judges a
-//! program's traces of them and scores the judged scenes into the lines' points. It reads values
-//! (a mesh, traces, scenes) and returns values: no files, processes, GPU or window.
+//! (read by `close2gl_trace_format`) against close2gl's pipeline on the same mesh, in rooms a
+//! reader can name. [`declared`] makes the program a trace declares; [`compare`] holds it to
+//! the trace stage by stage, one file per stage (each stage on the program's own input,
+//! [`own_input`]; one mesh triangle judged, [`compare::triangle`]; pieces against a polygon,
+//! [`region`]), in the words of [`vocabulary`]; when it differs, [`diagnose`] names the
+//! catalogue mistakes that reproduce it ([`apart`]: what tells them apart; [`redeclared`]: what
+//! it may be under another declaration), and when none does, [`clues`] say what the differences
+//! share. [`report`] and [`picture`] write what was found as text, JSON and images, in the
+//! phrases of [`words`]. [`rubric`] makes the assignment's rubric into scenes, judges a
+//! program's traces of them and scores the judged scenes into the lines' points. This file
+//! holds the entry points only: no module calls back into it. It reads values (a mesh, traces,
+//! scenes) and returns values: no files, processes, GPU or window.
 
 pub mod apart;
 pub mod clues;
 pub mod compare;
+pub mod declared;
 pub mod diagnose;
 pub mod own_input;
 pub mod picture;
+pub mod redeclared;
 pub mod region;
 pub mod report;
 pub mod rubric;
+pub mod vocabulary;
+pub mod words;
 
-use close2gl_core::{Mesh, RenderMode};
+use close2gl_core::Mesh;
 use close2gl_pipeline::mistakes::Mistakes;
-use close2gl_pipeline::program::{Declared, Outcome, Program, WindingSpace};
 use close2gl_trace_format::{FormatError, Trace};
-use glam::DMat4;
 
-pub use compare::{Comparison, Kind, Stage, StageResult, Status};
-
-/// What check found: the comparison with close2gl, close2gl's own frame, and the mistakes that
-/// reproduce the trace (each set on its own; empty when it agrees, or when none does).
-#[derive(Clone, Debug)]
-pub struct Report {
-    pub comparison: Comparison,
-    pub expected: Vec<Outcome>,
-    pub diagnoses: Vec<Mistakes>,
-    /// When the trace differs and no mistake reproduces it: the first difference, as precisely
-    /// as the data allows.
-    pub unexplained: Option<String>,
-    /// When several sets reproduce the trace: what would tell them apart.
-    pub apart: Vec<String>,
-    /// When none reproduces it whole: the mistakes that explain some of its differing stages,
-    /// each with those stages.
-    pub partial: Vec<(Mistakes, Vec<Stage>)>,
-}
-
-impl Report {
-    pub fn agrees(&self) -> bool {
-        self.comparison.agrees()
-    }
-
-    /// The catalogue ids named, each once, in the catalogue's order.
-    pub fn mistakes(&self) -> Vec<&'static str> {
-        let partial = self.partial.iter().map(|(set, _)| set);
-        let all = self
-            .diagnoses
-            .iter()
-            .chain(partial)
-            .fold(Mistakes::NONE, |all, set| {
-                set.iter().fold(all, |a, m| a.with(m))
-            });
-        all.iter().map(|m| m.name()).collect()
-    }
-}
-
-/// The program close2gl runs for this trace: its camera, window, 2D system and settings, with
-/// `mistakes`, testing the winding where the trace says (on screen when it does not).
-pub fn program_for(trace: &Trace, mistakes: Mistakes) -> Program {
-    let winding = trace.winding.unwrap_or(WindingSpace::Screen);
-    program_winding(trace, mistakes, winding)
-}
-
-/// [`program_for`] testing the winding in `winding`.
-pub fn program_winding(trace: &Trace, mistakes: Mistakes, winding: WindingSpace) -> Program {
-    Program::new(&trace.camera, declared(trace, winding), mistakes)
-}
-
-/// What `trace` declares (its window, 2D system, culling, clipping, mode, planes and model
-/// matrix), testing the winding in `winding`: the one way a trace becomes what close2gl runs
-/// and what its view shows ([`Declared::onto`]).
-pub fn declared(trace: &Trace, winding: WindingSpace) -> Declared {
-    let mode = trace.mode.unwrap_or(RenderMode::Solid);
-    Declared {
-        winding,
-        planes: trace.planes,
-        model: trace.model_matrix.unwrap_or(DMat4::IDENTITY),
-        ..Declared::new(
-            trace.window,
-            trace.ortho2d,
-            trace.culling,
-            trace.clipping,
-            mode,
-        )
-    }
-}
+pub use declared::{declared, program_for, program_winding};
+pub use redeclared::Redeclared;
+pub use report::Report;
+pub use vocabulary::{Comparison, Kind, Stage, StageResult, Status};
 
 /// What a trace says about a model that is not a matter of its numbers: its triangle count and
 /// every triangle index it uses must be the model's, and no triangle drawn in more than
@@ -166,6 +109,7 @@ pub fn compare_only(mesh: &Mesh, trace: &Trace) -> Result<Report, FormatError> {
         comparison,
         expected,
         diagnoses: Vec::new(),
+        redeclared: Vec::new(),
         unexplained: None,
         apart: Vec::new(),
         partial: Vec::new(),
@@ -180,6 +124,10 @@ pub fn explain(report: &mut Report, mesh: &Mesh, trace: &Trace) {
     }
     report.diagnoses = diagnose::diagnose(mesh, trace);
     report.apart = apart::tell_apart(trace, &report.diagnoses);
+    report.redeclared = redeclared::redeclared(mesh, trace, &report.diagnoses);
+    if !report.redeclared.is_empty() {
+        report.apart.push(redeclared::APART.into());
+    }
     if report.diagnoses.is_empty() {
         report.partial = diagnose::partial(mesh, trace, &report.comparison);
         let explained: Vec<Stage> = report

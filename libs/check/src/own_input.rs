@@ -170,6 +170,6 @@ mod tests {
     }
 
     fn ours(trace: &Trace) -> Program {
-        crate::program_for(trace, close2gl_pipeline::mistakes::Mistakes::NONE)
+        crate::declared::program_for(trace, close2gl_pipeline::mistakes::Mistakes::NONE)
     }
 }

@@ -5,9 +5,10 @@ use close2gl_core::Image;
 use close2gl_trace_format::Trace;
 use glam::DVec2;
 
-use super::Report;
-use super::compare::{Kind, pieces_by_triangle};
-use super::region::covers;
+use crate::compare::triangle::pieces_by_triangle;
+use crate::region::covers;
+use crate::report::Report;
+use crate::vocabulary::Kind;
 
 const BACKGROUND: [u8; 4] = [20, 20, 26, 255];
 const OURS: [u8; 4] = [217, 166, 64, 255];

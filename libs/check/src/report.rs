@@ -1,10 +1,52 @@
-//! check's report, for a person (text) and for a script (one JSON object, whose keys are
-//! binding: `agree`, `first_difference`, `mistakes`, `stages`, `triangles`).
+//! What check found ([`Report`]), and its report for a person (text) and for a script (one
+//! JSON object, whose keys are binding: `agree`, `first_difference`, `mistakes`, `stages`,
+//! `triangles`).
 
+use close2gl_pipeline::mistakes::Mistakes;
+use close2gl_pipeline::program::TriangleOutcome;
 use serde_json::{Value, json};
 
-use super::Report;
-use super::compare::{Comparison, StageResult, Status};
+use crate::redeclared::Redeclared;
+use crate::vocabulary::{Comparison, Stage, StageResult, Status};
+
+/// What check found: the comparison with close2gl, close2gl's own frame, and the mistakes that
+/// reproduce the trace (each set on its own; empty when it agrees, or when none does).
+#[derive(Clone, Debug)]
+pub struct Report {
+    pub comparison: Comparison,
+    pub expected: Vec<TriangleOutcome>,
+    pub diagnoses: Vec<Mistakes>,
+    /// When the trace differs and no mistake reproduces it: the first difference, as precisely
+    /// as the data allows.
+    pub unexplained: Option<String>,
+    /// Sets that reproduce the trace as well under another declaration than the trace's (a
+    /// program that clips near and far only, where `no_clipping` is named).
+    pub redeclared: Vec<Redeclared>,
+    /// When several sets reproduce the trace: what would tell them apart.
+    pub apart: Vec<String>,
+    /// When none reproduces it whole: the mistakes that explain some of its differing stages,
+    /// each with those stages.
+    pub partial: Vec<(Mistakes, Vec<Stage>)>,
+}
+
+impl Report {
+    pub fn agrees(&self) -> bool {
+        self.comparison.agrees()
+    }
+
+    /// The catalogue ids named, each once, in the catalogue's order.
+    pub fn mistakes(&self) -> Vec<&'static str> {
+        let partial = self.partial.iter().map(|(set, _)| set);
+        let all = self
+            .diagnoses
+            .iter()
+            .chain(partial)
+            .fold(Mistakes::NONE, |all, set| {
+                set.iter().fold(all, |a, m| a.with(m))
+            });
+        all.iter().map(|m| m.name()).collect()
+    }
+}
 
 /// The most triangle indices listed per kind of disagreement in the JSON (the totals are all).
 pub const MAX_LISTED: usize = 100;
@@ -57,18 +99,22 @@ fn stage_text(out: &mut String, s: &StageResult, c: &Comparison) {
     }
 }
 
-/// The mistakes named (with what would tell them apart), those explaining some stages, and
-/// what is left unexplained.
+/// The mistakes named (with the declarations under which another set reproduces the trace,
+/// and what would tell them apart), those explaining some stages, and what is left
+/// unexplained.
 fn explanation_text(out: &mut String, report: &Report) {
-    match report.diagnoses.as_slice() {
-        [] => {}
-        [one] => out.push_str(&format!("mistake: {}\n", one.names())),
-        many => {
+    match (report.diagnoses.as_slice(), report.redeclared.as_slice()) {
+        ([], _) => {}
+        ([one], []) => out.push_str(&format!("mistake: {}\n", one.names())),
+        (many, redeclared) => {
             let names: Vec<String> = many.iter().map(|m| m.names()).collect();
             out.push_str(&format!(
                 "mistakes (the trace cannot tell them apart): {}\n",
                 names.join(", ")
             ));
+            for other in redeclared {
+                out.push_str(&format!("  or: {}\n", other.words()));
+            }
             let hints = &report.apart;
             if !hints.is_empty() {
                 out.push_str(&format!("  to tell them apart: {}\n", hints.join("; ")));
@@ -134,6 +180,10 @@ pub fn json(report: &Report) -> Value {
         "first_difference": first_difference,
         "mistakes": report.mistakes(),
         "diagnoses": diagnoses,
+        "redeclared": report.redeclared.iter().map(|r| json!({
+            "mistakes": r.mistakes.iter().map(|m| m.name()).collect::<Vec<_>>(),
+            "declaration": r.declaration,
+        })).collect::<Vec<_>>(),
         "tell_apart": report.apart,
         "explains": report.partial.iter().map(|(set, stages)| json!({
             "mistakes": set.iter().map(|m| m.name()).collect::<Vec<_>>(),

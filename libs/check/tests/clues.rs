@@ -12,7 +12,7 @@ use close2gl_check::rubric::{self, LineId};
 use close2gl_check::{self as check, Stage, Status, report};
 use close2gl_core::{Mesh, ModelSource, PrimitiveParams};
 use close2gl_pipeline::mistakes::Mistakes;
-use close2gl_pipeline::program::{ProgramCamera, System2d};
+use close2gl_pipeline::program::{ProgramCamera, System2d, given};
 use close2gl_testkit::student::asset;
 use close2gl_trace_format::{CameraLines, Motion, SceneCamera, parse_trace};
 use glam::{DMat4, DVec3};
@@ -77,9 +77,9 @@ const GL_WINDOW: System2d = System2d {
 /// close2gl's own M, P and V for `camera` in a 640 × 480 window with y up.
 fn ours(camera: &ProgramCamera) -> [DMat4; 3] {
     [
-        camera.modelview(Mistakes::NONE),
-        camera.projection(Mistakes::NONE),
-        GL_WINDOW.viewport(Mistakes::NONE),
+        given::modelview(camera, Mistakes::NONE),
+        given::projection(camera, Mistakes::NONE),
+        given::viewport(&GL_WINDOW, Mistakes::NONE),
     ]
 }
 

@@ -2,10 +2,10 @@
 //! a right frame, and refuse a program that leaves out triangles of 0.05 px² or more (a rule of
 //! its own about small triangles, not rounding) or draws nothing at all.
 
-use close2gl_check::{self as check, Report, compare::Kind};
+use close2gl_check::{self as check, Kind, Report};
 use close2gl_core::{Mesh, ModelSource, PrimitiveParams};
 use close2gl_pipeline::mistakes::Mistakes;
-use close2gl_pipeline::program::Outcome;
+use close2gl_pipeline::program::TriangleOutcome;
 use close2gl_pipeline::rounding::twice_area;
 use close2gl_testkit::student::asset;
 use close2gl_trace_format::parse_trace;
@@ -33,7 +33,7 @@ fn knot() -> Mesh {
 }
 
 /// close2gl's own frame of the knot from [`HEAD`]'s camera.
-fn frame(mesh: &Mesh) -> Vec<Outcome> {
+fn frame(mesh: &Mesh) -> Vec<TriangleOutcome> {
     let trace = parse_trace(&format!("{HEAD}drawn 0\n"), "head.trace").expect("head");
     check::program_for(&trace, Mistakes::NONE).frame(mesh)
 }
@@ -41,9 +41,9 @@ fn frame(mesh: &Mesh) -> Vec<Outcome> {
 /// A trace of `frame` with `corner` applied to each 2D corner, leaving out the triangles
 /// `drop` says.
 fn trace_of(
-    frame: &[Outcome],
+    frame: &[TriangleOutcome],
     corner: impl Fn(f64) -> f64,
-    drop: impl Fn(&Outcome) -> bool,
+    drop: impl Fn(&TriangleOutcome) -> bool,
 ) -> String {
     let mut text = String::from(HEAD);
     let mut drawn = 0;
@@ -68,7 +68,7 @@ fn checked(mesh: &Mesh, text: &str) -> Report {
     check::check(mesh, &trace).expect("the trace fits the knot")
 }
 
-fn area(outcome: &Outcome) -> f64 {
+fn area(outcome: &TriangleOutcome) -> f64 {
     twice_area(&outcome.polygon).abs() / 2.0
 }
 
@@ -89,7 +89,7 @@ fn float32_rounding_of_every_corner_agrees() {
 fn leaving_out_triangles_of_a_twentieth_of_a_pixel_is_caught() {
     let mesh = knot();
     let frame = frame(&mesh);
-    let small = |o: &Outcome| (0.05..0.25).contains(&area(o));
+    let small = |o: &TriangleOutcome| (0.05..0.25).contains(&area(o));
     let left_out = frame.iter().filter(|o| o.drawn() && small(o)).count();
     assert!(
         left_out > 0,

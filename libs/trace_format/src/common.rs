@@ -2,9 +2,9 @@
 //! `end`), and the rules every key follows: given once, nothing after `end`, the required ones
 //! present.
 
+use close2gl_core::declaration::{ClipPlanes, ClipRule, WindingSpace};
 use close2gl_core::limits::MAX_PIXELS;
 use close2gl_core::{FrontFace, RenderMode};
-use close2gl_pipeline::program::{ClipPlanes, ClipRule, WindingSpace};
 
 use super::camera_lines::CameraSlots;
 use super::magic::Format;

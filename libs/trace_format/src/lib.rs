@@ -5,9 +5,10 @@
 //! both from text or a file into plain values, checked line by line with every fault a one-line
 //! [`FormatError`] naming the file and line, and writing them back as text that reads back the
 //! same. It reads files and strings and writes strings, nothing else; a file's switches are read
-//! straight into the pipeline's own values (culling an `Option<FrontFace>`, clipping a
-//! [`ClipRule`](close2gl_pipeline::program::ClipRule), the 2D system a [`System2d`], the camera a [`CameraLines`]). Whether a trace's
-//! triangle indices fit its model is for whoever has the model (`close2gl_check`).
+//! straight into the words core shares with the pipeline (culling an `Option<FrontFace>`,
+//! clipping a [`ClipRule`](close2gl_core::declaration::ClipRule), the 2D system a [`System2d`],
+//! the camera a [`CameraLines`]): it depends on core alone. Whether a trace's triangle indices
+//! fit its model is for whoever has the model (`close2gl_check`).
 
 mod camera_lines;
 mod common;
@@ -21,8 +22,8 @@ mod trace;
 mod write;
 
 /// `ortho2d L R B T`: the arguments the program gave `gluOrtho2D`, the 2D system of its output,
-/// read straight into the pipeline's own type.
-pub use close2gl_pipeline::program::System2d;
+/// read straight into the shared word.
+pub use close2gl_core::declaration::System2d;
 pub use names::{CLIPPINGS, CULLINGS, clipping_name, culling_name};
 pub use output::{ClipLine, Piece};
 pub use scene::{Motion, SceneCamera, SceneFile, parse_scene, read_scene};
@@ -42,8 +43,8 @@ pub const MAX_FILE_BYTES: u64 = 1 << 30;
 
 /// The eight `camera` lines, in the assignment's names: the centre of projection, the camera's
 /// axes (right-handed, looking along -n) and its view volume (angles in degrees). The camera a
-/// program holds, as the pipeline's mistakes module runs programs with it.
-pub type CameraLines = close2gl_pipeline::program::ProgramCamera;
+/// program holds, as the pipeline runs programs with it.
+pub type CameraLines = close2gl_core::declaration::ProgramCamera;
 
 /// One of the camera's own axes, which a scene's motions move along or turn about.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]

@@ -3,8 +3,8 @@
 //! [`Axis`] is a [`NamedEnum`] like the config's. One list of values and one name for each
 //! read and write them all, so that the writer cannot spell them differently.
 
+use close2gl_core::declaration::ClipRule;
 use close2gl_core::{FrontFace, NamedEnum};
-use close2gl_pipeline::program::ClipRule;
 
 use super::Axis;
 

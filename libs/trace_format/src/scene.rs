@@ -3,8 +3,8 @@
 
 use std::path::{Path, PathBuf};
 
+use close2gl_core::declaration::ClipRule;
 use close2gl_core::{FrontFace, NamedEnum, RenderMode};
-use close2gl_pipeline::program::ClipRule;
 use glam::DVec3;
 
 use super::camera_lines::shape;

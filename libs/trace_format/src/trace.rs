@@ -6,7 +6,7 @@ use std::path::Path;
 
 use close2gl_core::FrontFace;
 use close2gl_core::RenderMode;
-use close2gl_pipeline::program::{ClipPlanes, ClipRule, WindingSpace};
+use close2gl_core::declaration::{ClipPlanes, ClipRule, WindingSpace};
 use glam::DMat4;
 
 use super::camera_lines::shape;

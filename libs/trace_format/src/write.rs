@@ -8,8 +8,8 @@
 
 use std::fmt::Write;
 
+use close2gl_core::declaration::{ClipPlanes, ClipRule, WindingSpace};
 use close2gl_core::{FrontFace, NamedEnum, RenderMode};
-use close2gl_pipeline::program::{ClipPlanes, ClipRule, WindingSpace};
 
 use super::camera_lines::LINES;
 use super::magic::Format;

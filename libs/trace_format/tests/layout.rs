@@ -4,8 +4,8 @@
 
 mod common;
 
+use close2gl_core::declaration::ClipRule;
 use close2gl_core::{FrontFace, RenderMode};
-use close2gl_pipeline::program::ClipRule;
 use close2gl_trace_format::{Axis, Motion, SceneCamera, System2d, parse_scene, parse_trace};
 use common::{SCENE, TRACE, replaced, scene_error, trace_error};
 use glam::{DVec2, DVec3, DVec4};

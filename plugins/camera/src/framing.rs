@@ -1,7 +1,7 @@
 //! "Rendering the object in the centre of the windows": the camera looks at the bounding box's
 //! centre from +z, at the distance where the bounding sphere fits both fields of view.
 
-use close2gl_core::{Camera, Framing, Pose};
+use close2gl_core::{Camera, Framing, LookAtPose};
 use glam::Vec3;
 
 /// The framed camera for a model whose bounding sphere is (`centre`, `radius`), keeping the
@@ -12,12 +12,12 @@ pub fn frame(centre: Vec3, radius: f32, lens: &Camera, framing: &Framing) -> Cam
     let half_fov = lens.hfov.min(lens.vfov).to_radians() * 0.5;
     let distance = radius / half_fov.sin();
 
-    let Pose {
+    let LookAtPose {
         position,
         target,
         up,
         basis,
-    } = framing.pose.unwrap_or(Pose {
+    } = framing.pose.unwrap_or(LookAtPose {
         position: centre + Vec3::Z * distance,
         target: centre,
         up: Vec3::Y,
@@ -107,7 +107,7 @@ mod tests {
     fn planes_follow_an_explicit_pose_even_from_inside_the_model() {
         for position in [Vec3::new(0.0, 0.0, 100.0), Vec3::new(0.1, 0.0, 0.0)] {
             let framing = Framing {
-                pose: Some(Pose {
+                pose: Some(LookAtPose {
                     position,
                     target: Vec3::ZERO,
                     up: Vec3::Y,
@@ -132,7 +132,7 @@ mod tests {
     #[test]
     fn an_explicit_pose_and_pinned_planes_win() {
         let framing = Framing {
-            pose: Some(Pose {
+            pose: Some(LookAtPose {
                 position: Vec3::new(5.0, 0.0, 0.0),
                 target: Vec3::ZERO,
                 up: Vec3::Y,
@@ -157,7 +157,7 @@ mod tests {
             Vec3::new(0.8, 0.0, 0.6),
         );
         let framing = Framing {
-            pose: Some(Pose {
+            pose: Some(LookAtPose {
                 position: Vec3::new(4.0, 0.1, 3.0),
                 target: Vec3::ZERO,
                 up: Vec3::Y,

@@ -5,7 +5,7 @@
 
 use close2gl_camera::framing::pin_clipping_planes;
 use close2gl_core::glam::Vec3;
-use close2gl_core::{Camera, Framing, Pose};
+use close2gl_core::{Camera, Framing, LookAtPose};
 
 use super::{CameraConfig, Config};
 
@@ -49,8 +49,8 @@ impl CameraConfig {
 
     /// The explicit pose, when the config gives a position (the target defaults to the origin);
     /// when absent the camera frames the model.
-    pub fn pose(&self) -> Option<Pose> {
-        self.position.map(|position| Pose {
+    pub fn pose(&self) -> Option<LookAtPose> {
+        self.position.map(|position| LookAtPose {
             position,
             target: self.target.unwrap_or(Vec3::ZERO),
             up: self.up,

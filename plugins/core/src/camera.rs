@@ -174,7 +174,7 @@ impl CameraRequest {
 
 /// An explicit camera pose: where the camera is, what it looks at, and which way is up.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Pose {
+pub struct LookAtPose {
     pub position: Vec3,
     pub target: Vec3,
     pub up: Vec3,
@@ -188,7 +188,7 @@ pub struct Pose {
 /// framed one, and pinned near/far distances replace the ones that follow the model's size.
 #[derive(Resource, Clone, Copy, Debug, Default, PartialEq)]
 pub struct Framing {
-    pub pose: Option<Pose>,
+    pub pose: Option<LookAtPose>,
     pub near: Option<f32>,
     pub far: Option<f32>,
 }

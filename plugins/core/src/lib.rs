@@ -14,6 +14,7 @@ mod named;
 
 mod app;
 mod camera;
+pub mod declaration;
 mod excerpt;
 mod fates;
 pub mod files;
@@ -37,7 +38,7 @@ mod wake;
 pub use app::{App, Owner, Plugin};
 pub use camera::{
     Camera, CameraAction, CameraActions, CameraHome, CameraMode, CameraRequest, CameraSpeeds,
-    Framing, KeepPose, Pose,
+    Framing, KeepPose, LookAtPose,
 };
 pub use excerpt::{EXCERPT_CHARS, excerpt};
 pub use fates::{
@@ -49,7 +50,7 @@ pub use frame::{
 };
 pub use image::Image;
 pub use input::{Action, InputBindings, InputState, ProbeClick};
-pub use layout::Layout;
+pub use layout::{Layout, View};
 pub use mesh::Mesh;
 pub use model::{
     LoadPace, Loading, ModelRequest, ModelSource, ModelStatus, PrimitiveKind, PrimitiveParams,

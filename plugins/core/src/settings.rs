@@ -53,6 +53,20 @@ named_enum!(
     }
 );
 
+impl Shading {
+    /// Whether its lighting has the specular term (Gouraud ADS and Phong; Gouraud AD is
+    /// ambient and diffuse alone).
+    pub fn specular(self) -> bool {
+        matches!(self, Shading::GouraudAds | Shading::Phong)
+    }
+
+    /// Whether it lights each vertex and interpolates the intensity (Gouraud), rather than
+    /// each pixel from the interpolated position and normal (Phong).
+    pub fn per_vertex(self) -> bool {
+        matches!(self, Shading::GouraudAd | Shading::GouraudAds)
+    }
+}
+
 named_enum!(
     /// What the two views show over the model: nothing, or one of the inspector's displays. A
     /// resource of its own: the GPU views, the panel's legends and the fate recording read it,

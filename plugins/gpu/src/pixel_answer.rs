@@ -6,11 +6,8 @@
 
 use bevy_ecs::prelude::*;
 use bevy_ecs::system::SystemParam;
-use close2gl_core::{
-    Camera, Fates, Mesh, Mistake, PipelineSettings, Scene, SoftwareFrame, Viewport,
-};
-use close2gl_pipeline::mistakes::Mistakes;
-use close2gl_pipeline::textbook;
+use close2gl_core::{Camera, Fates, Mesh, PipelineSettings, Scene, SoftwareFrame, Viewport};
+use close2gl_pipeline::ViewPath;
 use close2gl_raster::SoftwareRasterizer;
 use close2gl_raster::coverage_probe::{Drawn, PixelProbe, probe};
 
@@ -68,8 +65,8 @@ impl ProbedFrame<'_, '_> {
     }
 }
 
-/// Every triangle's fate in `scene`, as Close2GL's pipeline (with its mistake, if one is set)
-/// records them.
+/// Every triangle's fate in `scene`, as the path Close2GL's view takes with its settings (with
+/// its mistake, if one is set) records them.
 fn recorded_fates(scene: Scene<'_>) -> Fates {
     let Scene {
         mesh,
@@ -77,11 +74,7 @@ fn recorded_fates(scene: Scene<'_>) -> Fates {
         pipeline: settings,
         viewport,
     } = scene;
-    match settings.mistake {
-        Mistake::None => textbook::run_recording(mesh, camera, settings, viewport).1,
-        mistake => {
-            let mistakes = Mistakes::one(mistake);
-            textbook::run_mistaken(mesh, camera, settings, viewport, mistakes).1
-        }
-    }
+    ViewPath::of(settings)
+        .run_recording(mesh, camera, settings, viewport)
+        .1
 }

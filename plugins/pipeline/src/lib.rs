@@ -79,10 +79,8 @@ pub fn close2gl_system(
         return;
     }
     let start = Instant::now();
-    if settings.mistake != Mistake::None {
-        let mistakes = mistakes::Mistakes::one(settings.mistake);
-        let (mistaken, all) =
-            textbook::run_mistaken(&mesh, &camera, &settings, *viewport, mistakes);
+    if let ViewPath::Program(mistakes) = ViewPath::of(&settings) {
+        let (mistaken, all) = program::view::run(&mesh, &camera, &settings, *viewport, mistakes);
         *frame = mistaken;
         let record = fates.record;
         *fates = all;
@@ -96,6 +94,41 @@ pub fn close2gl_system(
         pipeline.run(&mesh, &camera, &settings, *viewport, &mut frame, &mut fates);
     }
     frame.geometry_ms = start.elapsed().as_secs_f64() * 1e3;
+}
+
+/// Which path draws Close2GL's view with some settings, said once: the fast path, which never
+/// sees a mistake, or, for a frame with one, a program that makes it ([`program::view`]).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ViewPath {
+    Fast,
+    Program(mistakes::Mistakes),
+}
+
+impl ViewPath {
+    pub fn of(settings: &PipelineSettings) -> Self {
+        match settings.mistake {
+            Mistake::None => ViewPath::Fast,
+            mistake => ViewPath::Program(mistakes::Mistakes::one(mistake)),
+        }
+    }
+
+    /// The frame this path draws and every triangle's fate, recorded. The fast path's are the
+    /// textbook path's (tests hold them equal), worked out here by the textbook, which needs no
+    /// buffers kept between frames.
+    pub fn run_recording(
+        self,
+        mesh: &Mesh,
+        camera: &Camera,
+        settings: &PipelineSettings,
+        viewport: Viewport,
+    ) -> (Close2glFrame, Fates) {
+        match self {
+            ViewPath::Fast => textbook::run_recording(mesh, camera, settings, viewport),
+            ViewPath::Program(mistakes) => {
+                program::view::run(mesh, camera, settings, viewport, mistakes)
+            }
+        }
+    }
 }
 
 /// How many of some triangles met each fate, and how many primitives they were drawn as. The

@@ -1,15 +1,14 @@
-//! The three matrices of the assignment, written out entry by entry: glam only holds the numbers.
-//! Each is given row by row, as in the textbook, and transposed into glam's column-major storage.
+//! The three matrices of the assignment, written out entry by entry as the textbook prints them:
+//! glam only holds the numbers. Each is given row by row ([`modelview_rows`],
+//! [`projection_rows`], [`viewport_rows`]) and transposed into glam's column-major storage.
 //! Each is written once, in either precision ([`Real`]): f32 for Close2GL's own frame, f64 for
-//! a student's program as `check` recomputes it, where a classic mistake ([`Mistakes`]) may
-//! change an entry. Close2GL's own frame makes none.
+//! a student's program as `check` recomputes it. No mistake is made here: a program's classic
+//! mistakes change entries of these rows beside them (`program/given.rs`).
 
 use std::ops::{Add, Div, Mul, Neg, Sub};
 
-use close2gl_core::{Camera, Mistake};
+use close2gl_core::Camera;
 use glam::{DMat4, Mat4, Vec3, Vec4};
-
-use crate::mistakes::Mistakes;
 
 /// The two precisions M, P and V are built in.
 pub trait Real:
@@ -61,118 +60,74 @@ fn dot<S: Real>(a: [S; 3], b: [S; 3]) -> S {
     a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
 }
 
-fn transposed<S: Real>(rows: [[S; 4]; 4]) -> [[S; 4]; 4] {
-    std::array::from_fn(|r| std::array::from_fn(|c| rows[c][r]))
-}
-
 /// M: world → camera coordinates, from the camera's u, v, n and centre of projection c
-/// (Hill, matrix 7.2, with the corrected 1 in the corner): rows u, v, n, and d = -c·(u, v, n);
-/// or what the mistakes make of it.
-pub fn modelview_of<S: Real>([u, v, n]: [[S; 3]; 3], c: [S; 3], mistakes: Mistakes) -> S::Mat4 {
-    let mut d = match mistakes.has(Mistake::TranslationUnrotated) {
-        true => c.map(|x| -x),
-        false => [-dot(c, u), -dot(c, v), -dot(c, n)],
-    };
-    if mistakes.has(Mistake::TranslationSign) {
-        d = d.map(|x| -x);
-    }
+/// (Hill, matrix 7.2, with the corrected 1 in the corner): rows u, v, n, and d = -c·(u, v, n).
+pub fn modelview_rows<S: Real>([u, v, n]: [[S; 3]; 3], c: [S; 3]) -> [[S; 4]; 4] {
+    let d = [-dot(c, u), -dot(c, v), -dot(c, n)];
     let o = S::ZERO;
-    let rows = [
+    [
         [u[0], u[1], u[2], d[0]],
         [v[0], v[1], v[2], d[1]],
         [n[0], n[1], n[2], d[2]],
         [o, o, o, S::ONE],
-    ];
-    S::from_rows(match mistakes.has(Mistake::ModelviewTransposed) {
-        true => transposed(rows),
-        false => rows,
-    })
+    ]
+}
+
+/// The near plane's window from the two fields of view (degrees): right = near·tan(hfov/2),
+/// top = near·tan(vfov/2); left = -right, bottom = -top.
+pub fn near_window<S: Real>([hfov, vfov]: [S; 2], near: S) -> [S; 2] {
+    let half_angle = |degrees: S| degrees.to_radians() * S::HALF;
+    [near * half_angle(hfov).tan(), near * half_angle(vfov).tan()]
 }
 
 /// P: camera coordinates → clip coordinates (the OpenGL red book's glFrustum matrix), mapping the
-/// view volume to the normalized cube |x|, |y|, |z| <= w. The window of the near plane comes from
-/// the two fields of view: right = near·tan(hfov/2), top = near·tan(vfov/2), left = -right,
-/// bottom = -top, so that 2n/(r − l) = n/r and (r + l)/(r − l) = 0. Or what the mistakes make
-/// of those extents and of the depth row.
-pub fn projection_of<S: Real>(
-    [hfov, vfov]: [S; 2],
-    [near, far]: [S; 2],
-    mistakes: Mistakes,
-) -> S::Mat4 {
-    use Mistake::{AspectFromAngles, DepthRowSign, FovInDegrees, FovNotHalved, FovsSwapped};
-    let (h, v) = match mistakes.has(FovsSwapped) {
-        true => (vfov, hfov),
-        false => (hfov, vfov),
-    };
-    let half_angle = |degrees: S| {
-        let radians = match mistakes.has(FovInDegrees) {
-            true => degrees,
-            false => degrees.to_radians(),
-        };
-        match mistakes.has(FovNotHalved) {
-            true => radians,
-            false => radians * S::HALF,
-        }
-    };
-    let top = near * half_angle(v).tan();
-    let right = match mistakes.has(AspectFromAngles) {
-        true => top * h / v,
-        false => near * half_angle(h).tan(),
-    };
+/// view volume to the normalized cube |x|, |y|, |z| <= w, for a near window symmetric about the
+/// axis ([`near_window`]): 2n/(r − l) = n/r and (r + l)/(r − l) = 0.
+pub fn projection_rows<S: Real>([right, top]: [S; 2], [near, far]: [S; 2]) -> [[S; 4]; 4] {
     let o = S::ZERO;
-    let mut depth = [
-        -(far + near) / (far - near),
-        -S::TWO * far * near / (far - near),
-    ];
-    if mistakes.has(DepthRowSign) {
-        depth = depth.map(|x| -x);
-    }
-    S::from_rows([
+    [
         [near / right, o, o, o],
         [o, near / top, o, o],
-        [o, o, depth[0], depth[1]],
+        [
+            o,
+            o,
+            -(far + near) / (far - near),
+            -S::TWO * far * near / (far - near),
+        ],
         [o, o, -S::ONE, o],
-    ])
+    ]
 }
 
 /// V: the normalized image plane [-1, 1]² → the 2D system's L R B T (`gluOrtho2D`'s),
 /// x' = x·(R−L)/2 + (R+L)/2, y' = y·(T−B)/2 + (T+B)/2, and the normalized depth [-1, 1] → the
 /// depth range [0, 1] (glDepthRange's default, and the range of the reference's depth buffer).
-/// Or what the mistakes make of the scales.
-pub fn viewport_of<S: Real>([left, right, bottom, top]: [S; 4], mistakes: Mistakes) -> S::Mat4 {
-    let half = match mistakes.has(Mistake::ViewportFullScale) {
-        true => S::ONE,
-        false => S::HALF,
-    };
-    let mut y_scale = (top - bottom) * half;
-    if mistakes.has(Mistake::ViewportYFlipped) {
-        y_scale = -y_scale;
-    }
+pub fn viewport_rows<S: Real>([left, right, bottom, top]: [S; 4]) -> [[S; 4]; 4] {
     let o = S::ZERO;
-    S::from_rows([
-        [(right - left) * half, o, o, (right + left) / S::TWO],
-        [o, y_scale, o, (top + bottom) / S::TWO],
+    [
+        [(right - left) * S::HALF, o, o, (right + left) / S::TWO],
+        [o, (top - bottom) * S::HALF, o, (top + bottom) / S::TWO],
         [o, o, S::HALF, S::HALF],
         [o, o, o, S::ONE],
-    ])
+    ]
 }
 
 /// Close2GL's M (f32, no mistake).
 pub fn modelview(camera: &Camera) -> Mat4 {
     let axes = [camera.u, camera.v, camera.n].map(|axis| axis.to_array());
-    modelview_of(axes, camera.position.to_array(), Mistakes::NONE)
+    f32::from_rows(modelview_rows(axes, camera.position.to_array()))
 }
 
 /// Close2GL's P (f32, no mistake).
 pub fn projection(hfov_deg: f32, vfov_deg: f32, near: f32, far: f32) -> Mat4 {
-    projection_of([hfov_deg, vfov_deg], [near, far], Mistakes::NONE)
+    let window = near_window([hfov_deg, vfov_deg], near);
+    f32::from_rows(projection_rows(window, [near, far]))
 }
 
 /// Close2GL's V (f32, no mistake): its 2D buffer is window pixels [0, width] × [0, height]
 /// with the origin at the top-left corner and y growing downwards (as every window system and
 /// wgpu count pixels), `gluOrtho2D(0, W, H, 0)`: the top of the image plane (+1) lands on row 0.
 pub fn viewport(width: f32, height: f32) -> Mat4 {
-    viewport_of([0.0, width, height, 0.0], Mistakes::NONE)
+    f32::from_rows(viewport_rows([0.0, width, height, 0.0]))
 }
 
 /// The camera's P·M (why not M·P? M acts first on the point, so it stands on the right).

@@ -9,7 +9,7 @@ use close2gl_core::{
 };
 use glam::{Mat4, Vec4};
 
-use crate::clip::{NEAR, Outcode, Polygon, clip_polygon, outcode};
+use crate::clip::{MAX_POLYGON, NEAR, Outcode, Polygon, clip_polygon, outcode};
 use crate::{emit, matrices};
 
 /// What stays the same for every triangle of a frame.
@@ -218,7 +218,8 @@ pub fn process<const RECORD: bool>(
         if let Some(kind) = culled {
             return Fate::culled(kind, 0, area);
         }
-        return Fate::drawn(0, area, emit_inside(&window, corners, constants.mode, out));
+        let primitives = emit_inside(&window, corners, constants.topology(), out);
+        return Fate::drawn(0, area, primitives);
     }
     let outside_all = codes[0] & codes[1] & codes[2];
     if constants.clipping == Clipping::Simple || outside_all != 0 {
@@ -244,42 +245,45 @@ fn cut<const RECORD: bool>(
 ) -> Fate {
     let triangle = Polygon::triangle(clip[0], clip[1], clip[2]);
     let piece = clip_polygon(&triangle, outside_any);
-    let mut piece_window = [[0.0; 2]; crate::clip::MAX_POLYGON];
-    for (w, p) in piece_window.iter_mut().zip(piece.vertices()) {
-        *w = to_window(*p, &constants.viewport);
-    }
-    let piece_window = &piece_window[..piece.len];
-    if piece_window.is_empty() || piece_window.iter().flatten().any(|x| !x.is_finite()) {
+    let piece_window = windows(&piece, constants);
+    let in_window = &piece_window[..piece.len];
+    if in_window.is_empty() || in_window.iter().flatten().any(|x| !x.is_finite()) {
         return Fate::clipped(outside_any, false);
     }
-    let (area, culled) = face::<RECORD>(piece_window, constants.culling);
+    let (area, culled) = face::<RECORD>(in_window, constants.culling);
     if let Some(kind) = culled {
         return Fate::culled(kind, outside_any, area);
     }
-    if constants.mode == RenderMode::Points {
-        let points = clip_polygon(&triangle, outside_any & NEAR);
-        return Fate::drawn(
-            outside_any,
-            area,
-            emit_points(&points, corners, constants, out),
-        );
-    }
-    let ids = push_cuts(&piece, corners, constants, out);
+    let topology = constants.topology();
+    let (drawn, drawn_window) = match topology {
+        Topology::Points => {
+            let points = emit::points(&triangle, outside_any, ALL_PLANES);
+            (points, windows(&points, constants))
+        }
+        _ => (piece, piece_window),
+    };
+    let ids = push_cuts(&drawn, corners, constants, out);
     let before = out.window().len();
-    let mut emit = |i: usize| {
-        out.window().push(piece_window[i]);
+    for i in emit::corners(topology, drawn.len, |i| drawn.original[i]) {
+        out.window().push(drawn_window[i]);
         if let Some(raster) = out.raster() {
             raster.primitives.push(ids[i]);
         }
-    };
-    if constants.mode == RenderMode::Solid {
-        emit::fan(piece.len).for_each(&mut emit);
-        return Fate::drawn(outside_any, area, piece.len - 2);
     }
-    // A GPU draws a clipped polygon in line mode as what is left of the triangle's own edges;
-    // the edges clipping added along the planes are not drawn.
-    emit::edges(piece.len, |i| piece.original[i]).for_each(&mut emit);
-    Fate::drawn(outside_any, area, (out.window().len() - before) / 2)
+    let primitives = (out.window().len() - before) / constants.topology_vertices();
+    Fate::drawn(outside_any, area, primitives)
+}
+
+/// Every plane of the view volume: the pipeline clips against all six.
+const ALL_PLANES: Outcode = 0x3f;
+
+/// The window positions of a polygon's corners.
+fn windows(polygon: &Polygon, constants: &FrameConstants) -> [[f32; 2]; MAX_POLYGON] {
+    let mut window = [[0.0; 2]; MAX_POLYGON];
+    for (w, p) in window.iter_mut().zip(polygon.vertices()) {
+        *w = to_window(*p, &constants.viewport);
+    }
+    window
 }
 
 /// With the rasterizer, every vertex of a cut piece becomes a [`CutVertex`]; returns their
@@ -289,8 +293,8 @@ fn push_cuts(
     corners: [u32; 3],
     constants: &FrameConstants,
     out: &mut impl Emit,
-) -> [u32; crate::clip::MAX_POLYGON] {
-    let mut ids = [0; crate::clip::MAX_POLYGON];
+) -> [u32; MAX_POLYGON] {
+    let mut ids = [0; MAX_POLYGON];
     if let Some(raster) = out.raster() {
         for (i, (p, weights)) in piece.vertices().iter().zip(piece.weights).enumerate() {
             ids[i] = CUT | raster.cuts.len() as u32;
@@ -358,64 +362,24 @@ pub fn face<const RECORD: bool>(
     (area, culled)
 }
 
-/// The triangle itself, its three edges as lines, or its three corners as points. The solid
-/// case, by far the commonest, copies whole arrays: it runs once per triangle of every frame.
+/// The triangle itself, its three edges as lines, or its three corners as points
+/// ([`emit::whole`]). It runs once per triangle of every frame: a table, not the iterator.
 #[inline(always)]
 fn emit_inside(
     window: &[[f32; 2]; 3],
     corners: [u32; 3],
-    mode: RenderMode,
+    topology: Topology,
     out: &mut impl Emit,
 ) -> usize {
-    let [a, b, c] = *window;
-    let [ia, ib, ic] = corners;
-    match mode {
-        RenderMode::Solid | RenderMode::Points => {
-            out.window().extend_from_slice(window);
-            if let Some(raster) = out.raster() {
-                raster.primitives.extend_from_slice(&corners);
-            }
-            if mode == RenderMode::Solid { 1 } else { 3 }
-        }
-        RenderMode::Wireframe => {
-            out.window().extend_from_slice(&[a, b, b, c, c, a]);
-            if let Some(raster) = out.raster() {
-                raster
-                    .primitives
-                    .extend_from_slice(&[ia, ib, ib, ic, ic, ia]);
-            }
-            3
-        }
+    let order = emit::whole(topology);
+    out.window().extend(order.iter().map(|&i| window[i]));
+    if let Some(raster) = out.raster() {
+        raster.primitives.extend(order.iter().map(|&i| corners[i]));
     }
-}
-
-/// In point mode, a GPU draws the vertices that start one of the triangle's own edges once the
-/// near plane has cut it (`near_cut`): its corners, and the points where an edge comes back in
-/// front of the near plane. Every other plane applies to each point alone (a point outside the
-/// viewport or the depth range is dropped), so no vertex is made on them.
-fn emit_points(
-    near_cut: &Polygon,
-    corners: [u32; 3],
-    constants: &FrameConstants,
-    out: &mut impl Emit,
-) -> usize {
-    let before = out.window().len();
-    for (i, p) in near_cut.vertices().iter().enumerate() {
-        // Points made on the near plane are inside it by construction, whatever the rounding.
-        if near_cut.original[i] && outcode(*p) & !NEAR == 0 {
-            let window = to_window_depth(*p, &constants.viewport);
-            out.window().push([window[0], window[1]]);
-            if let Some(raster) = out.raster() {
-                raster.primitives.push(CUT | raster.cuts.len() as u32);
-                raster.cuts.push(CutVertex {
-                    window,
-                    corners,
-                    weights: near_cut.weights[i].to_array(),
-                });
-            }
-        }
+    match topology {
+        Topology::Triangles => 1,
+        Topology::Lines | Topology::Points => 3,
     }
-    out.window().len() - before
 }
 
 #[cfg(test)]

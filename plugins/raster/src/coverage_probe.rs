@@ -24,7 +24,7 @@ use crate::vertex::Vertex;
 
 /// Why a triangle whose coverage reached the pixel centre did or did not draw it.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Outcome {
+pub enum PixelOutcome {
     /// It drew the pixel last: the depth test's winner.
     Won,
     /// Covered, but lost the depth test.
@@ -37,14 +37,14 @@ pub enum Outcome {
     FillRule,
 }
 
-impl Outcome {
+impl PixelOutcome {
     pub fn name(self) -> &'static str {
         match self {
-            Outcome::Won => "won",
-            Outcome::Depth => "depth",
-            Outcome::Culled => "culled",
-            Outcome::Clipped => "clipped",
-            Outcome::FillRule => "fill_rule",
+            PixelOutcome::Won => "won",
+            PixelOutcome::Depth => "depth",
+            PixelOutcome::Culled => "culled",
+            PixelOutcome::Clipped => "clipped",
+            PixelOutcome::FillRule => "fill_rule",
         }
     }
 }
@@ -53,7 +53,7 @@ impl Outcome {
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Candidate {
     pub triangle: u32,
-    pub outcome: Outcome,
+    pub outcome: PixelOutcome,
     /// Its depth (0..1) at the pixel centre.
     pub depth: f32,
 }
@@ -112,7 +112,7 @@ pub fn probe(
         None => {
             let winner = candidates
                 .iter()
-                .filter(|c| c.outcome == Outcome::Depth && c.depth < 1.0)
+                .filter(|c| c.outcome == PixelOutcome::Depth && c.depth < 1.0)
                 .fold(None::<&Candidate>, |best, c| match best {
                     Some(b) if b.depth <= c.depth => Some(b),
                     _ => Some(c),
@@ -125,8 +125,8 @@ pub fn probe(
         }
     };
     for c in candidates.iter_mut() {
-        if c.outcome == Outcome::Depth && Some(c.triangle) == triangle {
-            c.outcome = Outcome::Won;
+        if c.outcome == PixelOutcome::Depth && Some(c.triangle) == triangle {
+            c.outcome = PixelOutcome::Won;
         }
     }
     PixelProbe {
@@ -163,10 +163,10 @@ fn covering(scene: Scene<'_>, fates: &Fates, x: u32, y: u32) -> Vec<Candidate> {
             continue;
         };
         let outcome = match (fate.kind, coverage) {
-            (FateKind::Clipped, _) => Outcome::Clipped,
-            (FateKind::Culled | FateKind::ZeroArea, _) => Outcome::Culled,
-            (_, Coverage::LostToFillRule) => Outcome::FillRule,
-            _ => Outcome::Depth,
+            (FateKind::Clipped, _) => PixelOutcome::Clipped,
+            (FateKind::Culled | FateKind::ZeroArea, _) => PixelOutcome::Culled,
+            (_, Coverage::LostToFillRule) => PixelOutcome::FillRule,
+            _ => PixelOutcome::Depth,
         };
         candidates.push(Candidate {
             triangle: index as u32,

@@ -26,7 +26,7 @@ pub(crate) struct Light {
 
 impl Light {
     pub(crate) fn new(lighting: &Lighting, light_eye: Vec3, shading: Shading) -> Light {
-        let specular = matches!(shading, Shading::GouraudAds | Shading::Phong);
+        let specular = shading.specular();
         Light {
             position: light_eye,
             ambient: lighting.ia * lighting.ka,

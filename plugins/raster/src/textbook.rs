@@ -96,7 +96,7 @@ pub fn draw(
 /// made, whose varyings are their triangle's corners' blended by their weights, as a GPU's
 /// clipper blends them (a Gouraud intensity is not lit again).
 fn vertex_stage(raster: &RasterGeometry, shader: &Shader) -> Vec<Vertex> {
-    let gouraud = matches!(shader.shading, Shading::GouraudAd | Shading::GouraudAds);
+    let gouraud = shader.shading.per_vertex();
     let mut vertices: Vec<Vertex> = (raster.vertices.iter())
         .map(|v| {
             let (eye, normal) = (Vec3::from(v.eye), Vec3::from(v.normal));
@@ -325,10 +325,7 @@ impl Shader {
     /// for term; without the specular term for Gouraud AD.
     fn illumination(&self, eye: Vec3, normal: Vec3) -> Vec3 {
         let k = &self.lighting;
-        let ks = match self.shading {
-            Shading::GouraudAd => 0.0,
-            _ => k.ks,
-        };
+        let ks = if self.shading.specular() { k.ks } else { 0.0 };
         // Normalised without a NaN for a zero vector, as the shader's safe_normalize.
         let unit = |v: Vec3| v / v.dot(v).max(1e-30).sqrt();
         let (n, to_light) = (unit(normal), self.light - eye);

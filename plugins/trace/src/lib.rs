@@ -13,7 +13,7 @@ use close2gl_core::{
     App, CameraRequest, Close2glStep, LoadStep, Owner, PipelineSettings, Plugin, TraceFindings,
     TraceOutput, Update, Viewport,
 };
-use view::{TraceRequest, TraceView, load_requested_trace, show_trace, word_findings};
+use view::{TraceRequest, TraceView, load_requested_trace, trace_output_system, word_findings};
 
 /// Reads requested traces (in `FrameSet::Load`, against the mesh loaded there: its camera asked
 /// of the camera plugin through `CameraRequest`, which sets it over the framing of a new model,
@@ -38,7 +38,7 @@ impl Plugin for TracePlugin {
                     (load_requested_trace, word_findings)
                         .chain()
                         .in_set(LoadStep::AgainstMesh),
-                    show_trace.in_set(Close2glStep::Raster),
+                    trace_output_system.in_set(Close2glStep::Raster),
                 ),
             );
     }

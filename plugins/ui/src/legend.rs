@@ -6,10 +6,10 @@
 
 use bevy_ecs::prelude::*;
 use close2gl_core::parity::{ONLY_CLOSE2GL, ONLY_REFERENCE};
-use close2gl_core::{FateKind, OutsideView, Overlay};
+use close2gl_core::{FateKind, OutsideView, Overlay, View};
 
 use crate::state::PanelState;
-use crate::view_areas::{View, Views, view_rects};
+use crate::view_areas::{ViewArea, view_rects};
 
 /// What the GPU paints over the reference in the fate view: its own answers.
 pub const REFERENCE: [(FateKind, &str); 3] = [
@@ -65,7 +65,7 @@ fn rows(view: View, overlay: Overlay) -> Option<(&'static str, Vec<Row>)> {
 
 /// The legends in the corners of the views that show an overlay, unless hidden.
 pub fn show(
-    (InRef(ui), In(views)): (InRef<egui::Ui>, In<Views>),
+    (InRef(ui), In(views)): (InRef<egui::Ui>, In<ViewArea>),
     overlay: Res<Overlay>,
     outside: Option<Res<OutsideView>>,
     mut state: ResMut<PanelState>,

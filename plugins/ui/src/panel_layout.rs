@@ -6,7 +6,7 @@ use bevy_ecs::prelude::*;
 
 use crate::parts::Parts;
 use crate::state::PanelState;
-use crate::view_areas::{self, Views};
+use crate::view_areas::{self, ViewArea};
 use crate::{
     camera_panel, inspector, legend, model_panel, outside_panel, render_panel, stats_panel,
     texture_panel, tools_panel, trace_panel,
@@ -42,7 +42,7 @@ pub fn show(ui: &mut egui::Ui, parts: &mut Parts, shared: bool) {
                     .show(ui, |ui| sections(ui, parts));
             });
     }
-    let views = Views {
+    let views = ViewArea {
         area: views_area(ui.max_rect(), hidden),
         shared,
     };

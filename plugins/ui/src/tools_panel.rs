@@ -8,7 +8,7 @@ use close2gl_core::{Action, InputBindings, PageLink, ToolRequests};
 
 use crate::ViewStats;
 use crate::state::PanelState;
-use crate::view_areas::Views;
+use crate::view_areas::ViewArea;
 
 /// How long a notice stays, in seconds.
 const NOTICE_SECONDS: f64 = 6.0;
@@ -121,7 +121,7 @@ pub fn copied(In((ctx, command)): In<(egui::Context, Option<String>)>, mut notic
 
 /// The notice, at the top of the views, until it has been shown long enough.
 pub fn show_notice(
-    (InRef(ui), In(views)): (InRef<egui::Ui>, In<Views>),
+    (InRef(ui), In(views)): (InRef<egui::Ui>, In<ViewArea>),
     mut notice: ResMut<Notice>,
 ) {
     if notice.text.is_empty() {

@@ -1,12 +1,12 @@
-//! Where each view is in the window, as the panel paints over them, and their names.
+//! Where each view ([`View`]) is in the window, as the panel paints over them.
 
 use bevy_ecs::prelude::*;
-use close2gl_core::OutsideView;
+use close2gl_core::{OutsideView, View};
 
 /// The views' part of the window and whether they share it: what the parts painted over the
 /// views are handed.
 #[derive(Clone, Copy, Debug)]
-pub struct Views {
+pub struct ViewArea {
     /// The window but the panel, in points.
     pub area: egui::Rect,
     /// The split layout: the reference, Close2GL and the outside view side by side in `area`;
@@ -14,18 +14,10 @@ pub struct Views {
     pub shared: bool,
 }
 
-/// A view the window shows, as the labels and the legends place them.
-#[derive(Clone, Copy, PartialEq, Eq, Hash, Debug)]
-pub enum View {
-    Reference,
-    Close2gl,
-    Outside,
-}
-
 /// Where each view is: the reference alone, or, when the views share the area, the reference,
 /// Close2GL and the outside view (when it shows) in columns.
-pub fn view_rects(views: Views, outside: bool) -> Vec<(View, egui::Rect)> {
-    let Views { area, shared } = views;
+pub fn view_rects(views: ViewArea, outside: bool) -> Vec<(View, egui::Rect)> {
+    let ViewArea { area, shared } = views;
     if !shared {
         return vec![(View::Reference, area)];
     }
@@ -49,7 +41,7 @@ pub fn view_rects(views: Views, outside: bool) -> Vec<(View, egui::Rect)> {
 
 /// Names the views in their top-left corners.
 pub fn labels(
-    (InRef(ui), In(views)): (InRef<egui::Ui>, In<Views>),
+    (InRef(ui), In(views)): (InRef<egui::Ui>, In<ViewArea>),
     outside: Option<Res<OutsideView>>,
 ) {
     let outside = outside.is_some_and(|o| o.show);

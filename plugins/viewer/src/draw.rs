@@ -2,11 +2,12 @@
 
 use web_time::{Duration, Instant};
 
+use close2gl_core::View;
 use close2gl_gpu::outside::OutsideRenderer;
 use close2gl_gpu::{Gpu, Views, submit_pass_timed};
 use close2gl_ui::ViewStats;
 
-use crate::view_layout::{Placed, View};
+use crate::view_layout::Placed;
 
 /// The GPU state of every view: the two compared, and the outside view when there is one.
 #[derive(Clone, Copy)]

@@ -6,14 +6,14 @@
 //! goes to the panel ([`ProbeAnswer`]), and its winner becomes the selected triangle.
 
 use bevy_ecs::prelude::*;
-use close2gl_core::{InputState, ProbeClick, SelectedTriangle, Viewport};
+use close2gl_core::{InputState, ProbeClick, SelectedTriangle, View, Viewport};
 use close2gl_gpu::{Gpu, ProbedFrame, ReferenceProbe};
 use close2gl_trace::view::TraceView;
 use close2gl_trace::view::probe::probe as trace_probe;
 use close2gl_ui::ProbeAnswer;
 
 use crate::placed_views::ViewPlacement;
-use crate::view_layout::{Placed, Placement, View};
+use crate::view_layout::{Placed, Placement};
 
 /// Answers this frame's probe click, if any.
 pub fn answer_probe(

@@ -3,6 +3,7 @@
 //! view alone (the screenshot key, comparing the views), on their way back from the GPU.
 
 use bevy_ecs::world::World;
+use close2gl_core::View;
 use close2gl_gpu::outside::OutsideRenderer;
 use close2gl_gpu::{Gpu, Image, Views};
 use close2gl_ui::ViewStats;
@@ -11,7 +12,7 @@ use crate::draw::{AllViews, ViewTimes, draw_views, record_times};
 use crate::gui::GuiFrame;
 use crate::screenshot::{self, PendingImage};
 use crate::surface::WindowSurface;
-use crate::view_layout::{Placed, Placement, View};
+use crate::view_layout::{Placed, Placement};
 use crate::windows::Windows;
 
 /// What a frame keeps of itself besides showing it.

@@ -1,15 +1,7 @@
 //! Where the views go in a window, in physical pixels: pure functions of the window sizes and
 //! the area the panel leaves, so the rules are tested without a window.
 
-use close2gl_core::Viewport;
-
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum View {
-    Reference,
-    Close2gl,
-    /// The pipeline seen from outside (close2gl_gpu::outside).
-    Outside,
-}
+use close2gl_core::{View, Viewport};
 
 /// A view and where it goes in its window.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

@@ -149,7 +149,7 @@ impl Windows {
         self.outside_area = placement
             .main
             .iter()
-            .find(|p| p.view == view_layout::View::Outside)
+            .find(|p| p.view == close2gl_core::View::Outside)
             .map(|p| p.rect);
         placement
     }

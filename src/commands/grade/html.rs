@@ -151,7 +151,7 @@ fn sandbox_list(out: &mut String, sandboxing: &Sandboxing) {
 
 /// The difference picture's colours, as check paints them.
 fn legend() -> String {
-    use close2gl_check::compare::Kind;
+    use close2gl_check::Kind;
     use close2gl_check::picture::kind_color;
     let kinds = [
         Kind::DrawnBehindEye,

@@ -5,7 +5,7 @@
 use glam::DVec3;
 
 use super::{Named, Values};
-use crate::compare::number;
+use crate::words::number;
 
 const NAMES: [&str; 3] = ["u", "v", "n"];
 

@@ -130,6 +130,7 @@ mod tests {
     use super::super::tests::pitched;
     use super::*;
     use close2gl_pipeline::mistakes::Mistakes;
+    use close2gl_pipeline::program::given;
 
     fn values() -> Values {
         let (camera, window) = pitched();
@@ -137,11 +138,11 @@ mod tests {
     }
 
     fn m() -> DMat4 {
-        pitched().0.modelview(Mistakes::NONE)
+        given::modelview(&pitched().0, Mistakes::NONE)
     }
 
     fn p() -> DMat4 {
-        pitched().0.projection(Mistakes::NONE)
+        given::projection(&pitched().0, Mistakes::NONE)
     }
 
     /// `m` with row `r` times `k`.

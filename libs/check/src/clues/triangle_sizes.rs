@@ -4,7 +4,7 @@
 //! differently shows as sizes or places they share.
 
 use close2gl_core::Mesh;
-use close2gl_pipeline::program::{Outcome, Program};
+use close2gl_pipeline::program::{Program, TriangleOutcome};
 use glam::DVec2;
 
 /// One triangle that differs, as the clue sees it.
@@ -21,7 +21,7 @@ pub struct Seen {
 
 /// Mesh triangle `t` as `program` sees it (`outcome`: what the program did with it); touching
 /// the border is being cut or removed by a plane of the view volume.
-pub fn seen(program: &Program, mesh: &Mesh, t: usize, outcome: &Outcome) -> Seen {
+pub fn seen(program: &Program, mesh: &Mesh, t: usize, outcome: &TriangleOutcome) -> Seen {
     let eye = |i: u32| -(program.m * mesh.positions[i as usize].as_dvec3().extend(1.0)).z;
     Seen {
         pixels: on_screen(program, outcome),
@@ -31,7 +31,7 @@ pub fn seen(program: &Program, mesh: &Mesh, t: usize, outcome: &Outcome) -> Seen
 }
 
 /// `outcome`'s shape on screen in window pixels (see [`Seen::pixels`]).
-pub fn on_screen(program: &Program, outcome: &Outcome) -> Option<Vec<DVec2>> {
+pub fn on_screen(program: &Program, outcome: &TriangleOutcome) -> Option<Vec<DVec2>> {
     let (width, height) = program.declared.window;
     let polygon: Vec<DVec2> = match outcome.drawn() {
         true => outcome.polygon.clone(),

@@ -1,6 +1,7 @@
 //! The expectations a corpus program states in its header comment, before it is ever checked:
 //! one line per run, `expect SCENE [FLAG ...]: OUTCOME`, where OUTCOME is `agree` or
-//! `differs stage=S[,S...] [names=ID[,ID...]] [unexplained]` (see examples/corpus/README.md).
+//! `differs stage=S[,S...] [names=ID[,ID...]] [fits=DECLARATION[,...]] [unexplained]` (see
+//! examples/corpus/README.md).
 
 use std::path::Path;
 
@@ -18,10 +19,12 @@ pub struct Expectation {
 pub enum Outcome {
     Agree,
     /// `stages`: the first differing stage, then others that must differ too; `names`: exactly
-    /// the catalogue ids named; `unexplained`: whether something is left unexplained.
+    /// the catalogue ids named; `fits`: exactly the other declarations named, words joined by
+    /// `_` (`clipping_simple_near_far`); `unexplained`: whether something is left unexplained.
     Differs {
         stages: Vec<String>,
         names: Vec<String>,
+        fits: Vec<String>,
         unexplained: bool,
     },
 }
@@ -55,12 +58,15 @@ fn parse(rest: &str) -> Option<Expectation> {
     let outcome = match words.next()? {
         "agree" => Outcome::Agree,
         "differs" => {
-            let (mut stages, mut names, mut unexplained) = (Vec::new(), Vec::new(), false);
+            let (mut stages, mut names, mut fits) = (Vec::new(), Vec::new(), Vec::new());
+            let mut unexplained = false;
             for word in words.by_ref() {
                 if let Some(list) = word.strip_prefix("stage=") {
                     stages = list.split(',').map(String::from).collect();
                 } else if let Some(list) = word.strip_prefix("names=") {
                     names = list.split(',').map(String::from).collect();
+                } else if let Some(list) = word.strip_prefix("fits=") {
+                    fits = list.split(',').map(String::from).collect();
                 } else if word == "unexplained" {
                     unexplained = true;
                 } else {
@@ -74,6 +80,7 @@ fn parse(rest: &str) -> Option<Expectation> {
             Outcome::Differs {
                 stages,
                 names,
+                fits,
                 unexplained,
             }
         }
@@ -100,16 +107,20 @@ pub fn observed(report: &Report) -> Outcome {
         .collect();
     let mut names: Vec<String> = report.mistakes().iter().map(|m| m.to_string()).collect();
     names.sort();
+    let fits = (report.redeclared.iter())
+        .map(|r| r.declaration.replace(' ', "_"))
+        .collect();
     Outcome::Differs {
         stages,
         names,
+        fits,
         unexplained: report.unexplained.is_some(),
     }
 }
 
 /// Whether `observed` holds `expected`: the same verdict; for a difference, the same first
-/// stage, every stage listed among those that differ, exactly the names, and "unexplained"
-/// exactly when expected.
+/// stage, every stage listed among those that differ, exactly the names and the declarations
+/// that fit, and "unexplained" exactly when expected.
 pub fn holds(expected: &Outcome, observed: &Outcome) -> bool {
     match (expected, observed) {
         (Outcome::Agree, Outcome::Agree) => true,
@@ -117,17 +128,20 @@ pub fn holds(expected: &Outcome, observed: &Outcome) -> bool {
             Outcome::Differs {
                 stages,
                 names,
+                fits,
                 unexplained,
             },
             Outcome::Differs {
                 stages: seen,
                 names: named,
+                fits: fitting,
                 unexplained: left,
             },
         ) => {
             seen.first() == stages.first()
                 && stages.iter().all(|s| seen.contains(s))
                 && names == named
+                && fits == fitting
                 && unexplained == left
         }
         _ => false,

@@ -104,11 +104,12 @@ pub fn write_all(dir: &Path) -> BTreeMap<&'static str, SceneFile> {
         .map(|(name, path)| (name, (path.clone(), load(&path))))
         .collect();
     let r = |model: &str| radius(&meshes[model].1);
-    let scenes: [(&'static str, &str, String); 11] = [
+    let scenes: [(&'static str, &str, String); 12] = [
         ("cube_front", "cube", format!("camera framed\nculling ccw\norbit u {}\norbit v {}\n", 0.6 * r("cube"), 0.4 * r("cube"))),
         ("knot_turned", "knot", format!("camera framed\nculling ccw\norbit u {}\nrotate n 15\nmove n {}\n", 0.5 * r("knot"), -0.2 * r("knot"))),
         ("knot_cw", "knot", format!("camera framed\nculling cw\nclipping full\norbit v {}\n", -0.4 * r("knot"))),
         ("knot_small", "knot", format!("camera framed\ncamera near {}\ncamera far {}\nculling ccw\nmove n {}\n", r("knot"), 12.0 * r("knot"), 4.0 * r("knot"))),
+        ("knot_aside", "knot", format!("camera framed\nculling ccw\nmove u {}\n", 0.8 * r("knot"))),
         ("knot_through", "knot", format!("camera framed\nculling ccw\nclipping full\nmove n {}\n", -1.3 * r("knot"))),
         ("far_away_turned", "far_away", format!("camera framed\nculling ccw\norbit u {}\n", 0.4 * r("far_away"))),
         ("inside_cube", "cube", "camera position 0.2 -0.1 -2.8\ncamera u 1 0 0\ncamera v 0 1 0\ncamera n 0 0 1\ncamera hfov 60\ncamera vfov 60\ncamera near 0.1\ncamera far 10\nculling off\nrotate v 20\n".to_string()),

@@ -6,8 +6,8 @@
 
 use std::collections::HashSet;
 
+use close2gl_core::declaration::{ClipPlanes, ClipRule, WindingSpace};
 use close2gl_core::{NamedEnum, RenderMode};
-use close2gl_pipeline::program::{ClipPlanes, ClipRule, WindingSpace};
 use close2gl_trace_format::{
     Axis, CLIPPINGS, CULLINGS, CameraLines, ClipLine, Motion, Piece, SceneCamera, SceneFile,
     System2d, Trace, parse_scene, parse_trace,

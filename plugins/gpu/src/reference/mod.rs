@@ -441,16 +441,11 @@ pub fn clear_color(background: Vec3) -> wgpu::Color {
 
 /// The shader's override constants: which lighting `shading` is, then the drawing's own.
 fn shader_constants<'a>(shading: Shading, own: &[(&'a str, f64)]) -> Vec<(&'a str, f64)> {
-    let (gouraud, phong, specular) = match shading {
-        Shading::None => (0.0, 0.0, 0.0),
-        Shading::GouraudAd => (1.0, 0.0, 0.0),
-        Shading::GouraudAds => (1.0, 0.0, 1.0),
-        Shading::Phong => (0.0, 1.0, 1.0),
-    };
+    let flag = |on: bool| f64::from(u8::from(on));
     let mut constants = vec![
-        ("GOURAUD", gouraud),
-        ("PHONG", phong),
-        ("SPECULAR", specular),
+        ("GOURAUD", flag(shading.per_vertex())),
+        ("PHONG", flag(shading == Shading::Phong)),
+        ("SPECULAR", flag(shading.specular())),
     ];
     constants.extend_from_slice(own);
     constants

@@ -1,9 +1,10 @@
 //! A student's Close2GL as data. A [`Program`] is what a program computes: its camera, its M, P
 //! and V, how it clips and how it culls, as it declares them ([`Declared`]) and as its mistakes
 //! change them ([`crate::mistakes`]; none: close2gl's own choices). [`Program::triangle`] then
-//! sends one mesh triangle down the textbook's stages with those choices, in double precision,
-//! into any 2D system (`gluOrtho2D`'s L R B T), reusing the pipeline's own clipping and culling,
-//! with what float32 rounding could make of each number ([`crate::rounding`]). The fast path
+//! sends one mesh triangle down the textbook's stages with those choices into any 2D system
+//! (`gluOrtho2D`'s L R B T): its matrices, the division and V in double precision, the
+//! clipping and the winding test in float32 as the pipeline's own (whose code they reuse), with
+//! what float32 rounding could make of each number ([`crate::rounding`]). The fast path
 //! never sees a mistake; a frame with one runs this, triangle by triangle (teaching models are
 //! small). `close2gl check` runs it to recompute a student's frame, and with each mistake to name
 //! the one that reproduces it.
@@ -13,41 +14,15 @@ use close2gl_core::{
 };
 use glam::{DMat4, DVec3};
 
-use crate::clip::{FAR, NEAR, Outcode};
 use crate::mistakes::Mistakes;
 
-pub(crate) mod given;
+pub mod given;
 mod triangle;
+pub mod view;
 
-pub use given::{ProgramCamera, System2d};
-pub use triangle::Outcome;
-
-impl From<&Camera> for ProgramCamera {
-    fn from(c: &Camera) -> Self {
-        Self {
-            position: c.position.as_dvec3(),
-            u: c.u.as_dvec3(),
-            v: c.v.as_dvec3(),
-            n: c.n.as_dvec3(),
-            hfov: f64::from(c.hfov),
-            vfov: f64::from(c.vfov),
-            near: f64::from(c.near),
-            far: f64::from(c.far),
-        }
-    }
-}
-
-/// How the program clips: what a scene or a trace says (`clipping simple|full|none`), and
-/// what it does unless it divides first ([`Program::divides_first`]).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum ClipRule {
-    /// The assignment's: drop a triangle with any corner outside the view volume.
-    Simple,
-    /// Cut against the six planes, as a GPU does.
-    Full,
-    /// Nothing clipped, but a corner at w = 0 exactly (no division is possible).
-    Nothing,
-}
+pub use close2gl_core::declaration::{ClipPlanes, ClipRule, ProgramCamera, System2d, WindingSpace};
+pub use given::planes_mask;
+pub use triangle::{DrawnCorner, TriangleOutcome};
 
 /// How the program culls, and which winding (or side) is front.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -59,41 +34,6 @@ pub enum CullRule {
     FileNormals(FrontFace),
     /// `culling_by_view_axis`: back when ((p1 − p0) × (p2 − p0)) · n < 0 (reversed for cw).
     ViewAxis(FrontFace),
-}
-
-/// Where a program tests a triangle's winding (`trace-format.md`, culling's space).
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum WindingSpace {
-    /// As seen on screen (version 1's `culling ccw`): the 2D output mapped to the window.
-    Screen,
-    /// NDC x, y, y up, before V: a mistake in V does not change it.
-    Ndc,
-    /// The 2D output's own numbers (x right, y growing upward in the numbers): with a y-down
-    /// system, the mirror of the screen.
-    Window,
-}
-
-impl WindingSpace {
-    pub const ALL: [WindingSpace; 3] = [Self::Screen, Self::Ndc, Self::Window];
-}
-
-/// Which planes the program clips against itself.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
-pub enum ClipPlanes {
-    /// All six.
-    #[default]
-    All,
-    /// Near and far only: x and y are left to the 2D rasteriser, which cuts at the window.
-    NearFar,
-}
-
-impl ClipPlanes {
-    fn mask(self) -> Outcode {
-        match self {
-            ClipPlanes::All => 0x3f,
-            ClipPlanes::NearFar => NEAR | FAR,
-        }
-    }
 }
 
 /// What the program is told to do, or says it did: the settings a scene or a trace declares.
@@ -197,9 +137,9 @@ impl Program {
         if mistakes.has(LeftHanded) {
             camera.u = camera.n.cross(camera.v);
         }
-        let m = camera.modelview(mistakes);
-        let p = camera.projection(mistakes);
-        let v = declared.system.viewport(mistakes);
+        let m = given::modelview(&camera, mistakes);
+        let p = given::projection(&camera, mistakes);
+        let v = given::viewport(&declared.system, mistakes);
         let clip_matrix = match mistakes.has(ProductOrder) {
             true => m * p,
             false => p * m,
@@ -260,7 +200,7 @@ impl Program {
     }
 
     /// Every triangle of `mesh`, in order.
-    pub fn frame(&self, mesh: &Mesh) -> Vec<Outcome> {
+    pub fn frame(&self, mesh: &Mesh) -> Vec<TriangleOutcome> {
         (0..mesh.triangles.len())
             .filter_map(|t| self.triangle(mesh, t))
             .collect()
@@ -277,8 +217,6 @@ fn opposite(front: FrontFace) -> FrontFace {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::{random_triangles, textbook};
-    use glam::Vec3;
 
     /// The view's switches become a declaration and come back unchanged, whichever they are.
     #[test]
@@ -303,47 +241,5 @@ mod tests {
                 "{i}"
             );
         }
-    }
-
-    /// Without mistakes, the program is close2gl's pipeline: for random triangles around a
-    /// camera (many cut by the near and side planes), the same fate as the textbook path, and
-    /// the same polygon to a hundredth of a pixel (the textbook path rounds P·M to float32),
-    /// wherever rounding cannot tell.
-    #[test]
-    fn without_mistakes_it_draws_what_the_textbook_path_draws() {
-        let camera = random_triangles::camera(Vec3::new(0.5, 0.2, 6.0));
-        let viewport = random_triangles::VIEWPORT;
-        for (i, mesh) in random_triangles::triangles(0x2545_f491_4f6c_dd1d, 3000).enumerate() {
-            let settings = PipelineSettings {
-                backface_culling: i % 2 == 0,
-                clipping: if i % 3 == 0 {
-                    Clipping::Simple
-                } else {
-                    Clipping::Full
-                },
-                ..PipelineSettings::default()
-            };
-            let (frame, fates) = textbook::run_recording(&mesh, &camera, &settings, viewport);
-            let program = Program::for_view(&camera, &settings, viewport, Mistakes::NONE);
-            let outcome = program.triangle(&mesh, 0).expect("triangle 0");
-            if outcome.near_a_plane || outcome.near_edge_on {
-                continue;
-            }
-            assert_eq!(outcome.fate.kind, fates.triangles[0].kind, "{i}");
-            let fan: Vec<[f32; 2]> = emitted_fan(&outcome);
-            assert_eq!(fan.len(), frame.vertices.len(), "{i}");
-            for (a, b) in fan.iter().zip(&frame.vertices) {
-                let close = |x: f32, y: f32| (x - y).abs() < 1e-2 + 1e-5 * y.abs();
-                assert!(close(a[0], b[0]) && close(a[1], b[1]), "{i}: {a:?} {b:?}");
-            }
-        }
-    }
-
-    fn emitted_fan(outcome: &Outcome) -> Vec<[f32; 2]> {
-        let p = &outcome.polygon;
-        (1..p.len().saturating_sub(1))
-            .flat_map(|i| [p[0], p[i], p[i + 1]])
-            .map(|q| [q.x as f32, q.y as f32])
-            .collect()
     }
 }

@@ -2,23 +2,23 @@
 //! program's rule), divide, map by V, cull (by the program's rule, where it tests the winding),
 //! and what float32 rounding could do to each number the program writes.
 
-use close2gl_core::{FateKind, FrontFace, Mesh, TriangleFate};
+use close2gl_core::{FateKind, FrontFace, Mesh, Topology, TriangleFate};
 use glam::{DMat3, DMat4, DVec2, DVec3, DVec4};
 
-use super::{ClipRule, CullRule, Program, WindingSpace};
+use super::{ClipRule, CullRule, Program, WindingSpace, planes_mask};
 use crate::clip::{NEAR, Polygon, clip_polygon, outcode};
-use crate::rounding;
 use crate::stage::face;
+use crate::{emit, rounding};
 
 impl Program {
     /// Mesh triangle `index` down the stages: its clip coordinates, its fate, and what it drew.
     /// None when the mesh has no such triangle.
-    pub fn triangle(&self, mesh: &Mesh, index: usize) -> Option<Outcome> {
+    pub fn triangle(&self, mesh: &Mesh, index: usize) -> Option<TriangleOutcome> {
         let corners = *mesh.triangles.get(index)?;
         let world = corners.map(|i| self.world(mesh, i));
         let clip = world.map(|p| self.clip_matrix * p.extend(1.0));
         let terms = rounding::clip_terms(self.clip_matrix, self.camera.position, &world);
-        let mut outcome = Outcome {
+        let mut outcome = TriangleOutcome {
             clip,
             fate: TriangleFate::default(),
             polygon: Vec::new(),
@@ -46,13 +46,10 @@ impl Program {
         index: usize,
         world: &[DVec3; 3],
         piece: &[DVec4],
-        outcome: &mut Outcome,
+        outcome: &mut TriangleOutcome,
     ) {
         let ndc: Vec<DVec3> = piece.iter().map(|p| p.truncate() / p.w).collect();
-        let system: Vec<DVec2> = ndc
-            .iter()
-            .map(|p| (self.v * p.extend(1.0)).truncate().truncate())
-            .collect();
+        let system: Vec<DVec2> = ndc.iter().map(|&p| self.in_system(p)).collect();
         if system.iter().any(|p| !p.is_finite()) {
             outcome.fate.kind = FateKind::Clipped;
             return;
@@ -84,6 +81,49 @@ impl Program {
         outcome.polygon = system;
     }
 
+    /// An NDC point mapped by V into the declared 2D system.
+    fn in_system(&self, ndc: DVec3) -> DVec2 {
+        (self.v * ndc.extend(1.0)).truncate().truncate()
+    }
+
+    /// The corners `topology` draws of what `outcome` drew, each with what the rasterizer
+    /// needs: its polygon's, or in point mode, of a triangle clipping cut, [`emit::points`] of
+    /// its corners (f32 clip coordinates, as its clipping), divided and mapped as the polygon.
+    /// Empty when it drew nothing.
+    pub fn drawn_corners(&self, outcome: &TriangleOutcome, topology: Topology) -> Vec<DrawnCorner> {
+        if topology == Topology::Points && outcome.fate.kind == FateKind::Cut {
+            let single = outcome.clip.map(|c| c.as_vec4());
+            let triangle = Polygon::triangle(single[0], single[1], single[2]);
+            let points = emit::points(
+                &triangle,
+                outcome.fate.planes,
+                planes_mask(self.declared.planes),
+            );
+            return (points.vertices().iter().zip(points.weights))
+                .map(|(p, weights)| {
+                    let clip = p.as_dvec4();
+                    let ndc = clip.truncate() / clip.w;
+                    DrawnCorner {
+                        at: self.in_system(ndc),
+                        depth: ndc.z,
+                        inv_w: 1.0 / clip.w,
+                        weights: weights.to_array(),
+                        own: true,
+                    }
+                })
+                .collect();
+        }
+        (0..outcome.polygon.len())
+            .map(|i| DrawnCorner {
+                at: outcome.polygon[i],
+                depth: outcome.depths[i],
+                inv_w: outcome.inv_w[i],
+                weights: outcome.weights[i],
+                own: outcome.edges[i],
+            })
+            .collect()
+    }
+
     /// The piece's corners on screen (window pixels, y down) and where the program tests the
     /// winding (y down too: the pipeline's facing test reads it so, and y up is negated).
     fn windings(&self, ndc: &[DVec3], system: &[DVec2]) -> (Vec<[f32; 2]>, Vec<[f32; 2]>) {
@@ -106,20 +146,20 @@ impl Program {
     /// The clip rule: the polygon to divide (clip coordinates) and, in `outcome`, which planes
     /// cut it and which of its edges are the triangle's own; None when the triangle is removed
     /// whole (its fate then says why).
-    fn clipped(&self, clip: &[DVec4; 3], outcome: &mut Outcome) -> Option<Vec<DVec4>> {
+    fn clipped(&self, clip: &[DVec4; 3], outcome: &mut TriangleOutcome) -> Option<Vec<DVec4>> {
         let single = clip.map(|c| c.as_vec4());
-        let mask = self.declared.planes.mask();
+        let mask = planes_mask(self.declared.planes);
         let codes = single.map(|c| outcode(c) & mask);
         let (any, all) = (
             codes[0] | codes[1] | codes[2],
             codes[0] & codes[1] & codes[2],
         );
-        let whole = |outcome: &mut Outcome| {
+        let whole = |outcome: &mut TriangleOutcome| {
             outcome.edges = vec![true; 3];
             outcome.weights = vec![[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
             Some(clip.to_vec())
         };
-        let removed = |outcome: &mut Outcome, planes: u8| {
+        let removed = |outcome: &mut TriangleOutcome, planes: u8| {
             outcome.fate.kind = FateKind::Clipped;
             outcome.fate.planes = planes;
             outcome.fate.behind_eye = clip.iter().all(|c| c.w <= 0.0);
@@ -164,7 +204,7 @@ impl Program {
         index: usize,
         world: &[DVec3; 3],
         [pixels, tested]: [&[[f32; 2]]; 2],
-        outcome: &mut Outcome,
+        outcome: &mut TriangleOutcome,
     ) -> (f32, Option<FateKind>) {
         let (_, winding) = face::<true>(
             tested,
@@ -201,7 +241,7 @@ impl Program {
 
 /// What one mesh triangle became in a program's Close2GL.
 #[derive(Clone, Debug, PartialEq)]
-pub struct Outcome {
+pub struct TriangleOutcome {
     /// Its corners' clip coordinates, before clipping.
     pub clip: [DVec4; 3],
     /// Drawn, cut, clipped, culled or zero_area, with the planes and the signed area (the
@@ -234,11 +274,26 @@ pub struct Outcome {
     pub depth_errors: Vec<f64>,
 }
 
-impl Outcome {
+impl TriangleOutcome {
     /// Whether it drew anything.
     pub fn drawn(&self) -> bool {
         !self.polygon.is_empty()
     }
+}
+
+/// A corner of what a program drew, as its mode draws it ([`Program::drawn_corners`]).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct DrawnCorner {
+    /// Where, in the declared 2D system.
+    pub at: DVec2,
+    /// Its NDC depth (z/w).
+    pub depth: f64,
+    /// 1/w, for perspective-correct interpolation.
+    pub inv_w: f64,
+    /// Where it lies in the triangle: its corners' weights.
+    pub weights: [f32; 3],
+    /// Whether the edge it starts is part of one of the triangle's own edges.
+    pub own: bool,
 }
 
 /// The file's face normal of triangle `index`; for a model without them (an OBJ), the mean of

@@ -19,7 +19,7 @@ use close2gl_trace_format::Trace;
 
 pub use findings::word_findings;
 pub use open::{load_requested_trace, trace_camera, trace_settings};
-pub use show::show_trace;
+pub use show::trace_output_system;
 
 /// A trace file to read (replacing the one shown), set by the command line, a dropped file or
 /// the watch; taken by [`load_requested_trace`].

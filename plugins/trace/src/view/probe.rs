@@ -2,8 +2,8 @@
 //! the pixel, which close2gl draws there, and for each, close2gl's fate for it and what check
 //! found.
 
-use close2gl_check::compare::fate_words;
 use close2gl_check::region::covers;
+use close2gl_check::words::fate_words;
 use close2gl_core::Viewport;
 use glam::DVec2;
 

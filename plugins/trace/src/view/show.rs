@@ -11,7 +11,7 @@ use super::TraceView;
 
 /// The shown trace's 2D output, in the view's pixels, whenever the pipeline's frame (its
 /// topology), the trace or the view's size changed; none once no trace is shown.
-pub fn show_trace(
+pub fn trace_output_system(
     view: Res<TraceView>,
     viewport: Res<Viewport>,
     frame: Res<Close2glFrame>,
@@ -38,12 +38,8 @@ fn vertices(trace: &Trace, viewport: Viewport, topology: Topology) -> Vec<[f32; 
             [q.x as f32, q.y as f32]
         };
         let corners: Vec<[f32; 2]> = piece.corners.iter().map(|&p| pixel(p)).collect();
-        let n = corners.len();
-        match topology {
-            Topology::Triangles => out.extend(emit::fan(n).map(|i| corners[i])),
-            Topology::Lines => out.extend(emit::edges(n, |_| true).map(|i| corners[i])),
-            Topology::Points => out.extend(&corners),
-        }
+        // A piece's edges are all its own: the trace drew them as they are.
+        out.extend(emit::corners(topology, corners.len(), |_| true).map(|i| corners[i]));
     }
     out
 }

@@ -6,11 +6,11 @@
 
 use bevy_ecs::prelude::*;
 use close2gl_core::{Camera, InputState, ProbeClick, SelectedTriangle};
-use close2gl_raster::coverage_probe::{Outcome, PixelProbe};
+use close2gl_raster::coverage_probe::{PixelOutcome, PixelProbe};
 
 use crate::legend::swatch;
 use crate::state::PanelState;
-use crate::view_areas::Views;
+use crate::view_areas::ViewArea;
 
 /// The last pixel probe (a Ctrl+click on a view), answered by both sides: the viewer fills it.
 #[derive(Resource, Clone, Debug)]
@@ -77,13 +77,13 @@ impl ProbeAnswer {
 }
 
 /// Why a candidate did or did not draw the pixel, in words.
-fn why(outcome: Outcome) -> &'static str {
+fn why(outcome: PixelOutcome) -> &'static str {
     match outcome {
-        Outcome::Won => "the nearest, it drew the pixel",
-        Outcome::Depth => "another triangle is nearer (the depth test)",
-        Outcome::Culled => "a back face, removed by culling",
-        Outcome::Clipped => "it would project here, but clipping removed it",
-        Outcome::FillRule => "the pixel centre is on its edge; the top-left rule gave it away",
+        PixelOutcome::Won => "the nearest, it drew the pixel",
+        PixelOutcome::Depth => "another triangle is nearer (the depth test)",
+        PixelOutcome::Culled => "a back face, removed by culling",
+        PixelOutcome::Clipped => "it would project here, but clipping removed it",
+        PixelOutcome::FillRule => "the pixel centre is on its edge; the top-left rule gave it away",
     }
 }
 
@@ -152,7 +152,7 @@ pub fn record(ui: &mut egui::Ui, answer: Option<&ProbeAnswer>) {
 /// more room, kept inside the views. A click in the Close2GL window of the windows layout, which
 /// has no panel to draw in, opens it in the views' corner.
 pub fn probe_window(
-    (InRef(ui), In(views)): (InRef<egui::Ui>, In<Views>),
+    (InRef(ui), In(views)): (InRef<egui::Ui>, In<ViewArea>),
     answer: Option<ResMut<ProbeAnswer>>,
     input: Option<Res<InputState>>,
     cameras: Query<&Camera>,

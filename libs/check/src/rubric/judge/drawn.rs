@@ -2,13 +2,15 @@
 //! own geometry, the fields of view, resizing, and the whole frame for `synchronized`.
 
 use close2gl_core::FrontFace;
-use close2gl_pipeline::program::{CullRule, Outcome, Program};
+use close2gl_pipeline::program::{CullRule, Program, TriangleOutcome};
 use glam::{DMat4, DVec2};
 
 use super::{Judge, Verdict, drew_nothing, required, stage_verdict, stages_agree};
 use crate::clues;
-use crate::compare::{self, Kind, Stage, number};
+use crate::compare::{self, matrices};
 use crate::own_input::own_program;
+use crate::vocabulary::{Kind, Stage};
+use crate::words::number;
 
 /// How far a frame's width in NDC (where the window is 2 wide) may be off.
 const WIDTH: f64 = 1e-3;
@@ -83,7 +85,7 @@ impl Judge<'_> {
 
     /// hfov (row 0) or vfov (row 1): P's row, and the frame's width (height) in NDC.
     pub(super) fn fov(&self, row: usize) -> Verdict {
-        let mut p = compare::matrix(Stage::P, self.ours.p, self.trace.p, &[row]);
+        let mut p = matrices::matrix(Stage::P, self.ours.p, self.trace.p, &[row]);
         clues::add_matrix_clue(&mut p, self.ours.p, self.trace, &[row]);
         let p = required(&p);
         if !p.passed {
@@ -98,7 +100,7 @@ impl Judge<'_> {
             expected
                 .frame(self.mesh)
                 .iter()
-                .flat_map(|o: &Outcome| o.polygon.iter().copied()),
+                .flat_map(|o: &TriangleOutcome| o.polygon.iter().copied()),
             self.ours.v,
             row,
         );

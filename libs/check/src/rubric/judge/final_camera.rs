@@ -7,9 +7,10 @@ use glam::DVec3;
 
 use super::{AXIS, Judge, POSITION, Verdict, stages_agree, vec3};
 use crate::clues::{self, Values};
-use crate::compare::{Stage, number};
 use crate::rubric::expected_motion::Pose;
 use crate::rubric::scenes::default_lookat;
+use crate::vocabulary::Stage;
+use crate::words::number;
 
 /// "About the asked amount": an orbit may land this fraction of its length from a straight
 /// move or an arc.

@@ -27,7 +27,7 @@ mod drawn;
 mod final_camera;
 
 use close2gl_core::{FrontFace, Mesh};
-use close2gl_pipeline::program::{ClipRule, Outcome, Program, WindingSpace};
+use close2gl_pipeline::program::{ClipRule, Program, TriangleOutcome, WindingSpace};
 use close2gl_trace_format::{
     CameraLines, SceneCamera, SceneFile, Trace, clipping_name, culling_name,
 };
@@ -35,8 +35,10 @@ use glam::DVec3;
 
 use super::lines::LineId;
 use super::scenes::RubricScene;
-use crate::compare::{Comparison, Stage, StageResult, Status, number};
-use crate::{Report, program_for};
+use crate::declared::program_for;
+use crate::report::Report;
+use crate::vocabulary::{Comparison, Stage, StageResult, Status};
+use crate::words::number;
 pub use final_camera::Turn;
 pub(crate) use final_camera::settle_rotations;
 
@@ -246,7 +248,7 @@ fn on_screen(trace: &Trace) -> Option<FrontFace> {
 
 /// A trace that drew nothing: right when `expected` draws nothing either (everything culled
 /// or outside), a failure saying how much `whose` pipeline draws otherwise.
-fn drew_nothing(expected: &[Outcome], whose: &str) -> Verdict {
+fn drew_nothing(expected: &[TriangleOutcome], whose: &str) -> Verdict {
     match expected.iter().filter(|o| o.drawn()).count() {
         0 => Verdict::pass(""),
         n => Verdict::fail(format!("it drew nothing, where {whose} {n} triangles")),
