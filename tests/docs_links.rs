@@ -140,14 +140,33 @@ fn repository_files(root: &Path, dir: &Path, out: &mut Vec<String>) {
     }
 }
 
+/// The folder a Markdown table row is about (its first cell, `plugins/gpu`): a bare file
+/// name in that row is that folder's. None: the name may be anywhere.
+fn scope(root: &Path, file: &str, line: &str) -> Option<String> {
+    if !file.ends_with(".md") {
+        return None;
+    }
+    let first = line.strip_prefix("| `")?.split('`').next()?;
+    let folder = first.trim_end_matches('/');
+    (folder.contains('/') && root.join(folder).is_dir()).then(|| folder.to_string())
+}
+
 #[test]
 fn every_file_a_comment_or_document_names_exists() {
     let root = Path::new(env!("CARGO_MANIFEST_DIR"));
     let mut all = Vec::new();
     repository_files(root, root, &mut all);
-    let exists = |name: &str| {
-        all.iter()
-            .any(|f| f == name || f.ends_with(&format!("/{name}")))
+    // A name with its folder must be that path (from the root, or the end of one); a bare name
+    // in a table row about a folder must be in that folder.
+    let exists = |name: &str, scope: Option<&str>| {
+        all.iter().any(|f| {
+            let at = f == name || f.ends_with(&format!("/{name}"));
+            let within = match (name.contains('/'), scope) {
+                (false, Some(folder)) => f.starts_with(&format!("{folder}/")),
+                _ => true,
+            };
+            at && within
+        })
     };
     let mut checked = 0;
     let mut missing = Vec::new();
@@ -162,9 +181,10 @@ fn every_file_a_comment_or_document_names_exists() {
                 true => line.split_once("//").map_or("", |(_, comment)| comment),
                 false => line,
             };
+            let scope = scope(root, file, line);
             for name in named_files(prose) {
                 checked += 1;
-                if !exists(name) {
+                if !exists(name, scope.as_deref()) {
                     missing.push(format!("{file}:{}: {name}", i + 1));
                 }
             }
@@ -176,9 +196,21 @@ fn every_file_a_comment_or_document_names_exists() {
     );
     assert!(
         missing.is_empty(),
-        "files named that do not exist:\n{}",
+        "files named that do not exist where they are said to be:\n{}",
         missing.join("\n")
     );
+}
+
+#[test]
+fn a_table_row_about_a_folder_scopes_its_bare_names() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let row = "| `plugins/input` | the outside view's key (`outside.rs`) |";
+    assert_eq!(
+        scope(root, "docs/x.md", row).as_deref(),
+        Some("plugins/input")
+    );
+    assert_eq!(scope(root, "src/x.rs", row), None);
+    assert_eq!(scope(root, "docs/x.md", "| `src/` |").as_deref(), None);
 }
 
 #[test]

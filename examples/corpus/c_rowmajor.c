@@ -21,7 +21,7 @@
  * expect knot_cw -DNEVER_CULLS: differs stage=culling names=never_culls
  * expect knot_small -DDROP_SMALL: differs stage=culling unexplained
  * expect knot_turned -DDROP_SMALL: differs stage=culling unexplained
- * expect knot_turned -DCULL_SWITCH_MIXUP: differs stage=culling names=aspect_from_angles,culling_ignores_front_face,culling_inverted,divide_before_clip,fovs_swapped,no_clipping
+ * expect knot_turned -DCULL_SWITCH_MIXUP: differs stage=culling names=aspect_from_angles,culling_ignores_front_face,culling_inverted,divide_before_clip,fovs_swapped,no_clipping fits=clipping_simple_near_far
  * expect knot_cw -DCULL_SWITCH_MIXUP: differs stage=culling names=never_culls
  * expect-grade cube: 200
  * expect-grade cube -DNEVER_CULLS: culling=12 synchronized=23
