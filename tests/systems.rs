@@ -398,6 +398,42 @@ fn the_raster_system_draws_when_asked_and_when_something_changed() {
 /// tick; the background redraws the software image alone), and switching the mode recomputes
 /// the frame in that same frame.
 #[test]
+fn a_reload_that_changes_only_the_background_recomputes_no_geometry() {
+    let software = RenderSettings {
+        close2gl_raster: Rasterizer::Software,
+        ..RenderSettings::default()
+    };
+    let mut app = app_with(cube(), software);
+    app.init_resource::<Lighting>().add_plugins(RasterPlugin);
+    camera_mut(&mut app).position = Vec3::new(0.0, 0.0, 6.0);
+    let mut config = Config::default();
+    config.render = software;
+    close2gl::apply_settings(app.world_mut(), &config);
+    app.update();
+    let computed = |app: &App| app.world().resource_ref::<Close2glFrame>().last_changed();
+    let drawn = |app: &App| app.world().resource_ref::<SoftwareFrame>().last_changed();
+    let (geometry, image) = (computed(&app), drawn(&app));
+    // The same file again (--watch saw it saved unchanged): nothing runs again.
+    close2gl::apply_settings(app.world_mut(), &config);
+    app.update();
+    assert_eq!(computed(&app), geometry, "an unchanged reload: the frame");
+    assert_eq!(drawn(&app), image, "an unchanged reload: the image");
+    config.render.background = Vec3::ONE;
+    close2gl::apply_settings(app.world_mut(), &config);
+    app.update();
+    assert_eq!(
+        computed(&app),
+        geometry,
+        "the background: the frame is left alone"
+    );
+    assert_ne!(
+        drawn(&app),
+        image,
+        "the background: the image is drawn again"
+    );
+}
+
+#[test]
 fn only_the_pipelines_switches_recompute_the_close2gl_frame() {
     let software = RenderSettings {
         close2gl_raster: Rasterizer::Software,

@@ -11,6 +11,7 @@ use close2gl_config::Config;
 use close2gl_core::bevy_ecs::world::World;
 use close2gl_core::{
     App, Camera, ModelRequest, ModelStatus, Plugin, SettingsPlugin, TextureRequest, Viewport,
+    insert_if_changed,
 };
 
 /// Everything headless: the shared settings, model loading, the camera, input mapping, the
@@ -61,12 +62,13 @@ pub fn build_app(config: &Config, viewport: Viewport) -> Result<App, String> {
 /// primitives, the outside view, key bindings and the framing rules (the camera, the model and
 /// the speeds are the caller's, who knows whether they are new).
 pub fn apply_settings(world: &mut World, config: &Config) {
+    // Each only where its value changed: a reload wakes only the systems that follow it.
     config.render.insert_into(world);
-    world.insert_resource(config.lighting);
-    world.insert_resource(config.primitives);
-    world.insert_resource(config.outside);
-    world.insert_resource(config.input.clone());
-    world.insert_resource(config.camera.framing());
+    insert_if_changed(world, config.lighting);
+    insert_if_changed(world, config.primitives);
+    insert_if_changed(world, config.outside);
+    insert_if_changed(world, config.input.clone());
+    insert_if_changed(world, config.camera.framing());
 }
 
 /// Runs frames until a model loading in the background is in, showing its progress.

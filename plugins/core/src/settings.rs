@@ -283,9 +283,9 @@ impl RenderSettings {
 
     /// Inserts the three resources (each marked changed, as a configuration applied is).
     pub fn insert_into(self, world: &mut World) {
-        world.insert_resource(self.pipeline());
-        world.insert_resource(self.appearance());
-        world.insert_resource(self.overlay);
+        insert_if_changed(world, self.pipeline());
+        insert_if_changed(world, self.appearance());
+        insert_if_changed(world, self.overlay);
     }
 
     /// The table `world` holds, `None` while one of its three resources is missing.
@@ -295,6 +295,16 @@ impl RenderSettings {
             *world.get_resource::<Appearance>()?,
             *world.get_resource::<Overlay>()?,
         ))
+    }
+}
+
+/// Inserts `value` unless `world` already holds an equal one. Inserting marks a resource
+/// changed even when its value is the same, and every system that follows it (the pipeline,
+/// the rasterizer) would run again: a reload that changed only the background would recompute
+/// the geometry.
+pub fn insert_if_changed<R: Resource + PartialEq>(world: &mut World, value: R) {
+    if world.get_resource::<R>() != Some(&value) {
+        world.insert_resource(value);
     }
 }
 
