@@ -406,8 +406,10 @@ fn a_reload_that_changes_only_the_background_recomputes_no_geometry() {
     let mut app = app_with(cube(), software);
     app.init_resource::<Lighting>().add_plugins(RasterPlugin);
     camera_mut(&mut app).position = Vec3::new(0.0, 0.0, 6.0);
-    let mut config = Config::default();
-    config.render = software;
+    let mut config = Config {
+        render: software,
+        ..Config::default()
+    };
     close2gl::apply_settings(app.world_mut(), &config);
     app.update();
     let computed = |app: &App| app.world().resource_ref::<Close2glFrame>().last_changed();
