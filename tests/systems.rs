@@ -397,8 +397,8 @@ fn the_raster_system_draws_when_asked_and_when_something_changed() {
 /// or the background recomputes nothing of the pipeline's (the Close2GL frame keeps its change
 /// tick; the background redraws the software image alone), and switching the mode recomputes
 /// the frame in that same frame.
-#[test]
-fn a_reload_that_changes_only_the_background_recomputes_no_geometry() {
+/// The cube in front of the camera, Close2GL rasterizing in software; and those settings.
+fn software_cube() -> (App, RenderSettings) {
     let software = RenderSettings {
         close2gl_raster: Rasterizer::Software,
         ..RenderSettings::default()
@@ -406,6 +406,12 @@ fn a_reload_that_changes_only_the_background_recomputes_no_geometry() {
     let mut app = app_with(cube(), software);
     app.init_resource::<Lighting>().add_plugins(RasterPlugin);
     camera_mut(&mut app).position = Vec3::new(0.0, 0.0, 6.0);
+    (app, software)
+}
+
+#[test]
+fn a_reload_that_changes_only_the_background_recomputes_no_geometry() {
+    let (mut app, software) = software_cube();
     let mut config = Config {
         render: software,
         ..Config::default()
@@ -437,13 +443,7 @@ fn a_reload_that_changes_only_the_background_recomputes_no_geometry() {
 
 #[test]
 fn only_the_pipelines_switches_recompute_the_close2gl_frame() {
-    let software = RenderSettings {
-        close2gl_raster: Rasterizer::Software,
-        ..RenderSettings::default()
-    };
-    let mut app = app_with(cube(), software);
-    app.init_resource::<Lighting>().add_plugins(RasterPlugin);
-    camera_mut(&mut app).position = Vec3::new(0.0, 0.0, 6.0);
+    let (mut app, _) = software_cube();
     app.update();
     let computed = |app: &App| app.world().resource_ref::<Close2glFrame>().last_changed();
     let drawn = |app: &App| app.world().resource_ref::<SoftwareFrame>().last_changed();

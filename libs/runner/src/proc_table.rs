@@ -4,6 +4,7 @@
 use std::collections::{HashMap, HashSet};
 use std::fs;
 use std::path::Path;
+use std::sync::OnceLock;
 
 /// One process, as `/proc/<pid>/stat` describes it.
 #[derive(Clone, Copy, Debug)]
@@ -75,11 +76,16 @@ impl ProcTable {
 /// so that only the tree is read, not every process of the machine. A kernel built without
 /// those files is read whole instead.
 pub(crate) fn tree_size(pid: i32, enough: usize) -> usize {
-    if !Path::new("/proc/self/task")
-        .join(std::process::id().to_string())
-        .join("children")
-        .exists()
-    {
+    // Looked up once: the watcher asks every tick.
+    static HAS_CHILDREN_FILES: OnceLock<bool> = OnceLock::new();
+    let has_children_files = HAS_CHILDREN_FILES.get_or_init(|| {
+        let me = std::process::id().to_string();
+        Path::new("/proc/self/task")
+            .join(me)
+            .join("children")
+            .exists()
+    });
+    if !has_children_files {
         return 1 + ProcTable::read().descendants(pid).len();
     }
     let mut count = 0;

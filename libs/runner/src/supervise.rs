@@ -1,7 +1,7 @@
 //! One run of one program: start it, watch it, stop it, clean up after it. The watcher is the
 //! calling thread itself, ticking every [`TICK`]: it reads the output, and checks for the
-//! program's exit, the time limit, the disk limit, the process limit and an interrupt. Runs on several threads at
-//! once share nothing but the reaper's list of running programs.
+//! program's exit, the time limit, the disk limit, the process limit and an interrupt. Runs on
+//! several threads at once share nothing but the reaper's list of running programs.
 
 use std::os::unix::process::ExitStatusExt;
 use std::path::Path;

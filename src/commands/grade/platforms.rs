@@ -7,6 +7,7 @@
 //! step's `result`: base64 JSON with a test per line and its points, so one step gives
 //! partial credit; it is written to `$GITHUB_OUTPUT`.
 
+use std::io::Write;
 use std::path::Path;
 use std::time::Duration;
 
@@ -180,7 +181,6 @@ pub fn write_classroom(result: &Value) -> Result<(), CliError> {
             Path::new(&path).display()
         ))
     };
-    use std::io::Write;
     let mut file = std::fs::OpenOptions::new()
         .append(true)
         .create(true)

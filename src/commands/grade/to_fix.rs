@@ -44,11 +44,12 @@ pub fn bugs(grade: &Grade) -> Vec<Bug> {
 
 /// Why `line` failed, as the key lines of one bug share. When every failing scene's run
 /// failed (it timed out, crashed, wrote no trace, made too many processes), the way most of
-/// them failed is the cause: one bug, however many lines it cost. Then the mistakes that explain the most
-/// of its failing scenes. Without a named mistake, the stage where check first finds the
-/// program different in the line's first failing scene: a later stage's difference, and each
-/// line's own wording of it ("drew nothing where its clip coordinates show 12", "nothing wide
-/// in NDC"), may follow from that one, and the earliest is what to fix first.
+/// them failed is the cause: one bug, however many lines it cost. Then the mistakes that
+/// explain the most of its failing scenes. Without a named mistake, the stage where check
+/// first finds the program different in the line's first failing scene: a later stage's
+/// difference, and each line's own wording of it ("drew nothing where its clip coordinates
+/// show 12", "nothing wide in NDC"), may follow from that one, and the earliest is what to
+/// fix first.
 fn cause(grade: &Grade, line: &LineScore) -> (String, Option<String>) {
     if let Some(cause) = run_failure_cause(grade, line) {
         return (cause.to_string(), None);

@@ -35,9 +35,9 @@ pub enum Sandbox {
     /// Not at all: the program can do anything the user can (`grade --unsandboxed`).
     Off,
     /// Landlock, and a user, network and PID namespace where the kernel allows them. The
-    /// program reads and
-    /// executes the system's folders ([`SYSTEM_FOLDERS`]), the folders its command names
-    /// ([`command_folders`]) and `readable`; it reads and writes only its run's directory.
+    /// program reads and executes the system's folders ([`SYSTEM_FOLDERS`]), the folders its
+    /// command names ([`command_folders`]) and `readable`; it reads and writes only its run's
+    /// directory.
     On { readable: Vec<PathBuf> },
 }
 
