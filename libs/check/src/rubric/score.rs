@@ -126,8 +126,9 @@ impl LineScore {
 }
 
 /// Each mistake of the line's stage named in some failing scene, with how many it explains
-/// (the most first, then in the order met), and how many failing scenes name none. A mistake
-/// no failing scene names is never named: it did not cost the line.
+/// (the most first, then in the order met), and how many failing scenes name none; only those
+/// that explain them all when some do. A mistake no failing scene names is never named: it
+/// did not cost the line.
 fn named_mistakes(scenes: &[&[&'static str]], line: LineId) -> (Vec<NamedMistake>, usize) {
     let of_stage = |name: &&'static str| {
         line.stage_mistakes()
@@ -145,6 +146,11 @@ fn named_mistakes(scenes: &[&[&'static str]], line: LineId) -> (Vec<NamedMistake
             }
         }
         unexplained += usize::from(!explained);
+    }
+    // A mistake that explains every failing scene is the line's: the others a few scenes could
+    // not tell from it are alternatives there, not more mistakes the program made.
+    if named.iter().any(|m| m.scenes == scenes.len()) {
+        named.retain(|m| m.scenes == scenes.len());
     }
     // Stable: ties keep the order in which the scenes met them.
     named.sort_by_key(|m| std::cmp::Reverse(m.scenes));
