@@ -44,7 +44,7 @@ pub fn bugs(grade: &Grade) -> Vec<Bug> {
 
 /// Why `line` failed, as the key lines of one bug share. When every failing scene's run
 /// failed (it timed out, crashed, wrote no trace, made too many processes), the way most of
-/// them failed is the cause: one bug, however many lines it cost. Then the mistakes that
+/// the program's runs failed is the cause: one bug, however many lines it cost. Then the mistakes that
 /// explain the most of its failing scenes. Without a named mistake, the stage where check
 /// first finds the program different in the line's first failing scene: a later stage's
 /// difference, and each line's own wording of it ("drew nothing where its clip coordinates
@@ -77,15 +77,20 @@ fn cause(grade: &Grade, line: &LineScore) -> (String, Option<String>) {
     }
 }
 
-/// The way most of `line`'s failing scenes failed to run (the first met of those as many),
-/// when every one of them failed to run.
+/// When every one of `line`'s failing scenes failed to run: the way most of the program's
+/// failed runs failed (the first met of those as many). Counted over the whole program, not
+/// the line, so that every such line names the same cause: a fork bomb seen at its limit in
+/// most scenes and only timing out in a few, on a loaded machine, is still one bug.
 fn run_failure_cause<'a>(grade: &'a Grade, line: &LineScore) -> Option<&'a str> {
+    let failed_to_run = |scene: usize| grade.scenes[scene].run_failure.is_some();
+    if !line.failures.iter().all(|(scene, _)| failed_to_run(*scene)) {
+        return None;
+    }
     let mut causes: Vec<(&str, usize)> = Vec::new();
-    for (scene, _) in &line.failures {
-        let cause = grade.scenes[*scene].run_failure.as_ref()?.cause.as_str();
-        match causes.iter_mut().find(|(c, _)| *c == cause) {
+    for failure in grade.scenes.iter().filter_map(|s| s.run_failure.as_ref()) {
+        match causes.iter_mut().find(|(c, _)| *c == failure.cause) {
             Some((_, count)) => *count += 1,
-            None => causes.push((cause, 1)),
+            None => causes.push((failure.cause.as_str(), 1)),
         }
     }
     let most = causes.iter().map(|&(_, count)| count).max()?;
