@@ -16,6 +16,10 @@
  *     ... load scene.model, set the camera, apply scene.motions[0 .. scene.motion_count - 1] ...
  *     c2g_free_scene(&scene);
  *
+ * A scene for the rasterizer assignment may also give shading, color, background, light,
+ * texture and filter (docs/raster-trace-format.md): scene.shading, .color, .background, .light,
+ * .has_texture, .texture (resolved like the model) and .filter, with their defaults otherwise.
+ *
  * Writing a trace: open a FILE, call c2g_write_header, then the c2g_write_* of whatever your
  * program computes (camera and window are required), then c2g_write_end. Numbers are printed with
  * %.17g (double) or %.9g (float), enough digits to read back the very same value. In the loop
@@ -58,6 +62,9 @@ enum { C2G_CLIP_SIMPLE, C2G_CLIP_FULL, C2G_CLIP_NONE, C2G_CLIP_SIMPLE_NEAR_FAR,
  * NDC before V, or in its 2D output's own numbers. */
 enum { C2G_CULL_ON_SCREEN, C2G_CULL_IN_NDC, C2G_CULL_IN_WINDOW };
 enum { C2G_MODE_POINTS, C2G_MODE_WIREFRAME, C2G_MODE_SOLID };
+/* The rasterizer assignment's scene lines (docs/raster-trace-format.md). */
+enum { C2G_SHADING_NONE, C2G_SHADING_GOURAUD_AD, C2G_SHADING_GOURAUD_ADS, C2G_SHADING_PHONG };
+enum { C2G_FILTER_NEAREST, C2G_FILTER_BILINEAR, C2G_FILTER_TRILINEAR };
 
 /* One camera motion of a scene, to apply in order: `move`, `rotate` or `orbit`. */
 typedef struct {
@@ -82,6 +89,14 @@ typedef struct {
     c2g_real lookat[3];
     int motion_count;
     c2g_motion *motions;   /* malloc'ed; c2g_free_scene frees it */
+    /* The rasterizer assignment's lines (absent from a geometry scene: the defaults). */
+    int shading;           /* C2G_SHADING_NONE (default), _GOURAUD_AD, _GOURAUD_ADS, _PHONG */
+    c2g_real color[3];     /* the model's colour, each in [0, 1] (default 1 1 1) */
+    c2g_real background[3];/* the clear colour (default 0 0 0) */
+    c2g_real light[3];     /* the light's world position (default 10 10 3) */
+    int has_texture;       /* 0: no `texture` line */
+    char texture[1024];    /* the PPM's path, resolved against the scene file's folder */
+    int filter;            /* C2G_FILTER_NEAREST (default), _BILINEAR, _TRILINEAR */
 } c2g_scene;
 
 /* Reads a scene file: 1, or 0 after printing why on stderr ("file:line: expected ..., found ...").
@@ -226,6 +241,7 @@ int c2g_parse_real(const char *field, c2g_real *out)
 /* The keys that may be given once: the camera's first, in the order of camera_keys below. */
 enum { C2G__POSITION, C2G__U, C2G__V, C2G__N, C2G__HFOV, C2G__VFOV, C2G__NEAR, C2G__FAR,
        C2G__FRAMED, C2G__MODEL, C2G__WINDOW, C2G__CULLING, C2G__CLIPPING, C2G__MODE, C2G__LOOKAT,
+       C2G__SHADING, C2G__FILTER, C2G__COLOR, C2G__BACKGROUND, C2G__LIGHT, C2G__TEXTURE,
        C2G__KEYS };
 
 /* One line of a scene, as the checks and their messages need it. */
@@ -288,6 +304,41 @@ static int c2g__xyz(const c2g__line *l, int first, const char *shape, c2g_real o
     return c2g__number(l, first, "X", shape, &out[0])
            && c2g__number(l, first + 1, "Y", shape, &out[1])
            && c2g__number(l, first + 2, "Z", shape, &out[2]);
+}
+
+/* Fields 1 .. 3 of `color R G B` or `background R G B`: each a number in [0, 1]. */
+static int c2g__rgb(const c2g__line *l, const char *shape, c2g_real out[3])
+{
+    char what[96];
+    int k;
+    for (k = 0; k < 3; k++) {
+        char name[2] = {"RGB"[k], '\0'};
+        if (!c2g__number(l, 1 + k, name, shape, &out[k])) return 0;
+    }
+    for (k = 0; k < 3; k++)
+        if (!(out[k] >= 0 && out[k] <= 1)) {
+            sprintf(what, "'%s' with R, G and B in [0, 1]", shape);
+            return c2g__expected(l, what, l->text);
+        }
+    return 1;
+}
+
+/* A PATH field resolved against the scene file's folder (a relative one is relative to it). */
+static int c2g__path(const c2g__line *l, const char *field, char out[1024])
+{
+    const char *slash = strrchr(l->path, '/');
+    size_t i;
+    if (strrchr(l->path, '\\') > slash) slash = strrchr(l->path, '\\');
+    i = (slash && field[0] != '/' && field[0] != '\\' && field[1] != ':')
+            ? (size_t)(slash - l->path + 1) : 0;
+    if (i + strlen(field) >= 1024) {
+        char what[64];
+        sprintf(what, "a %s path of at most 1000 characters", l->field[0]);
+        return c2g__expected(l, what, l->text);
+    }
+    memcpy(out, l->path, i);
+    strcpy(out + i, field);
+    return 1;
 }
 
 /* Field i of `window W H`: a whole number of pixels, 1 to 16384. */
@@ -366,6 +417,8 @@ int c2g_read_scene(const char *path, c2g_scene *s)
                                                  "mode points|wireframe|solid"};
     static const char *const choices[3][3] = {{"off", "ccw", "cw"}, {"simple", "full", "none"},
                                               {"points", "wireframe", "solid"}};
+    static const char *const raster_shapes[2] = {"shading none|gouraud_ad|gouraud_ads|phong",
+                                                 "filter nearest|bilinear|trilinear"};
     int seen[C2G__KEYS] = {0};
     int end_line = 0, magic = 0, last = 1, ok = 0, pose, i, k;
     char what[160], shape[40], number[32], *p, *next, *copy, *end;
@@ -377,6 +430,8 @@ int c2g_read_scene(const char *path, c2g_scene *s)
     memset(s, 0, sizeof *s);
     s->hfov = s->vfov = 60;
     s->mode = C2G_MODE_SOLID;
+    s->color[0] = s->color[1] = s->color[2] = 1;
+    s->light[0] = 10, s->light[1] = 10, s->light[2] = 3;
     l.path = path;
     copy = text ? (char *)malloc(size + 1) : NULL;
     if (!copy) {
@@ -479,16 +534,32 @@ int c2g_read_scene(const char *path, c2g_scene *s)
             }
         } else if (!strcmp(key, "model")) {
             /* A relative PATH is relative to the scene file's folder. */
-            const char *slash = strrchr(path, '/');
-            if (strrchr(path, '\\') > slash) slash = strrchr(path, '\\');
             C2G__TRY(c2g__fields(&l, 2, "model PATH"));
             C2G__TRY(c2g__once(&l, &seen[C2G__MODEL], "model"));
-            i = (slash && l.field[1][0] != '/' && l.field[1][0] != '\\' && l.field[1][1] != ':')
-                    ? (int)(slash - path + 1) : 0;
-            if (i + strlen(l.field[1]) >= sizeof s->model)
-                C2G__FAIL("a model path of at most 1000 characters");
-            memcpy(s->model, path, (size_t)i);
-            strcpy(s->model + i, l.field[1]);
+            C2G__TRY(c2g__path(&l, l.field[1], s->model));
+        } else if (!strcmp(key, "texture")) {
+            C2G__TRY(c2g__fields(&l, 2, "texture PATH"));
+            C2G__TRY(c2g__once(&l, &seen[C2G__TEXTURE], "texture"));
+            C2G__TRY(c2g__path(&l, l.field[1], s->texture));
+            s->has_texture = 1;
+        } else if (!strcmp(key, "shading") || !strcmp(key, "filter")) {
+            static const char *const options[2][5] = {
+                {"none", "gouraud_ad", "gouraud_ads", "phong", NULL},
+                {"nearest", "bilinear", "trilinear", NULL, NULL}};
+            i = key[0] == 'f';
+            C2G__TRY(c2g__fields(&l, 2, raster_shapes[i]));
+            for (k = 0; options[i][k] && strcmp(l.field[1], options[i][k]) != 0; k++) {}
+            C2G__TRY(options[i][k] || c2g__wrong(&l, raster_shapes[i]));
+            C2G__TRY(c2g__once(&l, &seen[C2G__SHADING + i], key));
+            *(i == 0 ? &s->shading : &s->filter) = k;
+        } else if (!strcmp(key, "color") || !strcmp(key, "background")) {
+            i = key[0] == 'b';
+            sprintf(shape, "%s R G B", key);
+            C2G__TRY(c2g__fields(&l, 4, shape) && c2g__rgb(&l, shape, i ? s->background : s->color));
+            C2G__TRY(c2g__once(&l, &seen[C2G__COLOR + i], key));
+        } else if (!strcmp(key, "light")) {
+            C2G__TRY(c2g__fields(&l, 4, "light X Y Z") && c2g__xyz(&l, 1, "light X Y Z", s->light));
+            C2G__TRY(c2g__once(&l, &seen[C2G__LIGHT], "light"));
         } else if (!strcmp(key, "window")) {
             C2G__TRY(c2g__fields(&l, 3, "window W H") && c2g__pixels(&l, 1, "W", &s->width)
                      && c2g__pixels(&l, 2, "H", &s->height));

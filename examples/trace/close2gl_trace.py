@@ -35,7 +35,10 @@ _NUMBER = re.compile(r"[+-]?([0-9]+\.?[0-9]*|\.[0-9]+)([eE][+-]?[0-9]+)?\Z")
 
 _CAMERA_KEYS = ("position", "u", "v", "n", "hfov", "vfov", "near", "far")
 _CHOICES = {"culling": ("off", "ccw", "cw"), "clipping": ("simple", "full", "none"),
-            "mode": ("points", "wireframe", "solid")}
+            "mode": ("points", "wireframe", "solid"),
+            # the rasterizer assignment's (docs/raster-trace-format.md)
+            "shading": ("none", "gouraud_ad", "gouraud_ads", "phong"),
+            "filter": ("nearest", "bilinear", "trilinear")}
 _MOTIONS = {"move": ("move u|v|n D", "uvn", "D"), "rotate": ("rotate u|v|n DEG", "uvn", "DEG"),
             "orbit": ("orbit u|v D", "uv", "D")}
 _SCENE_LINE = ("a scene line (model, window, camera, culling, clipping, mode, lookat, move, "
@@ -50,6 +53,10 @@ class Scene(dict):
     culling: "off"|"ccw"|"cw"; clipping: "simple"|"full"|"none"; mode: "points"|"wireframe"|"solid";
     lookat: (x, y, z) or None (the model's bounding-box centre);
     motions: [(kind, axis, amount)] with kind "move"|"rotate"|"orbit", in order.
+    The rasterizer assignment's lines: shading: "none"|"gouraud_ad"|"gouraud_ads"|"phong";
+    color, background: (r, g, b) in [0, 1] (default (1, 1, 1) and (0, 0, 0)); light: (x, y, z)
+    (default (10, 10, 3)); texture: path (relative to the scene's folder) or None;
+    filter: "nearest"|"bilinear"|"trilinear".
     """
 
     def __getattr__(self, name):
@@ -76,7 +83,9 @@ def read_scene(path):
     """Reads a `close2gl-scene 1` file; raises ValueError("file:line: expected ..., found ...")."""
     scene = Scene(model=None, window=None, framed=False, position=None, u=None, v=None, n=None,
                   hfov=60.0, vfov=60.0, near=None, far=None, culling="off", clipping="simple",
-                  mode="solid", lookat=None, motions=[])
+                  mode="solid", lookat=None, motions=[], shading="none", color=(1.0, 1.0, 1.0),
+                  background=(0.0, 0.0, 0.0), light=(10.0, 10.0, 3.0), texture=None,
+                  filter="nearest")
     try:
         with open(path, "rb") as f:
             data = f.read()
@@ -179,6 +188,23 @@ def read_scene(path):
             once("model")
             # A relative PATH is relative to the scene file's folder.
             scene.model = os.path.join(os.path.dirname(path), fields[1])
+        elif key == "texture":
+            shape(2, "texture PATH")
+            once("texture")
+            scene.texture = os.path.join(os.path.dirname(path), fields[1])
+        elif key in ("color", "background"):
+            form = f"{key} R G B"
+            shape(4, form)
+            value = tuple(num(1 + k, "RGB"[k], form) for k in range(3))
+            if not all(0 <= x <= 1 for x in value):
+                fail(f"'{form}' with R, G and B in [0, 1]")
+            once(key)
+            scene[key] = value
+        elif key == "light":
+            shape(4, "light X Y Z")
+            value = xyz(1, "light X Y Z")
+            once("light")
+            scene.light = value
         elif key == "window":
             shape(3, "window W H")
             size = []
