@@ -57,6 +57,8 @@ enum { C2R_RGB = 1, C2R_EYE = 2, C2R_NORMAL = 4, C2R_UV = 8 };
 enum { C2R_TOP_ROW_FIRST = 1, C2R_BOTTOM_ROW_FIRST = 0 };
 
 /* Trace lines, in the order a trace usually has them. Colours and positions are 3 numbers. */
+/* fopen(path, "w") and c2r_write_header: NULL after printing why on stderr. */
+FILE *c2r_open(const char *path);
 void c2r_write_header(FILE *f);                              /* close2gl-raster 1 */
 void c2r_write_model(FILE *f, const char *name);
 void c2r_write_window(FILE *f, int width, int height);
@@ -78,6 +80,9 @@ void c2r_write_lighting(FILE *f, const c2r_real ia[3], const c2r_real il[3], c2r
 void c2r_write_texture(FILE *f, const char *path, int filter);
 void c2r_write_framebuffer(FILE *f, const char *path);       /* relative to the trace's folder */
 void c2r_write_depthbuffer(FILE *f, const char *path);
+/* Both lines for the buffers c2r_write_buffers will write beside the trace trace_path:
+ * `framebuffer NAME.ppm` and `depthbuffer NAME.pfm`, NAME the trace's file name. */
+void c2r_write_buffer_names(FILE *f, const char *trace_path);
 /* `attributes window ...`: C2R_RGB | C2R_EYE | C2R_NORMAL | C2R_UV, or 0 for the window alone.
  * It sets how many numbers each corner of the next c2r_write_tri has: 4 (x y z q), + 3 rgb,
  * + 3 eye, + 3 normal, + 2 uv. */
@@ -89,6 +94,8 @@ void c2r_write_tri(FILE *f, int t, const c2r_real *corners);
 void c2r_write_tri_n(FILE *f, int t, const c2r_real *corners, int per_corner);
 /* `drawn N` (the tri lines of the trace the last c2r_write_header started), then `end`. */
 void c2r_write_end(FILE *f);
+/* c2r_write_end and fclose: 1, or 0 after printing why on stderr. */
+int c2r_close(FILE *f);
 
 /* The buffers. rgb: width*height*3 bytes, row after row; depth: width*height floats. row_order
  * C2R_TOP_ROW_FIRST or C2R_BOTTOM_ROW_FIRST says how the program's array is laid out. 1 when
@@ -96,6 +103,10 @@ void c2r_write_end(FILE *f);
 int c2r_write_ppm(const char *path, const unsigned char *rgb, int width, int height,
                   int row_order);
 int c2r_write_pfm(const char *path, const float *depth, int width, int height, int row_order);
+/* Both, beside the trace trace_path: TRACE.ppm and TRACE.pfm (the names that
+ * c2r_write_buffer_names gives); depth NULL: the PPM alone. */
+int c2r_write_buffers(const char *trace_path, const unsigned char *rgb, const float *depth,
+                      int width, int height, int row_order);
 /* Reads a PPM (P6 or P3, maxval 1..65535, scaled to 0..255): width*height*3 bytes, malloc'ed,
  * top row first (as the file has them); NULL after printing why on stderr. free() it. */
 unsigned char *c2r_read_ppm(const char *path, int *width, int *height);
@@ -133,11 +144,24 @@ static void c2r__numbers(FILE *f, const c2r_real *x, int count)
 }
 
 /* A name or path is one field: blanks and '#' would break the line, so they become '_'. */
-static void c2r__field(FILE *f, const char *key, const char *text)
+static void c2r__field_ending(FILE *f, const char *key, const char *text, const char *ending)
 {
     fprintf(f, "%s ", key);
     for (; *text; text++) fputc(strchr(" \t\r\n#", *text) ? '_' : *text, f);
-    fputc('\n', f);
+    fprintf(f, "%s\n", ending);
+}
+
+static void c2r__field(FILE *f, const char *key, const char *text)
+{
+    c2r__field_ending(f, key, text, "");
+}
+
+FILE *c2r_open(const char *path)
+{
+    FILE *f = fopen(path, "w");
+    if (!f) fprintf(stderr, "%s: %s\n", path, strerror(errno));
+    else c2r_write_header(f);
+    return f;
 }
 
 void c2r_write_header(FILE *f)
@@ -223,6 +247,20 @@ void c2r_write_framebuffer(FILE *f, const char *path) { c2r__field(f, "framebuff
 
 void c2r_write_depthbuffer(FILE *f, const char *path) { c2r__field(f, "depthbuffer", path); }
 
+/* The trace's file name: the buffers lie in its folder. */
+static const char *c2r__base(const char *path)
+{
+    const char *slash = strrchr(path, '/');
+    if (strrchr(path, '\\') > slash) slash = strrchr(path, '\\');
+    return slash ? slash + 1 : path;
+}
+
+void c2r_write_buffer_names(FILE *f, const char *trace_path)
+{
+    c2r__field_ending(f, "framebuffer", c2r__base(trace_path), ".ppm");
+    c2r__field_ending(f, "depthbuffer", c2r__base(trace_path), ".pfm");
+}
+
 void c2r_write_attributes(FILE *f, int attributes)
 {
     fputs("attributes window", f);
@@ -253,6 +291,16 @@ void c2r_write_end(FILE *f)
     if (f == c2r__trace) fprintf(f, "drawn %ld\n", c2r__tris);
     if (f == c2r__trace) c2r__trace = NULL;
     fputs("end\n", f);
+}
+
+int c2r_close(FILE *f)
+{
+    c2r_write_end(f);
+    if (ferror(f) | fclose(f)) {
+        fprintf(stderr, "the raster trace: %s\n", strerror(errno));
+        return 0;
+    }
+    return 1;
 }
 
 /* ---- the buffers ---- */
@@ -298,6 +346,25 @@ int c2r_write_pfm(const char *path, const float *depth, int width, int height, i
     }
     if (ferror(f)) return c2r__failed(path, f);
     return fclose(f) == 0 || c2r__failed(path, NULL);
+}
+
+int c2r_write_buffers(const char *trace_path, const unsigned char *rgb, const float *depth,
+                      int width, int height, int row_order)
+{
+    size_t length = strlen(trace_path);
+    char *name = (char *)malloc(length + 5);
+    int ok;
+    if (!name) {
+        fprintf(stderr, "%s: out of memory\n", trace_path);
+        return 0;
+    }
+    memcpy(name, trace_path, length);
+    strcpy(name + length, ".ppm");
+    ok = c2r_write_ppm(name, rgb, width, height, row_order);
+    strcpy(name + length, ".pfm");
+    ok = ok && (!depth || c2r_write_pfm(name, depth, width, height, row_order));
+    free(name);
+    return ok;
 }
 
 /* The next header field of a PPM: a whole number after blanks and '#' comments; -1 if none. */

@@ -818,10 +818,10 @@ int main(int argc, char **argv)
     camera cam;
     vec3 lookat;
     real M[16], P[16], radius, background[3];
-    char *names[3];
+    char *texture_name;
     FILE *out;
     int i, t, lit, attributes, per_corner, order = C2R_TOP_ROW_FIRST;
-    size_t pixels, length;
+    size_t pixels;
     unsigned char clear[3];
 
     if (argc != 3) {
@@ -869,15 +869,12 @@ int main(int argc, char **argv)
     pixels = (size_t)W * H;
     framebuffer = (unsigned char *)malloc(3 * pixels);
     depthbuffer = (float *)malloc(pixels * sizeof *depthbuffer);
-    length = strlen(argv[2]);
-    for (i = 0; i < 3; i++) names[i] = (char *)malloc(length + 16);
-    if (!framebuffer || !depthbuffer || !names[0] || !names[1] || !names[2]) {
+    texture_name = (char *)malloc(strlen(argv[2]) + 16);
+    if (!framebuffer || !depthbuffer || !texture_name) {
         fprintf(stderr, "out of memory\n");
         return 1;
     }
-    sprintf(names[0], "%s.ppm", argv[2]);
-    sprintf(names[1], "%s.pfm", argv[2]);
-    sprintf(names[2], "%s.texture.ppm", argv[2]);
+    sprintf(texture_name, "%s.texture.ppm", argv[2]);   /* the texture as it was read */
     for (i = 0; i < 3; i++) background[i] = s.background[i], clear[i] = byte(s.background[i]);
     for (i = 0; i < (int)pixels; i++) {
         memcpy(framebuffer + 3 * i, clear, 3);
@@ -887,11 +884,7 @@ int main(int argc, char **argv)
 #endif
     }
 
-    if (!(out = fopen(argv[2], "w"))) {
-        perror(argv[2]);
-        return 1;
-    }
-    c2r_write_header(out);
+    if (!(out = c2r_open(argv[2]))) return 1;
     c2r_write_model(out, base_name(s.model));
     c2r_write_window(out, W, H);
     c2r_write_origin(out, C2R_ORIGIN_BOTTOM_LEFT);
@@ -906,9 +899,8 @@ int main(int argc, char **argv)
         c2r_write_matrix(out, M);
         c2r_write_lighting(out, ia, il, KA, KD, KS, SHININESS, att);
     }
-    if (sampled) c2r_write_texture(out, base_name(names[2]), filter);
-    c2r_write_framebuffer(out, base_name(names[0]));
-    c2r_write_depthbuffer(out, base_name(names[1]));
+    if (sampled) c2r_write_texture(out, base_name(texture_name), filter);
+    c2r_write_buffer_names(out, argv[2]);             /* TRACE.ppm, TRACE.pfm */
     c2r_write_attributes(out, attributes);
 
     for (t = 0; t < m.count; t++) {
@@ -962,11 +954,7 @@ int main(int argc, char **argv)
             draw_triangle(fan);
         }
     }
-    c2r_write_end(out);
-    if (fclose(out) != 0) {
-        perror(argv[2]);
-        return 1;
-    }
+    if (!c2r_close(out)) return 1;
 
 #ifdef MISTAKE_ROWS_BOTTOM_FIRST
     order = C2R_BOTTOM_ROW_FIRST;                  /* MISTAKE: both buffers upside down */
@@ -977,13 +965,12 @@ int main(int argc, char **argv)
         framebuffer[3 * i] = framebuffer[3 * i + 2], framebuffer[3 * i + 2] = r;
     }
 #endif
-    if (!c2r_write_ppm(names[0], framebuffer, W, H, order)
-        || !c2r_write_pfm(names[1], depthbuffer, W, H, order)
-        || (sampled && !c2r_write_ppm(names[2], levels[0].rgb, levels[0].w, levels[0].h,
+    if (!c2r_write_buffers(argv[2], framebuffer, depthbuffer, W, H, order)
+        || (sampled && !c2r_write_ppm(texture_name, levels[0].rgb, levels[0].w, levels[0].h,
                                       C2R_TOP_ROW_FIRST)))
         return 1;
     for (i = 0; i < level_count; i++) free(levels[i].rgb);
-    for (i = 0; i < 3; i++) free(names[i]);
+    free(texture_name);
     free(framebuffer);
     free(depthbuffer);
     free(m.tri);
