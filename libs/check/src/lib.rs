@@ -19,6 +19,7 @@ pub mod declared;
 pub mod diagnose;
 pub mod own_input;
 pub mod picture;
+pub mod raster;
 pub mod redeclared;
 pub mod region;
 pub mod report;

@@ -127,7 +127,7 @@ impl Common {
 }
 
 /// `window W H`, each in 1..=16384 (the largest texture common adapters allow).
-fn window(line: &Line) -> Result<(u32, u32), FormatError> {
+pub(crate) fn window(line: &Line) -> Result<(u32, u32), FormatError> {
     const SHAPE: &str = "window W H";
     line.expect_fields(3, SHAPE)?;
     let size = |i, name| {
@@ -141,7 +141,11 @@ fn window(line: &Line) -> Result<(u32, u32), FormatError> {
 }
 
 /// `KEY WORD` with WORD the name of one of `all`.
-fn one_of<T: Copy>(line: &Line, all: &[T], name: fn(T) -> &'static str) -> Result<T, FormatError> {
+pub(crate) fn one_of<T: Copy>(
+    line: &Line,
+    all: &[T],
+    name: fn(T) -> &'static str,
+) -> Result<T, FormatError> {
     let shape = format!("{} {}", line.key(), choices(all, name));
     line.expect_fields(2, &shape)?;
     from_word(all, name, line.fields[1]).ok_or_else(|| line.wrong_shape(&shape))

@@ -15,6 +15,7 @@ mod common;
 mod magic;
 mod names;
 mod output;
+pub mod raster;
 mod read;
 mod scene;
 mod syntax;
@@ -26,7 +27,11 @@ mod write;
 pub use close2gl_core::declaration::System2d;
 pub use names::{CLIPPINGS, CULLINGS, clipping_name, culling_name};
 pub use output::{ClipLine, Piece};
-pub use scene::{Motion, SceneCamera, SceneFile, parse_scene, read_scene};
+pub use raster::{
+    Attribute, RasterCorner, RasterFrame, RasterTrace, RasterTriangle, is_raster_trace,
+    parse_raster_trace, read_raster_frame, read_raster_trace,
+};
+pub use scene::{Motion, SceneCamera, SceneFile, SceneLook, parse_scene, read_scene};
 pub use syntax::FormatError;
 pub use trace::{Trace, parse_trace, parse_trace_bytes, read_trace};
 

@@ -9,6 +9,7 @@ const VERSION: &str = "1";
 pub(crate) enum Format {
     Trace,
     Scene,
+    Raster,
 }
 
 impl Format {
@@ -17,6 +18,7 @@ impl Format {
         match self {
             Self::Trace => "close2gl-trace",
             Self::Scene => "close2gl-scene",
+            Self::Raster => "close2gl-raster",
         }
     }
 
@@ -24,6 +26,7 @@ impl Format {
         match self {
             Self::Trace => "trace",
             Self::Scene => "scene",
+            Self::Raster => "raster trace",
         }
     }
 
@@ -32,17 +35,17 @@ impl Format {
         format!("{} {VERSION}", self.word())
     }
 
-    fn other(self) -> Self {
-        match self {
-            Self::Trace => Self::Scene,
-            Self::Scene => Self::Trace,
-        }
+    /// The format whose first word is `word`.
+    fn of_word(word: &str) -> Option<Self> {
+        [Self::Trace, Self::Scene, Self::Raster]
+            .into_iter()
+            .find(|f| f.word() == word)
     }
 }
 
 /// Checks that `first`, the first record of the file, is `format`'s magic and version. An
-/// error says why when the line is close: another version, or the other format (a grader who
-/// passes the scene where the program's trace belongs).
+/// error says why when the line is close: another version, or another of the formats (a grader
+/// who passes the scene where the program's trace belongs).
 pub(crate) fn check_magic(
     first: Option<&Line>,
     format: Format,
@@ -61,10 +64,10 @@ pub(crate) fn check_magic(
             error.message += &format!(" (this close2gl reads version {VERSION})");
             Err(error)
         }
-        [word, ..] if word == format.other().word() => {
+        [word, ..] if Format::of_word(word).is_some() => {
             let mut error = line.expected(&magic);
-            let (this, other) = (format.noun(), format.other().noun());
-            error.message += &format!(" (a {other} file, not a {this})");
+            let other = Format::of_word(word).map_or("", Format::noun);
+            error.message += &format!(" (a {other} file, not a {})", format.noun());
             Err(error)
         }
         _ => Err(line.expected(&magic)),

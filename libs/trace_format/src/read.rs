@@ -10,6 +10,12 @@ use super::syntax::FormatError;
 
 /// The text of the file at `path` and the label its errors use: the path as given.
 pub(crate) fn text(path: &Path) -> Result<(String, String), FormatError> {
+    let (bytes, file) = bytes(path)?;
+    Ok((decode(bytes, &file)?, file))
+}
+
+/// The bytes of the file at `path`, at most [`MAX_FILE_BYTES`] of them, and its label.
+pub(crate) fn bytes(path: &Path) -> Result<(Vec<u8>, String), FormatError> {
     let file = path.display().to_string();
     let io = |e: std::io::Error| FormatError::new(&file, 0, format!("cannot read: {e}"));
     let too_big = |found: &str| {
@@ -31,7 +37,7 @@ pub(crate) fn text(path: &Path) -> Result<(String, String), FormatError> {
     if bytes.len() as u64 > MAX_FILE_BYTES {
         return Err(too_big("more"));
     }
-    Ok((decode(bytes, &file)?, file))
+    Ok((bytes, file))
 }
 
 /// `bytes` as text, or the line of the first byte that is not UTF-8; `file` labels the error.

@@ -4,11 +4,11 @@
 use std::path::{Path, PathBuf};
 
 use close2gl_core::declaration::ClipRule;
-use close2gl_core::{FrontFace, NamedEnum, RenderMode};
+use close2gl_core::{FrontFace, NamedEnum, RenderMode, Shading, TextureFilter};
 use glam::DVec3;
 
 use super::camera_lines::shape;
-use super::common::{Common, Ends};
+use super::common::{Common, Ends, one_of};
 use super::magic::{Format, check_magic};
 use super::syntax::{FormatError, Line, Slot, last_line, records, set_once};
 use super::{Axis, CameraLines, MAX_RECORDS, read};
@@ -54,6 +54,34 @@ pub struct SceneFile {
     /// The look-at point of `orbit`; `None`: the model's bounding-box centre.
     pub lookat: Option<DVec3>,
     pub motions: Vec<Motion>,
+    /// What the rasterizer assignment's lines ask for (their defaults when none is given).
+    pub look: SceneLook,
+}
+
+/// The rasterizer assignment's scene lines: how the frame looks.
+#[derive(Clone, Debug, PartialEq)]
+pub struct SceneLook {
+    pub shading: Shading,
+    pub color: DVec3,
+    pub background: DVec3,
+    /// The light's world position (the lecture's 10 10 3 by default).
+    pub light: DVec3,
+    /// The texture's path as written (relative to the scene file's folder) and its filter.
+    pub texture: Option<String>,
+    pub filter: TextureFilter,
+}
+
+impl Default for SceneLook {
+    fn default() -> Self {
+        SceneLook {
+            shading: Shading::None,
+            color: DVec3::ONE,
+            background: DVec3::ZERO,
+            light: DVec3::new(10.0, 10.0, 3.0),
+            texture: None,
+            filter: TextureFilter::Nearest,
+        }
+    }
 }
 
 impl SceneFile {
@@ -94,6 +122,12 @@ struct Reader {
     framed: Slot<()>,
     lookat: Slot<DVec3>,
     motions: Vec<Motion>,
+    shading: Slot<Shading>,
+    color: Slot<DVec3>,
+    background: Slot<DVec3>,
+    light: Slot<DVec3>,
+    texture: Slot<String>,
+    filter: Slot<TextureFilter>,
 }
 
 impl Reader {
@@ -108,9 +142,12 @@ impl Reader {
         match line.key() {
             "lookat" => {
                 const SHAPE: &str = "lookat X Y Z";
-                line.expect_fields(4, SHAPE)?;
-                let xyz = line.numbers(1, SHAPE, |k| ["X", "Y", "Z"][k].to_string())?;
-                set_once(&mut self.lookat, DVec3::from_slice(&xyz), line, "lookat")
+                set_once(
+                    &mut self.lookat,
+                    DVec3::from_array(line.three(SHAPE)?),
+                    line,
+                    "lookat",
+                )
             }
             "move" | "rotate" | "orbit" => {
                 if self.motions.len() >= MAX_RECORDS {
@@ -120,9 +157,39 @@ impl Reader {
                 self.motions.push(motion(line)?);
                 Ok(())
             }
+            "shading" => set_once(
+                &mut self.shading,
+                one_of(line, Shading::ALL, Shading::name)?,
+                line,
+                "shading",
+            ),
+            "filter" => {
+                let filter = one_of(line, TextureFilter::ALL, TextureFilter::name)?;
+                set_once(&mut self.filter, filter, line, "filter")
+            }
+            "color" => set_once(
+                &mut self.color,
+                unit_rgb(line, "color R G B")?,
+                line,
+                "color",
+            ),
+            "background" => {
+                let rgb = unit_rgb(line, "background R G B")?;
+                set_once(&mut self.background, rgb, line, "background")
+            }
+            "light" => set_once(
+                &mut self.light,
+                DVec3::from_array(line.three("light X Y Z")?),
+                line,
+                "light",
+            ),
+            "texture" => {
+                line.expect_fields(2, "texture PATH")?;
+                set_once(&mut self.texture, line.fields[1].into(), line, "texture")
+            }
             _ => Err(line.expected(
                 "a scene line (model, window, camera, culling, clipping, mode, lookat, move, \
-                 rotate, orbit or end)",
+                 rotate, orbit, shading, color, background, light, texture, filter or end)",
             )),
         }
     }
@@ -180,6 +247,14 @@ impl Reader {
             mode: common.mode.map(|(m, _)| m),
             lookat: self.lookat.map(|(x, _)| x),
             motions: self.motions,
+            look: SceneLook {
+                shading: self.shading.map_or(Shading::None, |(s, _)| s),
+                color: self.color.map_or(DVec3::ONE, |(c, _)| c),
+                background: self.background.map_or(DVec3::ZERO, |(c, _)| c),
+                light: self.light.map_or(SceneLook::default().light, |(l, _)| l),
+                texture: self.texture.map(|(t, _)| t),
+                filter: self.filter.map_or(TextureFilter::Nearest, |(f, _)| f),
+            },
         })
     }
 }
@@ -198,4 +273,13 @@ fn motion(line: &Line) -> Result<Motion, FormatError> {
         (_, Some(axis)) => axis,
     };
     Ok(make(axis, line.number(2, name, shape)?))
+}
+
+/// `KEY R G B`, each in [0, 1].
+fn unit_rgb(line: &Line, shape: &str) -> Result<DVec3, FormatError> {
+    let rgb = DVec3::from_array(line.three(shape)?);
+    match rgb.cmpge(DVec3::ZERO).all() && rgb.cmple(DVec3::ONE).all() {
+        true => Ok(rgb),
+        false => Err(line.expected(&format!("'{shape}' with R, G and B in [0, 1]"))),
+    }
 }

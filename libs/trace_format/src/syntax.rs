@@ -129,6 +129,14 @@ impl Line<'_> {
             .collect()
     }
 
+    /// `KEY A B C`: the three numbers, named in errors as `shape` names them after the key.
+    pub(crate) fn three(&self, shape: &str) -> Result<[f64; 3], FormatError> {
+        self.expect_fields(4, shape)?;
+        let names: Vec<&str> = shape.split(' ').skip(1).collect();
+        let xyz = self.numbers(1, shape, |k| names[k].to_string())?;
+        Ok([xyz[0], xyz[1], xyz[2]])
+    }
+
     /// Field `i` as a count or an index: a non-negative integer, no fraction, no exponent.
     pub(crate) fn integer(&self, i: usize, name: &str, shape: &str) -> Result<usize, FormatError> {
         let word = self.fields[i];

@@ -15,7 +15,7 @@ use super::camera_lines::LINES;
 use super::magic::Format;
 use super::names::{clipping_name, culling_name};
 use super::output::MATRIX_NAMES;
-use super::{CameraLines, Motion, Piece, SceneCamera, SceneFile, Trace};
+use super::{CameraLines, Motion, Piece, SceneCamera, SceneFile, SceneLook, Trace};
 
 impl Trace {
     /// This trace as a `close2gl-trace 1` file, every line it holds written out (the defaults
@@ -91,6 +91,7 @@ impl SceneFile {
             };
             text.line(&format!("{verb} {}", axis.name()), [x]);
         }
+        text.look(&self.look);
         text.line("end", []);
         text.0
     }
@@ -112,6 +113,27 @@ impl Text {
             let _ = write!(self.0, " {x:?}");
         }
         self.0.push('\n');
+    }
+
+    /// The rasterizer assignment's lines, those that are not their defaults.
+    fn look(&mut self, look: &SceneLook) {
+        let default = SceneLook::default();
+        if look.shading != default.shading {
+            self.line(&format!("shading {}", look.shading.name()), []);
+        }
+        for (key, value, default) in [
+            ("color", look.color, default.color),
+            ("background", look.background, default.background),
+            ("light", look.light, default.light),
+        ] {
+            if value != default {
+                self.line(key, value.to_array());
+            }
+        }
+        if let Some(texture) = &look.texture {
+            self.line(&format!("texture {texture}"), []);
+            self.line(&format!("filter {}", look.filter.name()), []);
+        }
     }
 
     fn camera(&mut self, c: &CameraLines) {

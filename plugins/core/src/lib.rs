@@ -27,6 +27,7 @@ mod mesh;
 mod model;
 mod outside;
 pub mod parity;
+mod raster_mistake;
 mod reference_camera;
 mod schedule;
 mod settings;
@@ -58,6 +59,9 @@ pub use model::{
 };
 pub use named::NamedEnum;
 pub use outside::{OutsideOrbit, OutsideView, STAGE_NAMES};
+pub use raster_mistake::{
+    ByteConversion, DepthFunction, RasterMistake, RasterMistakes, RasterRules, RasterStage, TieRule,
+};
 pub use reference_camera::camera_matrices;
 pub use schedule::{Close2glStep, FrameSet, LoadStep, OutputStep, Update};
 pub use settings::{

@@ -140,6 +140,7 @@ pub fn scenes(stem: &str, model_file: &str, mesh: &Mesh) -> Vec<RubricScene> {
                 mode: None,
                 lookat: None,
                 motions: Vec::new(),
+                look: Default::default(),
             },
             id,
             lines,

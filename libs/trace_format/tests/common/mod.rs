@@ -281,6 +281,7 @@ pub fn scene() -> impl Strategy<Value = SceneFile> {
                 mode,
                 lookat,
                 motions,
+                look: Default::default(),
             },
         )
 }

@@ -1,0 +1,184 @@
+//! Naming what a rasterizer did: first the legal rules it chose (the tie rule, the 8-bit
+//! conversion, the depth function) that reproduce it best, then, when those do not reproduce
+//! every fact, the catalogue's mistakes that do, alone or in pairs. A mistake that cannot show in
+//! this frame (a texture filter's mistake with no texture) is not tried, so never named.
+
+use close2gl_core::{
+    ByteConversion, DepthFunction, RasterMistake as M, RasterMistakes, RasterRules, RasterStage,
+    Shading, TextureFilter, TieRule,
+};
+use rayon::prelude::*;
+
+use super::facts::{Allowance, Facts, compare};
+use close2gl_trace_format::RasterFrame;
+
+use super::input::Redraw;
+
+/// A drawing held against the trace: its rules, mistakes and facts.
+#[derive(Clone, Copy, Debug)]
+pub struct Attempt {
+    pub rules: RasterRules,
+    pub mistakes: RasterMistakes,
+    pub facts: Facts,
+}
+
+/// What the search found.
+#[derive(Clone, Debug)]
+pub struct Diagnosis {
+    /// close2gl's own rules and no mistake.
+    pub reference: Attempt,
+    /// The legal rules that reproduce the trace best, without mistakes.
+    pub legal: Attempt,
+    /// Every set of mistakes that reproduces every fact, with the legal rules.
+    pub named: Vec<Attempt>,
+    /// When none does: the mistakes that come closest, each alone.
+    pub nearest: Vec<Attempt>,
+}
+
+/// The context every attempt is drawn and judged in.
+pub struct Judge<'a> {
+    pub input: &'a RasterFrame,
+    pub redraw: Redraw<'a>,
+    pub ties: Vec<bool>,
+    pub background: [u8; 4],
+    pub allowance: Allowance,
+}
+
+impl Judge<'_> {
+    pub fn attempt(&self, rules: RasterRules, mistakes: RasterMistakes) -> Attempt {
+        let drawn = self.redraw.draw(rules, mistakes);
+        let facts = compare(self.input, &drawn, &self.ties, self.background);
+        Attempt {
+            rules,
+            mistakes,
+            facts,
+        }
+    }
+
+    fn agrees(&self, attempt: &Attempt) -> bool {
+        attempt.facts.agree(self.allowance)
+    }
+
+    /// The search.
+    pub fn diagnose(&self) -> Diagnosis {
+        let (reference, legal, closest) = self.legal_rules();
+        let mut diagnosis = Diagnosis {
+            reference,
+            legal,
+            named: Vec::new(),
+            nearest: Vec::new(),
+        };
+        if self.agrees(&legal) {
+            return diagnosis;
+        }
+        // A mistake made under close2gl's own rules, or else under the legal rules that come
+        // closest (a program may choose another tie rule and make a mistake too).
+        let mut tried = Vec::new();
+        for rules in [legal.rules, closest.rules] {
+            if tried.contains(&rules) {
+                continue;
+            }
+            tried.push(rules);
+            diagnosis = self.mistakes(diagnosis, rules);
+            if !diagnosis.named.is_empty() {
+                break;
+            }
+        }
+        diagnosis
+    }
+
+    /// The mistakes that reproduce every fact under `rules`: each alone, else pairs of those
+    /// that come closer alone.
+    fn mistakes(&self, mut diagnosis: Diagnosis, rules: RasterRules) -> Diagnosis {
+        let start = diagnosis.legal.facts.distance();
+        let singles: Vec<Attempt> = (self.candidates().par_iter())
+            .map(|&m| self.attempt(rules, RasterMistakes::one(m)))
+            .collect();
+        diagnosis.named = singles.iter().filter(|a| self.agrees(a)).copied().collect();
+        if !diagnosis.named.is_empty() {
+            return diagnosis;
+        }
+        let mut closer: Vec<Attempt> = (singles.into_iter())
+            .filter(|a| a.facts.distance() < start)
+            .collect();
+        closer.sort_by_key(|a| a.facts.distance());
+        closer.truncate(8);
+        let pairs: Vec<RasterMistakes> = (0..closer.len())
+            .flat_map(|i| (i + 1..closer.len()).map(move |j| (i, j)))
+            .map(|(i, j)| (closer[i].mistakes.iter()).fold(closer[j].mistakes, |s, m| s.with(m)))
+            .collect();
+        let pairs: Vec<Attempt> = (pairs.par_iter())
+            .map(|&set| self.attempt(rules, set))
+            .collect();
+        diagnosis.named = pairs.into_iter().filter(|a| self.agrees(a)).collect();
+        if diagnosis.named.is_empty() && diagnosis.nearest.is_empty() {
+            closer.truncate(3);
+            diagnosis.nearest = closer;
+        }
+        diagnosis
+    }
+
+    /// close2gl's own rules without mistakes; the legal rules the program uses (of those that
+    /// reproduce every fact, the closest to its exact colours; close2gl's own when none does);
+    /// and the legal rules that come closest, whether or not they reproduce it.
+    fn legal_rules(&self) -> (Attempt, Attempt, Attempt) {
+        let mut all = Vec::new();
+        for &tie in TieRule::ALL {
+            for &conversion in ByteConversion::ALL {
+                for &depth in DepthFunction::ALL {
+                    all.push(RasterRules {
+                        tie,
+                        conversion,
+                        depth,
+                    });
+                }
+            }
+        }
+        let attempts: Vec<Attempt> = (all.par_iter())
+            .map(|&rules| self.attempt(rules, RasterMistakes::NONE))
+            .collect();
+        // The list starts with close2gl's own rules: the first of equals is theirs.
+        let reference = attempts[0];
+        let key = |a: &&Attempt| (a.facts.distance(), a.facts.inexact);
+        let closest = *attempts.iter().min_by_key(key).unwrap_or(&reference);
+        let agreeing = attempts.iter().filter(|a| self.agrees(a));
+        let legal = *agreeing.min_by_key(key).unwrap_or(&reference);
+        (reference, legal, closest)
+    }
+
+    /// The catalogue's mistakes that can show in this frame.
+    fn candidates(&self) -> Vec<M> {
+        let trace = &self.input.trace;
+        let filter = trace
+            .texture
+            .as_ref()
+            .map(|(_, f)| *f)
+            .filter(|_| self.input.texture.is_some());
+        let shading = trace.shading;
+        (M::catalogue().iter().copied())
+            .filter(|&m| can_show(m, shading, filter, self.input.depth.is_some()))
+            .collect()
+    }
+}
+
+/// Whether mistake `m` can change a frame drawn with `shading` and `filter` (None: untextured);
+/// `depth`: whether the trace gives its depth buffer.
+pub fn can_show(m: M, shading: Shading, filter: Option<TextureFilter>, depth: bool) -> bool {
+    use TextureFilter::{Bilinear, Nearest, Trilinear};
+    let lit_per_pixel = shading == Shading::Phong;
+    match m {
+        M::DepthNdc => depth,
+        M::ColourAffine => shading.per_vertex(),
+        M::PhongAffine | M::NormalNotRenormalized => lit_per_pixel,
+        // Gouraud's corners carry the program's own lit colours: its lighting is judged there.
+        _ if m.stage() == RasterStage::Shading => lit_per_pixel,
+        M::UvAffine | M::TNotFlipped | M::NoWrapBlack | M::ClampNotRepeat => filter.is_some(),
+        M::NearestRounds => filter == Some(Nearest),
+        M::BilinearNoHalfTexel => matches!(filter, Some(Bilinear | Trilinear)),
+        M::LodAbsolute | M::LodOneAxis | M::LodUnscaled | M::MipNearestLevel => {
+            filter == Some(Trilinear)
+        }
+        M::WeightsRotated | M::NoInterpolation => shading != Shading::None || filter.is_some(),
+        _ => true,
+    }
+}

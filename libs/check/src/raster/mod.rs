@@ -1,0 +1,86 @@
+//! check for the second assignment: a student's own rasterizer, judged on its own input. The
+//! trace's triangles, with the values the program gave each corner, are drawn again by
+//! close2gl's textbook rasterizer ([`input`]) and the program's buffers held against that
+//! drawing ([`facts`]): coverage, depth, colour, and for Gouraud the lighting at each corner
+//! ([`corners`]). When they differ, [`diagnose`] finds the legal rules the program chose and the
+//! catalogue's mistakes that reproduce every fact; [`report`] writes it for a person and a
+//! script, [`pictures`] as images of the stage that differs.
+
+pub mod corners;
+pub mod diagnose;
+pub mod facts;
+pub mod input;
+pub mod pictures;
+pub mod report;
+
+use close2gl_core::{RasterMistakes, RasterRules};
+use close2gl_trace_format::RasterFrame;
+use glam::DVec3;
+
+use corners::CornerFacts;
+use diagnose::{Diagnosis, Judge};
+use facts::Allowance;
+use input::Redraw;
+
+/// What check found about a raster trace.
+#[derive(Clone, Debug)]
+pub struct RasterReport {
+    pub diagnosis: Diagnosis,
+    /// Gouraud's lighting at the corners (None when not judged).
+    pub corners: Option<CornerFacts>,
+    pub allowance: Allowance,
+}
+
+impl RasterReport {
+    /// Whether the program agrees with close2gl under legal rules: every fact reproduced and
+    /// every corner lit alike.
+    pub fn agrees(&self) -> bool {
+        self.diagnosis.legal.facts.agree(self.allowance)
+            && self.corners.as_ref().is_none_or(|c| c.differing == 0)
+    }
+
+    /// The catalogue ids named (the pixels' and the corners'), each once, in catalogue order.
+    pub fn mistakes(&self) -> Vec<&'static str> {
+        let pixels = self.diagnosis.named.iter().map(|a| a.mistakes);
+        let corners = self.corners.iter().flat_map(|c| c.named.iter().copied());
+        let all = pixels.fold(RasterMistakes::NONE, |all, set| {
+            set.iter().fold(all, |a, m| a.with(m))
+        });
+        let all = corners.fold(all, |all, m| all.with(m));
+        all.iter().map(|m| m.name()).collect()
+    }
+
+    /// The legal rules the program was found to use.
+    pub fn rules(&self) -> RasterRules {
+        self.diagnosis.legal.rules
+    }
+}
+
+/// Checks `frame`: the judge, ready for the search and for probes.
+pub fn judge(frame: &RasterFrame) -> Judge<'_> {
+    let trace = &frame.trace;
+    let filter = trace
+        .texture
+        .as_ref()
+        .map(|(_, f)| *f)
+        .filter(|_| frame.texture.is_some());
+    let byte = |c: f64| (c.clamp(0.0, 1.0) * 255.0 + 0.5) as u8;
+    let [r, g, b] = DVec3::from_array(trace.background).to_array().map(byte);
+    Judge {
+        input: frame,
+        redraw: Redraw::new(frame),
+        ties: facts::ties(frame),
+        background: [r, g, b, 255],
+        allowance: Allowance::for_texture(filter),
+    }
+}
+
+/// Checks `frame` whole.
+pub fn check_raster(frame: &RasterFrame) -> RasterReport {
+    let judge = judge(frame);
+    RasterReport {
+        diagnosis: judge.diagnose(),
+        corners: corners::judge(frame, &judge.redraw),
+        allowance: judge.allowance,
+    }
+}
