@@ -118,31 +118,53 @@ impl Judge<'_> {
         diagnosis
     }
 
-    /// close2gl's own rules without mistakes; the legal rules the program uses (of those that
-    /// reproduce every fact, the closest to its exact colours; close2gl's own when none does);
-    /// and the legal rules that come closest, whether or not they reproduce it.
+    /// close2gl's own rules without mistakes; the legal rules the program uses (those that
+    /// reproduce every fact, closest to its exact colours; close2gl's own when none does); and
+    /// the legal rules that come closest, whether or not they reproduce it. Each choice is tried
+    /// only where its facts differ: another tie rule where coverage does, truncation where a
+    /// colour is not exactly alike, "less or equal" where depth or colour does.
     fn legal_rules(&self) -> (Attempt, Attempt, Attempt) {
-        let mut all = Vec::new();
-        for &tie in TieRule::ALL {
-            for &conversion in ByteConversion::ALL {
-                for &depth in DepthFunction::ALL {
-                    all.push(RasterRules {
-                        tie,
-                        conversion,
-                        depth,
-                    });
+        let reference = self.attempt(RasterRules::default(), RasterMistakes::NONE);
+        let mut closest = reference;
+        let key = |a: &Attempt| (a.facts.distance(), a.facts.inexact);
+        let choose = |choices: Vec<RasterRules>, closest: &mut Attempt| {
+            let attempts: Vec<Attempt> = (choices.par_iter())
+                .map(|&rules| self.attempt(rules, RasterMistakes::NONE))
+                .collect();
+            for attempt in attempts {
+                if key(&attempt) < key(closest) {
+                    *closest = attempt;
                 }
             }
+        };
+        if closest.facts.coverage.differing > 0 {
+            let ties = TieRule::ALL.iter().skip(1);
+            let rules = ties
+                .map(|&tie| RasterRules {
+                    tie,
+                    ..closest.rules
+                })
+                .collect();
+            choose(rules, &mut closest);
         }
-        let attempts: Vec<Attempt> = (all.par_iter())
-            .map(|&rules| self.attempt(rules, RasterMistakes::NONE))
-            .collect();
-        // The list starts with close2gl's own rules: the first of equals is theirs.
-        let reference = attempts[0];
-        let key = |a: &&Attempt| (a.facts.distance(), a.facts.inexact);
-        let closest = *attempts.iter().min_by_key(key).unwrap_or(&reference);
-        let agreeing = attempts.iter().filter(|a| self.agrees(a));
-        let legal = *agreeing.min_by_key(key).unwrap_or(&reference);
+        if closest.facts.inexact > 0 {
+            let rules = RasterRules {
+                conversion: ByteConversion::Truncate,
+                ..closest.rules
+            };
+            choose(vec![rules], &mut closest);
+        }
+        if closest.facts.depth.differing + closest.facts.colour.differing > 0 {
+            let rules = RasterRules {
+                depth: DepthFunction::LessEqual,
+                ..closest.rules
+            };
+            choose(vec![rules], &mut closest);
+        }
+        let legal = match self.agrees(&closest) {
+            true => closest,
+            false => reference,
+        };
         (reference, legal, closest)
     }
 
