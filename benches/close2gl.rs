@@ -14,8 +14,8 @@ use close2gl::commands::bench::raster::{SoftwareTimer, layers};
 use close2gl::commands::bench::{baseline, sphere_grid};
 use close2gl::config::Config;
 use close2gl::core::{
-    Camera, Close2glFrame, Mesh, ModelSource, PrimitiveKind, PrimitiveParams, Rasterizer, Shading,
-    Viewport,
+    Appearance, Camera, Close2glFrame, Mesh, ModelSource, PipelineSettings, PrimitiveKind,
+    PrimitiveParams, Rasterizer, Shading, Viewport,
 };
 use close2gl::pipeline::FastPipeline;
 use close2gl_gpu::{Gpu, OffscreenPlugin, render_offscreen};
@@ -60,7 +60,7 @@ fn geometry_stage(c: &mut Criterion) {
             &config,
         );
         group.bench_function(BenchmarkId::new("baseline", size), |b| {
-            let settings = config.render.pipeline();
+            let settings = config.render.pipeline;
             b.iter(|| baseline::frame(&mesh, &camera, &settings, GEOMETRY_VIEWPORT))
         });
     }
@@ -89,7 +89,7 @@ fn bench_fast_path(
     group.throughput(Throughput::Elements(mesh.triangles.len() as u64));
     let mut pipeline = FastPipeline::default();
     let mut frame = Close2glFrame::default();
-    let settings = config.render.pipeline();
+    let settings = config.render.pipeline;
     group.bench_function(id, |b| {
         b.iter(|| {
             let fates = &mut Default::default();
@@ -121,8 +121,8 @@ fn knot(viewport: Viewport) -> close2gl::core::App {
         model: ModelSource::File(format!("{}/assets/knot.obj", env!("CARGO_MANIFEST_DIR")).into()),
         ..Config::default()
     };
-    config.render.shading = Shading::Phong;
-    config.render.close2gl_raster = Rasterizer::Software;
+    config.render.appearance.shading = Shading::Phong;
+    config.render.pipeline.close2gl_raster = Rasterizer::Software;
     close2gl::build_app(&config, viewport).expect("the bundled knot")
 }
 
@@ -134,12 +134,13 @@ fn software_raster(c: &mut Criterion) {
         let viewport = Viewport { width, height };
         let mut app = knot(viewport);
         let (mesh, camera) = parts(&mut app);
-        let settings = close2gl::core::RenderSettings::of_world(app.world()).expect("the settings");
+        let pipeline = *app.world().resource::<PipelineSettings>();
+        let look = *app.world().resource::<Appearance>();
         let lighting = *app.world().resource::<close2gl::core::Lighting>();
         let mut software = SoftwareTimer::default();
         let size = format!("{width}x{height}");
         group.bench_function(BenchmarkId::new("software_knot_phong", &size), |b| {
-            b.iter(|| software.frame(&mesh, &camera, &settings, &lighting, viewport))
+            b.iter(|| software.frame(&mesh, &camera, &pipeline, &look, &lighting, viewport))
         });
         // The GPU's reference view of the same scene, its work finished (lavapipe without a
         // GPU): the time render_offscreen measures around the reference draw alone.
@@ -160,28 +161,29 @@ fn software_raster(c: &mut Criterion) {
         height: 1080,
     };
     let (mesh, camera) = layers(8);
-    let mut settings = close2gl::core::RenderSettings {
+    let pipeline = PipelineSettings {
         close2gl_raster: Rasterizer::Software,
         ..Default::default()
     };
+    let mut look = Appearance::default();
     let lighting = close2gl::core::Lighting::default();
     let mut software = SoftwareTimer::default();
     group.throughput(Throughput::Elements(8 * 1920 * 1080));
     group.bench_function("fill_8_layers_1920x1080", |b| {
-        b.iter(|| software.frame(&mesh, &camera, &settings, &lighting, viewport))
+        b.iter(|| software.frame(&mesh, &camera, &pipeline, &look, &lighting, viewport))
     });
     let (mesh, camera, _) = scene(1_000_000);
-    settings.shading = Shading::GouraudAds;
+    look.shading = Shading::GouraudAds;
     group.throughput(Throughput::Elements(mesh.triangles.len() as u64));
     group.bench_function("sphere_1m_gouraud_1920x1080", |b| {
-        b.iter(|| software.frame(&mesh, &camera, &settings, &lighting, viewport))
+        b.iter(|| software.frame(&mesh, &camera, &pipeline, &look, &lighting, viewport))
     });
     let (mesh, camera) = grid_scene(viewport);
     for shading in [Shading::None, Shading::Phong] {
-        settings.shading = shading;
+        look.shading = shading;
         let name = format!("grid_1m_{}_1920x1080", shading.name());
         group.bench_function(name, |b| {
-            b.iter(|| software.frame(&mesh, &camera, &settings, &lighting, viewport))
+            b.iter(|| software.frame(&mesh, &camera, &pipeline, &look, &lighting, viewport))
         });
     }
     group.finish();

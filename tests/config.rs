@@ -25,8 +25,8 @@ fn with(overrides: &[&str]) -> Result<Config, String> {
 fn the_documented_config_is_the_default() {
     let documented = with(&[]).expect("config.toml loads");
     let mut first_run = Config::default();
-    first_run.render.shading = Shading::Phong;
-    first_run.render.close2gl_raster = Rasterizer::Software;
+    first_run.render.appearance.shading = Shading::Phong;
+    first_run.render.pipeline.close2gl_raster = Rasterizer::Software;
     assert_eq!(documented, first_run);
 }
 
@@ -40,7 +40,7 @@ fn overrides_apply_in_order_and_bare_words_are_strings() {
         "model.primitive=torus",
     ])
     .expect("valid overrides");
-    assert_eq!(c.render.mode, RenderMode::Wireframe);
+    assert_eq!(c.render.pipeline.mode, RenderMode::Wireframe);
     assert_eq!(c.camera.mode, CameraMode::LookAt);
     assert_eq!(c.camera.hfov, 45.0);
     assert_eq!(c.model, ModelSource::Primitive(PrimitiveKind::Torus));

@@ -1,6 +1,9 @@
 //! The code's comments keep the why and point to `docs/*.md#section` for the measured figures:
 //! every such link must name a heading of that file (by the anchor GitHub makes of it), so that
-//! a section renamed or moved breaks this test rather than a reader's link.
+//! a section renamed or moved breaks this test rather than a reader's link. Likewise every file
+//! the comments and documents name must be where they say, and every module path the README,
+//! CONTRIBUTING and `docs/` write (`close2gl_core::limits::ZERO_AREA`) must name a module, so
+//! that a file renamed or moved breaks this test rather than the reader's search.
 
 use std::fs;
 use std::path::{Path, PathBuf};
@@ -140,15 +143,35 @@ fn repository_files(root: &Path, dir: &Path, out: &mut Vec<String>) {
     }
 }
 
-/// The folder a Markdown table row is about (its first cell, `plugins/gpu`): a bare file
-/// name in that row is that folder's. None: the name may be anywhere.
+/// The folder a Markdown table row is about (its first cell, `plugins/gpu` or `src/`): a file
+/// that row names is in that folder. None: the name may be anywhere.
 fn scope(root: &Path, file: &str, line: &str) -> Option<String> {
     if !file.ends_with(".md") {
         return None;
     }
     let first = line.strip_prefix("| `")?.split('`').next()?;
     let folder = first.trim_end_matches('/');
-    (folder.contains('/') && root.join(folder).is_dir()).then(|| folder.to_string())
+    (first.contains('/') && root.join(folder).is_dir()).then(|| folder.to_string())
+}
+
+/// A Markdown line without its links' targets, and the targets that lead to a file of ours
+/// (`[Fuzzing](reliability.md#fuzzing)`: `reliability.md`; not a web address, not an anchor).
+fn links_apart(line: &str) -> (String, Vec<&str>) {
+    let mut prose = String::new();
+    let mut targets = Vec::new();
+    let mut rest = line;
+    while let Some(at) = rest.find("](") {
+        prose.push_str(&rest[..at + 2]);
+        rest = &rest[at + 2..];
+        let end = rest.find([')', ' ']).unwrap_or(rest.len());
+        let target = rest[..end].split('#').next().unwrap_or_default();
+        if !target.is_empty() && !target.contains("://") {
+            targets.push(target);
+        }
+        rest = &rest[end..];
+    }
+    prose.push_str(rest);
+    (prose, targets)
 }
 
 #[test]
@@ -156,16 +179,12 @@ fn every_file_a_comment_or_document_names_exists() {
     let root = Path::new(env!("CARGO_MANIFEST_DIR"));
     let mut all = Vec::new();
     repository_files(root, root, &mut all);
-    // A name with its folder must be that path (from the root, or the end of one); a bare name
-    // in a table row about a folder must be in that folder.
+    // A name is a path from the root, or the end of one, folders included as written; in a
+    // table row about a folder, the end of a path in that folder.
     let exists = |name: &str, scope: Option<&str>| {
         all.iter().any(|f| {
-            let at = f == name || f.ends_with(&format!("/{name}"));
-            let within = match (name.contains('/'), scope) {
-                (false, Some(folder)) => f.starts_with(&format!("{folder}/")),
-                _ => true,
-            };
-            at && within
+            let within = scope.is_none_or(|folder| f.starts_with(&format!("{folder}/")));
+            f == name || (f.ends_with(&format!("/{name}")) && within)
         })
     };
     let mut checked = 0;
@@ -176,13 +195,24 @@ fn every_file_a_comment_or_document_names_exists() {
     for file in prose {
         let text = fs::read_to_string(root.join(file)).expect("a text file");
         for (i, line) in text.lines().enumerate() {
-            // In Rust, the comments are the prose; in Markdown, every line.
-            let prose = match file.ends_with(".rs") {
-                true => line.split_once("//").map_or("", |(_, comment)| comment),
-                false => line,
+            // In Rust, the comments are the prose; in Markdown, every line, its links' targets
+            // apart: they lead from the page's folder.
+            let (prose, targets) = match file.ends_with(".rs") {
+                true => (
+                    line.split_once("//").map_or("", |(_, c)| c).into(),
+                    Vec::new(),
+                ),
+                false => links_apart(line),
             };
+            let folder = Path::new(file).parent().unwrap_or(Path::new(""));
+            for target in targets {
+                checked += 1;
+                if !root.join(folder).join(target).exists() {
+                    missing.push(format!("{file}:{}: {target}", i + 1));
+                }
+            }
             let scope = scope(root, file, line);
-            for name in named_files(prose) {
+            for name in named_files(&prose) {
                 checked += 1;
                 if !exists(name, scope.as_deref()) {
                     missing.push(format!("{file}:{}: {name}", i + 1));
@@ -210,7 +240,20 @@ fn a_table_row_about_a_folder_scopes_its_bare_names() {
         Some("plugins/input")
     );
     assert_eq!(scope(root, "src/x.rs", row), None);
-    assert_eq!(scope(root, "docs/x.md", "| `src/` |").as_deref(), None);
+    assert_eq!(
+        scope(root, "docs/x.md", "| `src/` |").as_deref(),
+        Some("src")
+    );
+    assert_eq!(scope(root, "docs/x.md", "| `stats` |").as_deref(), None);
+}
+
+#[test]
+fn a_links_target_is_kept_apart_from_the_prose() {
+    let (prose, targets) = links_apart(
+        "see [Fuzzing](reliability.md#fuzzing), [a](#here) and [b](https://example.org/page)",
+    );
+    assert_eq!(prose, "see [Fuzzing](), [a]() and [b]()");
+    assert_eq!(targets, ["reliability.md"]);
 }
 
 #[test]
@@ -221,4 +264,260 @@ fn file_names_are_found_in_prose() {
         ),
         ["stage.rs", "plugins/gpu/src/kept_faces.wgsl", "docs/web.md"]
     );
+}
+
+/// The pages a reader starts from, whose module paths are checked: the README, CONTRIBUTING and
+/// every file of `docs/`.
+fn front_pages(root: &Path) -> Vec<PathBuf> {
+    let mut pages = vec![root.join("README.md"), root.join("CONTRIBUTING.md")];
+    for entry in fs::read_dir(root.join("docs")).expect("docs/") {
+        let path = entry.expect("a directory entry").path();
+        if path.extension().is_some_and(|e| e == "md") {
+            pages.push(path);
+        }
+    }
+    pages
+}
+
+/// Each module path in backticks on `line`: identifiers joined by `::` and nothing else, the
+/// first a module's or a crate's (`close2gl_core::limits::ZERO_AREA`; not `App::update`, a
+/// type's, nor `app.requires::<R>()`).
+fn rust_paths(line: &str) -> Vec<&str> {
+    let identifier = |s: &str| {
+        s.starts_with(|c: char| c.is_ascii_alphabetic() || c == '_')
+            && s.chars().all(|c| c.is_ascii_alphanumeric() || c == '_')
+    };
+    line.split('`')
+        .skip(1)
+        .step_by(2)
+        .filter(|span| span.contains("::") && span.split("::").all(identifier))
+        .filter(|span| span.starts_with(|c: char| !c.is_ascii_uppercase()))
+        .collect()
+}
+
+/// A module's source file and the folder its submodules are in.
+#[derive(Clone)]
+struct Module {
+    file: PathBuf,
+    children: PathBuf,
+}
+
+impl Module {
+    fn at(file: PathBuf) -> Module {
+        let named_for_its_folder = file.ends_with("lib.rs") || file.ends_with("mod.rs");
+        let children = match named_for_its_folder {
+            true => file.parent().expect("a folder").to_path_buf(),
+            false => file.with_extension(""),
+        };
+        Module { file, children }
+    }
+
+    /// Its submodule `name`: a file or a folder of that name among its children.
+    fn child(&self, name: &str) -> Option<Module> {
+        [format!("{name}.rs"), format!("{name}/mod.rs")]
+            .map(|file| self.children.join(file))
+            .into_iter()
+            .find(|file| file.is_file())
+            .map(Module::at)
+    }
+}
+
+/// The workspace's crates: each package's name with its root module (`src/lib.rs`).
+fn crates(root: &Path) -> Vec<(String, Module)> {
+    let mut folders = vec![root.to_path_buf()];
+    for group in ["plugins", "libs"] {
+        for entry in fs::read_dir(root.join(group)).expect("a crate folder") {
+            folders.push(entry.expect("a directory entry").path());
+        }
+    }
+    folders
+        .into_iter()
+        .filter_map(|folder| {
+            let manifest = fs::read_to_string(folder.join("Cargo.toml")).ok()?;
+            let package = manifest.split("[package]").nth(1)?;
+            let name = package.lines().find_map(|l| l.strip_prefix("name = "))?;
+            let lib = folder.join("src/lib.rs");
+            lib.is_file()
+                .then(|| (name.trim_matches('"').to_string(), Module::at(lib)))
+        })
+        .collect()
+}
+
+/// Whether `file` declares `name` (as a function, constant, type, module or macro) or
+/// re-exports it (in a `pub use`, or a glob that may hold it).
+fn declares(file: &Path, name: &str) -> bool {
+    let text = fs::read_to_string(file).expect("a source file");
+    let code: String = text
+        .lines()
+        .map(|line| line.split("//").next().unwrap_or_default())
+        .collect::<Vec<_>>()
+        .join("\n");
+    let words: Vec<&str> = code
+        .split(|c: char| !(c.is_ascii_alphanumeric() || c == '_'))
+        .filter(|w| !w.is_empty())
+        .collect();
+    const KEYWORDS: [&str; 10] = [
+        "fn",
+        "const",
+        "static",
+        "struct",
+        "enum",
+        "trait",
+        "type",
+        "union",
+        "mod",
+        "macro_rules",
+    ];
+    let defined = words
+        .windows(2)
+        .any(|pair| pair[1] == name && KEYWORDS.contains(&pair[0]));
+    let re_exported = code.split("pub use").skip(1).any(|statement| {
+        let statement = statement.split(';').next().unwrap_or_default();
+        statement.contains('*')
+            || statement
+                .split(|c: char| !(c.is_ascii_alphanumeric() || c == '_'))
+                .any(|w| w == name)
+    });
+    defined || re_exported
+}
+
+/// Whose a path's first segment is when it is none of ours: std's, a primitive type's, or a
+/// package's of the lock file (`wgpu::TextureFormat`).
+fn foreign_roots(root: &Path) -> Vec<String> {
+    let lock = fs::read_to_string(root.join("Cargo.lock")).expect("Cargo.lock");
+    let packages = lock
+        .lines()
+        .filter_map(|line| line.strip_prefix("name = "))
+        .map(|name| name.trim_matches('"').replace('-', "_"));
+    let std = [
+        "std", "core", "alloc", "str", "bool", "char", "f32", "f64", "u8", "u16", "u32", "u64",
+        "usize", "i8", "i16", "i32", "i64", "isize",
+    ];
+    std.map(String::from).into_iter().chain(packages).collect()
+}
+
+/// Why `path` (`a::b::c`) names nothing, or None when it names something. Its first segment
+/// is one of our crates (`close2gl_check`, or `check` for short) or a module of one
+/// (`limits`), else someone else's (`str::parse`, not checked further) or a mistake. Each
+/// segment after it is a submodule (a file or a folder, or a `mod` inside the file) down to
+/// the last, or to the first type: an item the module declares or re-exports.
+fn unresolved(
+    path: &str,
+    crates: &[(String, Module)],
+    modules: &[Module],
+    foreign: &[String],
+) -> Option<String> {
+    let segments: Vec<&str> = path.split("::").collect();
+    let first = segments[0];
+    let starts: Vec<&Module> = crates
+        .iter()
+        .filter(|(name, _)| *name == first || *name == format!("close2gl_{first}"))
+        .map(|(_, module)| module)
+        .chain(modules.iter().filter(|m| m.children.ends_with(first)))
+        .collect();
+    if starts.is_empty() {
+        let theirs = foreign.iter().any(|name| name == first);
+        return (!theirs).then(|| format!("no crate or module {first}"));
+    }
+    // Said of the first reading: a crate before a module of the same name.
+    let mut why = None;
+    for start in starts {
+        match resolve(start.clone(), &segments[1..]) {
+            Ok(()) => return None,
+            Err(e) => why = why.or(Some(e)),
+        }
+    }
+    why
+}
+
+/// Follows `segments` down from `module` (the rule: [`unresolved`]).
+fn resolve(mut module: Module, segments: &[&str]) -> Result<(), String> {
+    for (i, &segment) in segments.iter().enumerate() {
+        let a_type = segment.starts_with(|c: char| c.is_ascii_uppercase());
+        if !a_type && let Some(child) = module.child(segment) {
+            module = child;
+            continue;
+        }
+        if !declares(&module.file, segment) {
+            return Err(format!("no {segment} in {}", module.file.display()));
+        }
+        let inline_module = fs::read_to_string(&module.file)
+            .expect("a source file")
+            .contains(&format!("mod {segment} {{"));
+        // A type's associated items and what a re-export names are not followed; an inline
+        // module's items are in the same file.
+        if a_type || i + 1 == segments.len() || !inline_module {
+            return Ok(());
+        }
+    }
+    Ok(())
+}
+
+#[test]
+fn every_module_path_the_front_pages_write_names_a_module() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let crates = crates(root);
+    let mut files = Vec::new();
+    for (_, lib) in &crates {
+        rust_files(&lib.children, &mut files);
+    }
+    let modules: Vec<Module> = files.into_iter().map(Module::at).collect();
+    let foreign = foreign_roots(root);
+    let mut checked = 0;
+    let mut wrong = Vec::new();
+    for page in front_pages(root) {
+        let text = fs::read_to_string(&page).expect("a page");
+        for (i, line) in text.lines().enumerate() {
+            for path in rust_paths(line) {
+                checked += 1;
+                if let Some(why) = unresolved(path, &crates, &modules, &foreign) {
+                    let page = page.strip_prefix(root).unwrap_or(&page).display();
+                    let why = why.replace(&format!("{}/", root.display()), "");
+                    wrong.push(format!("{page}:{}: `{path}`: {why}", i + 1));
+                }
+            }
+        }
+    }
+    assert!(
+        checked > 20,
+        "only {checked} module paths found: the search is broken"
+    );
+    assert!(
+        wrong.is_empty(),
+        "module paths that name nothing:\n{}",
+        wrong.join("\n")
+    );
+}
+
+#[test]
+fn module_paths_are_read_from_backticks_and_followed_down_the_files() {
+    assert_eq!(
+        rust_paths("`close2gl_core::limits::ZERO_AREA`, `App::update`, `app.requires::<R>()`"),
+        ["close2gl_core::limits::ZERO_AREA"]
+    );
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let crates = crates(root);
+    let foreign = foreign_roots(root);
+    let check = |path| unresolved(path, &crates, &[], &foreign);
+    assert_eq!(check("close2gl_core::limits::ZERO_AREA"), None);
+    assert_eq!(
+        check("core::camera::PARALLEL_UP"),
+        None,
+        "a crate for short"
+    );
+    assert_eq!(check("config::load_text"), None, "re-exported");
+    assert_eq!(check("str::parse"), None, "someone else's");
+    assert!(
+        check("close2gl_core::limit::ZERO_AREA").is_some(),
+        "a module that is not"
+    );
+    assert!(
+        check("close2gl_core::limits::ZERO_AREAS").is_some(),
+        "an item that is not"
+    );
+    assert!(
+        check("close2gl_cheque::compare").is_some(),
+        "a crate that is not"
+    );
+    assert!(check("compare::clip").is_some(), "a module that is nowhere");
 }

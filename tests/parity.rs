@@ -11,16 +11,14 @@ use std::path::{Path, PathBuf};
 use close2gl::config;
 use close2gl::core::glam::{Vec3, Vec4};
 use close2gl::core::{
-    App, CameraSpeeds, Clipping, FrontFace, Mesh, Rasterizer, RenderMode, Shading, TextureFilter,
-    Viewport,
+    App, Appearance, CameraSpeeds, Clipping, FrontFace, Mesh, PipelineSettings, Rasterizer,
+    RenderMode, Shading, TextureFilter, Viewport,
 };
 use close2gl_core::parity::{
     ColorComparison, ColorTolerance, CoverageComparison, coverage, diff_image, is_covered,
 };
 use close2gl_gpu::{Gpu, OffscreenPlugin, Snapshot, camera_matrices, render_offscreen};
-use close2gl_testkit::{
-    camera_mut as camera, change_settings, gpu, gpu_without_polygon_modes, settings,
-};
+use close2gl_testkit::{camera_mut as camera, change_settings, gpu, gpu_without_polygon_modes};
 
 /// target/parity, next to the other build products.
 fn parity_dir() -> PathBuf {
@@ -153,7 +151,7 @@ impl Pose {
                 let c = camera(app);
                 c.position = c.target;
                 c.near = 0.01 * radius;
-                change_settings(app, |s| s.backface_culling = false);
+                change_settings(app, |s: &mut PipelineSettings| s.backface_culling = false);
             }
             Pose::WideShort => fovs(app, 150.0, 20.0),
             Pose::NarrowTall => fovs(app, 20.0, 150.0),
@@ -277,7 +275,7 @@ fn check_scene(run: Run, label: &str, model: &str, overrides: &[&str]) -> String
         for front_face in [FrontFace::Ccw, FrontFace::Cw] {
             for &mode in run.modes {
                 for rasterizer in Rasterizer::ALL.iter().copied() {
-                    change_settings(&mut app, |s| {
+                    change_settings(&mut app, |s: &mut PipelineSettings| {
                         (s.front_face, s.mode, s.close2gl_raster) = (front_face, mode, rasterizer)
                     });
                     let case = format!(
@@ -475,7 +473,9 @@ fn a_resize_keeps_the_views_in_agreement() {
             height: size.1,
         };
         for rasterizer in Rasterizer::ALL.iter().copied() {
-            change_settings(&mut app, |s| s.close2gl_raster = rasterizer);
+            change_settings(&mut app, |s: &mut PipelineSettings| {
+                s.close2gl_raster = rasterizer
+            });
             let case = format!("resized_{}x{}_{}", size.0, size.1, rasterizer.name());
             let needed = match rasterizer {
                 Rasterizer::Gpu => Needed {
@@ -489,7 +489,9 @@ fn a_resize_keeps_the_views_in_agreement() {
             assert_eq!((snapshot.close2gl.width, snapshot.close2gl.height), size);
             assert!(failure.is_empty(), "{failure}");
         }
-        change_settings(&mut app, |s| s.close2gl_raster = Rasterizer::Gpu);
+        change_settings(&mut app, |s: &mut PipelineSettings| {
+            s.close2gl_raster = Rasterizer::Gpu
+        });
     }
 }
 
@@ -517,18 +519,21 @@ fn the_four_shadings_agree_with_the_software_rasterizer() {
         let framed = *camera(&mut app);
         for pose in poses {
             *camera(&mut app) = framed;
-            change_settings(&mut app, |s| s.backface_culling = true);
+            change_settings(&mut app, |s: &mut PipelineSettings| {
+                s.backface_culling = true
+            });
             pose.apply(&mut app);
-            let culls: &[bool] = if settings(&app).backface_culling {
+            let culls: &[bool] = if app.world().resource::<PipelineSettings>().backface_culling {
                 &[true, false]
             } else {
                 &[false]
             };
             for &cull in culls {
                 for shading in Shading::ALL.iter().copied() {
-                    change_settings(&mut app, |s| {
-                        (s.shading, s.backface_culling) = (shading, cull)
+                    change_settings(&mut app, |s: &mut PipelineSettings| {
+                        s.backface_culling = cull
                     });
+                    change_settings(&mut app, |s: &mut Appearance| s.shading = shading);
                     let name = model.rsplit('/').next().unwrap_or(model);
                     let case = format!("lit_{name}_{}_{}_cull_{cull}", pose.name(), shading.name());
                     // The near plane cutting into a closed convex model leaves only its
@@ -627,7 +632,7 @@ fn border_triangles(app: &mut App) -> (usize, Option<Snapshot>) {
         .collect();
     let border_count = border.len();
     mesh.triangles = border;
-    change_settings(app, |s| s.clipping = Clipping::Full);
+    change_settings(app, |s: &mut PipelineSettings| s.clipping = Clipping::Full);
     // A new mesh is framed again: run that frame, then put the pose back.
     app.update();
     *camera(app) = saved;
@@ -680,10 +685,12 @@ fn write_close2gl_images(case: &str, images: [(&str, Option<&Snapshot>); 3]) -> 
 fn compare_clipping(model: &str, pose: Pose, mode: RenderMode) -> usize {
     let mut app = scene(model, &[], SIZE);
     pose.apply(&mut app);
-    change_settings(&mut app, |s| s.mode = mode);
+    change_settings(&mut app, |s: &mut PipelineSettings| s.mode = mode);
     let case = format!("simple_{model}_{}_{}", pose.name(), mode.name());
     let full = render_offscreen(&mut app).expect("render");
-    change_settings(&mut app, |s| s.clipping = Clipping::Simple);
+    change_settings(&mut app, |s: &mut PipelineSettings| {
+        s.clipping = Clipping::Simple
+    });
     let simple = render_offscreen(&mut app).expect("render");
     let (border_count, edges) = border_triangles(&mut app);
     let (extra, unexplained) = pixels_only_full_covers(&case, &full, &simple, edges.as_ref());
@@ -964,10 +971,12 @@ fn textured_models_agree_with_every_filter() {
             *camera(&mut app) = framed;
             pose.apply(&mut app);
             // With the near plane cutting into the closed model, its inside is what shows.
-            change_settings(&mut app, |s| s.backface_culling = pose != Pose::NearCut);
+            change_settings(&mut app, |s: &mut PipelineSettings| {
+                s.backface_culling = pose != Pose::NearCut
+            });
             for filter in TextureFilter::ALL.iter().copied() {
                 for shading in [Shading::None, Shading::Phong] {
-                    change_settings(&mut app, |s| {
+                    change_settings(&mut app, |s: &mut Appearance| {
                         (s.texture_filter, s.shading) = (filter, shading)
                     });
                     let case = format!(
@@ -1043,7 +1052,7 @@ fn trilinear_filtering_leaves_no_moire_on_a_grazing_checkerboard() {
     std::fs::create_dir_all(&dir).expect("create target/parity/moire");
     let mut energy = Vec::new();
     for filter in [TextureFilter::Nearest, TextureFilter::Trilinear] {
-        change_settings(&mut app, |s| s.texture_filter = filter);
+        change_settings(&mut app, |s: &mut Appearance| s.texture_filter = filter);
         let snapshot = render_offscreen(&mut app).expect("render");
         for (view, image) in [
             ("reference", &snapshot.reference),

@@ -17,21 +17,22 @@ use close2gl::core::glam::{Vec2, Vec3};
 use close2gl::core::{
     App, Appearance, Camera, CameraAction, CameraActions, CameraHome, CameraMode, Clipping,
     Close2glFrame, FrameSet, FrontFace, Image, InputState, Lighting, Mesh, ModelSource,
-    ModelStatus, Overlay, PipelineSettings, Rasterizer, RenderMode, RenderSettings, SettingsPlugin,
-    Shading, SoftwareFrame, Texture, Topology, Update, Viewport,
+    ModelStatus, Overlay, PipelineSettings, Rasterizer, RenderMode, SettingsPlugin, Shading,
+    SoftwareFrame, Texture, Topology, Update, Viewport,
 };
 use close2gl::input::InputPlugin;
 use close2gl::pipeline::Close2glPlugin;
 use close2gl::raster::RasterPlugin;
 use close2gl_testkit::{camera, camera_mut, cube, mesh, world_with};
 
-fn app_with(mesh: Mesh, settings: RenderSettings) -> App {
+fn app_with(mesh: Mesh, pipeline: PipelineSettings) -> App {
     let viewport = Viewport {
         width: 640,
         height: 480,
     };
-    let mut app = world_with(mesh, Camera::default(), settings, viewport);
-    app.add_plugins(CameraPlugin)
+    let mut app = world_with(mesh, Camera::default(), viewport);
+    app.insert_resource(pipeline)
+        .add_plugins(CameraPlugin)
         .add_plugins(InputPlugin)
         .add_plugins(Close2glPlugin);
     app.update();
@@ -68,7 +69,7 @@ fn close(a: Vec3, b: Vec3) -> bool {
 
 #[test]
 fn loading_frames_the_model_from_plus_z() {
-    let mut app = app_with(cube(), RenderSettings::default());
+    let mut app = app_with(cube(), PipelineSettings::default());
     let c = camera(&mut app);
     assert_eq!((c.u, c.v, c.n), (Vec3::X, Vec3::Y, Vec3::Z));
     assert_eq!(c.target, Vec3::ZERO);
@@ -80,7 +81,7 @@ fn loading_frames_the_model_from_plus_z() {
 
 #[test]
 fn w_moves_along_minus_n() {
-    let mut app = app_with(cube(), RenderSettings::default());
+    let mut app = app_with(cube(), PipelineSettings::default());
     let before = camera(&mut app);
     hold(&mut app, &["w"], 0.05);
     let after = camera(&mut app);
@@ -92,7 +93,7 @@ fn w_moves_along_minus_n() {
 
 #[test]
 fn after_a_yaw_w_follows_the_new_n() {
-    let mut app = app_with(cube(), RenderSettings::default());
+    let mut app = app_with(cube(), PipelineSettings::default());
     app.world_mut().resource_mut::<InputState>().drag = Vec2::new(120.0, 0.0);
     app.update();
     app.world_mut().resource_mut::<InputState>().end_frame();
@@ -113,7 +114,7 @@ fn after_a_yaw_w_follows_the_new_n() {
 
 #[test]
 fn orbiting_keeps_the_look_at_point_and_the_distance() {
-    let mut app = app_with(cube(), RenderSettings::default());
+    let mut app = app_with(cube(), PipelineSettings::default());
     press(&mut app, "tab");
     let start = camera(&mut app);
     assert_eq!(start.mode, CameraMode::LookAt);
@@ -140,7 +141,7 @@ fn orbiting_keeps_the_look_at_point_and_the_distance() {
 
 #[test]
 fn reset_returns_to_the_framed_pose() {
-    let mut app = app_with(cube(), RenderSettings::default());
+    let mut app = app_with(cube(), PipelineSettings::default());
     let home = app
         .world_mut()
         .query::<&CameraHome>()
@@ -161,7 +162,7 @@ fn reset_returns_to_the_framed_pose() {
 
 #[test]
 fn scroll_zooms_both_fields_of_view_keeping_their_ratio() {
-    let mut app = app_with(cube(), RenderSettings::default());
+    let mut app = app_with(cube(), PipelineSettings::default());
     let wide = Camera {
         hfov: 90.0,
         vfov: 50.0,
@@ -184,7 +185,7 @@ fn scroll_zooms_both_fields_of_view_keeping_their_ratio() {
 
 #[test]
 fn the_lecture_keys_switch_shading() {
-    let mut app = app_with(cube(), RenderSettings::default());
+    let mut app = app_with(cube(), PipelineSettings::default());
     let shading = |app: &App| app.world().resource::<Appearance>().shading;
     press(&mut app, "shift+p");
     assert_eq!(shading(&app), Shading::Phong);
@@ -207,9 +208,9 @@ fn cw_and_ccw_partition_a_closed_cube() {
     for front_face in [FrontFace::Ccw, FrontFace::Cw] {
         let mut app = app_with(
             cube(),
-            RenderSettings {
+            PipelineSettings {
                 front_face,
-                ..RenderSettings::default()
+                ..PipelineSettings::default()
             },
         );
         pose(&mut app);
@@ -240,10 +241,10 @@ fn triangle_through_the_near_plane(clipping: Clipping) -> Close2glFrame {
         uvs: Vec::new(),
         triangles: vec![[0, 1, 2]],
     };
-    let settings = RenderSettings {
+    let settings = PipelineSettings {
         clipping,
         backface_culling: false,
-        ..RenderSettings::default()
+        ..PipelineSettings::default()
     };
     let mut app = app_with(mesh, settings);
     let mut q = app.world_mut().query::<&mut Camera>();
@@ -277,7 +278,7 @@ fn the_near_plane_cuts_a_triangle_in_full_mode_and_drops_it_in_simple_mode() {
 
 #[test]
 fn a_resize_changes_the_viewport_mapping() {
-    let mut app = app_with(cube(), RenderSettings::default());
+    let mut app = app_with(cube(), PipelineSettings::default());
     let big = frame(&app).bounds_px().expect("drawn");
     *app.world_mut().resource_mut::<Viewport>() = Viewport {
         width: 320,
@@ -299,9 +300,9 @@ fn each_mode_emits_its_primitives() {
     ] {
         let app = app_with(
             cube(),
-            RenderSettings {
+            PipelineSettings {
                 mode,
-                ..RenderSettings::default()
+                ..PipelineSettings::default()
             },
         );
         let f = frame(&app);
@@ -314,10 +315,9 @@ fn each_mode_emits_its_primitives() {
 fn the_software_view_follows_the_texture_as_it_changes_and_goes() {
     let mut mesh = cube();
     mesh.uvs = vec![Vec2::splat(0.5); mesh.positions.len()];
-    let settings = RenderSettings {
+    let settings = PipelineSettings {
         close2gl_raster: Rasterizer::Software,
-        texture: true,
-        ..RenderSettings::default()
+        ..PipelineSettings::default()
     };
     let mut app = app_with(mesh, settings);
     app.init_resource::<Lighting>().add_plugins(RasterPlugin);
@@ -354,7 +354,7 @@ fn the_software_view_follows_the_texture_as_it_changes_and_goes() {
 /// something changed, and its image has the viewport's size with the cube in the middle.
 #[test]
 fn the_raster_system_draws_when_asked_and_when_something_changed() {
-    let mut app = app_with(cube(), RenderSettings::default());
+    let mut app = app_with(cube(), PipelineSettings::default());
     app.init_resource::<Lighting>().add_plugins(RasterPlugin);
     camera_mut(&mut app).position = Vec3::new(0.0, 0.0, 6.0);
     let drawn = |app: &App| app.world().resource_ref::<SoftwareFrame>().last_changed();
@@ -398,10 +398,10 @@ fn the_raster_system_draws_when_asked_and_when_something_changed() {
 /// tick; the background redraws the software image alone), and switching the mode recomputes
 /// the frame in that same frame.
 /// The cube in front of the camera, Close2GL rasterizing in software; and those settings.
-fn software_cube() -> (App, RenderSettings) {
-    let software = RenderSettings {
+fn software_cube() -> (App, PipelineSettings) {
+    let software = PipelineSettings {
         close2gl_raster: Rasterizer::Software,
-        ..RenderSettings::default()
+        ..PipelineSettings::default()
     };
     let mut app = app_with(cube(), software);
     app.init_resource::<Lighting>().add_plugins(RasterPlugin);
@@ -412,10 +412,8 @@ fn software_cube() -> (App, RenderSettings) {
 #[test]
 fn a_reload_that_changes_only_the_background_recomputes_no_geometry() {
     let (mut app, software) = software_cube();
-    let mut config = Config {
-        render: software,
-        ..Config::default()
-    };
+    let mut config = Config::default();
+    config.render.pipeline = software;
     close2gl::apply_settings(app.world_mut(), &config);
     app.update();
     let computed = |app: &App| app.world().resource_ref::<Close2glFrame>().last_changed();
@@ -426,7 +424,7 @@ fn a_reload_that_changes_only_the_background_recomputes_no_geometry() {
     app.update();
     assert_eq!(computed(&app), geometry, "an unchanged reload: the frame");
     assert_eq!(drawn(&app), image, "an unchanged reload: the image");
-    config.render.background = Vec3::ONE;
+    config.render.appearance.background = Vec3::ONE;
     close2gl::apply_settings(app.world_mut(), &config);
     app.update();
     assert_eq!(
@@ -643,12 +641,7 @@ fn app_showing_one_trace(name: &str) -> App {
         width: 640,
         height: 480,
     };
-    let mut app = world_with(
-        cube(),
-        Camera::default(),
-        RenderSettings::default(),
-        viewport,
-    );
+    let mut app = world_with(cube(), Camera::default(), viewport);
     app.add_plugins(CameraPlugin)
         .add_plugins(Close2glPlugin)
         .add_plugins(close2gl_trace::TracePlugin);

@@ -123,7 +123,8 @@ fn check_ranges(config: &Config) {
     if let (Some(near), Some(far)) = (camera.near, camera.far) {
         assert!(near < far, "near {near} >= far {far}");
     }
-    for c in [config.render.color, config.render.background] {
+    let look = config.render.appearance;
+    for c in [look.color, look.background] {
         assert!(
             c.cmpge(Vec3::ZERO).all() && c.cmple(Vec3::ONE).all(),
             "colour {c}"

@@ -11,9 +11,9 @@ use arbitrary::Arbitrary;
 use close2gl_core::glam::{Vec2, Vec3};
 use close2gl_core::limits::FOV_RANGE;
 use close2gl_core::{
-    Camera, Clipping, Close2glFrame, FateCounts, Fates, FrontFace, Image, Lighting, Mesh, Overlay,
-    Rasterizer, RenderMode, RenderSettings, Shading, SoftwareFrame, Texture, TextureFilter,
-    Topology, Viewport,
+    Appearance, Camera, Clipping, Close2glFrame, FateCounts, Fates, FrontFace, Image, Lighting,
+    Mesh, Overlay, PipelineSettings, Rasterizer, RenderMode, Shading, SoftwareFrame, Texture,
+    TextureFilter, Topology, Viewport,
 };
 use close2gl_fuzz::{Num, vec3};
 use close2gl_pipeline::{FastPipeline, textbook};
@@ -108,8 +108,9 @@ fn pick<T: Copy>(all: &[T], i: u8) -> T {
     all[usize::from(i) % all.len()]
 }
 
-fn settings(s: &SettingsIn) -> RenderSettings {
-    RenderSettings {
+/// The pipeline's switches (the textbook, no mistake), the look and the overlay of one frame.
+fn settings(s: &SettingsIn) -> (PipelineSettings, Appearance, Overlay) {
+    let pipeline = PipelineSettings {
         mode: pick(RenderMode::ALL, s.mode),
         front_face: if s.cw { FrontFace::Cw } else { FrontFace::Ccw },
         backface_culling: s.culling,
@@ -118,18 +119,21 @@ fn settings(s: &SettingsIn) -> RenderSettings {
         } else {
             Clipping::Full
         },
-        color: vec3(s.color),
-        shading: pick(Shading::ALL, s.shading),
-        background: vec3(s.background),
         close2gl_raster: if s.software {
             Rasterizer::Software
         } else {
             Rasterizer::Gpu
         },
+        ..PipelineSettings::default()
+    };
+    let look = Appearance {
+        color: vec3(s.color),
+        shading: pick(Shading::ALL, s.shading),
+        background: vec3(s.background),
         texture: s.texture,
         texture_filter: pick(TextureFilter::ALL, s.filter),
-        overlay: pick(Overlay::ALL, s.overlay),
-    }
+    };
+    (pipeline, look, pick(Overlay::ALL, s.overlay))
 }
 
 fn mesh(input: &Input) -> Mesh {
@@ -265,7 +269,7 @@ fn bits(vertices: &[[f32; 2]]) -> Vec<[u32; 2]> {
     vertices.iter().map(|v| v.map(f32::to_bits)).collect()
 }
 
-fn check_frame(frame: &Close2glFrame, mesh: &Mesh, settings: &RenderSettings, sane: bool) {
+fn check_frame(frame: &Close2glFrame, mesh: &Mesh, settings: &PipelineSettings, sane: bool) {
     let counts = frame.counts;
     assert_eq!(counts.triangles_in, mesh.triangles.len(), "{counts:?}");
     assert_eq!(
@@ -324,12 +328,12 @@ fuzz_target!(|input: Input| {
     let mut image = SoftwareFrame::default();
     let frames = usize::from(input.frame_count % 3) + 1;
     for s in &input.frames[..frames] {
-        let settings = settings(s);
+        let (settings, look, overlay) = settings(s);
         // The inspector records fates while one of its overlays is shown.
-        fates.record = settings.overlay != Overlay::Off;
-        pipeline.run(&mesh, &camera, &settings.pipeline(), viewport, &mut frame, &mut fates);
+        fates.record = overlay != Overlay::Off;
+        pipeline.run(&mesh, &camera, &settings, viewport, &mut frame, &mut fates);
         let (expected, expected_fates) =
-            textbook::run_recording(&mesh, &camera, &settings.pipeline(), viewport);
+            textbook::run_recording(&mesh, &camera, &settings, viewport);
         assert_eq!(frame.counts, expected.counts);
         // Unrecorded, a frame asks none of the inspector's questions: no fates, no counts.
         if fates.record {
@@ -353,7 +357,7 @@ fuzz_target!(|input: Input| {
         if settings.close2gl_raster == Rasterizer::Software {
             rasterizer.set_texture(texture.as_ref());
             rasterizer.draw(
-                &frame, &camera, &settings.appearance(), &lighting, &mut image, &mut fates,
+                &frame, &camera, &look, &lighting, &mut image, &mut fates,
             );
             let image = &image.image;
             assert_eq!(

@@ -36,7 +36,7 @@ pub fn run(args: StatsArgs) -> Result<(), CliError> {
     let mut report = json!(frame.counts);
     report["bounds_px"] = json!(frame.bounds_px());
     report["fates"] = json!(app.world().resource::<Fates>().counts);
-    if config.render.close2gl_raster == Rasterizer::Software {
+    if config.render.pipeline.close2gl_raster == Rasterizer::Software {
         report["geometry_ms"] = json!(frame.geometry_ms);
         let image = app.world().resource::<SoftwareFrame>();
         report["raster_ms"] = json!(image.raster_ms);

@@ -127,6 +127,7 @@ pub fn model_color() -> [u8; 3] {
     let color = config::load(None, &[])
         .expect("the repository's config")
         .render
+        .appearance
         .color;
     color.to_array().map(|c| (c * 255.0).round() as u8)
 }
@@ -165,6 +166,7 @@ pub fn background_color() -> [u8; 3] {
     let color = config::load(None, &[])
         .expect("the repository's config")
         .render
+        .appearance
         .background;
     color.to_array().map(|c| (c * 255.0).round() as u8)
 }

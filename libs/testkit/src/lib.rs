@@ -13,21 +13,26 @@ pub mod panel;
 pub mod student;
 mod temp_dir;
 
+use close2gl_core::bevy_ecs::prelude::Resource;
 use close2gl_core::{
-    App, Camera, Lighting, Mesh, RecordFates, RenderSettings, SelectedTriangle, Viewport,
+    App, Appearance, Camera, Lighting, Mesh, Overlay, PipelineSettings, RecordFates,
+    SelectedTriangle, Viewport, insert_if_changed,
 };
 
 pub use big_model::{GridFile, write_grid_in, write_grid_obj};
 pub use meshes::{cube, sphere};
 pub use temp_dir::TempDir;
 
-/// An app whose world has `settings` (as its three resources), `viewport`, the default lighting, one `camera` and one
-/// `mesh` (what the settings plugin and a loaded model provide): add the plugins under test, then
-/// run frames.
-pub fn world_with(mesh: Mesh, camera: Camera, settings: RenderSettings, viewport: Viewport) -> App {
+/// An app whose world has the settings resources at their defaults (`PipelineSettings`,
+/// `Appearance`, `Overlay`: insert the ones a test changes), `viewport`, the default lighting,
+/// one `camera` and one `mesh` (what the settings plugin and a loaded model provide): add the
+/// plugins under test, then run frames.
+pub fn world_with(mesh: Mesh, camera: Camera, viewport: Viewport) -> App {
     let mut app = App::new();
-    settings.insert_into(app.world_mut());
-    app.insert_resource(viewport)
+    app.init_resource::<PipelineSettings>()
+        .init_resource::<Appearance>()
+        .init_resource::<Overlay>()
+        .insert_resource(viewport)
         .init_resource::<Lighting>()
         .init_resource::<SelectedTriangle>()
         .init_resource::<RecordFates>();
@@ -36,17 +41,15 @@ pub fn world_with(mesh: Mesh, camera: Camera, settings: RenderSettings, viewport
     app
 }
 
-/// The app's render settings as the configuration's one table.
-pub fn settings(app: &App) -> RenderSettings {
-    RenderSettings::of_world(app.world()).expect("the app has the render settings")
-}
-
-/// Changes the app's render settings as the configuration's one table: its three resources are
-/// set again, each marked changed, as a configuration applied is.
-pub fn change_settings(app: &mut App, change: impl FnOnce(&mut RenderSettings)) {
-    let mut table = settings(app);
-    change(&mut table);
-    table.insert_into(app.world_mut());
+/// Changes one of the app's settings resources as a configuration applied does: it is set
+/// again only when its value changed, so that only a real change wakes its readers.
+pub fn change_settings<R: Resource + PartialEq + Clone>(
+    app: &mut App,
+    change: impl FnOnce(&mut R),
+) {
+    let mut value = app.world().resource::<R>().clone();
+    change(&mut value);
+    insert_if_changed(app.world_mut(), value);
 }
 
 /// The app's one camera.

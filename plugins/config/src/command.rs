@@ -9,11 +9,11 @@
 use close2gl_core::bevy_ecs::world::World;
 use close2gl_core::{
     App, Camera, CommandLine, Lighting, ModelSource, ModelStatus, OutsideView, Plugin,
-    PrimitiveParams, RenderSettings, Texture, Viewport,
+    PrimitiveParams, Texture, Viewport,
 };
 
 use super::keys::{absolute, pixel_keys};
-use super::{CameraConfig, Config};
+use super::{CameraConfig, Config, RenderConfig};
 
 /// Puts [`of_world_command`] in the app as its `CommandLine`.
 pub struct CommandPlugin;
@@ -33,7 +33,7 @@ pub fn of_world(world: &mut World) -> Option<Config> {
         texture: world
             .get_resource::<Texture>()
             .and_then(|t| t.source.clone()),
-        render: RenderSettings::of_world(world)?,
+        render: RenderConfig::of_world(world)?,
         lighting: *world.get_resource::<Lighting>()?,
         // Only a primitive's own view depends on them.
         primitives: world

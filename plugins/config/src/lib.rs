@@ -14,11 +14,12 @@ mod load;
 use std::path::{Path, PathBuf};
 
 pub use close2gl_core::Layout;
+use close2gl_core::bevy_ecs::world::World;
 use close2gl_core::glam::Vec3;
 use close2gl_core::limits::DEFAULT_FOV;
 use close2gl_core::{
-    CameraMode, CameraSpeeds, InputBindings, Lighting, ModelSource, OutsideView, PrimitiveParams,
-    RenderSettings,
+    Appearance, CameraMode, CameraSpeeds, InputBindings, Lighting, ModelSource, OutsideView,
+    Overlay, PipelineSettings, PrimitiveParams, insert_if_changed,
 };
 
 pub use keys::parse_stage;
@@ -44,6 +45,34 @@ pub struct CameraConfig {
     pub speeds: CameraSpeeds,
 }
 
+/// `[render]`: read straight into the three resources the app holds, each for its own readers,
+/// so that applying it wakes only the readers of a part whose value changed.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct RenderConfig {
+    pub pipeline: PipelineSettings,
+    pub appearance: Appearance,
+    /// The inspector's display over both views.
+    pub overlay: Overlay,
+}
+
+impl RenderConfig {
+    /// Inserts each part that differs from what `world` holds.
+    pub fn insert_into(self, world: &mut World) {
+        insert_if_changed(world, self.pipeline);
+        insert_if_changed(world, self.appearance);
+        insert_if_changed(world, self.overlay);
+    }
+
+    /// The table `world` shows, `None` while one of its three resources is missing.
+    pub fn of_world(world: &World) -> Option<Self> {
+        Some(Self {
+            pipeline: *world.get_resource()?,
+            appearance: *world.get_resource()?,
+            overlay: *world.get_resource()?,
+        })
+    }
+}
+
 /// `[window]`.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct WindowConfig {
@@ -60,7 +89,7 @@ pub struct Config {
     /// texture coordinates; without it, such a model gets the course's checkerboard.
     pub texture: Option<PathBuf>,
     pub camera: CameraConfig,
-    pub render: RenderSettings,
+    pub render: RenderConfig,
     pub lighting: Lighting,
     pub primitives: PrimitiveParams,
     pub window: WindowConfig,
@@ -88,7 +117,7 @@ impl Default for Config {
                 mode: CameraMode::Free,
                 speeds: CameraSpeeds::default(),
             },
-            render: RenderSettings::default(),
+            render: RenderConfig::default(),
             lighting: Lighting::default(),
             primitives: PrimitiveParams::default(),
             // Two square 700-pixel views beside the panel: with hfov = vfov nothing is stretched.

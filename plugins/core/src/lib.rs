@@ -66,7 +66,7 @@ pub use reference_camera::camera_matrices;
 pub use schedule::{Close2glStep, FrameSet, LoadStep, OutputStep, Update};
 pub use settings::{
     Appearance, Clipping, FrontFace, Lighting, Mistake, Overlay, PipelineSettings, Rasterizer,
-    RenderMode, RenderSettings, Shading, TextureFilter, insert_if_changed,
+    RenderMode, Shading, TextureFilter, insert_if_changed,
 };
 pub use settings_plugin::SettingsPlugin;
 pub use texture::{Texture, checkerboard};

@@ -4,8 +4,8 @@
 
 use close2gl_core::glam::Vec3;
 use close2gl_core::{
-    App, Camera, Close2glFrame, FateKind, Fates, FrontFace, Mesh, Overlay, RecordFates, RenderMode,
-    RenderSettings, SelectedTriangle, Shading, TriangleFate, Viewport,
+    App, Appearance, Camera, Close2glFrame, FateKind, Fates, FrontFace, Mesh, Overlay,
+    PipelineSettings, RecordFates, RenderMode, SelectedTriangle, Shading, TriangleFate, Viewport,
 };
 use close2gl_gpu::{Gpu, OffscreenPlugin, Snapshot, render_offscreen};
 use close2gl_testkit::gpu;
@@ -36,10 +36,9 @@ fn scene() -> Mesh {
     }
 }
 
-/// The fate view's settings: the overlay on, flat colour.
-fn fate_view() -> RenderSettings {
-    RenderSettings {
-        overlay: Overlay::FateView,
+/// How the model looks under the fate view here: flat colour.
+fn flat() -> Appearance {
+    Appearance {
         shading: Shading::None,
         ..Default::default()
     }
@@ -48,13 +47,13 @@ fn fate_view() -> RenderSettings {
 /// Renders the scene with the fate view on, the fates recorded as `kinds` (what Close2GL's
 /// pipeline records; set here so that the view is tested on its own).
 fn render(kinds: [FateKind; 3]) -> (App, Snapshot) {
-    render_on(gpu(), fate_view(), scene(), kinds)
+    render_on(gpu(), PipelineSettings::default(), scene(), kinds)
 }
 
-/// [`render`] of `mesh` on `device` with `settings`.
+/// [`render`] of `mesh` on `device` with the pipeline's switches `pipeline`.
 fn render_on(
     device: Gpu,
-    settings: RenderSettings,
+    pipeline: PipelineSettings,
     mesh: Mesh,
     kinds: [FateKind; 3],
 ) -> (App, Snapshot) {
@@ -62,7 +61,7 @@ fn render_on(
         width: SIZE,
         height: SIZE,
     };
-    let mut app = close2gl_testkit::world_with(mesh, Camera::default(), settings, viewport);
+    let mut app = close2gl_testkit::world_with(mesh, Camera::default(), viewport);
     let fates = Fates {
         triangles: kinds
             .map(|kind| TriangleFate {
@@ -72,7 +71,10 @@ fn render_on(
             .to_vec(),
         ..Default::default()
     };
-    app.insert_resource(fates)
+    app.insert_resource(pipeline)
+        .insert_resource(flat())
+        .insert_resource(Overlay::FateView)
+        .insert_resource(fates)
         .init_resource::<Close2glFrame>()
         .add_plugins(OffscreenPlugin(device));
     let snapshot = render_offscreen(&mut app).expect("both views render");
@@ -126,10 +128,7 @@ fn close2gl_fills_each_triangle_in_its_fate_colour_and_outlines_what_clipping_re
 #[test]
 fn the_reference_shows_the_gpus_facing_and_its_depth_test_failures() {
     let (_, snapshot) = render([FateKind::Drawn; 3]);
-    let shaded = RenderSettings::default()
-        .color
-        .to_array()
-        .map(|c| c * 255.0);
+    let shaded = Appearance::default().color.to_array().map(|c| c * 255.0);
     let front = blend(shaded, FateKind::Drawn.color(), 0.6);
     let reference = &snapshot.reference;
     // Triangle 2 left of triangle 0: a front face that won the depth test.
@@ -154,7 +153,7 @@ fn the_reference_shows_the_gpus_facing_and_its_depth_test_failures() {
 #[test]
 fn without_polygon_modes_the_facing_overlay_takes_each_faces_own_facing() {
     let bare = close2gl_testkit::gpu_without_polygon_modes();
-    let shaded = fate_view().color.to_array().map(|c| c * 255.0);
+    let shaded = flat().color.to_array().map(|c| c * 255.0);
     let [front, back] =
         [FateKind::Drawn, FateKind::Culled].map(|kind| blend(shaded, kind.color(), 0.6));
     for mode in [RenderMode::Wireframe, RenderMode::Points] {
@@ -163,12 +162,12 @@ fn without_polygon_modes_the_facing_overlay_takes_each_faces_own_facing() {
             if front_face == FrontFace::Cw {
                 mesh.triangles.iter_mut().for_each(|t| t.swap(1, 2));
             }
-            let settings = RenderSettings {
+            let pipeline = PipelineSettings {
                 mode,
                 front_face,
-                ..fate_view()
+                ..Default::default()
             };
-            let (_, snapshot) = render_on(bare.clone(), settings, mesh, [FateKind::Drawn; 3]);
+            let (_, snapshot) = render_on(bare.clone(), pipeline, mesh, [FateKind::Drawn; 3]);
             let pixels = &snapshot.reference.pixels;
             let count = |colour| pixels.iter().filter(|p| near(rgb(**p), colour)).count();
             let (front, back) = (count(front), count(back));

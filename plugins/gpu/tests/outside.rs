@@ -2,7 +2,7 @@
 //! camera's own matrices project the near plane and the model must show them.
 
 use close2gl_core::glam::Vec3;
-use close2gl_core::{App, Camera, OutsideView, RenderSettings, Viewport};
+use close2gl_core::{App, Appearance, Camera, OutsideView, Viewport};
 use close2gl_gpu::outside::{OutsideRenderer, render_outside};
 use close2gl_gpu::{Image, OffscreenPlugin, render_offscreen};
 use close2gl_pipeline::Close2glPlugin;
@@ -27,13 +27,13 @@ fn scene() -> (App, Camera) {
     }
     .looking_at(Vec3::new(0.0, 0.0, 5.0), Vec3::ZERO, Vec3::Y)
     .expect("a valid pose");
-    let settings = RenderSettings {
-        color: MODEL,
-        ..RenderSettings::default()
-    };
     let mesh = sphere(Vec3::ZERO, 1.0, 48, 96);
-    let mut app = close2gl_testkit::world_with(mesh, camera, settings, SIZE);
-    app.insert_resource(OutsideView {
+    let mut app = close2gl_testkit::world_with(mesh, camera, SIZE);
+    app.insert_resource(Appearance {
+        color: MODEL,
+        ..Appearance::default()
+    })
+    .insert_resource(OutsideView {
         show: true,
         stage: 0.0,
     })

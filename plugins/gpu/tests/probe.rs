@@ -1,7 +1,7 @@
 //! The reference probe on a real adapter: the ID pass names the triangle the GPU drew at a pixel.
 
 use close2gl_core::glam::Vec3;
-use close2gl_core::{Camera, Mesh, RenderSettings, Scene, Viewport};
+use close2gl_core::{Camera, Mesh, PipelineSettings, Scene, Viewport};
 use close2gl_gpu::{ReferenceHit, probe_reference};
 use close2gl_testkit::gpu;
 
@@ -32,11 +32,11 @@ fn two_squares(near_is_back: bool) -> Mesh {
     }
 }
 
-fn probe(mesh: &Mesh, settings: &RenderSettings, pixel: (u32, u32)) -> Option<ReferenceHit> {
+fn probe(mesh: &Mesh, settings: &PipelineSettings, pixel: (u32, u32)) -> Option<ReferenceHit> {
     let scene = Scene {
         mesh,
         camera: &Camera::default(),
-        pipeline: &settings.pipeline(),
+        pipeline: settings,
         viewport: Viewport {
             width: 64,
             height: 64,
@@ -47,7 +47,7 @@ fn probe(mesh: &Mesh, settings: &RenderSettings, pixel: (u32, u32)) -> Option<Re
 
 #[test]
 fn the_probe_names_the_triangle_that_won_the_depth_test_and_none_on_the_background() {
-    let settings = RenderSettings::default();
+    let settings = PipelineSettings::default();
     let mesh = two_squares(false);
     // The middle: the near square covers the far one. Left of the middle only the far one.
     let near = probe(&mesh, &settings, (30, 29)).expect("the near square is drawn there");
@@ -60,7 +60,7 @@ fn the_probe_names_the_triangle_that_won_the_depth_test_and_none_on_the_backgrou
 
 #[test]
 fn the_probe_culls_as_the_reference_does_and_refuses_a_pixel_outside_the_viewport() {
-    let settings = RenderSettings {
+    let settings = PipelineSettings {
         backface_culling: true,
         ..Default::default()
     };
@@ -72,7 +72,7 @@ fn the_probe_culls_as_the_reference_does_and_refuses_a_pixel_outside_the_viewpor
     let scene = Scene {
         mesh: &two_squares(false),
         camera: &Camera::default(),
-        pipeline: &settings.pipeline(),
+        pipeline: &settings,
         viewport: Viewport {
             width: 64,
             height: 64,

@@ -9,8 +9,8 @@ use close2gl_core::parity::{
     CoverageComparison, ONLY_CLOSE2GL, ONLY_REFERENCE, coverage, diff_image, is_covered, to_rgb8,
 };
 use close2gl_core::{
-    App, Appearance, Camera, Clipping, FrontFace, Image, Mesh, Overlay, Rasterizer, RenderMode,
-    RenderSettings, Scene, Shading, Texture, TextureFilter, Viewport,
+    App, Appearance, Camera, Clipping, FrontFace, Image, Mesh, Overlay, PipelineSettings,
+    Rasterizer, RenderMode, Scene, Shading, Texture, TextureFilter, Viewport,
 };
 use close2gl_gpu::attachments::{READABLE_TARGET, texture_2d};
 use close2gl_gpu::{
@@ -20,19 +20,14 @@ use close2gl_gpu::{
 use close2gl_pipeline::Close2glPlugin;
 use close2gl_testkit::{gpu, sphere};
 
-fn app(mesh: Mesh, camera: Camera, settings: RenderSettings, viewport: Viewport) -> App {
-    app_on(gpu(), mesh, camera, settings, viewport)
+fn app(mesh: Mesh, camera: Camera, viewport: Viewport) -> App {
+    app_on(gpu(), mesh, camera, viewport)
 }
 
-/// The Close2GL pipeline and both views offscreen on `gpu`, over a world built by hand.
-fn app_on(
-    gpu: Gpu,
-    mesh: Mesh,
-    camera: Camera,
-    settings: RenderSettings,
-    viewport: Viewport,
-) -> App {
-    let mut app = close2gl_testkit::world_with(mesh, camera, settings, viewport);
+/// The Close2GL pipeline and both views offscreen on `gpu`, over a world built by hand with the
+/// default settings (a test inserts the ones it changes).
+fn app_on(gpu: Gpu, mesh: Mesh, camera: Camera, viewport: Viewport) -> App {
+    let mut app = close2gl_testkit::world_with(mesh, camera, viewport);
     app.add_plugins(Close2glPlugin)
         .add_plugins(OffscreenPlugin(gpu));
     app
@@ -80,20 +75,19 @@ fn check(case: &str, snapshot: &Snapshot, threshold: f64) -> CoverageComparison 
 fn a_framed_sphere_agrees_in_every_mode_and_front_face() {
     for mode in [RenderMode::Solid, RenderMode::Wireframe, RenderMode::Points] {
         for front_face in [FrontFace::Ccw, FrontFace::Cw] {
-            let settings = RenderSettings {
-                mode,
-                front_face,
-                ..Default::default()
-            };
             let mut app = app(
                 sphere(Vec3::ZERO, 1.0, 16, 32),
                 camera_at(Vec3::new(0.3, 0.5, 3.0), Vec3::ZERO),
-                settings,
                 Viewport {
                     width: 160,
                     height: 120,
                 },
             );
+            app.insert_resource(PipelineSettings {
+                mode,
+                front_face,
+                ..Default::default()
+            });
             let snapshot = render_offscreen(&mut app).expect("render");
             let threshold = if mode == RenderMode::Solid {
                 0.999
@@ -107,11 +101,10 @@ fn a_framed_sphere_agrees_in_every_mode_and_front_face() {
     }
 }
 
-fn framed_sphere(settings: RenderSettings, viewport: Viewport) -> App {
+fn framed_sphere(viewport: Viewport) -> App {
     app(
         sphere(Vec3::ZERO, 1.0, 16, 32),
         camera_at(Vec3::new(0.3, 0.5, 3.0), Vec3::ZERO),
-        settings,
         viewport,
     )
 }
@@ -126,11 +119,10 @@ fn a_model_behind_the_camera_leaves_both_views_background_and_scores_zero() {
     let mut app = app(
         sphere(Vec3::new(0.0, 0.0, 10.0), 1.0, 8, 16),
         camera_at(Vec3::ZERO, Vec3::new(0.0, 0.0, -1.0)),
-        RenderSettings::default(),
         SMALL,
     );
     let snapshot = render_offscreen(&mut app).expect("render");
-    let background = to_rgb8(RenderSettings::default().background);
+    let background = to_rgb8(Appearance::default().background);
     for image in [&snapshot.reference, &snapshot.close2gl] {
         assert_eq!((image.width, image.height), (160, 120));
         let uncovered = [background[0], background[1], background[2], 0];
@@ -158,11 +150,12 @@ fn colors(snapshot: &Snapshot) -> Vec<[u8; 4]> {
 #[test]
 fn shading_changes_colours_but_not_coverage() {
     let shot = |shading| {
-        let settings = RenderSettings {
+        let mut app = framed_sphere(SMALL);
+        app.insert_resource(Appearance {
             shading,
             ..Default::default()
-        };
-        let snapshot = render_offscreen(&mut framed_sphere(settings, SMALL)).expect("render");
+        });
+        let snapshot = render_offscreen(&mut app).expect("render");
         check(&format!("shading_{}", shading.name()), &snapshot, 0.999);
         snapshot
     };
@@ -171,7 +164,7 @@ fn shading_changes_colours_but_not_coverage() {
     let ads = shot(Shading::GouraudAds);
     let phong = shot(Shading::Phong);
     // Flat colour is exactly the user's colour.
-    let color = to_rgb8(RenderSettings::default().color);
+    let color = to_rgb8(Appearance::default().color);
     assert!(colors(&flat).iter().all(|p| p[..3] == color));
     // Same pixels covered in every mode, different colours.
     let (flat, ad, ads, phong) = (colors(&flat), colors(&ad), colors(&ads), colors(&phong));
@@ -198,7 +191,7 @@ fn shading_changes_colours_but_not_coverage() {
 
 #[test]
 fn the_mesh_is_uploaded_again_only_when_it_changes() {
-    let mut app = framed_sphere(RenderSettings::default(), SMALL);
+    let mut app = framed_sphere(SMALL);
     let first = render_offscreen(&mut app).expect("render");
     // Move the model behind change detection's back: the reference keeps the mesh it has (it
     // uploads on the mesh's change tick, not every frame).
@@ -225,7 +218,7 @@ fn the_mesh_is_uploaded_again_only_when_it_changes() {
 
 #[test]
 fn a_resize_changes_both_views_and_they_still_agree() {
-    let mut app = framed_sphere(RenderSettings::default(), SMALL);
+    let mut app = framed_sphere(SMALL);
     render_offscreen(&mut app).expect("render");
     *app.world_mut().resource_mut::<Viewport>() = Viewport {
         width: 97,
@@ -240,11 +233,11 @@ fn a_resize_changes_both_views_and_they_still_agree() {
 
 #[test]
 fn the_2d_buffer_grows_when_the_model_gets_bigger() {
-    let settings = RenderSettings {
+    let mut app = framed_sphere(SMALL);
+    app.insert_resource(PipelineSettings {
         mode: RenderMode::Wireframe,
         ..Default::default()
-    };
-    let mut app = framed_sphere(settings, SMALL);
+    });
     render_offscreen(&mut app).expect("render");
     let mut mesh = app
         .world_mut()
@@ -259,7 +252,7 @@ fn the_2d_buffer_grows_when_the_model_gets_bigger() {
 
 #[test]
 fn a_viewport_larger_than_the_adapter_allows_is_an_error_not_a_panic() {
-    let mut app = framed_sphere(RenderSettings::default(), SMALL);
+    let mut app = framed_sphere(SMALL);
     let max = gpu().device.limits().max_texture_dimension_2d;
     *app.world_mut().resource_mut::<Viewport>() = Viewport {
         width: max + 1,
@@ -291,13 +284,13 @@ fn without_polygon_modes_the_views_say_what_they_draw_instead() {
     assert!(limitations.contains("POLYGON_MODE_LINE"), "{limitations}");
     assert!(limitations.contains("POLYGON_MODE_POINT"), "{limitations}");
     for mode in [RenderMode::Wireframe, RenderMode::Points] {
-        let settings = RenderSettings {
-            mode,
-            ..Default::default()
-        };
         let camera = camera_at(Vec3::new(0.3, 0.5, 3.0), Vec3::ZERO);
         let sphere = sphere(Vec3::ZERO, 1.0, 16, 32);
-        let mut app = app_on(bare.clone(), sphere, camera, settings, SMALL);
+        let mut app = app_on(bare.clone(), sphere, camera, SMALL);
+        app.insert_resource(PipelineSettings {
+            mode,
+            ..Default::default()
+        });
         let snapshot = render_offscreen(&mut app).expect("render");
         let covered = coverage(&snapshot.reference)
             .into_iter()
@@ -323,18 +316,19 @@ fn without_polygon_modes_the_probe_hits_what_the_reference_draws() {
     let camera = camera_at(Vec3::new(0.3, 0.5, 3.0), Vec3::ZERO);
     let mesh = sphere(Vec3::ZERO, 1.0, 8, 16);
     for mode in [RenderMode::Wireframe, RenderMode::Points] {
-        let settings = RenderSettings {
+        let pipeline = PipelineSettings {
             mode,
             backface_culling: true,
             ..Default::default()
         };
-        let mut app = app_on(bare.clone(), mesh.clone(), camera, settings, viewport);
+        let mut app = app_on(bare.clone(), mesh.clone(), camera, viewport);
+        app.insert_resource(pipeline);
         let snapshot = render_offscreen(&mut app).expect("render");
         let covered = coverage(&snapshot.reference);
         let scene = Scene {
             mesh: &mesh,
             camera: &camera,
-            pipeline: &settings.pipeline(),
+            pipeline: &pipeline,
             viewport,
         };
         let (mut hits, mut misses) = (0, 0);
@@ -395,18 +389,12 @@ fn drawn_at(app: &App, origin: (u32, u32), reference: bool) -> Vec<[u8; 4]> {
 #[test]
 fn without_polygon_modes_lines_are_the_same_wherever_the_view_is_placed() {
     let bare = close2gl_testkit::gpu_without_polygon_modes();
-    let settings = RenderSettings {
+    let camera = camera_at(Vec3::new(0.3, 0.5, 3.0), Vec3::ZERO);
+    let mut app = app_on(bare, sphere(Vec3::ZERO, 1.0, 8, 16), camera, SMALL);
+    app.insert_resource(PipelineSettings {
         mode: RenderMode::Wireframe,
         ..Default::default()
-    };
-    let camera = camera_at(Vec3::new(0.3, 0.5, 3.0), Vec3::ZERO);
-    let mut app = app_on(
-        bare,
-        sphere(Vec3::ZERO, 1.0, 8, 16),
-        camera,
-        settings,
-        SMALL,
-    );
+    });
     render_offscreen(&mut app).expect("render");
     for reference in [true, false] {
         let at_corner = drawn_at(&app, (0, 0), reference);
@@ -438,14 +426,14 @@ fn quad(corners: [Vec3; 4], repeat: f32) -> Mesh {
 
 /// White, unlit, textured with the course's checkerboard through `filter`.
 fn textured_app(mesh: Mesh, camera: Camera, filter: TextureFilter, viewport: Viewport) -> App {
-    let settings = RenderSettings {
+    let mut app = app(mesh, camera, viewport);
+    app.insert_resource(Appearance {
         color: Vec3::ONE,
         shading: Shading::None,
         texture_filter: filter,
         ..Default::default()
-    };
-    let mut app = app(mesh, camera, settings, viewport);
-    app.init_resource::<Texture>();
+    })
+    .init_resource::<Texture>();
     app
 }
 
@@ -590,17 +578,19 @@ fn the_filters_differ_on_a_grazing_floor_and_trilinear_calms_the_far_half() {
 fn the_live_difference_is_the_render_commands_diff_image() {
     // Close enough that the sphere crosses the border, where simple clipping drops whole
     // triangles that the GPU still draws.
-    let settings = RenderSettings {
-        clipping: Clipping::Simple,
-        shading: Shading::Phong,
-        ..Default::default()
-    };
     let mut app = app(
         sphere(Vec3::ZERO, 1.0, 16, 32),
         camera_at(Vec3::new(0.3, 0.5, 1.6), Vec3::ZERO),
-        settings,
         SMALL,
     );
+    app.insert_resource(PipelineSettings {
+        clipping: Clipping::Simple,
+        ..Default::default()
+    })
+    .insert_resource(Appearance {
+        shading: Shading::Phong,
+        ..Default::default()
+    });
     let plain = render_offscreen(&mut app).expect("both views render");
     *app.world_mut().resource_mut::<Overlay>() = Overlay::Difference;
     let live = render_offscreen(&mut app).expect("the difference renders");
@@ -636,17 +626,18 @@ fn painted(live: &Snapshot) -> usize {
 /// difference paints nothing. `check_skew` says the skew took: it gets the reference's pixel and
 /// Close2GL's at a covered `(true)` or uncovered `(false)` place.
 fn assert_a_skew_changes_no_coverage(
-    settings: RenderSettings,
+    look: Appearance,
     skew: ReferenceSkew,
     check_skew: impl Fn(bool, [u8; 4], [u8; 4]),
 ) {
     for rasterizer in Rasterizer::ALL.iter().copied() {
-        let settings = RenderSettings {
-            close2gl_raster: rasterizer,
-            ..settings
-        };
-        let mut app = framed_sphere(settings, SMALL);
+        let mut app = framed_sphere(SMALL);
         app.add_plugins(close2gl_raster::RasterPlugin)
+            .insert_resource(PipelineSettings {
+                close2gl_raster: rasterizer,
+                ..Default::default()
+            })
+            .insert_resource(look)
             .insert_resource(skew);
         let snapshot = render_offscreen(&mut app).expect("render");
         let covered = coverage(&snapshot.close2gl);
@@ -683,7 +674,7 @@ fn a_reference_background_one_step_away_changes_no_coverage() {
             background: steps,
             color: 0,
         };
-        assert_a_skew_changes_no_coverage(RenderSettings::default(), skew, |covered, r, c| {
+        assert_a_skew_changes_no_coverage(Appearance::default(), skew, |covered, r, c| {
             if !covered {
                 let moved = [0, 1, 2].map(|k| i32::from(r[k]) - i32::from(c[k]));
                 assert_eq!(moved, [steps; 3], "the reference's background moved");
@@ -697,7 +688,7 @@ fn a_reference_background_one_step_away_changes_no_coverage() {
 #[test]
 fn a_model_in_the_backgrounds_colour_is_covered() {
     let background = Vec3::new(20.0, 20.0, 26.0) / 255.0;
-    let settings = RenderSettings {
+    let look = Appearance {
         color: background + Vec3::splat(1.0 / 255.0),
         background,
         ..Default::default()
@@ -706,7 +697,7 @@ fn a_model_in_the_backgrounds_colour_is_covered() {
         background: 0,
         color: -1,
     };
-    assert_a_skew_changes_no_coverage(settings, skew, |covered, r, c| {
+    assert_a_skew_changes_no_coverage(look, skew, |covered, r, c| {
         if covered {
             assert_eq!(
                 r[..3],

@@ -332,9 +332,12 @@ mod tests {
     #[test]
     fn phong_shaded_after_the_depth_test_or_queued_is_phong_shaded_as_fragments_pass() {
         let (mesh, camera) = scene();
-        let settings = close2gl_core::RenderSettings {
-            shading: Shading::Phong,
+        let pipeline = close2gl_core::PipelineSettings {
             close2gl_raster: close2gl_core::Rasterizer::Software,
+            ..Default::default()
+        };
+        let look = close2gl_core::Appearance {
+            shading: Shading::Phong,
             ..Default::default()
         };
         let lighting = Lighting::default();
@@ -346,23 +349,16 @@ mod tests {
         FastPipeline::default().run(
             &mesh,
             &camera,
-            &settings.pipeline(),
+            &pipeline,
             viewport,
             &mut geometry,
             &mut fates,
         );
         let mut rasterizer = SoftwareRasterizer::default();
         let mut image = SoftwareFrame::default();
-        rasterizer.draw(
-            &geometry,
-            &camera,
-            &settings.appearance(),
-            &lighting,
-            &mut image,
-            &mut fates,
-        );
+        rasterizer.draw(&geometry, &camera, &look, &lighting, &mut image, &mut fates);
         let drawn = rasterizer.target.color.clone();
-        let background = pack_background(settings.background);
+        let background = pack_background(look.background);
         let covered = drawn.iter().filter(|&&c| c != background).count();
         assert!(
             covered > drawn.len() / 2,
@@ -381,7 +377,7 @@ mod tests {
         let light = Light::new(&lighting, light_eye, Shading::Phong);
         let shader = Shaded {
             colour: Phong {
-                color: settings.color,
+                color: look.color,
                 light,
             },
             texturing: Untextured,

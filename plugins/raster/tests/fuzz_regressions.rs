@@ -2,7 +2,9 @@
 //! panicked in the software rasterizer.
 
 use close2gl_core::glam::Vec3;
-use close2gl_core::{Camera, Mesh, Rasterizer, RenderMode, RenderSettings, Shading, Viewport};
+use close2gl_core::{
+    Appearance, Camera, Mesh, PipelineSettings, Rasterizer, RenderMode, Shading, Viewport,
+};
 
 mod common;
 use common::{Drawing, Scene};
@@ -16,15 +18,18 @@ fn draw_every_mode(mesh: &Mesh, camera: &Camera, viewport: Viewport) {
         ..Scene::new(mesh, viewport, None)
     };
     for mode in RenderMode::ALL {
-        let settings = RenderSettings {
+        let pipeline = PipelineSettings {
             mode: *mode,
             backface_culling: false,
             close2gl_raster: Rasterizer::Software,
+            ..PipelineSettings::default()
+        };
+        let look = Appearance {
             shading: Shading::Phong,
-            ..RenderSettings::default()
+            ..Appearance::default()
         };
         let mut drawing = Drawing::default();
-        drawing.draw(&scene, &settings, false);
+        drawing.draw(&scene, &pipeline, &look, false);
         let image = drawing.image.image.clone();
         let pixels = (viewport.width * viewport.height) as usize;
         assert_eq!(image.pixels.len(), pixels, "{mode:?}");
@@ -35,7 +40,7 @@ fn draw_every_mode(mesh: &Mesh, camera: &Camera, viewport: Viewport) {
             "{mode:?}: {c:?}"
         );
         assert_eq!(c.triangles_in, mesh.triangles.len(), "{mode:?}");
-        drawing.draw(&scene, &settings, true);
+        drawing.draw(&scene, &pipeline, &look, true);
         assert_eq!(
             drawing.image.image, image,
             "{mode:?}: drawn again, recording fates"

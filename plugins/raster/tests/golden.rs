@@ -11,8 +11,8 @@
 use TextureFilter::Nearest;
 use close2gl_core::glam::{Vec2, Vec3};
 use close2gl_core::{
-    Clipping, Mesh, Rasterizer, RenderMode, RenderSettings, Shading, SoftwareFrame, Texture,
-    TextureFilter, Viewport,
+    Appearance, Clipping, Mesh, PipelineSettings, Rasterizer, RenderMode, Shading, SoftwareFrame,
+    Texture, TextureFilter, Viewport,
 };
 use close2gl_raster::textbook;
 
@@ -107,22 +107,31 @@ fn grid_triangles(mesh: &mut Mesh, first: u32, rows: u32, columns: u32) {
 /// One pinned scene: its name, settings, whether fates are recorded, and its hash.
 struct Pinned {
     name: &'static str,
-    settings: RenderSettings,
+    pipeline: PipelineSettings,
+    look: Appearance,
     record: bool,
     hash: u64,
 }
 
-fn scene(name: &'static str, hash: u64, change: impl FnOnce(&mut RenderSettings)) -> Pinned {
-    let mut settings = RenderSettings {
+fn scene(
+    name: &'static str,
+    hash: u64,
+    change: impl FnOnce(&mut PipelineSettings, &mut Appearance),
+) -> Pinned {
+    let mut pipeline = PipelineSettings {
         backface_culling: false,
         close2gl_raster: Rasterizer::Software,
-        texture: false,
-        ..RenderSettings::default()
+        ..PipelineSettings::default()
     };
-    change(&mut settings);
+    let mut look = Appearance {
+        texture: false,
+        ..Appearance::default()
+    };
+    change(&mut pipeline, &mut look);
     Pinned {
         name,
-        settings,
+        pipeline,
+        look,
         record: false,
         hash,
     }
@@ -132,17 +141,19 @@ fn pinned() -> Vec<Pinned> {
     use Shading::*;
     use TextureFilter::{Bilinear, Trilinear};
     let textured = |filter, shading| {
-        move |s: &mut RenderSettings| {
-            (s.texture, s.texture_filter, s.shading) = (true, filter, shading);
+        move |_: &mut PipelineSettings, a: &mut Appearance| {
+            (a.texture, a.texture_filter, a.shading) = (true, filter, shading);
         }
     };
     vec![
-        scene("flat", 0xd8e00aecbfd29fec, |s| s.shading = None),
-        scene("gouraud_ad", 0x83c0bcd0767a71ca, |s| s.shading = GouraudAd),
-        scene("gouraud_ads", 0xee6d31d5217f4073, |s| {
-            s.shading = GouraudAds
+        scene("flat", 0xd8e00aecbfd29fec, |_, a| a.shading = None),
+        scene("gouraud_ad", 0x83c0bcd0767a71ca, |_, a| {
+            a.shading = GouraudAd
         }),
-        scene("phong", 0xf5541036dd9fc8aa, |s| s.shading = Phong),
+        scene("gouraud_ads", 0xee6d31d5217f4073, |_, a| {
+            a.shading = GouraudAds
+        }),
+        scene("phong", 0xf5541036dd9fc8aa, |_, a| a.shading = Phong),
         scene("nearest_flat", 0x66ecde7546c4c498, textured(Nearest, None)),
         scene(
             "bilinear_gouraud",
@@ -159,14 +170,14 @@ fn pinned() -> Vec<Pinned> {
             0xcd715d8494b20ab5,
             textured(Trilinear, None),
         ),
-        scene("wireframe_phong", 0xee515db2d113d56f, |s| {
-            (s.mode, s.shading) = (RenderMode::Wireframe, Phong)
+        scene("wireframe_phong", 0xee515db2d113d56f, |p, a| {
+            (p.mode, a.shading) = (RenderMode::Wireframe, Phong)
         }),
-        scene("points_gouraud", 0x511497eb377956ea, |s| {
-            (s.mode, s.shading) = (RenderMode::Points, GouraudAd)
+        scene("points_gouraud", 0x511497eb377956ea, |p, a| {
+            (p.mode, a.shading) = (RenderMode::Points, GouraudAd)
         }),
-        scene("simple_clipping_culled", 0xb8520e7fa636e859, |s| {
-            (s.clipping, s.backface_culling, s.shading) = (Clipping::Simple, true, Phong)
+        scene("simple_clipping_culled", 0xb8520e7fa636e859, |p, a| {
+            (p.clipping, p.backface_culling, a.shading) = (Clipping::Simple, true, Phong)
         }),
         Pinned {
             record: true,
@@ -178,8 +189,8 @@ fn pinned() -> Vec<Pinned> {
         },
         Pinned {
             record: true,
-            ..scene("recorded_wireframe", 0xc6d8d5d9c3d680dd, |s| {
-                s.mode = RenderMode::Wireframe
+            ..scene("recorded_wireframe", 0xc6d8d5d9c3d680dd, |p, _| {
+                p.mode = RenderMode::Wireframe
             })
         },
     ]
@@ -204,7 +215,7 @@ fn draw_pinned(scene: &Scene<'_>, pinned: &[Pinned]) -> Vec<u64> {
     let mut drawing = Drawing::default();
     let mut hashes = Vec::new();
     for p in pinned {
-        drawing.draw(scene, &p.settings, p.record);
+        drawing.draw(scene, &p.pipeline, &p.look, p.record);
         assert!(drawing.frame.counts.drawn > 0, "{}: nothing drawn", p.name);
         hashes.push(hash(&drawing, scene.viewport, p.record));
     }
@@ -292,16 +303,16 @@ fn the_textbook_covers_the_fast_rasterizers_pixels_and_agrees_within_rounding() 
     with_scene(|scene| {
         let mut drawing = Drawing::default();
         for p in &pinned() {
-            drawing.draw(scene, &p.settings, true);
+            drawing.draw(scene, &p.pipeline, &p.look, true);
             let textbook = textbook::draw(
                 &drawing.frame,
                 &scene.camera,
-                &p.settings.appearance(),
+                &p.look,
                 &scene.lighting,
                 scene.texture,
             );
             let d = differences(&drawing, &textbook);
-            let nearest = p.settings.texture && p.settings.texture_filter == Nearest;
+            let nearest = p.look.texture && p.look.texture_filter == Nearest;
             wrong.extend(d.wrong(nearest).map(|why| format!("{}: {why}", p.name)));
         }
     });
@@ -380,9 +391,9 @@ fn the_pinned_scenes_are_not_blank() {
     with_scene(|scene| {
         for p in pinned() {
             let mut drawing = Drawing::default();
-            drawing.draw(scene, &p.settings, p.record);
+            drawing.draw(scene, &p.pipeline, &p.look, p.record);
             let colours = distinct_colours(&drawing.image);
-            let s = &p.settings;
+            let s = &p.look;
             // Flat colour: the model's and the background (and a checker's two squares,
             // unfiltered).
             let flat = s.shading == Shading::None && (!s.texture || s.texture_filter == Nearest);

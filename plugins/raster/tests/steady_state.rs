@@ -6,7 +6,9 @@ use std::alloc::{GlobalAlloc, Layout, System};
 use std::sync::atomic::{AtomicUsize, Ordering};
 
 use close2gl_core::glam::Vec3;
-use close2gl_core::{Clipping, Mesh, Rasterizer, RenderMode, RenderSettings, Shading, Viewport};
+use close2gl_core::{
+    Appearance, Clipping, Mesh, PipelineSettings, Rasterizer, RenderMode, Shading, Viewport,
+};
 
 mod common;
 use common::{Drawing, Scene};
@@ -105,7 +107,12 @@ fn steady_frames() {
     let scene = Scene::new(&mesh, viewport, Some(&texture));
     let mut drawing = Drawing::default();
     let before = ALLOCATIONS.load(Ordering::SeqCst);
-    drawing.draw(&scene, &RenderSettings::default(), false);
+    drawing.draw(
+        &scene,
+        &PipelineSettings::default(),
+        &Appearance::default(),
+        false,
+    );
     assert!(
         ALLOCATIONS.load(Ordering::SeqCst) > before,
         "the counter sees a first frame's buffers"
@@ -121,15 +128,19 @@ fn steady_frames() {
         .flat_map(|record| every.clone().map(move |every| (record, every)))
     {
         for mode in [RenderMode::Solid, RenderMode::Wireframe, RenderMode::Points] {
-            let settings = RenderSettings {
+            let pipeline = PipelineSettings {
                 mode,
                 clipping: Clipping::Full,
                 backface_culling: false,
                 close2gl_raster,
-                shading,
-                ..RenderSettings::default()
+                ..PipelineSettings::default()
             };
-            let allocated = steady_frame_allocations(&mut drawing, &scene, &settings, record);
+            let look = Appearance {
+                shading,
+                ..Appearance::default()
+            };
+            let allocated =
+                steady_frame_allocations(&mut drawing, &scene, &pipeline, &look, record);
             assert_eq!(
                 allocated, 0,
                 "{close2gl_raster:?} {shading:?} {mode:?} recording {record}: a steady frame allocated {allocated} times"
@@ -138,19 +149,20 @@ fn steady_frames() {
     }
 }
 
-/// How many times the third frame of `settings` allocates: two warm-up frames size every
+/// How many times the third frame of `pipeline` and `look` allocates: two warm-up frames size every
 /// buffer (and start rayon's pool).
 fn steady_frame_allocations(
     drawing: &mut Drawing,
     scene: &Scene<'_>,
-    settings: &RenderSettings,
+    pipeline: &PipelineSettings,
+    look: &Appearance,
     record: bool,
 ) -> usize {
-    drawing.draw(scene, settings, record);
-    drawing.draw(scene, settings, record);
+    drawing.draw(scene, pipeline, look, record);
+    drawing.draw(scene, pipeline, look, record);
     let counts = drawing.frame.counts;
     assert!(counts.clipped > 0 && counts.drawn > 0, "{counts:?}");
     let before = ALLOCATIONS.load(Ordering::SeqCst);
-    drawing.draw(scene, settings, record);
+    drawing.draw(scene, pipeline, look, record);
     ALLOCATIONS.load(Ordering::SeqCst) - before
 }

@@ -117,7 +117,7 @@ mod tests {
     fn a_link_written_against_the_page_config_reads_back_to_the_same_view() {
         let mut config = config_with(&["render.clipping=\"simple\"".into()]).unwrap();
         // Back to a built-in default that the page's config.toml changes: still in the link.
-        config.render.shading = close2gl_core::Shading::None;
+        config.render.appearance.shading = close2gl_core::Shading::None;
         config.camera.hfov = 45.0;
         let settings = close2gl_config::keys::pixel_keys_from(&config, base_config());
         let fragment = link::write("cube.in", &settings);

@@ -115,12 +115,12 @@ fn scene(app: &mut App) -> Result<(Mesh, Camera), CliError> {
 fn geometry(args: &BenchArgs, pool: &rayon::ThreadPool) -> Result<serde_json::Value, CliError> {
     let mut config = scene_config(args, Some(args.triangles.unwrap_or(1_000_000)))?;
     // The stage the issue measures: solid triangles through full clipping.
-    config.render.mode = RenderMode::Solid;
-    config.render.clipping = Clipping::Full;
+    config.render.pipeline.mode = RenderMode::Solid;
+    config.render.pipeline.clipping = Clipping::Full;
     let viewport = viewport(args.size.as_deref(), &config)?;
     let mut app = close2gl_app::build_app(&config, viewport).map_err(CliError::Input)?;
     let (mesh, camera) = &scene(&mut app)?;
-    let settings = config.render.pipeline();
+    let settings = config.render.pipeline;
     let mut pipeline = FastPipeline::default();
     let mut frame = Close2glFrame::default();
     let mut fates = Default::default();

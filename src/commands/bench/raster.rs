@@ -3,8 +3,8 @@
 //! fill rate on a screen of large triangles.
 
 use close2gl_core::{
-    Camera, Close2glFrame, Fates, Lighting, Mesh, Rasterizer, RenderSettings, SoftwareFrame,
-    Texture, Viewport,
+    Appearance, Camera, Close2glFrame, Fates, Lighting, Mesh, PipelineSettings, Rasterizer,
+    SoftwareFrame, Texture, Viewport,
 };
 use close2gl_gpu::{Gpu, OffscreenPlugin, render_offscreen};
 use close2gl_pipeline::FastPipeline;
@@ -23,7 +23,7 @@ pub fn frame(args: &BenchArgs, pool: &rayon::ThreadPool) -> Result<Value, CliErr
         true => scene_config(args, Some(12))?,
         false => scene_config(args, args.triangles)?,
     };
-    config.render.close2gl_raster = Rasterizer::Software;
+    config.render.pipeline.close2gl_raster = Rasterizer::Software;
     let viewport = viewport(args.size.as_deref(), &config)?;
     let mut app = close2gl_app::build_app(&config, viewport).map_err(CliError::Input)?;
     if args.grid {
@@ -35,7 +35,8 @@ pub fn frame(args: &BenchArgs, pool: &rayon::ThreadPool) -> Result<Value, CliErr
     software.set_texture(app.world().get_resource::<Texture>());
     let software_ms = pool.install(|| {
         median_ms(args.frames, || {
-            software.frame(&mesh, &camera, &config.render, &config.lighting, viewport)
+            let (pipeline, look) = (&config.render.pipeline, &config.render.appearance);
+            software.frame(&mesh, &camera, pipeline, look, &config.lighting, viewport)
         })
     });
     let reference = reference_ms(&mut app, args.frames);
@@ -48,10 +49,10 @@ pub fn frame(args: &BenchArgs, pool: &rayon::ThreadPool) -> Result<Value, CliErr
         "model": mesh.name,
         "triangles": mesh.triangles.len(),
         "size": [viewport.width, viewport.height],
-        "mode": config.render.mode.name(),
-        "shading": config.render.shading.name(),
-        "texture": (config.render.texture && !mesh.uvs.is_empty())
-            .then(|| config.render.texture_filter.name()),
+        "mode": config.render.pipeline.mode.name(),
+        "shading": config.render.appearance.shading.name(),
+        "texture": (config.render.appearance.texture && !mesh.uvs.is_empty())
+            .then(|| config.render.appearance.texture_filter.name()),
         "frames": args.frames,
         "threads": pool.current_num_threads(),
         "software_median_ms": software_ms,
@@ -68,13 +69,16 @@ pub fn fill(args: &BenchArgs, pool: &rayon::ThreadPool) -> Result<Value, CliErro
     const LAYERS: usize = 8;
     let config = args.scene.config()?;
     let viewport = viewport(args.size.as_deref().or(Some("1920x1080")), &config)?;
-    let mut settings = config.render;
-    settings.close2gl_raster = Rasterizer::Software;
+    let pipeline = PipelineSettings {
+        close2gl_raster: Rasterizer::Software,
+        ..config.render.pipeline
+    };
+    let look = config.render.appearance;
     let (mesh, camera) = layers(LAYERS);
     let mut software = SoftwareTimer::default();
     let ms = pool.install(|| {
         median_ms(args.frames, || {
-            software.frame(&mesh, &camera, &settings, &config.lighting, viewport)
+            software.frame(&mesh, &camera, &pipeline, &look, &config.lighting, viewport)
         })
     });
     let pixels = (viewport.width * viewport.height) as f64 * LAYERS as f64;
@@ -83,7 +87,7 @@ pub fn fill(args: &BenchArgs, pool: &rayon::ThreadPool) -> Result<Value, CliErro
         "size": [viewport.width, viewport.height],
         "layers": LAYERS,
         "triangles": mesh.triangles.len(),
-        "shading": settings.shading.name(),
+        "shading": look.shading.name(),
         "frames": args.frames,
         "threads": pool.current_num_threads(),
         "median_ms": ms,
@@ -113,14 +117,15 @@ impl SoftwareTimer {
         &mut self,
         mesh: &Mesh,
         camera: &Camera,
-        settings: &RenderSettings,
+        pipeline: &PipelineSettings,
+        look: &Appearance,
         lighting: &Lighting,
         viewport: Viewport,
     ) {
         self.pipeline.run(
             mesh,
             camera,
-            &settings.pipeline(),
+            pipeline,
             viewport,
             &mut self.geometry,
             &mut self.fates,
@@ -128,7 +133,7 @@ impl SoftwareTimer {
         self.rasterizer.draw(
             &self.geometry,
             camera,
-            &settings.appearance(),
+            look,
             lighting,
             &mut self.image,
             &mut self.fates,

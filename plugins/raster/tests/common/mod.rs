@@ -3,8 +3,8 @@
 //! from frame to frame as the app keeps them.
 
 use close2gl_core::{
-    Camera, Close2glFrame, Fates, Lighting, Mesh, Rasterizer, RenderSettings, SoftwareFrame,
-    Texture, Viewport,
+    Appearance, Camera, Close2glFrame, Fates, Lighting, Mesh, PipelineSettings, Rasterizer,
+    SoftwareFrame, Texture, Viewport,
 };
 use close2gl_pipeline::FastPipeline;
 use close2gl_raster::SoftwareRasterizer;
@@ -49,13 +49,20 @@ pub struct Drawing {
 }
 
 impl Drawing {
-    /// One frame of `scene` with `settings`, recording fates when `record`.
-    pub fn draw(&mut self, scene: &Scene<'_>, settings: &RenderSettings, record: bool) {
+    /// One frame of `scene` with the pipeline's switches `pipeline` and the look `look`,
+    /// recording fates when `record`.
+    pub fn draw(
+        &mut self,
+        scene: &Scene<'_>,
+        pipeline: &PipelineSettings,
+        look: &Appearance,
+        record: bool,
+    ) {
         self.fates.record = record;
         self.pipeline.run(
             scene.mesh,
             &scene.camera,
-            &settings.pipeline(),
+            pipeline,
             scene.viewport,
             &mut self.frame,
             &mut self.fates,
@@ -64,11 +71,11 @@ impl Drawing {
             self.texture = scene.texture.cloned();
             self.rasterizer.set_texture(scene.texture);
         }
-        if settings.close2gl_raster == Rasterizer::Software {
+        if pipeline.close2gl_raster == Rasterizer::Software {
             self.rasterizer.draw(
                 &self.frame,
                 &scene.camera,
-                &settings.appearance(),
+                look,
                 &scene.lighting,
                 &mut self.image,
                 &mut self.fates,
