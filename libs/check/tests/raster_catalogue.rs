@@ -242,7 +242,7 @@ fn draw(
     let triangles: Vec<([Corner; 3], u32)> = (trace.triangles.iter())
         .map(|t| {
             let c = t.corners.map(|c| Corner {
-                window: c.window.map(|x| x as f32),
+                window: c.window,
                 rgb: c.rgb.map(|x| x as f32),
                 eye: c.eye.map(|x| x as f32),
                 normal: c.normal.map(|x| x as f32),

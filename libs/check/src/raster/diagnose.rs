@@ -40,14 +40,15 @@ pub struct Judge<'a> {
     pub input: &'a RasterFrame,
     pub redraw: Redraw<'a>,
     pub ties: Vec<bool>,
-    pub background: [u8; 4],
+    /// The bytes the background may be written as (`facts::backgrounds`).
+    pub background: Vec<[u8; 4]>,
     pub allowance: Allowance,
 }
 
 impl Judge<'_> {
     pub fn attempt(&self, rules: RasterRules, mistakes: RasterMistakes) -> Attempt {
         let drawn = self.redraw.draw(rules, mistakes);
-        let facts = compare(self.input, &drawn, &self.ties, self.background);
+        let facts = compare(self.input, &drawn, &self.ties, &self.background);
         Attempt {
             rules,
             mistakes,
@@ -59,6 +60,13 @@ impl Judge<'_> {
         attempt.facts.agree(self.allowance)
     }
 
+    /// Whether a mistaken drawing reproduces the trace where close2gl's rules (`legal`) do not:
+    /// within the tolerance where they are outside it; exactly where they are only within it (a
+    /// texture's tolerance would otherwise hide a mistake that changes few pixels).
+    fn reproduces(&self, attempt: &Attempt, legal: &Attempt) -> bool {
+        self.agrees(attempt) && (!self.agrees(legal) || attempt.facts.exact())
+    }
+
     /// The search.
     pub fn diagnose(&self) -> Diagnosis {
         let (reference, legal, closest) = self.legal_rules();
@@ -68,7 +76,7 @@ impl Judge<'_> {
             named: Vec::new(),
             nearest: Vec::new(),
         };
-        if self.agrees(&legal) {
+        if self.agrees(&legal) && legal.facts.exact() {
             return diagnosis;
         }
         // A mistake made under close2gl's own rules, or else under the legal rules that come
@@ -90,11 +98,15 @@ impl Judge<'_> {
     /// The mistakes that reproduce every fact under `rules`: each alone, else pairs of those
     /// that come closer alone.
     fn mistakes(&self, mut diagnosis: Diagnosis, rules: RasterRules) -> Diagnosis {
-        let start = diagnosis.legal.facts.distance();
+        let legal = diagnosis.legal;
+        let start = legal.facts.distance();
         let singles: Vec<Attempt> = (self.candidates().par_iter())
             .map(|&m| self.attempt(rules, RasterMistakes::one(m)))
             .collect();
-        diagnosis.named = singles.iter().filter(|a| self.agrees(a)).copied().collect();
+        diagnosis.named = (singles.iter())
+            .filter(|a| self.reproduces(a, &legal))
+            .copied()
+            .collect();
         if !diagnosis.named.is_empty() {
             return diagnosis;
         }
@@ -110,7 +122,9 @@ impl Judge<'_> {
         let pairs: Vec<Attempt> = (pairs.par_iter())
             .map(|&set| self.attempt(rules, set))
             .collect();
-        diagnosis.named = pairs.into_iter().filter(|a| self.agrees(a)).collect();
+        diagnosis.named = (pairs.into_iter())
+            .filter(|a| self.reproduces(a, &legal))
+            .collect();
         if diagnosis.named.is_empty() && diagnosis.nearest.is_empty() {
             closer.truncate(3);
             diagnosis.nearest = closer;

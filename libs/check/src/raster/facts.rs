@@ -76,6 +76,12 @@ impl Facts {
         self.coverage.differing == 0 && self.depth.differing == 0 && allowance.allows(&self.colour)
     }
 
+    /// Whether the drawing reproduces every fact as an exact drawing would: coverage and depth
+    /// everywhere, colours on all but 0.1 % of the pixels (the depth test's near ties).
+    pub fn exact(&self) -> bool {
+        self.agree(Allowance { share: 0.999 })
+    }
+
     /// Every differing pixel: how far a drawing is from reproducing the trace.
     pub fn distance(&self) -> usize {
         self.coverage.differing + self.depth.differing + self.colour.differing
@@ -120,7 +126,7 @@ fn mark_near(
     let high = |k: usize, size: u32| (a[k].max(b[k]) + 1.0).ceil().min(f64::from(size) - 1.0);
     let (dx, dy) = (b[0] - a[0], b[1] - a[1]);
     let length_squared = dx * dx + dy * dy;
-    if !(length_squared > 0.0) || high(0, width) - low(0) > 1e6 {
+    if length_squared.is_nan() || length_squared <= 0.0 || high(0, width) - low(0) > 1e6 {
         return;
     }
     for row in low(1) as u32..=high(1, height).max(0.0) as u32 {
@@ -135,15 +141,37 @@ fn mark_near(
     }
 }
 
-/// Whether `colour` is the background's, or within the colour tolerance of it.
-fn background_like(colour: [u8; 4], background: [u8; 4]) -> (bool, bool) {
-    let near = (0..3).all(|k| colour[k].abs_diff(background[k]) <= COLOUR_STEPS);
-    let exact = colour[..3] == background[..3];
+/// Whether `colour` is one of the background's spellings (`backgrounds`), or within the colour
+/// tolerance of the first.
+fn background_like(colour: [u8; 4], backgrounds: &[[u8; 4]]) -> (bool, bool) {
+    let near = (0..3).all(|k| colour[k].abs_diff(backgrounds[0][k]) <= COLOUR_STEPS);
+    let exact = backgrounds.iter().any(|b| colour[..3] == b[..3]);
     (exact, near && !exact)
 }
 
+/// The bytes a program may clear to for the background `rgb`: rounded from the f64 it wrote,
+/// from that number read as f32 (a float program's own), or truncated.
+pub fn backgrounds(rgb: [f64; 3]) -> Vec<[u8; 4]> {
+    let bytes = |byte: &dyn Fn(f64) -> u8| {
+        let [r, g, b] = rgb.map(|c| byte(c.clamp(0.0, 1.0)));
+        [r, g, b, 255]
+    };
+    let mut all = vec![
+        bytes(&|c| (c * 255.0 + 0.5) as u8),
+        bytes(&|c| ((c as f32) * 255.0 + 0.5) as u8),
+        bytes(&|c| (c * 255.0) as u8),
+    ];
+    all.dedup();
+    all
+}
+
 /// The facts of `program` (the trace's buffers) against `drawn`, `ties` left out of coverage.
-pub fn compare(input: &RasterFrame, drawn: &Buffers, ties: &[bool], background: [u8; 4]) -> Facts {
+pub fn compare(
+    input: &RasterFrame,
+    drawn: &Buffers,
+    ties: &[bool],
+    background: &[[u8; 4]],
+) -> Facts {
     let program: &Image = &input.framebuffer;
     let width = program.width;
     let mut facts = Facts::default();

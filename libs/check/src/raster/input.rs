@@ -105,7 +105,7 @@ fn as_vec3(v: [f64; 3]) -> Vec3 {
 /// A corner as the textbook takes it.
 fn corner(c: &RasterCorner) -> Corner {
     Corner {
-        window: c.window.map(|x| x as f32),
+        window: c.window,
         rgb: c.rgb.map(|x| x as f32),
         eye: c.eye.map(|x| x as f32),
         normal: c.normal.map(|x| x as f32),

@@ -15,7 +15,6 @@ pub mod report;
 
 use close2gl_core::{RasterMistakes, RasterRules};
 use close2gl_trace_format::RasterFrame;
-use glam::DVec3;
 
 use corners::CornerFacts;
 use diagnose::{Diagnosis, Judge};
@@ -32,10 +31,11 @@ pub struct RasterReport {
 }
 
 impl RasterReport {
-    /// Whether the program agrees with close2gl under legal rules: every fact reproduced and
-    /// every corner lit alike.
+    /// Whether the program agrees with close2gl under legal rules: every fact reproduced, no
+    /// mistake reproducing it better, and every corner lit alike.
     pub fn agrees(&self) -> bool {
         self.diagnosis.legal.facts.agree(self.allowance)
+            && self.diagnosis.named.is_empty()
             && self.corners.as_ref().is_none_or(|c| c.differing == 0)
     }
 
@@ -64,13 +64,11 @@ pub fn judge(frame: &RasterFrame) -> Judge<'_> {
         .as_ref()
         .map(|(_, f)| *f)
         .filter(|_| frame.texture.is_some());
-    let byte = |c: f64| (c.clamp(0.0, 1.0) * 255.0 + 0.5) as u8;
-    let [r, g, b] = DVec3::from_array(trace.background).to_array().map(byte);
     Judge {
         input: frame,
         redraw: Redraw::new(frame),
         ties: facts::ties(frame),
-        background: [r, g, b, 255],
+        background: facts::backgrounds(trace.background),
         allowance: Allowance::for_texture(filter),
     }
 }

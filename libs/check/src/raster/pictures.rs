@@ -14,7 +14,7 @@ pub fn pictures(judge: &Judge, drawn: &Buffers) -> Vec<(&'static str, Image)> {
     let theirs = &frame.framebuffer;
     let (width, height) = (theirs.width, theirs.height);
     let blank = || Image::filled(width, height, [0, 0, 0, 255]);
-    let covered = |p: [u8; 4]| p[..3] != judge.background[..3];
+    let covered = |p: [u8; 4]| judge.background.iter().all(|b| p[..3] != b[..3]);
     let mut coverage = blank();
     let mut colour = blank();
     for (at, (&t, &o)) in theirs.pixels.iter().zip(&drawn.image.pixels).enumerate() {

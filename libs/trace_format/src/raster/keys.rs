@@ -129,7 +129,7 @@ impl Reader {
         let Some((attributes, _)) = &self.attributes else {
             return Err(line.expected("an 'attributes' line before the first 'tri'"));
         };
-        let per_corner: usize = attributes.iter().map(|a| a.len()).sum();
+        let per_corner: usize = attributes.iter().map(|a| a.numbers()).sum();
         let names: Vec<&str> = attributes.iter().map(|a| a.name()).collect();
         let shape = format!(
             "tri T and 3 corners of {} ({per_corner} numbers each)",
@@ -245,8 +245,8 @@ fn corner(attributes: &[Attribute], numbers: &[f64]) -> RasterCorner {
     let mut corner = RasterCorner::default();
     let mut at = 0;
     for attribute in attributes {
-        let values = &numbers[at..at + attribute.len()];
-        at += attribute.len();
+        let values = &numbers[at..at + attribute.numbers()];
+        at += attribute.numbers();
         let slot: &mut [f64] = match attribute {
             Attribute::Window => &mut corner.window,
             Attribute::Rgb => &mut corner.rgb,

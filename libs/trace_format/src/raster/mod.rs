@@ -44,7 +44,7 @@ impl Attribute {
     }
 
     /// How many numbers it takes.
-    pub fn len(self) -> usize {
+    pub fn numbers(self) -> usize {
         match self {
             Self::Window => 4,
             Self::Uv => 2,

@@ -30,6 +30,16 @@ fn snap_to(window: [f32; 4], bits: u32) -> Option<[i64; 2]> {
     (!far && window.iter().all(|x| x.is_finite())).then(|| [snap(window[0]), snap(window[1])])
 }
 
+/// [`snap_to`] of x, y as a program gave them in f64 (`exact`, y down: a double program snaps its
+/// own numbers, not their f32 roundings), the rest of `window` deciding, as there, whether it
+/// can be snapped.
+fn snap_exact(exact: [f64; 2], window: [f32; 4], bits: u32) -> Option<[i64; 2]> {
+    snap_to(window, bits)?;
+    let steps = f64::from(1u32 << bits);
+    let snap = |x: f64| ((x - 0.5) * steps).round_ties_even() as i64 * (1 << (8 - bits));
+    Some([snap(exact[0]), snap(exact[1])])
+}
+
 /// The window drawn into and the rules its pixels are decided by.
 pub(super) struct Window {
     width: i64,
@@ -56,23 +66,42 @@ impl Window {
     /// those mistakes (in its own y), and moved by half a pixel when it samples at the pixel's
     /// corner (sampling (i, j) is sampling the centre of a triangle moved by half a pixel
     /// towards +x and towards its own +y).
-    fn placed(&self, mut window: [f32; 4]) -> [f32; 4] {
-        let height = self.height as f32;
-        let own_y = |y: f32| if self.y_up { height - y } else { y };
-        let whole: Option<fn(f32) -> f32> = match () {
-            _ if self.mistakes.has(M::VerticesRounded) => Some(f32::round),
-            _ if self.mistakes.has(M::VerticesTruncated) => Some(f32::trunc),
+    fn placed(&self, mut v: Vertex) -> Vertex {
+        let whole: Option<fn(f64) -> f64> = match () {
+            _ if self.mistakes.has(M::VerticesRounded) => Some(f64::round),
+            _ if self.mistakes.has(M::VerticesTruncated) => Some(f64::trunc),
             _ => None,
         };
+        // In the program's own numbers (its y up or down), as it rounded them.
+        let mut own = v
+            .exact
+            .unwrap_or_else(|| [v.window[0], self.own_y(v.window[1])].map(f64::from));
         if let Some(whole) = whole {
-            window[0] = whole(window[0]);
-            window[1] = own_y(whole(own_y(window[1])));
+            own = own.map(whole);
         }
         if self.mistakes.has(M::PixelCornerSamples) {
-            window[0] += 0.5;
-            window[1] += if self.y_up { -0.5 } else { 0.5 };
+            own = own.map(|x| x + 0.5);
         }
-        window
+        v.window[0] = own[0] as f32;
+        v.window[1] = self.down(own[1]) as f32;
+        v.exact = v.exact.map(|_| own);
+        v.snapped = None;
+        v
+    }
+
+    /// A y of the picture (down) in the program's own numbers, and back: they are each other's.
+    fn own_y(&self, y: f32) -> f32 {
+        match self.y_up {
+            true => self.height as f32 - y,
+            false => y,
+        }
+    }
+
+    fn down(&self, own_y: f64) -> f64 {
+        match self.y_up {
+            true => self.height as f64 - own_y,
+            false => own_y,
+        }
     }
 
     /// Whether a centre exactly on the edge a → b (of a triangle wound with its inside to the
@@ -112,16 +141,12 @@ impl Setup {
         let moves = window.mistakes.has(M::VerticesRounded)
             || window.mistakes.has(M::VerticesTruncated)
             || window.mistakes.has(M::PixelCornerSamples);
-        let mut corners = triangle.map(|mut v| {
-            if moves {
-                v.window = window.placed(v.window);
-                v.snapped = None;
-            }
-            v
-        });
-        let at = |v: &Vertex| {
-            v.snapped
-                .or_else(|| snap_to(v.window, window.subpixel_bits))
+        let mut corners = triangle.map(|v| if moves { window.placed(v) } else { v });
+        let bits = window.subpixel_bits;
+        let at = |v: &Vertex| match (v.snapped, v.exact) {
+            (Some(snapped), _) => Some(snapped),
+            (None, Some([x, y])) => snap_exact([x, window.down(y)], v.window, bits),
+            (None, None) => snap_to(v.window, bits),
         };
         let mut snapped = [at(&corners[0])?, at(&corners[1])?, at(&corners[2])?];
         let area = edge(snapped[0], snapped[1], snapped[2]);
@@ -187,16 +212,18 @@ impl Setup {
         if !mistakes.has(M::BoundingBoxShort) {
             return true;
         }
-        let height = window.height as f32;
-        let own_y = |y: f32| if window.y_up { height - y } else { y };
-        let span = |values: [f32; 3]| {
+        // The corners as the program gave them, in its own numbers.
+        let own = self.corners.map(|v| {
+            v.exact
+                .unwrap_or_else(|| [v.window[0], window.own_y(v.window[1])].map(f64::from))
+        });
+        let span = |k: usize| {
+            let values = own.map(|xy| xy[k]);
             let floor =
-                |f: fn(f32, f32) -> f32| values.into_iter().fold(values[0], f).floor() as i64;
-            floor(f32::min)..floor(f32::max)
+                |f: fn(f64, f64) -> f64| values.into_iter().fold(values[0], f).floor() as i64;
+            floor(f64::min)..floor(f64::max)
         };
-        let xs = self.corners.map(|v| v.window[0]);
-        let ys = self.corners.map(|v| own_y(v.window[1]));
-        span(xs).contains(&x) && span(ys).contains(&row)
+        span(0).contains(&x) && span(1).contains(&row)
     }
 
     /// The barycentric weights of the centre of pixel (x, y) (outside the triangle too), from the

@@ -187,7 +187,7 @@ pub fn draw_corners(
     shader: &Shader,
     how: &Rasterization,
 ) -> Buffers {
-    let height = size.1 as f32;
+    let height = f64::from(size.1);
     let triangles: Vec<([Vertex; 3], Option<u32>)> = triangles
         .iter()
         .map(|(corners, owner)| {

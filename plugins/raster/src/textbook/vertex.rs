@@ -17,20 +17,23 @@ pub(super) const VARYINGS: usize = 11;
 
 /// A vertex: x, y in window pixels (y down), depth and 1/w; its varyings; where it is snapped
 /// to when primitive assembly put it on the 1/256 grid itself (a line's or a point's rectangle:
-/// far off screen, x and y in f32 no longer hold that grid exactly).
+/// far off screen, x and y in f32 no longer hold that grid exactly); and x, y as a program gave
+/// them in f64 (its y, up or down), which decide its snapping and rounding as they decided the
+/// program's.
 #[derive(Clone, Copy, Debug)]
 pub(super) struct Vertex {
     pub(super) window: [f32; 4],
     pub(super) varyings: [f32; VARYINGS],
     pub(super) snapped: Option<[i64; 2]>,
+    pub(super) exact: Option<[f64; 2]>,
 }
 
 /// A corner as a student's rasterizer receives it: window x, y (y as its origin says), depth
-/// in 0..1 and q = 1/w; Gouraud's lit colour, the eye-space position and normal, and the texture
-/// coordinates (zero where the program has none).
+/// in 0..1 and q = 1/w, as the program wrote them; Gouraud's lit colour, the eye-space position
+/// and normal, and the texture coordinates (zero where the program has none).
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct Corner {
-    pub window: [f32; 4],
+    pub window: [f64; 4],
     pub rgb: [f32; 3],
     pub eye: [f32; 3],
     pub normal: [f32; 3],
@@ -39,11 +42,11 @@ pub struct Corner {
 
 impl Corner {
     /// The vertex it is, y turned down when `flip_from` gives the window's height.
-    pub(super) fn vertex(&self, flip_from: Option<f32>) -> Vertex {
-        let mut window = self.window;
-        if let Some(height) = flip_from {
-            window[1] = height - window[1];
-        }
+    pub(super) fn vertex(&self, flip_from: Option<f64>) -> Vertex {
+        let [x, y, z, q] = self.window;
+        let down = flip_from.map_or(y, |height| height - y);
+        let window = [x, down, z, q].map(|x| x as f32);
+        let exact = [x, y];
         let mut varyings = [0.0; VARYINGS];
         varyings[INTENSITY..EYE].copy_from_slice(&self.rgb);
         varyings[EYE..NORMAL].copy_from_slice(&self.eye);
@@ -53,6 +56,7 @@ impl Corner {
             window,
             varyings,
             snapped: None,
+            exact: Some(exact),
         }
     }
 }
@@ -67,13 +71,17 @@ pub(super) fn stage(raster: &RasterGeometry, shader: &Shader) -> Vec<Vertex> {
             let (eye, normal) = (Vec3::from(v.eye), Vec3::from(v.normal));
             let intensity = gouraud.then(|| shader.light.illuminate(eye, normal));
             let corner = Corner {
-                window: v.window,
+                window: v.window.map(f64::from),
                 rgb: intensity.unwrap_or_default().to_array(),
                 eye: v.eye,
                 normal: v.normal,
                 uv: v.uv,
             };
-            corner.vertex(None)
+            // Close2GL's own corners are f32: they snap as the fast rasterizer snaps them.
+            Vertex {
+                exact: None,
+                ..corner.vertex(None)
+            }
         })
         .collect();
     for cut in &raster.cuts {
@@ -83,6 +91,7 @@ pub(super) fn stage(raster: &RasterGeometry, shader: &Shader) -> Vec<Vertex> {
             window: cut.window,
             varyings,
             snapped: None,
+            exact: None,
         });
     }
     vertices
