@@ -20,6 +20,9 @@
  *                     where a big triangle recedes steeply (the floor, lit by a low light), not
  *                     on the cube or the knot (small triangles: within the allowance).
  *   -DNO_DEPTH_WRITE  the depth test made, the buffer never written (depth_not_written).
+ *   -DSKIP_TINY       a rule of its own, "to go faster": a triangle under 1 pixel of area is not
+ *                     filled (still written to the trace, as it was handed to the rasterizer):
+ *                     holes in the small knot no catalogue mistake makes (unexplained).
  *
  * Lines ending in "[trace]" were added only to write the trace.
  *
@@ -37,10 +40,13 @@
  * expect knot_phong -DAFFINE_COLOUR: agree
  * expect cube_gouraud_ads -DNO_DEPTH_WRITE: differs mistakes=depth_not_written
  * expect knot_phong -DNO_DEPTH_WRITE: differs mistakes=depth_not_written
+ * expect knot_flat -DSKIP_TINY: differs unexplained
+ * expect square -DSKIP_TINY: agree
  * expect-grade: 200
  * expect-grade -DROUND_SPANS: 200
  * expect-grade -DAFFINE_COLOUR: 200
  * expect-grade -DNO_DEPTH_WRITE: zbuffer=0 resize=0 synchronized=0
+ * expect-grade -DSKIP_TINY: coverage=16 zbuffer=20 gouraud=16 phong=12 resize=7 synchronized=11
  */
 #define CLOSE2GL_FLOAT                   /* [trace] */
 #define CLOSE2GL_TRACE_IMPLEMENTATION
@@ -223,6 +229,10 @@ static void fill_triangle(const vert *in)
     if (v[2]->y < v[1]->y) tmp = v[1], v[1] = v[2], v[2] = tmp;
     if (v[1]->y < v[0]->y) tmp = v[0], v[0] = v[1], v[1] = tmp;
     if (v[2]->y - v[0]->y <= 0) return;
+#ifdef SKIP_TINY
+    if (fabsf((v[1]->x - v[0]->x) * (v[2]->y - v[0]->y) - (v[2]->x - v[0]->x) * (v[1]->y - v[0]->y)) < 2)
+        return;   /* BUG of its own: under 1 pixel of area, skipped */
+#endif
     for (i = 0; i < 3; i++) walk_values(v[i], w[i]);
     {   /* the plane of s q, t q, q (for λ) */
         float e1x = v[1]->x - v[0]->x, e1y = v[1]->y - v[0]->y, e2x = v[2]->x - v[0]->x, e2y = v[2]->y - v[0]->y;
