@@ -1,5 +1,6 @@
-//! The student program of `examples/trace/` (`pipeline.c`: the assignment's pipeline writing a
-//! close2gl trace), compiled with the system's C compiler as a test needs it: correct, or with
+//! The student programs of `examples/trace/` (`pipeline.c`: the assignment's pipeline writing a
+//! close2gl trace) and `examples/raster/` (`raster.c`: the rasterizer assignment writing a raster
+//! trace), compiled with the system's C compiler as a test needs them: correct, or with
 //! catalogue mistakes and variants switched on; and the corpus's C and C++ programs
 //! (`examples/corpus/`), compiled the same way.
 
@@ -26,6 +27,13 @@ pub fn mistake_flag(id: &str) -> String {
 /// fails (CI installs a C compiler: a test without one is a broken machine, not a skip).
 pub fn compile_pipeline(dir: &Path, name: &str, flags: &[&str]) -> PathBuf {
     let source = repository().join("examples/trace/pipeline.c");
+    compile_c(&source, &dir.join(name), flags)
+}
+
+/// Compiles `examples/raster/raster.c` (the rasterizer assignment's reference) with `flags`
+/// into `dir/name`, as [`compile_pipeline`] does.
+pub fn compile_raster(dir: &Path, name: &str, flags: &[&str]) -> PathBuf {
+    let source = repository().join("examples/raster/raster.c");
     compile_c(&source, &dir.join(name), flags)
 }
 

@@ -110,15 +110,27 @@ impl Judge<'_> {
         if !diagnosis.named.is_empty() {
             return diagnosis;
         }
-        let mut closer: Vec<Attempt> = (singles.into_iter())
+        let mut closer: Vec<Attempt> = (singles.iter())
             .filter(|a| a.facts.distance() < start)
+            .copied()
             .collect();
         closer.sort_by_key(|a| a.facts.distance());
         closer.truncate(8);
-        let pairs: Vec<RasterMistakes> = (0..closer.len())
-            .flat_map(|i| (i + 1..closer.len()).map(move |j| (i, j)))
-            .map(|(i, j)| (closer[i].mistakes.iter()).fold(closer[j].mistakes, |s, m| s.with(m)))
-            .collect();
+        // Pairs of those that come closer alone, and the closest three with any other: a mistake
+        // that one frame shows everywhere (channels swapped) hides how close another comes.
+        let mut pairs: Vec<RasterMistakes> = Vec::new();
+        for (i, a) in closer.iter().enumerate() {
+            let others = match i < 3 {
+                true => singles.iter().collect::<Vec<_>>(),
+                false => closer[i + 1..].iter().collect(),
+            };
+            for b in others {
+                let set = (a.mistakes.iter()).fold(b.mistakes, |s, m| s.with(m));
+                if set != a.mistakes && !pairs.contains(&set) {
+                    pairs.push(set);
+                }
+            }
+        }
         let pairs: Vec<Attempt> = (pairs.par_iter())
             .map(|&set| self.attempt(rules, set))
             .collect();
