@@ -15,6 +15,7 @@ mod gradebook;
 mod graded;
 mod html;
 mod platforms;
+mod raster;
 mod report;
 mod sandboxing;
 mod scene_run;
@@ -92,6 +93,11 @@ pub struct GradeArgs {
     /// `folder,identifier[,name]` rows (otherwise the folder's name).
     #[arg(long, value_name = "FILE")]
     pub students: Option<PathBuf>,
+    /// Grade on this rubric file instead (TOML: lines, points, scenes, the stages deciding each):
+    /// `assets/rubrics/rasterizer/rubric.toml` grades the rasterizer assignment, its program writing a
+    /// raster trace (close2gl-raster 1) with its buffers.
+    #[arg(long, value_name = "FILE")]
+    pub rubric: Option<PathBuf>,
     /// With --csv-format canvas, the assignment's column as Canvas exported it
     /// ("Close2GL (12345)").
     #[arg(long, value_name = "NAME", default_value = "close2gl")]
@@ -163,6 +169,9 @@ pub fn run(args: GradeArgs) -> Result<(), CliError> {
         None => std::thread::available_parallelism().map_or(1, |n| n.get()),
     };
     let sandboxing = Sandboxing::new(args.unsandboxed, &args.allow_read)?;
+    if let Some(path) = &args.rubric {
+        return grade_on_rubric_file(path, &args, &words, limits, sandboxing, jobs);
+    }
     let mut rubric = load_rubric(&args.models)?;
     if let Some(id) = &args.line {
         let line = LineId::ALL.iter().find(|l| l.id() == id).ok_or_else(|| {
@@ -185,6 +194,46 @@ pub fn run(args: GradeArgs) -> Result<(), CliError> {
         Some(dir) => class::grade_class(dir, &args, &plan),
         None => grade_one(&args, &plan),
     };
+    close2gl_runner::reap_everything();
+    result
+}
+
+/// `--rubric FILE`: the rasterizer assignment's grade (one program; the class, platform and
+/// page outputs are the first assignment's so far, and say so).
+fn grade_on_rubric_file(
+    path: &Path,
+    args: &GradeArgs,
+    words: &[String],
+    limits: Limits,
+    sandboxing: Sandboxing,
+    jobs: usize,
+) -> Result<(), CliError> {
+    let others = [
+        (args.submissions.is_some(), "--submissions"),
+        (args.gradescope.is_some(), "--gradescope"),
+        (args.classroom, "--classroom"),
+        (args.html.is_some(), "--html"),
+        (args.line.is_some(), "--line"),
+        (!args.models.is_empty(), "--model"),
+    ];
+    if let Some((_, option)) = others.iter().find(|(given, _)| *given) {
+        return Err(CliError::Input(format!(
+            "{option}: not available with --rubric yet (the rasterizer rubric grades one program, as a table or --json)"
+        )));
+    }
+    let rubric = Rubric {
+        models: Vec::new(),
+        scenes: Vec::new(),
+    };
+    let plan = Plan {
+        words,
+        rubric: &rubric,
+        limits,
+        sandboxing,
+        jobs,
+    };
+    close2gl_runner::install_interrupt_handler();
+    let result = raster::grade(path, args.json, &plan);
     close2gl_runner::reap_everything();
     result
 }

@@ -91,7 +91,7 @@ impl SceneResult {
 pub struct Run<'a> {
     words: &'a [String],
     dir: Option<&'a Path>,
-    limits: &'a Limits,
+    pub limits: &'a Limits,
     sandbox: &'a Sandbox,
 }
 
@@ -142,6 +142,23 @@ pub fn run_scene(run: &Run, model: &Model, scene: &RubricScene) -> SceneResult {
 /// The program run in a fresh directory holding `scene.txt` and the model; its trace, or why
 /// there is none. The directory is gone when this returns.
 fn run_program(run: &Run, model: &Model, scene_text: &str) -> Result<Trace, RunFailure> {
+    let files = [(model.file_name.as_str(), model.bytes.as_slice())];
+    let (workspace, ran) = run_in_workspace(run, &files, scene_text)?;
+    let bytes = read_written(&workspace, TRACE, run.limits, "its trace", &ran)?;
+    parse_trace_bytes(bytes, "its trace").map_err(|e| RunFailure {
+        cause: "it wrote a trace close2gl cannot read".into(),
+        reason: format!("{e}"),
+    })
+}
+
+/// The program run in a fresh directory holding `files` (name, bytes) and `scene.txt`, with
+/// `{trace}` standing for `trace.txt` there: the directory once the program exited 0, and the
+/// run's outcome in words; or why it failed.
+pub fn run_in_workspace(
+    run: &Run,
+    files: &[(&str, &[u8])],
+    scene_text: &str,
+) -> Result<(Workspace, String), RunFailure> {
     let workspace = Workspace::new()
         .map_err(|e| RunFailure::plain(format!("could not make its directory: {e}")))?;
     let (scene, trace) = (
@@ -152,7 +169,9 @@ fn run_program(run: &Run, model: &Model, scene_text: &str) -> Result<Trace, RunF
         std::fs::write(path, bytes)
             .map_err(|e| RunFailure::plain(format!("could not write {}: {e}", path.display())))
     };
-    write(&workspace.path().join(&model.file_name), &model.bytes)?;
+    for (name, bytes) in files {
+        write(&workspace.path().join(name), bytes)?;
+    }
     write(&scene, scene_text.as_bytes())?;
     let text = |p: &Path| p.to_string_lossy().into_owned();
     let dir = run.dir.map(text).unwrap_or_default();
@@ -170,22 +189,27 @@ fn run_program(run: &Run, model: &Model, scene_text: &str) -> Result<Trace, RunF
             reason: outcome.reason(),
         });
     }
-    // Read as the program's own: never through a link it made (to the grader's environment, a
-    // classmate's file), never a FIFO or a device. What it was is said; nothing of it quoted.
-    let bytes = match workspace.read_own(TRACE, run.limits.file_size) {
-        Ok(bytes) => bytes,
-        Err(NotItsOwn::Missing) => {
-            return Err(RunFailure {
-                cause: "it wrote no trace".into(),
-                reason: format!("it wrote no trace ({})", outcome.reason()),
-            });
-        }
-        Err(not_its_own) => return Err(RunFailure::plain(not_its_own.describe("its trace"))),
-    };
-    parse_trace_bytes(bytes, "its trace").map_err(|e| RunFailure {
-        cause: "it wrote a trace close2gl cannot read".into(),
-        reason: format!("{e}"),
-    })
+    Ok((workspace, outcome.reason()))
+}
+
+/// The file `name` the program wrote in `workspace`, `what` it is in messages: read as the
+/// program's own, never through a link it made (to the grader's environment, a classmate's
+/// file), never a FIFO or a device. What it was is said; nothing of it quoted.
+pub fn read_written(
+    workspace: &Workspace,
+    name: &str,
+    limits: &Limits,
+    what: &str,
+    ran: &str,
+) -> Result<Vec<u8>, RunFailure> {
+    match workspace.read_own(name, limits.file_size) {
+        Ok(bytes) => Ok(bytes),
+        Err(NotItsOwn::Missing) => Err(RunFailure {
+            cause: format!("it wrote no {}", what.trim_start_matches("its ")),
+            reason: format!("it wrote no {} ({ran})", what.trim_start_matches("its ")),
+        }),
+        Err(not_its_own) => Err(RunFailure::plain(not_its_own.describe(what))),
+    }
 }
 
 fn evidence(report: &Report, trace: &Trace, id: &str) -> Evidence {

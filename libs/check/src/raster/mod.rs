@@ -12,6 +12,7 @@ pub mod facts;
 pub mod input;
 pub mod pictures;
 pub mod report;
+pub mod rubric;
 
 use close2gl_core::{RasterMistakes, RasterRules};
 use close2gl_trace_format::RasterFrame;

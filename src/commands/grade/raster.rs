@@ -1,0 +1,253 @@
+//! `close2gl grade --rubric FILE`: the rasterizer assignment, on a rubric a teacher edits
+//! (`assets/rubrics/rasterizer/rubric.toml`): each of its scenes run in the sandbox, the raster trace
+//! and its buffers read as the program's own, checked, and every line the scene counts for
+//! judged on the stages that decide it.
+
+use std::path::{Path, PathBuf};
+use std::sync::Mutex;
+use std::sync::atomic::{AtomicUsize, Ordering};
+
+use close2gl_check::raster::rubric::{self, Rubric, RubricLine};
+use close2gl_check::raster::{RasterReport, check_raster};
+use close2gl_trace_format::{RasterFrame, parse_raster_trace, parse_scene};
+use serde_json::json;
+
+use super::scene_run::{Run, RunFailure, read_written, run_in_workspace};
+use super::{CliError, Plan, lock};
+
+/// A scene of the rubric, ready to hand a program: its text (naming the files beside it) and
+/// those files.
+struct RubricScene {
+    name: String,
+    text: String,
+    files: Vec<(String, Vec<u8>)>,
+}
+
+/// What one scene gave: check's report, or why the run failed.
+type SceneOutcome = Result<RasterReport, RunFailure>;
+
+/// The rubric at `path` and its scenes (`scenes/NAME.scene` beside it, with the files they name).
+fn load(path: &Path) -> Result<(Rubric, Vec<RubricScene>), CliError> {
+    let input = |e: String| CliError::Input(e);
+    let text = std::fs::read_to_string(path)
+        .map_err(|e| input(format!("{}: cannot read: {e}", path.display())))?;
+    let rubric = Rubric::parse(&text, &path.display().to_string()).map_err(input)?;
+    let folder = path.parent().unwrap_or(Path::new("")).join("scenes");
+    let mut scenes = Vec::new();
+    for name in &rubric.scenes {
+        let file = folder.join(format!("{name}.scene"));
+        let text = std::fs::read_to_string(&file).map_err(|e| {
+            input(format!(
+                "{}: cannot read: {e} (a scene the rubric names)",
+                file.display()
+            ))
+        })?;
+        let mut scene =
+            parse_scene(&text, &file.display().to_string()).map_err(|e| input(e.to_string()))?;
+        let mut files = Vec::new();
+        let mut bring = |written: &str, slot: &str| -> Result<String, CliError> {
+            let source: PathBuf = file.parent().unwrap_or(Path::new("")).join(written);
+            let bytes = std::fs::read(&source).map_err(|e| {
+                input(format!(
+                    "{}: {slot} {}: cannot read: {e}",
+                    file.display(),
+                    source.display()
+                ))
+            })?;
+            let base = source.file_name().map_or("file".into(), |n| {
+                n.to_string_lossy().replace([' ', '#'], "_")
+            });
+            files.push((base.clone(), bytes));
+            Ok(base)
+        };
+        scene.model = bring(&scene.model, "model")?;
+        if let Some(texture) = scene.look.texture.take() {
+            scene.look.texture = Some(bring(&texture, "texture")?);
+        }
+        scenes.push(RubricScene {
+            name: name.clone(),
+            text: scene.to_text(),
+            files,
+        });
+    }
+    Ok((rubric, scenes))
+}
+
+/// One scene run and checked.
+fn run_scene(run: &Run, scene: &RubricScene) -> SceneOutcome {
+    let files: Vec<(&str, &[u8])> = scene
+        .files
+        .iter()
+        .map(|(n, b)| (n.as_str(), b.as_slice()))
+        .collect();
+    let (workspace, ran) = run_in_workspace(run, &files, &scene.text)?;
+    let bytes = read_written(
+        &workspace,
+        "trace.txt",
+        run.limits,
+        "its raster trace",
+        &ran,
+    )?;
+    let unreadable = |e: String| RunFailure {
+        cause: "it wrote a raster trace close2gl cannot read".into(),
+        reason: e,
+    };
+    let text = String::from_utf8(bytes)
+        .map_err(|_| unreadable("its raster trace is not UTF-8 text".into()))?;
+    let trace =
+        parse_raster_trace(&text, "its raster trace").map_err(|e| unreadable(e.to_string()))?;
+    let frame = RasterFrame::read_with(trace, |name| {
+        if name.contains('/') || name == ".." {
+            return Err("a file name beside the trace was expected, not a path".into());
+        }
+        read_written(&workspace, name, run.limits, name, &ran).map_err(|f| f.reason)
+    })
+    .map_err(|e| unreadable(e.to_string()))?;
+    Ok(check_raster(&frame))
+}
+
+/// One line scored.
+struct Scored<'a> {
+    line: &'a RubricLine,
+    points: u32,
+    passed: usize,
+    failures: Vec<(String, String)>,
+}
+
+fn score<'a>(rubric: &'a Rubric, outcomes: &[(String, SceneOutcome)]) -> Vec<Scored<'a>> {
+    (rubric.lines.iter())
+        .map(|line| {
+            let mut failures = Vec::new();
+            for name in &line.scenes {
+                let Some((_, outcome)) = outcomes.iter().find(|(n, _)| n == name) else {
+                    continue;
+                };
+                let verdict = match outcome {
+                    Ok(report) => rubric::judge(line, report),
+                    Err(failure) => Err(failure.reason.clone()),
+                };
+                if let Err(why) = verdict {
+                    failures.push((name.clone(), why));
+                }
+            }
+            let passed = line.scenes.len() - failures.len();
+            Scored {
+                line,
+                points: rubric::points(line, passed, line.scenes.len()),
+                passed,
+                failures,
+            }
+        })
+        .collect()
+}
+
+/// Grades one program on the rubric at `path`.
+pub fn grade(path: &Path, json_out: bool, plan: &Plan) -> Result<(), CliError> {
+    let (rubric, scenes) = load(path)?;
+    eprintln!("{}", plan.sandboxing.banner(plan.words, false));
+    let slots: Vec<Mutex<Option<SceneOutcome>>> = scenes.iter().map(|_| Mutex::new(None)).collect();
+    let next = AtomicUsize::new(0);
+    std::thread::scope(|scope| {
+        for _ in 0..plan.jobs.min(scenes.len()) {
+            scope.spawn(|| {
+                while let Some(i) =
+                    Some(next.fetch_add(1, Ordering::Relaxed)).filter(|&i| i < scenes.len())
+                {
+                    let sandbox = plan.sandboxing.for_run(None);
+                    let run = Run::new(plan.words, None, &plan.limits, &sandbox);
+                    let outcome = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
+                        run_scene(&run, &scenes[i])
+                    }))
+                    .unwrap_or_else(|_| Err(RunFailure::plain(super::BUG.into())));
+                    *lock(&slots[i]) = Some(outcome);
+                }
+            });
+        }
+    });
+    if close2gl_runner::interrupted() {
+        return Err(CliError::Interrupted);
+    }
+    let outcomes: Vec<(String, SceneOutcome)> = (scenes.iter().zip(slots))
+        .filter_map(|(s, slot)| {
+            Some((
+                s.name.clone(),
+                slot.into_inner().unwrap_or_else(|e| e.into_inner())?,
+            ))
+        })
+        .collect();
+    let scored = score(&rubric, &outcomes);
+    let total: u32 = scored.iter().map(|s| s.points).sum();
+    match json_out {
+        true => println!("{}", json(&scored, &outcomes, total, rubric.total())),
+        false => print!("{}", table(&scored, &outcomes, total, rubric.total(), path)),
+    }
+    Ok(())
+}
+
+fn table(
+    scored: &[Scored],
+    outcomes: &[(String, SceneOutcome)],
+    total: u32,
+    max: u32,
+    path: &Path,
+) -> String {
+    let mut out = format!(
+        "close2gl grade: the rasterizer assignment ({})\n\n",
+        path.display()
+    );
+    out += &format!("{:<52} {:>7} {:>7}\n", "line", "points", "scenes");
+    for s in scored {
+        let points = format!("{}/{}", s.points, s.line.points);
+        let scenes = format!("{}/{}", s.passed, s.line.scenes.len());
+        out += &format!("{:<52} {points:>7} {scenes:>7}\n", s.line.title);
+        for (scene, why) in &s.failures {
+            out += &format!("    {scene}: {why}\n");
+        }
+    }
+    out += &format!("\ntotal {total}/{max}\n");
+    let named: Vec<String> = (outcomes.iter())
+        .filter_map(|(name, o)| {
+            o.as_ref()
+                .ok()
+                .filter(|r| !r.agrees())
+                .map(|r| (name, r.mistakes()))
+        })
+        .filter(|(_, m)| !m.is_empty())
+        .map(|(name, m)| format!("  {name}: {}", m.join(", ")))
+        .collect();
+    if !named.is_empty() {
+        out += "\nto fix first, the mistakes check named (close2gl check the scene's trace for the pictures):\n";
+        out += &(named.join("\n") + "\n");
+    }
+    out
+}
+
+fn json(
+    scored: &[Scored],
+    outcomes: &[(String, SceneOutcome)],
+    total: u32,
+    max: u32,
+) -> serde_json::Value {
+    let lines: Vec<serde_json::Value> = (scored.iter())
+        .map(|s| {
+            json!({
+                "id": s.line.id,
+                "title": s.line.title,
+                "points": s.points,
+                "max": s.line.points,
+                "passed": s.passed,
+                "scenes": s.line.scenes.len(),
+                "failures": s.failures.iter().map(|(scene, why)| json!({"scene": scene, "why": why})).collect::<Vec<_>>(),
+            })
+        })
+        .collect();
+    let scenes: Vec<serde_json::Value> = (outcomes.iter())
+        .map(|(name, outcome)| match outcome {
+            Ok(report) => {
+                json!({"scene": name, "agree": report.agrees(), "mistakes": report.mistakes()})
+            }
+            Err(failure) => json!({"scene": name, "agree": false, "run_failed": failure.reason}),
+        })
+        .collect();
+    json!({"assignment": "rasterizer", "total": total, "max": max, "lines": lines, "scenes": scenes})
+}

@@ -1,0 +1,142 @@
+//! `close2gl grade --rubric` on the rasterizer assignment: `examples/raster/raster.c` built right
+//! and with catalogue mistakes, run in the sandbox on `assets/rubrics/rasterizer/`'s scenes. The right
+//! program scores 200; each mistake build scores what was written below before it was ever
+//! graded (each mistake costs the lines whose stages it belongs to, on the scenes that show it);
+//! a teacher's edited rubric changes the points as written.
+
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+use close2gl_testkit::TempDir;
+use close2gl_testkit::student::{compile_raster, mistake_flag, repository};
+use serde_json::Value;
+
+fn rubric() -> PathBuf {
+    repository().join("assets/rubrics/rasterizer/rubric.toml")
+}
+
+/// `close2gl grade --rubric RUBRIC --run 'PROGRAM {scene} {trace}' --json`: the JSON.
+fn grade(rubric: &Path, program: &Path) -> Value {
+    let output = Command::new(env!("CARGO_BIN_EXE_close2gl"))
+        .args(["grade", "--json", "--rubric"])
+        .arg(rubric)
+        .arg("--run")
+        .arg(format!("{} {{scene}} {{trace}}", program.display()))
+        .output()
+        .expect("run close2gl grade");
+    assert!(
+        output.status.success(),
+        "{}",
+        String::from_utf8_lossy(&output.stderr)
+    );
+    serde_json::from_slice(&output.stdout).expect("grade's JSON")
+}
+
+/// The lines that lost points, as `id=points`, sorted; and the total.
+fn lost(grade: &Value) -> (Vec<String>, u64) {
+    let lines = grade["lines"].as_array().expect("lines");
+    let mut lost: Vec<String> = (lines.iter())
+        .filter(|l| l["points"] != l["max"])
+        .map(|l| format!("{}={}", l["id"].as_str().unwrap_or("?"), l["points"]))
+        .collect();
+    lost.sort();
+    (lost, grade["total"].as_u64().unwrap_or(0))
+}
+
+#[test]
+fn the_right_program_scores_200_and_each_mistake_what_was_written_first() {
+    let dir = TempDir::new("grade-raster");
+    // Written before grading: the lines each build loses (their stages are the mistake's), and
+    // the total.
+    let expected: [(&str, &[&str], u64); 4] = [
+        ("", &[], 200),
+        (
+            "depth_perspective",
+            &["resize=0", "synchronized=1", "zbuffer=10"],
+            151,
+        ),
+        (
+            "uv_affine",
+            &[
+                "resize=7",
+                "synchronized=9",
+                "texture_bilinear=0",
+                "texture_nearest=0",
+                "texture_trilinear=0",
+            ],
+            121,
+        ),
+        (
+            "fill_rule_inclusive",
+            &["coverage=16", "synchronized=13"],
+            189,
+        ),
+    ];
+    let mut wrong = Vec::new();
+    for (mistake, lines, total) in expected {
+        let flags = match mistake {
+            "" => Vec::new(),
+            m => vec![mistake_flag(m)],
+        };
+        let flags: Vec<&str> = flags.iter().map(String::as_str).collect();
+        let program = compile_raster(&dir.0, &format!("raster-{mistake}"), &flags);
+        let graded = grade(&rubric(), &program);
+        let (lost, got) = lost(&graded);
+        let lines: Vec<String> = lines.iter().map(|l| l.to_string()).collect();
+        if lost != lines || got != total {
+            wrong.push(format!(
+                "{mistake}: expected {lines:?} = {total}, graded {lost:?} = {got}\n{graded:#}"
+            ));
+        }
+    }
+    assert!(wrong.is_empty(), "{}", wrong.join("\n"));
+}
+
+#[test]
+fn a_teachers_edited_rubric_changes_the_points_as_written() {
+    let dir = TempDir::new("grade-raster-edited");
+    let scenes = dir.0.join("scenes");
+    std::fs::create_dir_all(&scenes).expect("a scenes folder");
+    let bundled = repository().join("assets/rubrics/rasterizer/scenes");
+    for entry in std::fs::read_dir(&bundled).expect("the bundled scenes") {
+        let path = entry.expect("a scene").path();
+        let text = std::fs::read_to_string(&path).expect("a scene's text");
+        // The copy names its model and texture by absolute paths.
+        let text: Vec<String> = (text.lines())
+            .map(|l| match l.split_whitespace().collect::<Vec<_>>()[..] {
+                [key @ ("model" | "texture"), file] => {
+                    format!("{key} {}", bundled.join(file).display())
+                }
+                _ => l.to_string(),
+            })
+            .collect();
+        std::fs::write(
+            scenes.join(path.file_name().expect("a name")),
+            text.join("\n"),
+        )
+        .expect("copy");
+    }
+    let edited = std::fs::read_to_string(rubric())
+        .expect("the bundled rubric")
+        .replace(
+            "points = 30\nstages = [\"depth\"]",
+            "points = 50\nstages = [\"depth\"]",
+        );
+    std::fs::write(dir.0.join("rubric.toml"), edited).expect("the edited rubric");
+    let program = compile_raster(
+        &dir.0,
+        "raster",
+        &[mistake_flag("depth_perspective").as_str()],
+    );
+    let graded = grade(&dir.0.join("rubric.toml"), &program);
+    assert_eq!(graded["max"], 220);
+    let zbuffer = &graded["lines"][1];
+    assert_eq!(
+        (
+            zbuffer["id"].as_str(),
+            zbuffer["max"].as_u64(),
+            zbuffer["points"].as_u64()
+        ),
+        (Some("zbuffer"), Some(50), Some(16))
+    );
+}
