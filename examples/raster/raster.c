@@ -6,7 +6,7 @@
  *     raster SCENE TRACE      writes TRACE, TRACE.ppm (colour), TRACE.pfm (depth) and, when it
  *                             sampled one, TRACE.texture.ppm (the texture as it read it)
  *
- * It rasterizes as close2gl's textbook rasterizer (plugins/raster/src/textbook.rs) does, to the
+ * It rasterizes as close2gl's textbook rasterizer (plugins/raster/src/textbook/) does, to the
  * pixel. Compile-time switches (see README.md):
  *   -DMISTAKE_<ID>        one of the catalogued mistakes (docs/raster-trace-format.md)
  *   -DTIE_RULE_TOP_RIGHT, -DTIE_RULE_BOTTOM_LEFT, -DTIE_RULE_BOTTOM_RIGHT   another tie rule
@@ -489,12 +489,12 @@ static vec3 trilinear(const real st[2], real lod)
     return lerp(bilinear((int)below, st), bilinear((int)FMIN(below + 1, top), st), lod - below);
 }
 
-/* ---- the rasterizer (textbook.rs) ----------------------------------------------------------- */
+/* ---- the rasterizer (textbook/) ----------------------------------------------------------- */
 
 /* A corner: window x, y (y up, as the trace gives it), depth, 1/w, and its attributes. */
 typedef struct { real win[4]; real a[ATTRIBUTES]; } corner;
 
-/* What setup makes of a corner: x, y down from the top (textbook.rs's rows), snapped. */
+/* What setup makes of a corner: x, y down from the top (the textbook's rows), snapped. */
 typedef struct { double x, y; long long s[2]; const corner *c; } vertex;
 
 static int W, H, shading, sampled, filter;
@@ -682,7 +682,7 @@ static void draw_triangle(const corner trace[3])
         wx = (real)(long long)wx, wy = (real)(long long)wy;  /* MISTAKE: cast to int */
 #endif
         v[i].c = &trace[i];
-        v[i].x = (double)wx, v[i].y = (double)H - (double)wy;  /* y down, as textbook.rs */
+        v[i].x = (double)wx, v[i].y = (double)H - (double)wy;  /* y down, as the textbook */
         if (!(fabs(v[i].x) <= 2097152 && fabs(v[i].y) <= 2097152) || trace[i].win[2] != trace[i].win[2]
             || !(fabs((double)trace[i].win[3]) < 1e300))
             return;                                 /* not finite, or too far: not drawn */

@@ -6,7 +6,7 @@
 //! of output, however small, fails here and names the scene. A change meant to alter the output (a
 //! fix for parity with the reference, say) takes the new hashes this test prints, in the same
 //! commit, saying why. The same scenes are also drawn by the textbook rasterizer
-//! (`src/textbook.rs`): the same pixels covered, and depth and colour within the tolerances below.
+//! (`src/textbook/`): the same pixels covered, and depth and colour within the tolerances below.
 
 use TextureFilter::Nearest;
 use close2gl_core::glam::{Vec2, Vec3};
@@ -290,7 +290,7 @@ const COLOUR_TOLERANCE: u8 = 1;
 /// where (s, t) falls exactly on a texel's edge, and either texel is right.
 const TEXEL_EDGES: f64 = 1.0 / 2000.0;
 
-/// Every pinned scene drawn by the textbook rasterizer (`src/textbook.rs`) and by the fast one
+/// Every pinned scene drawn by the textbook rasterizer (`src/textbook/`) and by the fast one
 /// (recording fates, so that each pixel's owner is known): the same pixels covered, exactly;
 /// every depth within `DEPTH_TOLERANCE`; where both show the same mesh triangle, every colour
 /// channel within `COLOUR_TOLERANCE` (but at texel edges, see `TEXEL_EDGES`). Where they show
