@@ -17,8 +17,8 @@ use close2gl::core::glam::{Vec2, Vec3};
 use close2gl::core::{
     App, Appearance, Camera, CameraAction, CameraActions, CameraHome, CameraMode, Clipping,
     Close2glFrame, FrameSet, FrontFace, Image, InputState, Lighting, Mesh, ModelSource,
-    ModelStatus, Overlay, PipelineSettings, Rasterizer, RenderMode, SettingsPlugin, Shading,
-    SoftwareFrame, Texture, Topology, Update, Viewport,
+    ModelStatus, Overlay, PipelineSettings, RasterMistake, Rasterizer, RenderMode, SettingsPlugin,
+    Shading, SoftwareFrame, Texture, Topology, Update, Viewport,
 };
 use close2gl::input::InputPlugin;
 use close2gl::pipeline::Close2glPlugin;
@@ -407,6 +407,32 @@ fn software_cube() -> (App, PipelineSettings) {
     app.init_resource::<Lighting>().add_plugins(RasterPlugin);
     camera_mut(&mut app).position = Vec3::new(0.0, 0.0, 6.0);
     (app, software)
+}
+
+#[test]
+fn a_raster_mistake_shows_in_the_software_view_without_recomputing_the_geometry() {
+    let (mut app, _) = software_cube();
+    app.update();
+    let right = app.world().resource::<SoftwareFrame>().image.clone();
+    let geometry = app.world().resource_ref::<Close2glFrame>().last_changed();
+    let mut look = *app.world().resource::<Appearance>();
+    look.raster_mistake = RasterMistake::ChannelsSwapped;
+    app.insert_resource(look);
+    app.update();
+    let swapped = app.world().resource::<SoftwareFrame>().image.clone();
+    let covered: Vec<usize> = (0..right.pixels.len())
+        .filter(|&i| right.pixels[i][3] == 255)
+        .collect();
+    assert!(!covered.is_empty(), "the cube is drawn");
+    for i in covered {
+        let [r, g, b, a] = right.pixels[i];
+        assert_eq!(swapped.pixels[i], [b, g, r, a], "pixel {i}");
+    }
+    let computed = app.world().resource_ref::<Close2glFrame>().last_changed();
+    assert_eq!(
+        computed, geometry,
+        "a raster mistake recomputes no geometry"
+    );
 }
 
 #[test]

@@ -166,8 +166,9 @@ impl Default for PipelineSettings {
 }
 
 /// How the model looks in both views: its colour and shading, the background, its texture and
-/// the texture's filter. The software rasterizer and the GPU views read it; the pipeline never
-/// does, so a change redraws pixels without recomputing the geometry.
+/// the texture's filter, and the rasterizer assignment's mistake Close2GL's own rasterizer makes
+/// on purpose. The software rasterizer and the GPU views read it; the pipeline never does, so a
+/// change redraws pixels without recomputing the geometry.
 #[derive(Resource, Clone, Copy, Debug, PartialEq)]
 pub struct Appearance {
     /// The model's colour, RGB in 0..1.
@@ -179,6 +180,10 @@ pub struct Appearance {
     /// colour).
     pub texture: bool,
     pub texture_filter: TextureFilter,
+    /// A classic mistake of the rasterizer assignment (`none`: the right rasterizer), which
+    /// Close2GL's software rasterizer makes when it draws: the textbook rasterizer then draws
+    /// the view, with the mistake (docs/checking.md, "The rasterizer assignment").
+    pub raster_mistake: crate::RasterMistake,
 }
 
 impl Default for Appearance {
@@ -189,6 +194,7 @@ impl Default for Appearance {
             background: Vec3::new(0.08, 0.08, 0.1),
             texture: true,
             texture_filter: TextureFilter::Trilinear,
+            raster_mistake: crate::RasterMistake::None,
         }
     }
 }

@@ -69,7 +69,7 @@ use bevy_ecs::prelude::*;
 use close2gl_core::Owner;
 use close2gl_core::{
     App, Appearance, Camera, Close2glFrame, Close2glStep, Fates, Lighting, PipelineSettings,
-    Plugin, Rasterizer, SoftwareFrame, Texture, Update,
+    Plugin, RasterMistake, RasterMistakes, Rasterizer, SoftwareFrame, Texture, Update,
 };
 
 pub use rasterizer::SoftwareRasterizer;
@@ -120,6 +120,19 @@ pub fn raster_system(
         true => fates.into_inner(),
         false => fates.bypass_change_detection(),
     };
-    rasterizer.draw(&frame, &camera, &look, &lighting, &mut image, fates);
+    match look.raster_mistake {
+        RasterMistake::None => {
+            rasterizer.draw(&frame, &camera, &look, &lighting, &mut image, fates)
+        }
+        // The mistakes live in the textbook rasterizer only (one place to read each): it draws
+        // the view while one is made, without the fast one's fates.
+        mistake => {
+            let mistakes = RasterMistakes::one(mistake);
+            let texture = texture.as_deref();
+            let drawn =
+                textbook::draw_mistaken(&frame, &camera, &look, &lighting, texture, mistakes);
+            image.image = drawn.image;
+        }
+    }
     image.raster_ms = start.elapsed().as_secs_f64() * 1e3;
 }

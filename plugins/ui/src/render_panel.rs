@@ -1,7 +1,8 @@
 use bevy_ecs::prelude::*;
 use close2gl_core::glam::Vec3;
 use close2gl_core::{
-    Appearance, Clipping, FrontFace, Mistake, PipelineSettings, Rasterizer, RenderMode, Shading,
+    Appearance, Clipping, FrontFace, Mistake, PipelineSettings, RasterMistake, Rasterizer,
+    RenderMode, Shading,
 };
 
 /// Mode, front face, culling, clipping, shading, who rasterizes Close2GL and the model's colour:
@@ -32,6 +33,7 @@ pub fn section(
     });
     mistake(ui, &mut settings.mistake);
     shading(ui, &mut look.shading);
+    raster_mistake(ui, &mut look.raster_mistake);
     rasterizer(ui, &mut settings.close2gl_raster);
     ui.horizontal(|ui| {
         ui.label("Colour");
@@ -49,6 +51,22 @@ fn mistake(ui: &mut egui::Ui, mistake: &mut Mistake) {
     let hover = "Close2GL makes a classic mistake of the assignment on purpose, so that its \
                  symptom shows beside the reference (docs/checking.md).";
     listed(ui, "Mistake", mistake, Mistake::ALL, Mistake::name, hover);
+}
+
+/// A classic mistake of the rasterizer assignment for Close2GL's own rasterizer to make.
+fn raster_mistake(ui: &mut egui::Ui, mistake: &mut RasterMistake) {
+    let hover = "Close2GL's own rasterizer (Close2GL: software) makes a classic mistake of the \
+                 rasterizer assignment on purpose, drawn by the textbook rasterizer: its symptom \
+                 shows beside the reference (docs/checking.md).";
+    let name = RasterMistake::name;
+    listed(
+        ui,
+        "Raster mistake",
+        mistake,
+        RasterMistake::ALL,
+        name,
+        hover,
+    );
 }
 
 /// The shading, from a list: it names what the two views' lighting is.
