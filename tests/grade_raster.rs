@@ -140,3 +140,91 @@ fn a_teachers_edited_rubric_changes_the_points_as_written() {
         (Some("zbuffer"), Some(50), Some(16))
     );
 }
+
+/// The `expect-grade [-DVARIANT]: 200 | LINE=POINTS ...` lines of a corpus program's header, as
+/// (flags, the lines that lose points, sorted).
+fn expected_grades(program: &Path) -> Vec<(Vec<String>, Vec<String>)> {
+    let text = std::fs::read_to_string(program).expect("a corpus program");
+    (text.lines())
+        .filter_map(|line| {
+            line.trim_start_matches([' ', '/', '*', '#'])
+                .strip_prefix("expect-grade")
+        })
+        .map(|rest| {
+            let (flags, points) = rest
+                .split_once(':')
+                .expect("'expect-grade [FLAGS]: POINTS'");
+            let flags = flags.split_whitespace().map(String::from).collect();
+            let mut lost: Vec<String> = (points.split_whitespace())
+                .filter(|w| *w != "200")
+                .map(String::from)
+                .collect();
+            lost.sort();
+            (flags, lost)
+        })
+        .collect()
+}
+
+#[test]
+fn the_rasterizer_corpus_scores_what_its_headers_say() {
+    let dir = TempDir::new("grade-raster-corpus");
+    let examples = repository().join("examples");
+    let corpus = examples.join("corpus/raster");
+    let include: Vec<String> = ["trace", "raster", "corpus/raster"]
+        .iter()
+        .map(|p| format!("-I{}", examples.join(p).display()))
+        .collect();
+    let numpy = Command::new("/usr/bin/python3")
+        .args(["-c", "import numpy"])
+        .status();
+    let mut wrong = Vec::new();
+    for name in ["c_scanline.c", "cpp_barycentric.cpp", "py_numpy.py"] {
+        let source = corpus.join(name);
+        if name.ends_with(".py") && !numpy.as_ref().is_ok_and(|s| s.success()) {
+            eprintln!("skipping {name}: /usr/bin/python3 has no numpy (CI installs python3-numpy)");
+            continue;
+        }
+        for (flags, lost) in expected_grades(&source) {
+            let mut all: Vec<&str> = include.iter().map(String::as_str).collect();
+            all.extend(flags.iter().map(String::as_str));
+            let out = dir.0.join(format!("{name}{}", flags.concat()));
+            let command = match name.rsplit('.').next() {
+                Some("c") => format!(
+                    "{} {{scene}} {{trace}}",
+                    close2gl_testkit::student::compile_c(&source, &out, &all).display()
+                ),
+                Some("cpp") => format!(
+                    "{} {{scene}} {{trace}}",
+                    close2gl_testkit::student::compile_cpp(&source, &out, &all).display()
+                ),
+                _ => {
+                    let path = ["trace", "raster", "corpus/raster"]
+                        .map(|p| examples.join(p).display().to_string())
+                        .join(":");
+                    format!(
+                        "/usr/bin/env PYTHONPATH={path} /usr/bin/python3 {} {{scene}} {{trace}} {}",
+                        source.display(),
+                        flags.join(" ")
+                    )
+                }
+            };
+            let output = Command::new(env!("CARGO_BIN_EXE_close2gl"))
+                .args(["grade", "--json", "--time-limit", "60", "--rubric"])
+                .arg(rubric())
+                .arg("--allow-read")
+                .arg(&examples)
+                .args(["--run", &command])
+                .output()
+                .expect("run close2gl grade");
+            let graded: Value = serde_json::from_slice(&output.stdout)
+                .unwrap_or_else(|_| panic!("{}", String::from_utf8_lossy(&output.stderr)));
+            let (got, _) = self::lost(&graded);
+            if got != lost {
+                wrong.push(format!(
+                    "{name} {flags:?}: expected {lost:?}, graded {got:?}"
+                ));
+            }
+        }
+    }
+    assert!(wrong.is_empty(), "{}", wrong.join("\n"));
+}

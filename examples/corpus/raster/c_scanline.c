@@ -44,7 +44,9 @@
  * expect square -DSKIP_TINY: agree
  * expect-grade: 200
  * expect-grade -DROUND_SPANS: 200
- * expect-grade -DAFFINE_COLOUR: 200
+ * expect-grade -DAFFINE_COLOUR: gouraud=8 synchronized=13
+ *   (predicted before grading: 200, on Gouraud scenes of small triangles; the rubric's Gouraud
+ *   line has floor_gouraud too, whose large slanted triangles show affine colour: graded 181)
  * expect-grade -DNO_DEPTH_WRITE: zbuffer=0 resize=0 synchronized=0
  * expect-grade -DSKIP_TINY: coverage=16 zbuffer=20 gouraud=16 phong=12 resize=7 synchronized=11
  */
