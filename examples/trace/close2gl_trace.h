@@ -595,7 +595,7 @@ int c2g_read_scene(const char *path, c2g_scene *s)
             end_line = l.number;
         } else {
             C2G__FAIL("a scene line (model, window, camera, culling, clipping, mode, lookat, move, "
-                      "rotate, orbit or end)");
+                      "rotate, orbit, shading, color, background, light, texture, filter or end)");
         }
     }
 #undef C2G__FAIL

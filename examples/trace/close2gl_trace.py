@@ -42,7 +42,7 @@ _CHOICES = {"culling": ("off", "ccw", "cw"), "clipping": ("simple", "full", "non
 _MOTIONS = {"move": ("move u|v|n D", "uvn", "D"), "rotate": ("rotate u|v|n DEG", "uvn", "DEG"),
             "orbit": ("orbit u|v D", "uv", "D")}
 _SCENE_LINE = ("a scene line (model, window, camera, culling, clipping, mode, lookat, move, "
-               "rotate, orbit or end)")
+               "rotate, orbit, shading, color, background, light, texture, filter or end)")
 
 
 class Scene(dict):

@@ -64,7 +64,7 @@ pub(crate) fn check_magic(
             error.message += &format!(" (this close2gl reads version {VERSION})");
             Err(error)
         }
-        [word, ..] if Format::of_word(word).is_some() => {
+        [word, ..] if word != format.word() && Format::of_word(word).is_some() => {
             let mut error = line.expected(&magic);
             let other = Format::of_word(word).map_or("", Format::noun);
             error.message += &format!(" (a {other} file, not a {})", format.noun());

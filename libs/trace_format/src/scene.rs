@@ -157,6 +157,18 @@ impl Reader {
                 self.motions.push(motion(line)?);
                 Ok(())
             }
+            _ if self.read_look(line)? => Ok(()),
+            _ => Err(line.expected(
+                "a scene line (model, window, camera, culling, clipping, mode, lookat, move, \
+                 rotate, orbit, shading, color, background, light, texture, filter or end)",
+            )),
+        }
+    }
+
+    /// The rasterizer assignment's lines (`shading`, `color`, `background`, `light`, `texture`,
+    /// `filter`): `Ok(false)` for any other key.
+    fn read_look(&mut self, line: &Line) -> Result<bool, FormatError> {
+        match line.key() {
             "shading" => set_once(
                 &mut self.shading,
                 one_of(line, Shading::ALL, Shading::name)?,
@@ -187,11 +199,9 @@ impl Reader {
                 line.expect_fields(2, "texture PATH")?;
                 set_once(&mut self.texture, line.fields[1].into(), line, "texture")
             }
-            _ => Err(line.expected(
-                "a scene line (model, window, camera, culling, clipping, mode, lookat, move, \
-                 rotate, orbit, shading, color, background, light, texture, filter or end)",
-            )),
-        }
+            _ => return Ok(false),
+        }?;
+        Ok(true)
     }
 
     /// `camera framed`, and the rule that a framed camera takes no pose: `Ok(true)` when the

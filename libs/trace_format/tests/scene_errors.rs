@@ -27,7 +27,8 @@ fn plus(lines: &str) -> String {
 }
 
 const SCENE_LINE: &str = "expected a scene line (model, window, camera, culling, clipping, mode, \
-                          lookat, move, rotate, orbit or end)";
+                          lookat, move, rotate, orbit, shading, color, background, light, texture, \
+                          filter or end)";
 
 #[test]
 fn the_first_line_is_the_magic_and_version() {

@@ -31,15 +31,7 @@ pub(super) fn grade_class(dir: &Path, args: &GradeArgs, plan: &Plan) -> Result<(
             dir.display()
         )));
     }
-    let students = match &args.students {
-        Some(path) => gradebook::read_students(path)?,
-        None => Default::default(),
-    };
-    for (folder, _) in &submissions {
-        if args.students.is_some() && !students.contains_key(folder) {
-            eprintln!("warning: {folder} is not in --students: its folder's name stands for it");
-        }
-    }
+    let students = students(args, &submissions)?;
     let dirs: Vec<Option<PathBuf>> = submissions.iter().map(|(_, p)| Some(p.clone())).collect();
     let label = format!(
         "grading {} submissions ({} scenes each)",
@@ -74,6 +66,23 @@ pub(super) fn grade_class(dir: &Path, args: &GradeArgs, plan: &Plan) -> Result<(
     }
     println!("wrote {}", dir.join("grades.csv").display());
     Ok(())
+}
+
+/// Who each folder is in the gradebook (`--students`), with a warning for each folder it lacks.
+fn students(
+    args: &GradeArgs,
+    submissions: &[(String, PathBuf)],
+) -> Result<std::collections::HashMap<String, gradebook::Student>, CliError> {
+    let Some(path) = &args.students else {
+        return Ok(Default::default());
+    };
+    let students = gradebook::read_students(path)?;
+    for (folder, _) in submissions {
+        if !students.contains_key(folder) {
+            eprintln!("warning: {folder} is not in --students: its folder's name stands for it");
+        }
+    }
+    Ok(students)
 }
 
 /// The folders in `dir` by name (absolute paths), hidden ones left out.

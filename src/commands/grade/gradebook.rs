@@ -81,65 +81,86 @@ pub fn csv(
                 (s.identifier.clone(), s.name.clone())
             })
     };
-    let mut out = String::new();
+    let class = submissions.iter().map(|(folder, _)| folder).zip(grades);
     match format {
-        CsvFormat::Plain | CsvFormat::Moodle => {
-            let moodle = format == CsvFormat::Moodle;
-            let mut header: Vec<String> = match moodle {
-                true => vec!["Identifier".into(), "Full name".into()],
-                false => vec!["submission".into()],
-            };
-            for line in LineId::ALL {
-                header.push(match moodle {
-                    true => format!("{} (close2gl)", line.title()),
-                    false => line.id().into(),
-                });
-            }
-            header.push(if moodle {
-                "Total (close2gl)".into()
-            } else {
-                "total".into()
-            });
-            row(&mut out, &header);
-            for ((folder, _), grade) in submissions.iter().zip(grades) {
-                let (identifier, name) = who(folder);
-                let mut fields = match moodle {
-                    true => vec![identifier, name],
-                    false => vec![folder.clone()],
-                };
-                fields.extend(grade.lines.iter().map(|l| l.points.to_string()));
-                fields.push(grade.total.to_string());
-                row(&mut out, &fields);
-            }
-        }
-        CsvFormat::Canvas => {
-            let first = ["Student", "ID", "SIS User ID", "SIS Login ID", "Section"];
-            let mut header: Vec<String> = first.iter().map(|s| s.to_string()).collect();
-            header.push(assignment.to_string());
-            row(&mut out, &header);
-            let mut possible = vec!["    Points Possible".to_string()];
-            possible.extend(std::iter::repeat_n(String::new(), 4));
-            possible.push(MAX_TOTAL.to_string());
-            row(&mut out, &possible);
-            for ((folder, _), grade) in submissions.iter().zip(grades) {
-                let (identifier, name) = who(folder);
-                let name = if name.is_empty() {
-                    folder.clone()
-                } else {
-                    name
-                };
-                let fields = [
-                    name,
-                    String::new(),
-                    String::new(),
-                    identifier,
-                    String::new(),
-                ];
-                let mut fields = fields.to_vec();
-                fields.push(grade.total.to_string());
-                row(&mut out, &fields);
-            }
-        }
+        CsvFormat::Plain => by_line(false, class, &who),
+        CsvFormat::Moodle => by_line(true, class, &who),
+        CsvFormat::Canvas => canvas(class, &who, assignment),
+    }
+}
+
+/// Who a folder is in the gradebook: its identifier and name.
+type Who<'a> = dyn Fn(&str) -> (String, String) + 'a;
+
+/// Ours (`moodle` false: a row per folder, a column per line and the total) or Moodle's (the
+/// identifier and full name first, each column titled for its import).
+fn by_line<'a>(
+    moodle: bool,
+    class: impl Iterator<Item = (&'a String, &'a Grade)>,
+    who: &Who,
+) -> String {
+    let mut out = String::new();
+    let mut header: Vec<String> = match moodle {
+        true => vec!["Identifier".into(), "Full name".into()],
+        false => vec!["submission".into()],
+    };
+    for line in LineId::ALL {
+        header.push(match moodle {
+            true => format!("{} (close2gl)", line.title()),
+            false => line.id().into(),
+        });
+    }
+    header.push(if moodle {
+        "Total (close2gl)".into()
+    } else {
+        "total".into()
+    });
+    row(&mut out, &header);
+    for (folder, grade) in class {
+        let (identifier, name) = who(folder);
+        let mut fields = match moodle {
+            true => vec![identifier, name],
+            false => vec![folder.clone()],
+        };
+        fields.extend(grade.lines.iter().map(|l| l.points.to_string()));
+        fields.push(grade.total.to_string());
+        row(&mut out, &fields);
+    }
+    out
+}
+
+/// Canvas's gradebook import: its five leading columns, the points possible, the total under
+/// the assignment's column.
+fn canvas<'a>(
+    class: impl Iterator<Item = (&'a String, &'a Grade)>,
+    who: &Who,
+    assignment: &str,
+) -> String {
+    let mut out = String::new();
+    let first = ["Student", "ID", "SIS User ID", "SIS Login ID", "Section"];
+    let mut header: Vec<String> = first.iter().map(|s| s.to_string()).collect();
+    header.push(assignment.to_string());
+    row(&mut out, &header);
+    let mut possible = vec!["    Points Possible".to_string()];
+    possible.extend(std::iter::repeat_n(String::new(), 4));
+    possible.push(MAX_TOTAL.to_string());
+    row(&mut out, &possible);
+    for (folder, grade) in class {
+        let (identifier, name) = who(folder);
+        let name = if name.is_empty() {
+            folder.clone()
+        } else {
+            name
+        };
+        let fields = [
+            name,
+            String::new(),
+            String::new(),
+            identifier,
+            String::new(),
+            grade.total.to_string(),
+        ];
+        row(&mut out, &fields);
     }
     out
 }

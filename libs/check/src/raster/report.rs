@@ -10,69 +10,155 @@ use super::RasterReport;
 use super::corners::{CornerFacts, describe};
 use super::facts::{Facts, Tally};
 
-/// What a mistake does, in a line (docs/raster-trace-format.md pins each).
+/// What each mistake does, in a line (docs/raster-trace-format.md pins each), in the
+/// catalogue's order.
+const MEANINGS: [(M, &str); 39] = [
+    (M::None, "the textbook rasterizer"),
+    (
+        M::FillRuleInclusive,
+        "a pixel centre on an edge is inside for both triangles (shared edges drawn twice)",
+    ),
+    (
+        M::FillRuleExclusive,
+        "a pixel centre on an edge is outside for both triangles (cracks along shared edges)",
+    ),
+    (
+        M::PixelCornerSamples,
+        "pixels are sampled at their corner (i, j), not their centre (i + 0.5, j + 0.5)",
+    ),
+    (
+        M::VerticesRounded,
+        "corners are rounded to whole pixels before setup (no sub-pixel precision)",
+    ),
+    (
+        M::VerticesTruncated,
+        "corners are truncated to whole pixels before setup",
+    ),
+    (
+        M::BoundingBoxShort,
+        "the bounding box loop stops before its last column and row",
+    ),
+    (
+        M::ViewportEdgeSkipped,
+        "the window's last column and row are never drawn",
+    ),
+    (
+        M::DepthPerspective,
+        "depth is interpolated with 1/w like a varying; window z is linear on screen",
+    ),
+    (
+        M::DepthClearedToZero,
+        "the depth buffer is cleared to 0, so no fragment passes 'less'",
+    ),
+    (
+        M::FarthestWins,
+        "the depth test is 'greater' on a buffer cleared to 0: the farthest surface shows",
+    ),
+    (
+        M::NoDepthTest,
+        "every fragment is drawn, later triangles over earlier ones",
+    ),
+    (M::DepthNotWritten, "the depth test never writes the buffer"),
+    (
+        M::DepthNdc,
+        "the depth buffer holds NDC z in [-1, 1], not window z in [0, 1]",
+    ),
+    (
+        M::ColourAffine,
+        "Gouraud's colours are interpolated linearly on screen, without 1/w",
+    ),
+    (
+        M::UvAffine,
+        "texture coordinates are interpolated linearly on screen, without 1/w",
+    ),
+    (
+        M::PhongAffine,
+        "Phong's position and normal are interpolated linearly on screen, without 1/w",
+    ),
+    (
+        M::WeightsRotated,
+        "each corner's barycentric weight is applied to the next corner's values",
+    ),
+    (
+        M::NoInterpolation,
+        "every pixel takes the first corner's values",
+    ),
+    (
+        M::NormalNotRenormalized,
+        "Phong's interpolated normal is not normalised",
+    ),
+    (
+        M::LightInWorld,
+        "the light's world position is used as if it were in eye space",
+    ),
+    (M::NoSpecular, "the specular term is missing"),
+    (M::DiffuseUnclamped, "N·L is not clamped at 0"),
+    (M::SpecularUnclamped, "V·R is not clamped at 0"),
+    (
+        M::BlinnPhong,
+        "the specular term is Blinn's (N·H)^n, not Phong's (V·R)^n",
+    ),
+    (
+        M::NoAttenuation,
+        "the light is not attenuated with distance",
+    ),
+    (
+        M::ViewerAtInfinity,
+        "V is (0, 0, 1) everywhere, not the direction to the eye",
+    ),
+    (
+        M::TNotFlipped,
+        "t = 0 is the image's top row (t grows upwards)",
+    ),
+    (
+        M::NearestRounds,
+        "nearest rounds s·W to the nearest integer instead of flooring it",
+    ),
+    (
+        M::BilinearNoHalfTexel,
+        "bilinear weights miss the half-texel shift (texel centres at i + 0.5)",
+    ),
+    (
+        M::NoWrapBlack,
+        "coordinates outside [0, 1] give black instead of repeating",
+    ),
+    (
+        M::ClampNotRepeat,
+        "coordinates are clamped to the edge instead of repeating",
+    ),
+    (
+        M::LodAbsolute,
+        "the level of detail is |log2 ρ|: magnified pixels take smaller levels",
+    ),
+    (
+        M::LodOneAxis,
+        "ρ is the footprint's step across only, not the longer of across and down",
+    ),
+    (
+        M::LodUnscaled,
+        "ρ is measured in texture coordinates, not texels: always level 0",
+    ),
+    (
+        M::MipNearestLevel,
+        "trilinear takes the nearest level, without blending two",
+    ),
+    (
+        M::RowsBottomFirst,
+        "the buffers are written bottom row first (the picture is upside down)",
+    ),
+    (
+        M::ColourNotClamped,
+        "colours above 1 wrap around instead of clamping at 255",
+    ),
+    (M::ChannelsSwapped, "red and blue are exchanged"),
+];
+
+/// What a mistake does, in a line.
 pub fn meaning(m: M) -> &'static str {
-    match m {
-        M::None => "the textbook rasterizer",
-        M::FillRuleInclusive => {
-            "a pixel centre on an edge is inside for both triangles (shared edges drawn twice)"
-        }
-        M::FillRuleExclusive => {
-            "a pixel centre on an edge is outside for both triangles (cracks along shared edges)"
-        }
-        M::PixelCornerSamples => {
-            "pixels are sampled at their corner (i, j), not their centre (i + 0.5, j + 0.5)"
-        }
-        M::VerticesRounded => {
-            "corners are rounded to whole pixels before setup (no sub-pixel precision)"
-        }
-        M::VerticesTruncated => "corners are truncated to whole pixels before setup",
-        M::BoundingBoxShort => "the bounding box loop stops before its last column and row",
-        M::ViewportEdgeSkipped => "the window's last column and row are never drawn",
-        M::DepthPerspective => {
-            "depth is interpolated with 1/w like a varying; window z is linear on screen"
-        }
-        M::DepthClearedToZero => "the depth buffer is cleared to 0, so no fragment passes 'less'",
-        M::FarthestWins => {
-            "the depth test is 'greater' on a buffer cleared to 0: the farthest surface shows"
-        }
-        M::NoDepthTest => "every fragment is drawn, later triangles over earlier ones",
-        M::DepthNotWritten => "the depth test never writes the buffer",
-        M::DepthNdc => "the depth buffer holds NDC z in [-1, 1], not window z in [0, 1]",
-        M::ColourAffine => "Gouraud's colours are interpolated linearly on screen, without 1/w",
-        M::UvAffine => "texture coordinates are interpolated linearly on screen, without 1/w",
-        M::PhongAffine => {
-            "Phong's position and normal are interpolated linearly on screen, without 1/w"
-        }
-        M::WeightsRotated => {
-            "each corner's barycentric weight is applied to the next corner's values"
-        }
-        M::NoInterpolation => "every pixel takes the first corner's values",
-        M::NormalNotRenormalized => "Phong's interpolated normal is not normalised",
-        M::LightInWorld => "the light's world position is used as if it were in eye space",
-        M::NoSpecular => "the specular term is missing",
-        M::DiffuseUnclamped => "N·L is not clamped at 0",
-        M::SpecularUnclamped => "V·R is not clamped at 0",
-        M::BlinnPhong => "the specular term is Blinn's (N·H)^n, not Phong's (V·R)^n",
-        M::NoAttenuation => "the light is not attenuated with distance",
-        M::ViewerAtInfinity => "V is (0, 0, 1) everywhere, not the direction to the eye",
-        M::TNotFlipped => "t = 0 is the image's top row (t grows upwards)",
-        M::NearestRounds => "nearest rounds s·W to the nearest integer instead of flooring it",
-        M::BilinearNoHalfTexel => {
-            "bilinear weights miss the half-texel shift (texel centres at i + 0.5)"
-        }
-        M::NoWrapBlack => "coordinates outside [0, 1] give black instead of repeating",
-        M::ClampNotRepeat => "coordinates are clamped to the edge instead of repeating",
-        M::LodAbsolute => "the level of detail is |log2 ρ|: magnified pixels take smaller levels",
-        M::LodOneAxis => "ρ is the footprint's step across only, not the longer of across and down",
-        M::LodUnscaled => "ρ is measured in texture coordinates, not texels: always level 0",
-        M::MipNearestLevel => "trilinear takes the nearest level, without blending two",
-        M::RowsBottomFirst => {
-            "the buffers are written bottom row first (the picture is upside down)"
-        }
-        M::ColourNotClamped => "colours above 1 wrap around instead of clamping at 255",
-        M::ChannelsSwapped => "red and blue are exchanged",
-    }
+    MEANINGS
+        .iter()
+        .find(|(k, _)| *k == m)
+        .map_or("", |(_, text)| text)
 }
 
 /// The legal rules that differ from close2gl's own, as sentences.

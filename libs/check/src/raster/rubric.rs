@@ -114,21 +114,7 @@ fn rubric_line(
             "a whole number of points, 0 or more",
         )
     })?;
-    let stage_names = RasterStage::ALL
-        .iter()
-        .map(|s| s.name())
-        .collect::<Vec<_>>()
-        .join(", ");
-    let stages = (strings("stages")?.iter())
-        .map(|s| {
-            RasterStage::from_name(s).ok_or_else(|| {
-                fail(
-                    &format!("{key}.stages"),
-                    &format!("stages among {stage_names}, found '{s}'"),
-                )
-            })
-        })
-        .collect::<Result<Vec<_>, _>>()?;
+    let stages = stages(&strings("stages")?, &format!("{key}.stages"), fail)?;
     let known = ["id", "title", "points", "stages", "scenes"];
     if let Some(other) = line.keys().find(|k| !known.contains(&k.as_str())) {
         return Err(fail(
@@ -143,6 +129,20 @@ fn rubric_line(
         stages,
         scenes: strings("scenes")?,
     })
+}
+
+/// The stages `names` name; `key` is where they are written.
+fn stages(
+    names: &[String],
+    key: &str,
+    fail: &dyn Fn(&str, &str) -> String,
+) -> Result<Vec<RasterStage>, String> {
+    let all: Vec<&str> = RasterStage::ALL.iter().map(|s| s.name()).collect();
+    let stage = |name: &String| {
+        let what = format!("stages among {}, found '{name}'", all.join(", "));
+        RasterStage::from_name(name).ok_or_else(|| fail(key, &what))
+    };
+    names.iter().map(stage).collect()
 }
 
 /// Whether a scene passes `line`, and why not: check names a mistake of the line's stages, or

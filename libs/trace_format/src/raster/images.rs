@@ -178,10 +178,14 @@ mod tests {
             values: vec![0.25, 0.5, 0.75, 1.0],
         };
         let bytes = pfm_bytes(&depth);
-        // PFM's first row is the bottom one.
+        // PFM's first row is the bottom one: 0.75 comes first, the top row's 0.25 last but one.
+        assert_eq!(
+            &bytes[bytes.len() - 16..bytes.len() - 12],
+            &0.75f32.to_le_bytes()
+        );
         assert_eq!(
             &bytes[bytes.len() - 8..bytes.len() - 4],
-            &0.5f32.to_le_bytes()
+            &0.25f32.to_le_bytes()
         );
         assert_eq!(read_pfm(&bytes, "a.pfm"), Ok(depth));
         let text = b"P3\n# a comment\n1 1\n255\n 9 8\n7\n";

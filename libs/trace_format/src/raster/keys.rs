@@ -44,25 +44,8 @@ impl Reader {
                 set_once(&mut self.model, line.fields[1].into(), line, "model")
             }
             "window" => set_once(&mut self.window, window(line)?, line, "window"),
-            "origin" => {
-                const SHAPE: &str = "origin bottom-left|top-left";
-                line.expect_fields(2, SHAPE)?;
-                let y_up = match line.fields[1] {
-                    "bottom-left" => true,
-                    "top-left" => false,
-                    _ => return Err(line.wrong_shape(SHAPE)),
-                };
-                set_once(&mut self.origin, y_up, line, "origin")
-            }
-            "subpixel" => {
-                const SHAPE: &str = "subpixel B";
-                line.expect_fields(2, SHAPE)?;
-                let bits = line.integer(1, "B", SHAPE)?;
-                if bits > 16 {
-                    return Err(line.expected("'subpixel B' with B in 0..=16"));
-                }
-                set_once(&mut self.subpixel, bits as u32, line, "subpixel")
-            }
+            "origin" => set_once(&mut self.origin, origin(line)?, line, "origin"),
+            "subpixel" => set_once(&mut self.subpixel, subpixel(line)?, line, "subpixel"),
             "shading" => {
                 let shading = one_of(line, Shading::ALL, Shading::name)?;
                 set_once(&mut self.shading, shading, line, "shading")
@@ -204,6 +187,27 @@ impl Reader {
             attributes,
             triangles: self.triangles,
         })
+    }
+}
+
+/// `origin bottom-left|top-left`: whether y grows upwards.
+fn origin(line: &Line) -> Result<bool, FormatError> {
+    const SHAPE: &str = "origin bottom-left|top-left";
+    line.expect_fields(2, SHAPE)?;
+    match line.fields[1] {
+        "bottom-left" => Ok(true),
+        "top-left" => Ok(false),
+        _ => Err(line.wrong_shape(SHAPE)),
+    }
+}
+
+/// `subpixel B`, B in 0..=16.
+fn subpixel(line: &Line) -> Result<u32, FormatError> {
+    const SHAPE: &str = "subpixel B";
+    line.expect_fields(2, SHAPE)?;
+    match line.integer(1, "B", SHAPE)? {
+        bits @ 0..=16 => Ok(bits as u32),
+        _ => Err(line.expected("'subpixel B' with B in 0..=16")),
     }
 }
 
