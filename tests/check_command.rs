@@ -152,3 +152,74 @@ fn traces_that_lie_stop_with_a_line_numbered_error() {
         assert!(out.stdout.is_empty(), "{name}: nothing half-reported");
     }
 }
+
+/// `close2gl check ARGS...`.
+fn close2gl_check(args: &[&std::ffi::OsStr]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_close2gl"))
+        .arg("check")
+        .args(args)
+        .output()
+        .expect("run close2gl check")
+}
+
+#[test]
+fn a_raster_trace_alone_is_checked_probed_and_pictured() {
+    let dir = TempDir::new("check-raster");
+    let examples = close2gl_testkit::student::repository().join("examples/raster");
+    let mut traces = Vec::new();
+    for (name, flags) in [
+        ("right", vec![]),
+        ("swapped", vec!["-DMISTAKE_CHANNELS_SWAPPED"]),
+    ] {
+        let program = close2gl_testkit::student::compile_raster(&dir.0, name, &flags);
+        let trace = dir.0.join(format!("{name}.trace"));
+        let ran = Command::new(&program)
+            .arg(examples.join("square.scene"))
+            .arg(&trace)
+            .current_dir(&examples)
+            .status()
+            .expect("run raster");
+        assert!(ran.success());
+        traces.push(trace);
+    }
+    let right = close2gl_check(&[traces[0].as_os_str()]);
+    assert_eq!(
+        right.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&right.stdout)
+    );
+    assert!(String::from_utf8_lossy(&right.stdout).contains("agrees"));
+    let out = dir.0.join("pictures");
+    let swapped = close2gl_check(&[traces[1].as_os_str(), "--out".as_ref(), out.as_os_str()]);
+    let text = String::from_utf8_lossy(&swapped.stdout);
+    assert_eq!(swapped.status.code(), Some(1), "{text}");
+    assert!(text.contains("channels_swapped (output)"), "{text}");
+    for picture in ["yours", "close2gl", "coverage", "depth", "colour"] {
+        assert!(
+            out.join(format!("{picture}.png")).is_file(),
+            "{picture}.png"
+        );
+    }
+    let probe = close2gl_check(&[
+        traces[1].as_os_str(),
+        "--pixel".as_ref(),
+        "30".as_ref(),
+        "30".as_ref(),
+    ]);
+    let text = String::from_utf8_lossy(&probe.stdout);
+    assert!(
+        text.starts_with("pixel (30, 30): yours colour") && text.contains("close2gl: colour"),
+        "{text}"
+    );
+    // A geometry trace alone is not a raster trace: a one-line error, exit 2.
+    let geometry = dir.0.join("geometry.trace");
+    std::fs::write(&geometry, "close2gl-trace 1\n").expect("write");
+    let wrong = close2gl_check(&[geometry.as_os_str()]);
+    assert_eq!(wrong.status.code(), Some(2));
+    let error = String::from_utf8_lossy(&wrong.stderr);
+    assert!(
+        error.contains("expected a raster trace ('close2gl-raster 1')"),
+        "{error}"
+    );
+}
