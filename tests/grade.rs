@@ -15,7 +15,7 @@ use std::time::{Duration, Instant};
 
 use close2gl::core::Mistake;
 use close2gl_testkit::TempDir;
-use close2gl_testkit::student::{asset, compile_c, compile_pipeline, mistake_flag};
+use close2gl_testkit::student::{asset, compile_c, compile_pipeline, mistake_flag, repository};
 use serde_json::Value;
 
 /// Runs `close2gl grade ARGS` with TMPDIR = `tmp`; its output and how long it took.
@@ -240,6 +240,57 @@ fn each_mistake_loses_exactly_its_lines_and_is_named() {
             );
         }
     }
+}
+
+#[test]
+fn a_teachers_edited_geometry_rubric_changes_the_points_as_written() {
+    let dir = TempDir::new("grade_rubric_file");
+    let bundled = repository().join("assets/rubrics/geometry/rubric.toml");
+    let edited = std::fs::read_to_string(&bundled)
+        .expect("the bundled rubric")
+        .replace(
+            "title = \"Backface culling\"\npoints = 25",
+            "title = \"Culling\"\npoints = 40",
+        );
+    let rubric = dir.join("rubric.toml");
+    std::fs::write(&rubric, edited).expect("write the edited rubric");
+    let program = compile_pipeline(&dir, "inverted", &[&mistake_flag("culling_inverted")]);
+    let command = format!("'{}' {{scene}} {{trace}}", program.display());
+    let cube = asset("cube.in").display().to_string();
+    let args = [
+        "--run",
+        &command,
+        "--json",
+        "--model",
+        &cube,
+        "--rubric",
+        path(&rubric),
+    ];
+    let (output, _) = grade(&args, &dir.join("tmp"));
+    assert!(
+        output.status.success(),
+        "{}",
+        String::from_utf8_lossy(&output.stderr)
+    );
+    let graded: Value = serde_json::from_slice(&output.stdout).expect("JSON");
+    assert_eq!(graded["max"], 215, "the rubric's total");
+    let culling = line(&graded, "culling");
+    assert_eq!(
+        (culling["max"].as_u64(), culling["title"].as_str()),
+        (Some(40), Some("Culling"))
+    );
+    // The bundled default grades the same program out of 25 for culling.
+    let default = grade_json(&program, &["cube.in"], &dir);
+    let lost = |g: &Value, max: u64| max - line(g, "culling")["points"].as_u64().unwrap_or(0);
+    assert!(
+        lost(&default, 25) > 0,
+        "inverted culling costs culling points"
+    );
+    let share = |g: &Value, max: f64| line(g, "culling")["points"].as_f64().unwrap_or(0.0) / max;
+    assert!(
+        (share(&graded, 40.0) - share(&default, 25.0)).abs() < 0.05,
+        "the same scenes pass"
+    );
 }
 
 #[test]

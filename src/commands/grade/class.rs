@@ -6,8 +6,6 @@
 
 use std::path::{Path, PathBuf};
 
-use close2gl_check::rubric::MAX_TOTAL;
-
 use super::graded::Grade;
 use super::{CliError, GradeArgs, Plan, gradebook, html, run_tasks};
 
@@ -41,7 +39,10 @@ pub(super) fn grade_class(dir: &Path, args: &GradeArgs, plan: &Plan) -> Result<(
     // Said once the input is known to be good, before the first program runs.
     eprintln!("{}", plan.sandboxing.banner(plan.words, true));
     let results = run_tasks(plan, &dirs, label)?;
-    let grades: Vec<Grade> = results.into_iter().map(Grade::new).collect();
+    let points = &plan.rubric.points;
+    let grades: Vec<Grade> = (results.into_iter())
+        .map(|r| Grade::new(r, points))
+        .collect();
     let write = |path: PathBuf, text: String| {
         std::fs::write(&path, text)
             .map_err(|e| CliError::Runtime(format!("{}: cannot write: {e}", path.display())))
@@ -58,11 +59,12 @@ pub(super) fn grade_class(dir: &Path, args: &GradeArgs, plan: &Plan) -> Result<(
         &grades,
         &students,
         &args.assignment,
+        points,
     );
     write(dir.join("grades.csv"), csv)?;
     println!("{}", plan.sandboxing.summary());
     for ((name, _), grade) in submissions.iter().zip(&grades) {
-        println!("{name}: {}/{MAX_TOTAL}", grade.total);
+        println!("{name}: {}/{}", grade.total, grade.max);
     }
     println!("wrote {}", dir.join("grades.csv").display());
     Ok(())

@@ -9,7 +9,7 @@ use std::collections::HashMap;
 use std::fmt::Write;
 use std::path::{Path, PathBuf};
 
-use close2gl_check::rubric::{LineId, MAX_TOTAL};
+use close2gl_check::rubric::{LineId, LinePoints};
 
 use super::CliError;
 use super::graded::Grade;
@@ -73,6 +73,7 @@ pub fn csv(
     grades: &[Grade],
     students: &HashMap<String, Student>,
     assignment: &str,
+    rubric: &LinePoints,
 ) -> String {
     let who = |folder: &str| {
         students
@@ -83,9 +84,9 @@ pub fn csv(
     };
     let class = submissions.iter().map(|(folder, _)| folder).zip(grades);
     match format {
-        CsvFormat::Plain => by_line(false, class, &who),
-        CsvFormat::Moodle => by_line(true, class, &who),
-        CsvFormat::Canvas => canvas(class, &who, assignment),
+        CsvFormat::Plain => by_line(false, class, &who, rubric),
+        CsvFormat::Moodle => by_line(true, class, &who, rubric),
+        CsvFormat::Canvas => canvas(class, &who, assignment, rubric.total()),
     }
 }
 
@@ -98,6 +99,7 @@ fn by_line<'a>(
     moodle: bool,
     class: impl Iterator<Item = (&'a String, &'a Grade)>,
     who: &Who,
+    rubric: &LinePoints,
 ) -> String {
     let mut out = String::new();
     let mut header: Vec<String> = match moodle {
@@ -106,7 +108,7 @@ fn by_line<'a>(
     };
     for line in LineId::ALL {
         header.push(match moodle {
-            true => format!("{} (close2gl)", line.title()),
+            true => format!("{} (close2gl)", rubric.title(line)),
             false => line.id().into(),
         });
     }
@@ -135,6 +137,7 @@ fn canvas<'a>(
     class: impl Iterator<Item = (&'a String, &'a Grade)>,
     who: &Who,
     assignment: &str,
+    possible_points: u32,
 ) -> String {
     let mut out = String::new();
     let first = ["Student", "ID", "SIS User ID", "SIS Login ID", "Section"];
@@ -143,7 +146,7 @@ fn canvas<'a>(
     row(&mut out, &header);
     let mut possible = vec!["    Points Possible".to_string()];
     possible.extend(std::iter::repeat_n(String::new(), 4));
-    possible.push(MAX_TOTAL.to_string());
+    possible.push(possible_points.to_string());
     row(&mut out, &possible);
     for (folder, grade) in class {
         let (identifier, name) = who(folder);

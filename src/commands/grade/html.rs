@@ -6,7 +6,6 @@ use std::fmt::Write;
 
 use base64::Engine;
 use base64::engine::general_purpose::STANDARD;
-use close2gl_check::rubric::MAX_TOTAL;
 
 use super::graded::Grade;
 use super::report::failure_lines;
@@ -28,10 +27,11 @@ pub fn page(grade: &Grade, title: &str, command: &str, sandboxing: &Sandboxing) 
     let _ = write!(
         out,
         "<!DOCTYPE html><html><head><meta charset=\"utf-8\"><title>{}</title><style>{STYLE}\
-         </style></head><body><h1>{}: {}/{MAX_TOTAL}</h1><p><code>{}</code></p>",
+         </style></head><body><h1>{}: {}/{}</h1><p><code>{}</code></p>",
         escape(title),
         escape(title),
         grade.total,
+        grade.max,
         escape(command)
     );
     sandbox_list(&mut out, sandboxing);
@@ -104,7 +104,7 @@ fn failing_scene(out: &mut String, scene: &SceneResult) {
 fn rubric_table(out: &mut String, grade: &Grade) {
     out.push_str("<table><tr><th>line</th><th>points</th><th>scenes</th><th></th></tr>");
     for line in &grade.lines {
-        let class = if line.points == line.line.max_points() {
+        let class = if line.points == line.max {
             "full"
         } else {
             "lost"
@@ -117,9 +117,9 @@ fn rubric_table(out: &mut String, grade: &Grade) {
             out,
             "<tr class=\"{class}\"><td>{}</td><td class=\"n\">{}/{}</td><td class=\"n\">{}/{}</td>\
              <td class=\"why\">{}</td></tr>",
-            escape(line.line.title()),
+            escape(&line.title),
             line.points,
-            line.line.max_points(),
+            line.max,
             line.passed,
             line.scenes,
             escape(why.trim())
@@ -127,8 +127,8 @@ fn rubric_table(out: &mut String, grade: &Grade) {
     }
     let _ = write!(
         out,
-        "<tr><th>total</th><th class=\"n\">{}/{MAX_TOTAL}</th><th></th><th></th></tr></table>",
-        grade.total
+        "<tr><th>total</th><th class=\"n\">{}/{}</th><th></th><th></th></tr></table>",
+        grade.total, grade.max
     );
 }
 

@@ -27,7 +27,7 @@ use std::sync::Mutex;
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::time::Duration;
 
-use close2gl_check::rubric::{self, LineId, RubricScene};
+use close2gl_check::rubric::{self, LineId, LinePoints, RubricScene};
 use close2gl_core::{Mesh, ModelSource, PrimitiveParams};
 use close2gl_runner::Limits;
 
@@ -93,9 +93,10 @@ pub struct GradeArgs {
     /// `folder,identifier[,name]` rows (otherwise the folder's name).
     #[arg(long, value_name = "FILE")]
     pub students: Option<PathBuf>,
-    /// Grade on this rubric file instead (TOML: lines, points, scenes, the stages deciding each):
-    /// `assets/rubrics/rasterizer/rubric.toml` grades the rasterizer assignment, its program writing a
-    /// raster trace (close2gl-raster 1) with its buffers.
+    /// Grade on this rubric file (TOML): assets/rubrics/geometry/rubric.toml is the first
+    /// assignment's, the default (edit its points and titles); assets/rubrics/rasterizer/
+    /// rubric.toml grades the rasterizer assignment (lines, points, scenes, the stages deciding
+    /// each), its program writing a raster trace (close2gl-raster 1) with its buffers.
     #[arg(long, value_name = "FILE")]
     pub rubric: Option<PathBuf>,
     /// With --csv-format canvas, the assignment's column as Canvas exported it
@@ -114,10 +115,11 @@ pub struct Model {
     pub mesh: Mesh,
 }
 
-/// The scenes of every model, each with the index of its model.
+/// The scenes of every model, each with the index of its model, and what each line is worth.
 pub struct Rubric {
     pub models: Vec<Model>,
     pub scenes: Vec<(usize, RubricScene)>,
+    pub points: LinePoints,
 }
 
 /// A scene close2gl failed to judge (it panicked): the scene fails, grading goes on.
@@ -169,10 +171,16 @@ pub fn run(args: GradeArgs) -> Result<(), CliError> {
         None => std::thread::available_parallelism().map_or(1, |n| n.get()),
     };
     let sandboxing = Sandboxing::new(args.unsandboxed, &args.allow_read)?;
-    if let Some(path) = &args.rubric {
-        return grade_on_rubric_file(path, &args, &words, limits, sandboxing, jobs);
-    }
     let mut rubric = load_rubric(&args.models)?;
+    if let Some(path) = &args.rubric {
+        let text = std::fs::read_to_string(path)
+            .map_err(|e| CliError::Input(format!("{}: cannot read: {e}", path.display())))?;
+        if rubric::file::assignment(&text).as_deref() == Some("rasterizer") {
+            return grade_on_rubric_file(path, &args, &words, limits, sandboxing, jobs);
+        }
+        let file = path.display().to_string();
+        rubric.points = LinePoints::parse(&text, &file).map_err(CliError::Input)?;
+    }
     if let Some(id) = &args.line {
         let line = LineId::ALL.iter().find(|l| l.id() == id).ok_or_else(|| {
             let ids: Vec<&str> = LineId::ALL.iter().map(|l| l.id()).collect();
@@ -224,6 +232,7 @@ fn grade_on_rubric_file(
     let rubric = Rubric {
         models: Vec::new(),
         scenes: Vec::new(),
+        points: LinePoints::default(),
     };
     let plan = Plan {
         words,
@@ -243,7 +252,7 @@ fn grade_one(args: &GradeArgs, plan: &Plan) -> Result<(), CliError> {
     eprintln!("{}", plan.sandboxing.banner(plan.words, false));
     let started = std::time::Instant::now();
     let mut results = run_tasks(plan, &[None], label)?;
-    let grade = Grade::new(results.remove(0));
+    let grade = Grade::new(results.remove(0), &plan.rubric.points);
     let only = args.line.as_deref();
     if let Some(dir) = &args.gradescope {
         let results = platforms::gradescope(&grade, only, args.details, started.elapsed());
@@ -273,7 +282,7 @@ fn line_only(grade: &Grade, id: &str) -> Result<(), CliError> {
         return Ok(());
     };
     println!("{}", platforms::summary(line));
-    match line.points == line.line.max_points() {
+    match line.points == line.max {
         true => Ok(()),
         false => Err(CliError::Verdict),
     }
@@ -374,7 +383,11 @@ fn load_rubric(given: &[PathBuf]) -> Result<Rubric, CliError> {
                 .map(move |s| (i, s))
         })
         .collect();
-    Ok(Rubric { models, scenes })
+    Ok(Rubric {
+        models,
+        scenes,
+        points: LinePoints::default(),
+    })
 }
 
 fn load_model(path: &Path) -> Result<Model, CliError> {

@@ -6,7 +6,7 @@
 
 use std::fmt::Write;
 
-use close2gl_check::rubric::{LineScore, MAX_TOTAL};
+use close2gl_check::rubric::LineScore;
 use serde_json::{Value, json};
 
 use super::graded::Grade;
@@ -27,9 +27,9 @@ pub fn table(grade: &Grade, command: &str, sandboxing: &Sandboxing) -> String {
     }
     let _ = writeln!(out, "{:<40} {:>7} {:>9}", "line", "points", "scenes");
     for line in &grade.lines {
-        let points = format!("{}/{}", line.points, line.line.max_points());
+        let points = format!("{}/{}", line.points, line.max);
         let scenes = format!("{}/{}", line.passed, line.scenes);
-        let _ = writeln!(out, "{:<40} {points:>7} {scenes:>9}", line.line.title());
+        let _ = writeln!(out, "{:<40} {points:>7} {scenes:>9}", line.title.as_str());
         for note in &line.notes {
             let _ = writeln!(out, "    accepted: {note}");
         }
@@ -41,7 +41,7 @@ pub fn table(grade: &Grade, command: &str, sandboxing: &Sandboxing) -> String {
         out,
         "{:<40} {:>7}",
         "total",
-        format!("{}/{MAX_TOTAL}", grade.total)
+        format!("{}/{}", grade.total, grade.max)
     );
     out
 }
@@ -82,7 +82,7 @@ pub fn json(grade: &Grade, sandboxing: &Sandboxing) -> Value {
         .collect();
     json!({
         "total": grade.total,
-        "max": MAX_TOTAL,
+        "max": grade.max,
         "to_fix": bugs,
         "lines": lines,
         "scenes": scenes,
@@ -105,8 +105,9 @@ fn line_json(grade: &Grade, line: &LineScore) -> Value {
         .collect();
     json!({
         "id": line.line.id(),
+        "title": line.title,
         "points": line.points,
-        "max": line.line.max_points(),
+        "max": line.max,
         "scenes": line.scenes,
         "passed": line.passed,
         "mistakes": names,

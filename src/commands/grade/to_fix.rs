@@ -23,7 +23,7 @@ pub fn bugs(grade: &Grade) -> Vec<Bug> {
     let mut bugs: Vec<Bug> = Vec::new();
     for line in grade.lines.iter().filter(|l| !l.failures.is_empty()) {
         let (cause, example) = cause(grade, line);
-        let lost = line.line.max_points() - line.points;
+        let lost = line.max - line.points;
         match bugs.iter_mut().find(|b| b.cause == cause) {
             Some(bug) => {
                 bug.lines.push(line.line);

@@ -6,6 +6,7 @@
 use close2gl_core::{RasterMistake, RasterStage};
 
 use super::RasterReport;
+use crate::rubric::file;
 
 /// One line of a rubric.
 #[derive(Clone, Debug, PartialEq)]
@@ -28,32 +29,9 @@ pub struct Rubric {
 impl Rubric {
     /// The rubric in `text`; `file` labels its errors, each naming the key that is wrong.
     pub fn parse(text: &str, file: &str) -> Result<Rubric, String> {
-        let table: toml::Table = text.parse().map_err(|e: toml::de::Error| {
-            let message = e.message().to_string();
-            let line = e
-                .span()
-                .map_or(0, |s| 1 + text[..s.start].matches('\n').count());
-            format!("{file}:{line}: {message}")
-        })?;
-        let fail = |key: &str, what: &str| format!("{file}: {key}: expected {what}");
-        match table.get("assignment").and_then(|v| v.as_str()) {
-            Some("rasterizer") => {}
-            _ => return Err(fail("assignment", "\"rasterizer\"")),
-        }
-        let known = ["assignment", "line"];
-        if let Some(key) = table.keys().find(|k| !known.contains(&k.as_str())) {
-            return Err(fail(key, "only 'assignment' and '[[line]]' tables"));
-        }
-        let lines = table
-            .get("line")
-            .and_then(|v| v.as_array())
-            .filter(|a| !a.is_empty());
-        let lines = lines.ok_or_else(|| fail("line", "at least one [[line]]"))?;
         let mut read = Vec::new();
-        for (i, line) in lines.iter().enumerate() {
-            let key = format!("line[{}]", i + 1);
-            let line = line.as_table().ok_or_else(|| fail(&key, "a table"))?;
-            read.push(rubric_line(line, &key, &fail)?);
+        for (key, line) in file::lines(text, file, "rasterizer")? {
+            read.push(rubric_line(&line, &key, file)?);
         }
         let mut scenes: Vec<String> = Vec::new();
         for name in read.iter().flat_map(|l| &l.scenes) {
@@ -78,69 +56,40 @@ impl Rubric {
     }
 }
 
-fn rubric_line(
-    line: &toml::Table,
-    key: &str,
-    fail: &dyn Fn(&str, &str) -> String,
-) -> Result<RubricLine, String> {
-    let string = |name: &str| {
-        let value = line
-            .get(name)
-            .and_then(|v| v.as_str())
-            .filter(|s| !s.is_empty());
-        value
-            .map(String::from)
-            .ok_or_else(|| fail(&format!("{key}.{name}"), "a text"))
-    };
-    let strings = |name: &str| -> Result<Vec<String>, String> {
-        let what = "a list of names";
+fn rubric_line(line: &toml::Table, key: &str, file: &str) -> Result<RubricLine, String> {
+    let known = ["id", "title", "points", "stages", "scenes"];
+    let (id, title, points) = file::head(line, key, file, &known)?;
+    let fail = |name: &str, what: &str| format!("{file}: {key}.{name}: expected {what}");
+    let names = |name: &str| -> Result<Vec<String>, String> {
         let array = line
             .get(name)
             .and_then(|v| v.as_array())
             .filter(|a| !a.is_empty());
-        let array = array.ok_or_else(|| fail(&format!("{key}.{name}"), what))?;
+        let array = array.ok_or_else(|| fail(name, "a list of names"))?;
         (array.iter())
             .map(|v| {
                 v.as_str()
                     .map(String::from)
-                    .ok_or_else(|| fail(&format!("{key}.{name}"), what))
+                    .ok_or_else(|| fail(name, "a list of names"))
             })
             .collect()
     };
-    let points = line.get("points").and_then(|v| v.as_integer());
-    let points = points.and_then(|p| u32::try_from(p).ok()).ok_or_else(|| {
-        fail(
-            &format!("{key}.points"),
-            "a whole number of points, 0 or more",
-        )
-    })?;
-    let stages = stages(&strings("stages")?, &format!("{key}.stages"), fail)?;
-    let known = ["id", "title", "points", "stages", "scenes"];
-    if let Some(other) = line.keys().find(|k| !known.contains(&k.as_str())) {
-        return Err(fail(
-            &format!("{key}.{other}"),
-            "only id, title, points, stages, scenes",
-        ));
-    }
+    let stages = stages(&names("stages")?, &|what| fail("stages", what))?;
     Ok(RubricLine {
-        id: string("id")?,
-        title: string("title")?,
+        id,
+        title,
         points,
         stages,
-        scenes: strings("scenes")?,
+        scenes: names("scenes")?,
     })
 }
 
-/// The stages `names` name; `key` is where they are written.
-fn stages(
-    names: &[String],
-    key: &str,
-    fail: &dyn Fn(&str, &str) -> String,
-) -> Result<Vec<RasterStage>, String> {
+/// The stages `names` name; `fail` words an error about them.
+fn stages(names: &[String], fail: &dyn Fn(&str) -> String) -> Result<Vec<RasterStage>, String> {
     let all: Vec<&str> = RasterStage::ALL.iter().map(|s| s.name()).collect();
     let stage = |name: &String| {
         let what = format!("stages among {}, found '{name}'", all.join(", "));
-        RasterStage::from_name(name).ok_or_else(|| fail(key, &what))
+        RasterStage::from_name(name).ok_or_else(|| fail(&what))
     };
     names.iter().map(stage).collect()
 }

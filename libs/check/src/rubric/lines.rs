@@ -20,9 +20,6 @@ pub enum LineId {
 
 use close2gl_core::Mistake;
 
-/// What the whole rubric is worth.
-pub const MAX_TOTAL: u32 = 200;
-
 impl LineId {
     /// In the rubric's order.
     pub const ALL: [LineId; 12] = [
@@ -118,13 +115,86 @@ impl LineId {
             LineId::Resize => Some(&[M::ViewportYFlipped, M::ViewportFullScale]),
         }
     }
+}
 
-    /// The points for `passed` of `scenes`: the line's points shared out evenly over its
+/// What each line is worth and what it is called, as a rubric file says
+/// (`assets/rubrics/geometry/rubric.toml`); the assignment's 200 points by default. The lines
+/// themselves, their scenes and judgments are close2gl's.
+#[derive(Clone, Debug, PartialEq)]
+pub struct LinePoints(Vec<(LineId, String, u32)>);
+
+impl Default for LinePoints {
+    fn default() -> Self {
+        let lines = LineId::ALL
+            .iter()
+            .map(|&l| (l, l.title().to_string(), l.max_points()));
+        LinePoints(lines.collect())
+    }
+}
+
+impl LinePoints {
+    /// The rubric in `text` (`assignment = "geometry"`, a `[[line]]` with `id`, `title` and
+    /// `points` for each of the twelve lines); `file` labels its errors.
+    pub fn parse(text: &str, file: &str) -> Result<LinePoints, String> {
+        let mut read: Vec<(LineId, String, u32)> = Vec::new();
+        for (key, line) in super::file::lines(text, file, "geometry")? {
+            let (id, title, points) =
+                super::file::head(&line, &key, file, &["id", "title", "points"])?;
+            let ids: Vec<&str> = LineId::ALL.iter().map(|l| l.id()).collect();
+            let found = LineId::ALL.iter().find(|l| l.id() == id);
+            let line = found.ok_or_else(|| {
+                format!(
+                    "{file}: {key}.id: expected one of {}, found '{id}'",
+                    ids.join(", ")
+                )
+            })?;
+            if read.iter().any(|(l, _, _)| l == line) {
+                return Err(format!(
+                    "{file}: {key}.id: expected each line once, found '{id}' again"
+                ));
+            }
+            read.push((*line, title, points));
+        }
+        if let Some(missing) = LineId::ALL
+            .iter()
+            .find(|l| !read.iter().any(|(r, _, _)| r == *l))
+        {
+            return Err(format!(
+                "{file}: line: expected a [[line]] for '{}'",
+                missing.id()
+            ));
+        }
+        read.sort_by_key(|(line, _, _)| *line);
+        Ok(LinePoints(read))
+    }
+
+    /// The line's points.
+    pub fn max(&self, line: LineId) -> u32 {
+        self.0
+            .iter()
+            .find(|(l, _, _)| *l == line)
+            .map_or(0, |(_, _, p)| *p)
+    }
+
+    /// The line's title.
+    pub fn title(&self, line: LineId) -> &str {
+        self.0
+            .iter()
+            .find(|(l, _, _)| *l == line)
+            .map_or("", |(_, t, _)| t)
+    }
+
+    /// What the whole rubric is worth.
+    pub fn total(&self) -> u32 {
+        self.0.iter().map(|(_, _, p)| p).sum()
+    }
+
+    /// The points for `passed` of `scenes` of `line`: its points shared out evenly over its
     /// scenes, rounded down (so a line with every scene passed has all its points).
-    pub fn points(self, passed: usize, scenes: usize) -> u32 {
+    pub fn points(&self, line: LineId, passed: usize, scenes: usize) -> u32 {
         match scenes {
             0 => 0,
-            _ => (u64::from(self.max_points()) * passed as u64 / scenes as u64) as u32,
+            _ => (u64::from(self.max(line)) * passed as u64 / scenes as u64) as u32,
         }
     }
 }
@@ -136,14 +206,31 @@ mod tests {
     #[test]
     fn the_lines_add_up_to_the_assignments_200() {
         let total: u32 = LineId::ALL.iter().map(|l| l.max_points()).sum();
-        assert_eq!(total, MAX_TOTAL);
+        assert_eq!(total, 200);
     }
 
     #[test]
     fn points_are_shared_out_and_rounded_down() {
-        assert_eq!(LineId::Rotation.points(24, 24), 30);
-        assert_eq!(LineId::Rotation.points(23, 24), 28);
-        assert_eq!(LineId::Translation.points(1, 24), 0);
-        assert_eq!(LineId::Translation.points(0, 0), 0);
+        let points = LinePoints::default();
+        assert_eq!(points.points(LineId::Rotation, 24, 24), 30);
+        assert_eq!(points.points(LineId::Rotation, 23, 24), 28);
+        assert_eq!(points.points(LineId::Translation, 1, 24), 0);
+        assert_eq!(points.points(LineId::Translation, 0, 0), 0);
+    }
+
+    #[test]
+    fn the_bundled_rubric_file_is_the_assignments_and_an_edit_changes_it() {
+        let bundled = include_str!("../../../../assets/rubrics/geometry/rubric.toml");
+        let points = LinePoints::parse(bundled, "rubric.toml").expect("the bundled rubric");
+        assert_eq!(points, LinePoints::default());
+        let edited = bundled.replace("points = 25\n", "points = 50\n");
+        let edited = LinePoints::parse(&edited, "rubric.toml").expect("an edited rubric");
+        assert_eq!((edited.max(LineId::Culling), edited.total()), (50, 250));
+        let dropped = bundled.replace("id = \"vfov\"", "id = \"hfov\"");
+        let error = LinePoints::parse(&dropped, "r.toml").unwrap_err();
+        assert_eq!(
+            error,
+            "r.toml: line[9].id: expected each line once, found 'hfov' again"
+        );
     }
 }

@@ -6,12 +6,13 @@
 //! writing the reports is the command's.
 
 pub mod expected_motion;
+pub mod file;
 pub mod judge;
 pub mod lines;
 pub mod scenes;
 pub mod score;
 
 pub use judge::{Turn, Verdict, judge};
-pub use lines::{LineId, MAX_TOTAL};
+pub use lines::{LineId, LinePoints};
 pub use scenes::{RubricScene, scenes};
 pub use score::{Judged, LineScore, NamedMistake, Score};

@@ -4,7 +4,7 @@
 //! and writing the reports is the grade command's.
 
 use super::judge::{Verdict, settle_rotations};
-use super::lines::LineId;
+use super::lines::{LineId, LinePoints};
 
 /// One judged scene, as scoring reads it.
 pub struct Judged<'a> {
@@ -24,6 +24,9 @@ pub struct NamedMistake {
 /// One line's score.
 pub struct LineScore {
     pub line: LineId,
+    /// Its title and what it is worth, as the rubric says.
+    pub title: String,
+    pub max: u32,
     pub points: u32,
     pub scenes: usize,
     pub passed: usize,
@@ -42,10 +45,12 @@ pub struct LineScore {
 pub struct Score {
     pub lines: Vec<LineScore>,
     pub total: u32,
+    /// What the whole rubric is worth.
+    pub max: u32,
 }
 
 impl Score {
-    pub fn new(scenes: &mut [Judged]) -> Self {
+    pub fn new(scenes: &mut [Judged], rubric: &LinePoints) -> Self {
         let mut rotations: Vec<&mut Verdict> = scenes
             .iter_mut()
             .flat_map(|s| s.verdicts.iter_mut())
@@ -53,15 +58,23 @@ impl Score {
             .map(|(_, verdict)| verdict)
             .collect();
         settle_rotations(&mut rotations);
-        let lines: Vec<LineScore> = LineId::ALL.iter().map(|&l| score(l, scenes)).collect();
+        let lines: Vec<LineScore> = (LineId::ALL.iter())
+            .map(|&l| score(l, scenes, rubric))
+            .collect();
         let total = lines.iter().map(|l| l.points).sum();
-        Self { lines, total }
+        Self {
+            lines,
+            total,
+            max: rubric.total(),
+        }
     }
 }
 
-fn score(line: LineId, scenes: &[Judged]) -> LineScore {
+fn score(line: LineId, scenes: &[Judged], rubric: &LinePoints) -> LineScore {
     let mut score = LineScore {
         line,
+        title: rubric.title(line).to_string(),
+        max: rubric.max(line),
         points: 0,
         scenes: 0,
         passed: 0,
@@ -90,7 +103,7 @@ fn score(line: LineId, scenes: &[Judged]) -> LineScore {
         .map(|(i, _)| scenes[*i].mistakes)
         .collect();
     (score.mistakes, score.unexplained) = named_mistakes(&failing, line);
-    score.points = line.points(score.passed, score.scenes);
+    score.points = rubric.points(line, score.passed, score.scenes);
     score
 }
 
