@@ -228,3 +228,37 @@ fn the_rasterizer_corpus_scores_what_its_headers_say() {
     }
     assert!(wrong.is_empty(), "{}", wrong.join("\n"));
 }
+
+#[test]
+fn a_class_grades_into_a_csv_a_row_per_submission() {
+    let dir = TempDir::new("grade-raster-class");
+    let class = dir.0.join("class");
+    for (name, flags) in [
+        ("ana", vec![]),
+        ("bo", vec![mistake_flag("depth_perspective")]),
+    ] {
+        std::fs::create_dir_all(class.join(name)).expect("a submission's folder");
+        let flags: Vec<&str> = flags.iter().map(String::as_str).collect();
+        compile_raster(&class.join(name), "raster", &flags);
+    }
+    let output = Command::new(env!("CARGO_BIN_EXE_close2gl"))
+        .args(["grade", "--rubric"])
+        .arg(rubric())
+        .args(["--run", "{dir}/raster {scene} {trace}", "--submissions"])
+        .arg(&class)
+        .output()
+        .expect("run close2gl grade");
+    assert!(
+        output.status.success(),
+        "{}",
+        String::from_utf8_lossy(&output.stderr)
+    );
+    let csv = std::fs::read_to_string(class.join("grades.csv")).expect("grades.csv");
+    let rows: Vec<&str> = csv.lines().collect();
+    assert_eq!(
+        rows[0],
+        "submission,coverage,zbuffer,gouraud,phong,texture_nearest,texture_bilinear,texture_trilinear,resize,synchronized,total"
+    );
+    assert_eq!(rows[1], "ana,25,30,25,25,20,20,25,15,15,200");
+    assert_eq!(rows[2], "bo,25,10,25,25,20,20,25,0,1,151");
+}

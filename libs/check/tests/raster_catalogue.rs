@@ -29,13 +29,13 @@ fn texture() -> Image {
         .map(|i| {
             let (x, y) = (i % 16, i / 16);
             let quarter = (x / 8) + 2 * (y / 8);
-            let base =
+            let base: [u8; 3] =
                 [[230, 40, 40], [40, 220, 60], [50, 70, 240], [240, 220, 50]][quarter as usize];
             let shade = ((x * 7 + y * 13) % 16) as u8 * 6;
             [
-                base[0] - shade / 2,
-                base[1] - shade / 3,
-                base[2] - shade / 4,
+                base[0].saturating_sub(shade / 2),
+                base[1].saturating_sub(shade / 3),
+                base[2].saturating_sub(shade / 4),
                 255,
             ]
         })

@@ -161,6 +161,7 @@ mod tests {
             "render.texture_filter=nearest",
             "render.overlay=fate_view",
             "render.mistake=fov_not_halved",
+            "render.raster_mistake=uv_affine",
             "lighting.light_position=[1.0,2.0,3.0]",
             "lighting.ia=[0.1,0.1,0.2]",
             "lighting.il=[0.9,0.8,0.7]",

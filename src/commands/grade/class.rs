@@ -88,7 +88,7 @@ fn students(
 }
 
 /// The folders in `dir` by name (absolute paths), hidden ones left out.
-fn folders(dir: &Path) -> Result<Vec<(String, PathBuf)>, CliError> {
+pub(super) fn folders(dir: &Path) -> Result<Vec<(String, PathBuf)>, CliError> {
     let fail = |e: std::io::Error| CliError::Input(format!("{}: cannot read: {e}", dir.display()));
     let dir = std::path::absolute(dir).map_err(fail)?;
     let mut folders: Vec<(String, PathBuf)> = std::fs::read_dir(&dir)

@@ -168,7 +168,7 @@ fn canvas<'a>(
     out
 }
 
-fn row(out: &mut String, fields: &[String]) {
+pub(super) fn row(out: &mut String, fields: &[String]) {
     let quoted: Vec<String> = fields.iter().map(|f| field(f)).collect();
     let _ = writeln!(out, "{}", quoted.join(","));
 }

@@ -217,7 +217,10 @@ fn grade_on_rubric_file(
     jobs: usize,
 ) -> Result<(), CliError> {
     let others = [
-        (args.submissions.is_some(), "--submissions"),
+        (
+            args.submissions.is_some() && args.json,
+            "--json with --submissions",
+        ),
         (args.gradescope.is_some(), "--gradescope"),
         (args.classroom, "--classroom"),
         (args.html.is_some(), "--html"),
@@ -226,7 +229,7 @@ fn grade_on_rubric_file(
     ];
     if let Some((_, option)) = others.iter().find(|(given, _)| *given) {
         return Err(CliError::Input(format!(
-            "{option}: not available with --rubric yet (the rasterizer rubric grades one program, as a table or --json)"
+            "{option}: not available with the rasterizer's rubric yet (it grades one program, as a table or --json, or a class into grades.csv)"
         )));
     }
     let rubric = Rubric {
@@ -242,7 +245,10 @@ fn grade_on_rubric_file(
         jobs,
     };
     close2gl_runner::install_interrupt_handler();
-    let result = raster::grade(path, args.json, &plan);
+    let result = match &args.submissions {
+        Some(dir) => raster::grade_class(path, dir, &plan),
+        None => raster::grade(path, args.json, &plan),
+    };
     close2gl_runner::reap_everything();
     result
 }

@@ -141,10 +141,13 @@ fn score<'a>(rubric: &'a Rubric, outcomes: &[(String, SceneOutcome)]) -> Vec<Sco
         .collect()
 }
 
-/// Grades one program on the rubric at `path`.
-pub fn grade(path: &Path, json_out: bool, plan: &Plan) -> Result<(), CliError> {
-    let (rubric, scenes) = load(path)?;
-    eprintln!("{}", plan.sandboxing.banner(plan.words, false));
+/// Every scene of `scenes` run for the program (in `dir`, `{dir}`, for a class's submission)
+/// and checked, the plan's jobs at a time.
+fn run_all(
+    scenes: &[RubricScene],
+    dir: Option<&Path>,
+    plan: &Plan,
+) -> Result<Vec<(String, SceneOutcome)>, CliError> {
     let slots: Vec<Mutex<Option<SceneOutcome>>> = scenes.iter().map(|_| Mutex::new(None)).collect();
     let next = AtomicUsize::new(0);
     std::thread::scope(|scope| {
@@ -153,8 +156,9 @@ pub fn grade(path: &Path, json_out: bool, plan: &Plan) -> Result<(), CliError> {
                 while let Some(i) =
                     Some(next.fetch_add(1, Ordering::Relaxed)).filter(|&i| i < scenes.len())
                 {
-                    let sandbox = plan.sandboxing.for_run(None);
-                    let run = Run::new(plan.words, None, &plan.limits, &sandbox);
+                    let sandbox = plan.sandboxing.for_run(dir);
+                    let run = Run::new(plan.words, dir, &plan.limits, &sandbox);
+                    // A bug of ours on one program's trace must not stop a class's grading.
                     let outcome = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
                         run_scene(&run, &scenes[i])
                     }))
@@ -167,20 +171,61 @@ pub fn grade(path: &Path, json_out: bool, plan: &Plan) -> Result<(), CliError> {
     if close2gl_runner::interrupted() {
         return Err(CliError::Interrupted);
     }
-    let outcomes: Vec<(String, SceneOutcome)> = (scenes.iter().zip(slots))
+    Ok((scenes.iter().zip(slots))
         .filter_map(|(s, slot)| {
             Some((
                 s.name.clone(),
                 slot.into_inner().unwrap_or_else(|e| e.into_inner())?,
             ))
         })
-        .collect();
+        .collect())
+}
+
+/// Grades one program on the rubric at `path`.
+pub fn grade(path: &Path, json_out: bool, plan: &Plan) -> Result<(), CliError> {
+    let (rubric, scenes) = load(path)?;
+    eprintln!("{}", plan.sandboxing.banner(plan.words, false));
+    let outcomes = run_all(&scenes, None, plan)?;
     let scored = score(&rubric, &outcomes);
     let total: u32 = scored.iter().map(|s| s.points).sum();
     match json_out {
         true => println!("{}", json(&scored, &outcomes, total, rubric.total())),
         false => print!("{}", table(&scored, &outcomes, total, rubric.total(), path)),
     }
+    Ok(())
+}
+
+/// Grades every folder in `dir` on the rubric at `path` into `dir/grades.csv`: a row per
+/// submission in name order, a column per line (by id) and the total.
+pub fn grade_class(path: &Path, dir: &Path, plan: &Plan) -> Result<(), CliError> {
+    let (rubric, scenes) = load(path)?;
+    let submissions = super::class::folders(dir)?;
+    if submissions.is_empty() {
+        return Err(CliError::Input(format!(
+            "{}: expected a folder per submission, found none",
+            dir.display()
+        )));
+    }
+    eprintln!("{}", plan.sandboxing.banner(plan.words, true));
+    let mut csv = String::new();
+    let mut header = vec!["submission".to_string()];
+    header.extend(rubric.lines.iter().map(|l| l.id.clone()));
+    header.push("total".into());
+    super::gradebook::row(&mut csv, &header);
+    for (name, folder) in &submissions {
+        let outcomes = run_all(&scenes, Some(folder), plan)?;
+        let scored = score(&rubric, &outcomes);
+        let total: u32 = scored.iter().map(|s| s.points).sum();
+        let mut fields = vec![name.clone()];
+        fields.extend(scored.iter().map(|s| s.points.to_string()));
+        fields.push(total.to_string());
+        super::gradebook::row(&mut csv, &fields);
+        println!("{name}: {total}/{}", rubric.total());
+    }
+    let out = dir.join("grades.csv");
+    std::fs::write(&out, csv)
+        .map_err(|e| CliError::Runtime(format!("{}: cannot write: {e}", out.display())))?;
+    println!("wrote {}", out.display());
     Ok(())
 }
 
