@@ -5,15 +5,16 @@
 //! first (the depth test decides where they meet), and a square of two triangles whose corners
 //! are pixel centres apart (every edge runs through pixel centres: the tie rule decides them).
 
+use close2gl_check::raster::input::Redraw;
 use close2gl_check::raster::{check_raster, corners};
 use close2gl_core::{
     ByteConversion, Image, Lighting, RasterMistake as M, RasterMistakes, RasterRules, Shading,
     TextureFilter, TieRule,
 };
-use close2gl_raster::textbook::{self, Corner, Light, Rasterization, Shader};
+use close2gl_raster::textbook::Light;
 use close2gl_trace_format::raster::{Attribute, LightingLine, Lit};
 use close2gl_trace_format::{RasterCorner, RasterFrame, RasterTrace, RasterTriangle};
-use glam::{DVec3, Vec3};
+use glam::DVec3;
 
 const WIDTH: u32 = 96;
 const HEIGHT: u32 = 72;
@@ -215,65 +216,23 @@ fn frame(
         attributes: Attribute::ALL.to_vec(),
         triangles,
     };
-    let texture = filter.map(|_| texture());
-    let drawn = draw(&trace, texture.as_ref(), rules, mistakes);
-    let mut framebuffer = drawn.image;
-    framebuffer.pixels.iter_mut().for_each(|p| p[3] = 255);
-    RasterFrame {
-        framebuffer,
-        depth: Some(close2gl_trace_format::raster::images::DepthImage {
-            width: WIDTH,
-            height: HEIGHT,
-            values: drawn.depth,
-        }),
-        texture,
+    // The program's buffers are the textbook rasterizer's, drawn from the trace as check
+    // draws it, with the program's mistakes and rules.
+    let mut frame = RasterFrame {
+        framebuffer: Image::filled(WIDTH, HEIGHT, [0; 4]),
+        depth: None,
+        texture: filter.map(|_| texture()),
         trace,
-    }
-}
-
-/// The trace's triangles drawn as a program making `mistakes` would.
-fn draw(
-    trace: &RasterTrace,
-    texture: Option<&Image>,
-    rules: RasterRules,
-    mistakes: RasterMistakes,
-) -> textbook::Buffers {
-    let f32s = |v: &[f64]| v.iter().map(|&x| x as f32).collect::<Vec<_>>();
-    let triangles: Vec<([Corner; 3], u32)> = (trace.triangles.iter())
-        .map(|t| {
-            let c = t.corners.map(|c| Corner {
-                window: c.window,
-                rgb: c.rgb.map(|x| x as f32),
-                eye: c.eye.map(|x| x as f32),
-                normal: c.normal.map(|x| x as f32),
-                uv: [f32s(&c.uv)[0], f32s(&c.uv)[1]],
-            });
-            (c, t.mesh as u32)
-        })
-        .collect();
-    let color = match trace.shading.per_vertex() {
-        true => Vec3::ONE,
-        false => DVec3::from_array(trace.color).as_vec3(),
     };
-    let filter = trace
-        .texture
-        .as_ref()
-        .map_or(TextureFilter::Nearest, |(_, f)| *f);
-    let shader = Shader::new(
-        trace.shading,
-        color,
-        light(trace.shading, mistakes),
-        texture,
-        filter,
-    );
-    let how = Rasterization {
-        rules,
-        mistakes,
-        y_up: trace.y_up,
-        ..Rasterization::default()
-    };
-    let background = DVec3::from_array(trace.background).as_vec3();
-    textbook::draw_corners(trace.window, background, &triangles, &shader, &how)
+    let drawn = Redraw::new(&frame).draw(rules, mistakes);
+    frame.framebuffer = drawn.image;
+    frame.framebuffer.pixels.iter_mut().for_each(|p| p[3] = 255);
+    frame.depth = Some(close2gl_trace_format::raster::images::DepthImage {
+        width: WIDTH,
+        height: HEIGHT,
+        values: drawn.depth,
+    });
+    frame
 }
 
 /// The frames tried for each mistake, in order: the first where it can show is used.

@@ -4,9 +4,9 @@
 
 use std::path::Path;
 
-use close2gl_check::raster::diagnose::{Judge, can_show};
+use close2gl_check::raster::diagnose::Judge;
 use close2gl_check::raster::{self, pictures, report};
-use close2gl_core::{RasterMistake, RasterMistakes};
+use close2gl_core::RasterMistakes;
 use close2gl_trace_format::{RasterFrame, is_raster_trace, read_raster_frame};
 
 use super::{CheckArgs, CliError, write_files};
@@ -90,16 +90,7 @@ fn probe(frame: &RasterFrame, x: u32, y: u32) -> Result<(), CliError> {
         format!("{} {}", colour(b.image.pixels[at]), depth(&b.depth))
     };
     println!("close2gl: {}", say(&ours));
-    let trace = &frame.trace;
-    let filter = trace
-        .texture
-        .as_ref()
-        .map(|(_, f)| *f)
-        .filter(|_| frame.texture.is_some());
-    for &m in RasterMistake::catalogue() {
-        if !can_show(m, trace.shading, filter, frame.depth.is_some()) {
-            continue;
-        }
+    for m in judge.candidates() {
         let drawn = judge.redraw.draw(rules, RasterMistakes::one(m));
         if say(&drawn) != say(&ours) {
             println!("  {} would give: {}", m.name(), say(&drawn));

@@ -195,16 +195,10 @@ impl Judge<'_> {
     }
 
     /// The catalogue's mistakes that can show in this frame.
-    fn candidates(&self) -> Vec<M> {
-        let trace = &self.input.trace;
-        let filter = trace
-            .texture
-            .as_ref()
-            .map(|(_, f)| *f)
-            .filter(|_| self.input.texture.is_some());
-        let shading = trace.shading;
+    pub fn candidates(&self) -> Vec<M> {
+        let (frame, shading) = (self.input, self.input.trace.shading);
         (M::catalogue().iter().copied())
-            .filter(|&m| can_show(m, shading, filter, self.input.depth.is_some()))
+            .filter(|&m| can_show(m, shading, frame.filter(), frame.depth.is_some()))
             .collect()
     }
 }

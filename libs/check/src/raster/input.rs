@@ -69,10 +69,7 @@ impl<'a> Redraw<'a> {
             true => Vec3::ONE,
             false => as_vec3(trace.color),
         };
-        let filter = trace
-            .texture
-            .as_ref()
-            .map_or(TextureFilter::Nearest, |(_, f)| *f);
+        let filter = self.input.filter().unwrap_or(TextureFilter::Nearest);
         let shader = Shader::new(
             trace.shading,
             color,

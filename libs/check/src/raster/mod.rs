@@ -59,18 +59,12 @@ impl RasterReport {
 
 /// Checks `frame`: the judge, ready for the search and for probes.
 pub fn judge(frame: &RasterFrame) -> Judge<'_> {
-    let trace = &frame.trace;
-    let filter = trace
-        .texture
-        .as_ref()
-        .map(|(_, f)| *f)
-        .filter(|_| frame.texture.is_some());
     Judge {
         input: frame,
         redraw: Redraw::new(frame),
         ties: facts::ties(frame),
-        background: facts::backgrounds(trace.background),
-        allowance: Allowance::for_texture(filter),
+        background: facts::backgrounds(frame.trace.background),
+        allowance: Allowance::for_texture(frame.filter()),
     }
 }
 

@@ -214,6 +214,15 @@ impl RasterFrame {
     }
 }
 
+impl RasterFrame {
+    /// The texture filter the frame was drawn with: None when it is not textured (no texture
+    /// named, or none read).
+    pub fn filter(&self) -> Option<TextureFilter> {
+        let filter = self.trace.texture.as_ref().map(|(_, f)| *f);
+        filter.filter(|_| self.texture.is_some())
+    }
+}
+
 /// Reads the raster trace at `path` and the files it names, beside it.
 pub fn read_raster_frame(path: &Path) -> Result<RasterFrame, FormatError> {
     let trace = read_raster_trace(path)?;
