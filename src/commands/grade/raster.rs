@@ -7,8 +7,10 @@ use std::path::{Path, PathBuf};
 use std::sync::Mutex;
 use std::sync::atomic::{AtomicUsize, Ordering};
 
+use close2gl_check::raster::report::{self, legal_choices};
 use close2gl_check::raster::rubric::{self, Rubric, RubricLine};
 use close2gl_check::raster::{RasterReport, check_raster};
+use close2gl_core::RasterMistake;
 use close2gl_trace_format::{RasterFrame, parse_raster_trace, parse_scene};
 use serde_json::json;
 
@@ -250,19 +252,45 @@ fn table(
         }
     }
     out += &format!("\ntotal {total}/{max}\n");
-    let named: Vec<String> = (outcomes.iter())
-        .filter_map(|(name, o)| {
-            o.as_ref()
-                .ok()
-                .filter(|r| !r.agrees())
-                .map(|r| (name, r.mistakes()))
-        })
-        .filter(|(_, m)| !m.is_empty())
-        .map(|(name, m)| format!("  {name}: {}", m.join(", ")))
+    out += &to_fix(outcomes);
+    let accepted: Vec<String> = (outcomes.iter())
+        .filter_map(|(name, o)| o.as_ref().ok().map(|r| (name, legal_choices(r.rules()))))
+        .filter(|(_, rules)| !rules.is_empty())
+        .map(|(name, rules)| format!("  {name}: {}", rules.join("; ")))
         .collect();
-    if !named.is_empty() {
-        out += "\nto fix first, the mistakes check named (close2gl check the scene's trace for the pictures):\n";
-        out += &(named.join("\n") + "\n");
+    if !accepted.is_empty() {
+        out += "\naccepted, the program's choice where the rules leave one:\n";
+        out += &(accepted.join("\n") + "\n");
+    }
+    out
+}
+
+/// The mistakes check named, each once with the scenes it was named in, most scenes first: one
+/// bug to fix however many scenes show it.
+fn to_fix(outcomes: &[(String, SceneOutcome)]) -> String {
+    let mut bugs: Vec<(&'static str, Vec<&str>)> = Vec::new();
+    for (scene, outcome) in outcomes {
+        let Ok(report) = outcome else { continue };
+        for mistake in report.mistakes() {
+            match bugs.iter_mut().find(|(m, _)| *m == mistake) {
+                Some((_, scenes)) => scenes.push(scene),
+                None => bugs.push((mistake, vec![scene])),
+            }
+        }
+    }
+    if bugs.is_empty() {
+        return String::new();
+    }
+    bugs.sort_by_key(|(_, scenes)| std::cmp::Reverse(scenes.len()));
+    let mut out = "\nto fix first, the mistakes check named (`close2gl check` a scene's trace for pictures):\n".to_string();
+    for (mistake, scenes) in bugs {
+        let stage = RasterMistake::from_name(mistake).map_or("", |m| m.stage().name());
+        let meaning = RasterMistake::from_name(mistake).map_or("", report::meaning);
+        out += &format!(
+            "  {mistake} ({stage}): {meaning}\n    in {} scenes: {}\n",
+            scenes.len(),
+            scenes.join(", ")
+        );
     }
     out
 }

@@ -162,7 +162,7 @@ pub fn meaning(m: M) -> &'static str {
 }
 
 /// The legal rules that differ from close2gl's own, as sentences.
-fn legal_choices(rules: RasterRules) -> Vec<String> {
+pub fn legal_choices(rules: RasterRules) -> Vec<String> {
     let mut said = Vec::new();
     if rules.tie != TieRule::TopLeft {
         said.push(format!(
