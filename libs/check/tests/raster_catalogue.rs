@@ -336,3 +336,47 @@ fn another_tie_rule_or_truncation_is_reported_as_the_legal_rule_it_is() {
     assert_eq!(report.rules(), rules);
     assert!(report.mistakes().is_empty());
 }
+
+/// The pairs search draws a band of rows before the whole frame: the band must hold exactly the
+/// whole frame's pixels there, for every mistake (the rows written upside down are drawn at the
+/// other end), or a pair that reproduces the trace would be ruled out.
+#[test]
+fn a_band_draws_what_the_whole_frame_draws_in_its_rows() {
+    let bands = [8..24, 0..16, HEIGHT - 16..HEIGHT];
+    for &m in M::catalogue() {
+        let (shading, filter) = frame_for(m);
+        let none = RasterMistakes::NONE;
+        let frame = frame(shading, filter, RasterRules::default(), none, none);
+        let redraw = Redraw::new(&frame);
+        let (rules, mistakes) = (RasterRules::default(), RasterMistakes::one(m));
+        let whole = redraw.draw(rules, mistakes);
+        for rows in bands.clone() {
+            let band = redraw.draw_band(rules, mistakes, &rows);
+            let at = (rows.start * WIDTH) as usize..(rows.end * WIDTH) as usize;
+            assert_eq!(
+                band.image.pixels[at.clone()],
+                whole.image.pixels[at.clone()],
+                "{} rows {rows:?}",
+                m.name()
+            );
+            assert_eq!(band.depth[at.clone()], whole.depth[at], "{}", m.name());
+        }
+    }
+}
+
+/// Pairs are tried in a band first; one with the rows written upside down (drawn at the other
+/// end of the band) is still named.
+#[test]
+fn a_pair_with_the_rows_upside_down_is_named() {
+    let none = RasterMistakes::NONE;
+    let pair = RasterMistakes::one(M::RowsBottomFirst).with(M::UvAffine);
+    let filter = Some(TextureFilter::Bilinear);
+    let frame = frame(Shading::Phong, filter, RasterRules::default(), pair, none);
+    let report = check_raster(&frame);
+    assert_eq!(
+        report.mistakes(),
+        ["uv_affine", "rows_bottom_first"],
+        "{}",
+        close2gl_check::raster::report::text(&report, "t")
+    );
+}

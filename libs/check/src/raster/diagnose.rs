@@ -9,6 +9,7 @@ use close2gl_core::{
 };
 use rayon::prelude::*;
 
+use super::band::Band;
 use super::facts::{Allowance, Facts, compare};
 use close2gl_trace_format::RasterFrame;
 
@@ -43,17 +44,38 @@ pub struct Judge<'a> {
     /// The bytes the background may be written as (`facts::backgrounds`).
     pub background: Vec<[u8; 4]>,
     pub allowance: Allowance,
+    /// Where a pair is tried before the whole frame.
+    pub band: Band,
 }
 
 impl Judge<'_> {
     pub fn attempt(&self, rules: RasterRules, mistakes: RasterMistakes) -> Attempt {
         let drawn = self.redraw.draw(rules, mistakes);
-        let facts = compare(self.input, &drawn, &self.ties, &self.background);
+        let rows = 0..self.input.trace.window.1;
+        let facts = compare(self.input, &drawn, &self.ties, &self.background, rows);
         Attempt {
             rules,
             mistakes,
             facts,
         }
+    }
+
+    /// The attempt, drawn whole only when its band does not already rule it out.
+    fn attempt_if_band_agrees(
+        &self,
+        rules: RasterRules,
+        mistakes: RasterMistakes,
+    ) -> Option<Attempt> {
+        let rows = &self.band.rows;
+        let drawn = self.redraw.draw_band(rules, mistakes, rows);
+        let facts = compare(
+            self.input,
+            &drawn,
+            &self.ties,
+            &self.background,
+            rows.clone(),
+        );
+        (self.band.could_agree(&facts, self.allowance)).then(|| self.attempt(rules, mistakes))
     }
 
     fn agrees(&self, attempt: &Attempt) -> bool {
@@ -132,7 +154,7 @@ impl Judge<'_> {
             }
         }
         let pairs: Vec<Attempt> = (pairs.par_iter())
-            .map(|&set| self.attempt(rules, set))
+            .filter_map(|&set| self.attempt_if_band_agrees(rules, set))
             .collect();
         diagnosis.named = (pairs.into_iter())
             .filter(|a| self.reproduces(a, &legal))

@@ -4,6 +4,8 @@
 //! snapping can tell apart is neither covered nor uncovered, a colour within two steps of the
 //! background neither drawn nor not, and depth and colour may differ by their rounding.
 
+use std::ops::Range;
+
 use close2gl_core::{Image, TextureFilter};
 use close2gl_raster::textbook::Buffers;
 
@@ -64,7 +66,7 @@ impl Allowance {
         Allowance { share }
     }
 
-    fn allows(&self, tally: &Tally) -> bool {
+    pub(super) fn allows(&self, tally: &Tally) -> bool {
         tally.differing as f64 <= (1.0 - self.share) * tally.compared as f64
     }
 }
@@ -143,7 +145,7 @@ fn mark_near(
 
 /// Whether `colour` is one of the background's spellings (`backgrounds`), or within the colour
 /// tolerance of the first.
-fn background_like(colour: [u8; 4], backgrounds: &[[u8; 4]]) -> (bool, bool) {
+pub(super) fn background_like(colour: [u8; 4], backgrounds: &[[u8; 4]]) -> (bool, bool) {
     let near = (0..3).all(|k| colour[k].abs_diff(backgrounds[0][k]) <= COLOUR_STEPS);
     let exact = backgrounds.iter().any(|b| colour[..3] == b[..3]);
     (exact, near && !exact)
@@ -165,17 +167,21 @@ pub fn backgrounds(rgb: [f64; 3]) -> Vec<[u8; 4]> {
     all
 }
 
-/// The facts of `program` (the trace's buffers) against `drawn`, `ties` left out of coverage.
+/// The facts of `program` (the trace's buffers) against `drawn` in the picture's `rows` (from
+/// the top), `ties` left out of coverage.
 pub fn compare(
     input: &RasterFrame,
     drawn: &Buffers,
     ties: &[bool],
     background: &[[u8; 4]],
+    rows: Range<u32>,
 ) -> Facts {
     let program: &Image = &input.framebuffer;
     let width = program.width;
     let mut facts = Facts::default();
-    for (at, (&theirs, &ours)) in program.pixels.iter().zip(&drawn.image.pixels).enumerate() {
+    let pixels = (rows.start * width) as usize..(rows.end * width) as usize;
+    for at in pixels {
+        let (theirs, ours) = (program.pixels[at], drawn.image.pixels[at]);
         let (their_background, their_unsure) = background_like(theirs, background);
         let (our_background, our_unsure) = background_like(ours, background);
         let decided = !ties[at] && !their_unsure && !our_unsure;

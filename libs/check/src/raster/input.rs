@@ -2,7 +2,9 @@
 //! triangles as corners (snapped as the program says it snaps them), its shading, light and
 //! texture; and a way to draw them again with any rules and mistakes.
 
-use close2gl_core::{Lighting, RasterMistakes, RasterRules, Shading, TextureFilter};
+use std::ops::Range;
+
+use close2gl_core::{Lighting, RasterMistake, RasterMistakes, RasterRules, Shading, TextureFilter};
 use close2gl_raster::textbook::{self, Buffers, Corner, Light, Rasterization, Shader};
 use close2gl_trace_format::{RasterCorner, RasterFrame};
 use glam::{DMat4, DVec3, Vec3};
@@ -64,6 +66,32 @@ impl<'a> Redraw<'a> {
     /// The trace's triangles drawn with `rules`, making `mistakes`. Gouraud's corners carry the
     /// program's own lit colours, so its shader's colour is white.
     pub fn draw(&self, rules: RasterRules, mistakes: RasterMistakes) -> Buffers {
+        self.draw_rows(rules, mistakes, None)
+    }
+
+    /// [`Redraw::draw`], only the picture's `rows` (from the top, as the program wrote them)
+    /// drawn; the rest is background.
+    pub fn draw_band(
+        &self,
+        rules: RasterRules,
+        mistakes: RasterMistakes,
+        rows: &Range<u32>,
+    ) -> Buffers {
+        let height = self.input.trace.window.1;
+        // The rows the program wrote upside down were drawn at the other end.
+        let scissor = match mistakes.has(RasterMistake::RowsBottomFirst) {
+            true => [height - rows.end, height - rows.start],
+            false => [rows.start, rows.end],
+        };
+        self.draw_rows(rules, mistakes, Some(scissor))
+    }
+
+    fn draw_rows(
+        &self,
+        rules: RasterRules,
+        mistakes: RasterMistakes,
+        scissor: Option<[u32; 2]>,
+    ) -> Buffers {
         let trace = &self.input.trace;
         let color = match trace.shading.per_vertex() {
             true => Vec3::ONE,
@@ -84,6 +112,7 @@ impl<'a> Redraw<'a> {
             mistakes,
             y_up: trace.y_up,
             subpixel_bits: trace.subpixel.unwrap_or(8).min(8),
+            scissor,
         };
         let background = as_vec3(trace.background);
         textbook::draw_corners(trace.window, background, &self.triangles, &shader, &how)

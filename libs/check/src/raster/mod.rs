@@ -6,6 +6,7 @@
 //! catalogue's mistakes that reproduce every fact; [`report`] writes it for a person and a
 //! script, [`pictures`] as images of the stage that differs.
 
+pub mod band;
 pub mod corners;
 pub mod diagnose;
 pub mod facts;
@@ -17,6 +18,7 @@ pub mod rubric;
 use close2gl_core::{RasterMistakes, RasterRules};
 use close2gl_trace_format::RasterFrame;
 
+use band::Band;
 use corners::CornerFacts;
 use diagnose::{Diagnosis, Judge};
 use facts::Allowance;
@@ -59,11 +61,13 @@ impl RasterReport {
 
 /// Checks `frame`: the judge, ready for the search and for probes.
 pub fn judge(frame: &RasterFrame) -> Judge<'_> {
+    let background = facts::backgrounds(frame.trace.background);
     Judge {
         input: frame,
         redraw: Redraw::new(frame),
         ties: facts::ties(frame),
-        background: facts::backgrounds(frame.trace.background),
+        band: Band::new(frame, &background),
+        background,
         allowance: Allowance::for_texture(frame.filter()),
     }
 }

@@ -48,6 +48,8 @@ pub(super) struct Window {
     tie: TieRule,
     mistakes: RasterMistakes,
     subpixel_bits: u32,
+    /// The rows drawn (`Rasterization::scissor`), first and last.
+    rows: [i64; 2],
 }
 
 impl Window {
@@ -59,6 +61,10 @@ impl Window {
             tie: how.rules.tie,
             mistakes: how.mistakes,
             subpixel_bits: how.subpixel_bits.clamp(2, 8),
+            rows: match how.scissor {
+                Some([first, end]) => [i64::from(first), i64::from(end) - 1],
+                None => [0, i64::from(height) - 1],
+            },
         }
     }
 
@@ -176,7 +182,7 @@ impl Setup {
             (p.iter().map(|p| p[axis]).max().unwrap_or(0) / 256 + 1).min(size - 1)
         };
         let (rows, columns) = (
-            low(1)..=high(1, window.height),
+            low(1).max(window.rows[0])..=high(1, window.height).min(window.rows[1]),
             low(0)..=high(0, window.width),
         );
         rows.flat_map(move |y| columns.clone().map(move |x| (x, y)))

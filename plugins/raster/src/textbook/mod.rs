@@ -64,6 +64,10 @@ pub struct Rasterization {
     /// Corners are snapped to 1/2^bits pixel for coverage (8, as GPUs and the fast rasterizer
     /// do; 2 to 8).
     pub subpixel_bits: u32,
+    /// Only the rows `first..end` (from the top, before the output stage) are drawn, as
+    /// `glScissor` would: every pixel is decided alone, so a band costs its share of the frame
+    /// (check tries a mistake on one before the whole frame). None: every row.
+    pub scissor: Option<[u32; 2]>,
 }
 
 impl Default for Rasterization {
@@ -73,6 +77,7 @@ impl Default for Rasterization {
             mistakes: RasterMistakes::NONE,
             y_up: false,
             subpixel_bits: 8,
+            scissor: None,
         }
     }
 }
