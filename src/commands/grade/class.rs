@@ -1,5 +1,6 @@
-//! `--submissions DIR`: every folder in DIR graded (`{dir}` in the command is that folder), all
-//! their scenes sharing the jobs, then `DIR/grades.csv` (one row per submission in name order,
+//! `--submissions DIR`: every folder in DIR graded (`{dir}` in the command is that folder; for
+//! the first assignment all their scenes sharing the jobs, for the rasterizer's `raster.rs`
+//! grades each in turn), then `DIR/grades.csv` (one row per submission in name order,
 //! in the gradebook format `--csv-format` asks: `gradebook`) and `DIR/NAME.html` for each.
 //! Nothing in the CSV depends on timing or order of work: the same submissions give the same
 //! file.

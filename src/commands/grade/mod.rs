@@ -5,10 +5,12 @@
 //! The files follow a grading: `mod.rs` the arguments, the models and the scenes' workers;
 //! `scene_run.rs` one scene through the runner and the judges; `graded.rs` the scenes' results
 //! with the rubric's lines scored on them (the scoring is check's `rubric::score`);
-//! `report.rs` the terminal table and the JSON; `html.rs` the page;
-//! `class.rs` a folder of submissions, with `gradebook.rs` its CSV for a gradebook;
-//! `platforms.rs` one grade as Gradescope and GitHub Classroom read it; `sandboxing.rs` the
-//! sandbox each run is in, and what every report says of it.
+//! `report.rs` the terminal table and the JSON; `raster.rs` the rasterizer assignment's
+//! grade (`--rubric` with its rubric), with its own table and JSON; `sheet.rs` the one shape
+//! both grades take for the teachers' writers (`raster_sheet.rs` fills it for the rasterizer):
+//! `html.rs` the page, `platforms.rs` Gradescope and GitHub Classroom, `deliver.rs` one
+//! program's outputs, `class.rs` a folder of submissions, with `gradebook.rs` its CSV for a
+//! gradebook; `sandboxing.rs` the sandbox each run is in, and what every report says of it.
 
 mod class;
 mod deliver;
@@ -174,23 +176,20 @@ pub fn run(args: GradeArgs) -> Result<(), CliError> {
         None => std::thread::available_parallelism().map_or(1, |n| n.get()),
     };
     let sandboxing = Sandboxing::new(args.unsandboxed, &args.allow_read)?;
+    let rubric_file = read_rubric_file(&args)?;
+    // Before the models: the rasterizer's scenes name their own.
+    if let Some((path, text)) = &rubric_file
+        && rubric::file::assignment(text).as_deref() == Some("rasterizer")
+    {
+        return grade_on_rubric_file(path, &args, &words, limits, sandboxing, jobs);
+    }
     let mut rubric = load_rubric(&args.models)?;
-    if let Some(path) = &args.rubric {
-        let text = std::fs::read_to_string(path)
-            .map_err(|e| CliError::Input(format!("{}: cannot read: {e}", path.display())))?;
-        if rubric::file::assignment(&text).as_deref() == Some("rasterizer") {
-            return grade_on_rubric_file(path, &args, &words, limits, sandboxing, jobs);
-        }
+    if let Some((path, text)) = &rubric_file {
         let file = path.display().to_string();
-        rubric.points = LinePoints::parse(&text, &file).map_err(CliError::Input)?;
+        rubric.points = LinePoints::parse(text, &file).map_err(CliError::Input)?;
     }
     if let Some(id) = &args.line {
-        let line = (LineId::ALL.iter())
-            .find(|l| l.id() == id)
-            .ok_or_else(|| deliver::unknown_line(id, LineId::ALL.iter().map(|l| l.id())))?;
-        rubric
-            .scenes
-            .retain(|(_, scene)| scene.lines.contains(line));
+        keep_line(&mut rubric, id)?;
     }
     let plan = Plan {
         words: &words,
@@ -206,6 +205,27 @@ pub fn run(args: GradeArgs) -> Result<(), CliError> {
     };
     close2gl_runner::reap_everything();
     result
+}
+
+/// `--rubric FILE` read: the file and its text.
+fn read_rubric_file(args: &GradeArgs) -> Result<Option<(&PathBuf, String)>, CliError> {
+    let Some(path) = &args.rubric else {
+        return Ok(None);
+    };
+    let text = std::fs::read_to_string(path)
+        .map_err(|e| CliError::Input(format!("{}: cannot read: {e}", path.display())))?;
+    Ok(Some((path, text)))
+}
+
+/// `--line ID`: the rubric's scenes for that line alone.
+fn keep_line(rubric: &mut Rubric, id: &str) -> Result<(), CliError> {
+    let line = (LineId::ALL.iter())
+        .find(|l| l.id() == id)
+        .ok_or_else(|| deliver::unknown_line(id, LineId::ALL.iter().map(|l| l.id())))?;
+    rubric
+        .scenes
+        .retain(|(_, scene)| scene.lines.contains(line));
+    Ok(())
 }
 
 /// `--rubric FILE`: the rasterizer assignment's grade, one program or a class, with every
