@@ -7,11 +7,14 @@
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 
-use base64::Engine;
-use base64::engine::general_purpose::STANDARD;
 use close2gl_testkit::TempDir;
 use close2gl_testkit::student::{asset, compile_pipeline, mistake_flag, repository};
 use serde_json::Value;
+
+mod platform_rules;
+use platform_rules::{
+    assert_gradescope_format, assert_line_answers, classroom_result, reporter_points,
+};
 
 const MISTAKE: &str = "never_culls";
 
@@ -62,28 +65,6 @@ fn autograder(dir: &Path) -> PathBuf {
     copy(asset("cube.in"), source.join("models/cube.in"));
     copy(trace.join("pipeline.c"), root.join("submission/pipeline.c"));
     root
-}
-
-/// Gradescope's rules for results.json: each test has a name, a score and a max_score
-/// (numbers, the score at most the max), a visibility Gradescope knows; the total is the
-/// tests' sum; output and execution_time are there.
-fn assert_gradescope_format(results: &Value) {
-    let visibilities = ["hidden", "after_due_date", "after_published", "visible"];
-    let tests = results["tests"].as_array().expect("tests");
-    let mut sum = 0.0;
-    for test in tests {
-        assert!(test["name"].is_string(), "{test}");
-        let (score, max) = (test["score"].as_f64(), test["max_score"].as_f64());
-        assert!(score.is_some() && max.is_some() && score <= max, "{test}");
-        sum += score.unwrap_or_default();
-        let visibility = test["visibility"].as_str().unwrap_or_default();
-        assert!(visibilities.contains(&visibility), "{test}");
-        assert!(test["output"].is_string(), "{test}");
-    }
-    assert_eq!(results["score"].as_f64(), Some(sum));
-    assert!(results["execution_time"].is_number());
-    assert!(results["output"].is_string());
-    assert!(visibilities.contains(&results["stdout_visibility"].as_str().unwrap_or_default()));
 }
 
 /// Runs Gradescope's `setup.sh` (installing into a folder of the test's) and `run_autograder`
@@ -231,23 +212,7 @@ fn classroom(dir: &Path, source: &str) -> Value {
             String::from_utf8_lossy(&run.stderr)
         );
     }
-    let outputs = std::fs::read_to_string(&output).expect("$GITHUB_OUTPUT");
-    let encoded = outputs
-        .lines()
-        .find_map(|l| l.strip_prefix("result="))
-        .expect("a result= line");
-    let json = STANDARD.decode(encoded).expect("base64");
-    serde_json::from_slice(&json).expect("JSON")
-}
-
-/// The grading reporter's sums: the points are the tests' scores, the maximum max_score.
-fn reporter_points(result: &Value) -> (u64, u64) {
-    let tests = result["tests"].as_array().expect("tests");
-    let score = tests
-        .iter()
-        .map(|t| t["score"].as_u64().expect("score"))
-        .sum();
-    (score, result["max_score"].as_u64().expect("max_score"))
+    classroom_result(&output)
 }
 
 #[test]
@@ -292,17 +257,9 @@ fn one_line_at_a_time_passes_or_fails_with_a_one_line_summary() {
     };
     let correct = compile_pipeline(&dir, "correct", &[]);
     let passed = run(&correct, "culling");
-    assert_eq!(passed.status.code(), Some(0));
-    assert_eq!(String::from_utf8_lossy(&passed.stdout), "culling: 25/25\n");
     let mistaken = compile_pipeline(&dir, "mistaken", &[&mistake_flag(MISTAKE)]);
     let failed = run(&mistaken, "culling");
-    assert_eq!(failed.status.code(), Some(1));
-    let summary = String::from_utf8_lossy(&failed.stdout);
-    assert!(
-        summary.starts_with("culling: ") && summary.contains(MISTAKE),
-        "{summary}"
-    );
-    assert_eq!(summary.lines().count(), 1, "{summary}");
+    assert_line_answers(&passed, &failed, "culling", 25, MISTAKE);
     let unknown = run(&correct, "culing");
     assert_eq!(unknown.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&unknown.stderr).contains("--line culing: expected one of"));

@@ -1,15 +1,27 @@
-//! `--submissions DIR`: every folder in DIR graded (`{dir}` in the command is that folder), all
-//! their scenes sharing the jobs, then `DIR/grades.csv` (one row per submission in name order,
+//! `--submissions DIR`: every folder in DIR graded (`{dir}` in the command is that folder; for
+//! the first assignment all their scenes sharing the jobs, for the rasterizer's `raster.rs`
+//! grades each in turn), then `DIR/grades.csv` (one row per submission in name order,
 //! in the gradebook format `--csv-format` asks: `gradebook`) and `DIR/NAME.html` for each.
 //! Nothing in the CSV depends on timing or order of work: the same submissions give the same
 //! file.
 
+use std::collections::HashMap;
 use std::path::{Path, PathBuf};
 
 use super::graded::Grade;
+use super::sandboxing::Sandboxing;
+use super::sheet::Sheet;
 use super::{CliError, GradeArgs, Plan, gradebook, html, run_tasks};
 
-pub(super) fn grade_class(dir: &Path, args: &GradeArgs, plan: &Plan) -> Result<(), CliError> {
+/// A class to grade, either assignment's: its submissions (folder name and path, by name) and
+/// who each is in the gradebook.
+pub(super) struct Class {
+    pub submissions: Vec<(String, PathBuf)>,
+    students: HashMap<String, gradebook::Student>,
+}
+
+/// The class in `dir`, once the arguments are known to suit a class.
+pub(super) fn open(dir: &Path, args: &GradeArgs) -> Result<Class, CliError> {
     if args.html.is_some()
         || args.json
         || args.line.is_some()
@@ -30,41 +42,63 @@ pub(super) fn grade_class(dir: &Path, args: &GradeArgs, plan: &Plan) -> Result<(
         )));
     }
     let students = students(args, &submissions)?;
-    let dirs: Vec<Option<PathBuf>> = submissions.iter().map(|(_, p)| Some(p.clone())).collect();
+    Ok(Class {
+        submissions,
+        students,
+    })
+}
+
+/// The first assignment's class: every submission's scenes sharing the jobs.
+pub(super) fn grade_class(dir: &Path, args: &GradeArgs, plan: &Plan) -> Result<(), CliError> {
+    let class = open(dir, args)?;
+    let dirs: Vec<Option<PathBuf>> = (class.submissions.iter())
+        .map(|(_, p)| Some(p.clone()))
+        .collect();
     let label = format!(
         "grading {} submissions ({} scenes each)",
-        submissions.len(),
+        class.submissions.len(),
         plan.rubric.scenes.len()
     );
     // Said once the input is known to be good, before the first program runs.
     eprintln!("{}", plan.sandboxing.banner(plan.words, true));
     let results = run_tasks(plan, &dirs, label)?;
     let points = &plan.rubric.points;
-    let grades: Vec<Grade> = (results.into_iter())
-        .map(|r| Grade::new(r, points))
+    let sheets: Vec<Sheet> = (results.into_iter())
+        .map(|r| Grade::new(r, points).sheet())
         .collect();
+    write(dir, args, &plan.sandboxing, &class, &sheets)
+}
+
+/// Writes the class's grades (`sheets`, one per submission in order): DIR/NAME.html each, and
+/// DIR/grades.csv as `--csv-format` asks; then says each total.
+pub(super) fn write(
+    dir: &Path,
+    args: &GradeArgs,
+    sandboxing: &Sandboxing,
+    class: &Class,
+    sheets: &[Sheet],
+) -> Result<(), CliError> {
     let write = |path: PathBuf, text: String| {
         std::fs::write(&path, text)
             .map_err(|e| CliError::Runtime(format!("{}: cannot write: {e}", path.display())))
     };
-    for ((name, _), grade) in submissions.iter().zip(&grades) {
+    for ((name, _), sheet) in class.submissions.iter().zip(sheets) {
         write(
             dir.join(format!("{name}.html")),
-            html::page(grade, name, &args.run, &plan.sandboxing),
+            html::page(sheet, name, &args.run, sandboxing),
         )?;
     }
     let csv = gradebook::csv(
         args.csv_format,
-        &submissions,
-        &grades,
-        &students,
+        &class.submissions,
+        sheets,
+        &class.students,
         &args.assignment,
-        points,
     );
     write(dir.join("grades.csv"), csv)?;
-    println!("{}", plan.sandboxing.summary());
-    for ((name, _), grade) in submissions.iter().zip(&grades) {
-        println!("{name}: {}/{}", grade.total, grade.max);
+    println!("{}", sandboxing.summary());
+    for ((name, _), sheet) in class.submissions.iter().zip(sheets) {
+        println!("{name}: {}/{}", sheet.total, sheet.max);
     }
     println!("wrote {}", dir.join("grades.csv").display());
     Ok(())
@@ -74,7 +108,7 @@ pub(super) fn grade_class(dir: &Path, args: &GradeArgs, plan: &Plan) -> Result<(
 fn students(
     args: &GradeArgs,
     submissions: &[(String, PathBuf)],
-) -> Result<std::collections::HashMap<String, gradebook::Student>, CliError> {
+) -> Result<HashMap<String, gradebook::Student>, CliError> {
     let Some(path) = &args.students else {
         return Ok(Default::default());
     };
@@ -88,7 +122,7 @@ fn students(
 }
 
 /// The folders in `dir` by name (absolute paths), hidden ones left out.
-pub(super) fn folders(dir: &Path) -> Result<Vec<(String, PathBuf)>, CliError> {
+fn folders(dir: &Path) -> Result<Vec<(String, PathBuf)>, CliError> {
     let fail = |e: std::io::Error| CliError::Input(format!("{}: cannot read: {e}", dir.display()));
     let dir = std::path::absolute(dir).map_err(fail)?;
     let mut folders: Vec<(String, PathBuf)> = std::fs::read_dir(&dir)

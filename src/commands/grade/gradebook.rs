@@ -9,10 +9,8 @@ use std::collections::HashMap;
 use std::fmt::Write;
 use std::path::{Path, PathBuf};
 
-use close2gl_check::rubric::{LineId, LinePoints};
-
 use super::CliError;
-use super::graded::Grade;
+use super::sheet::Sheet;
 
 /// The gradebook a CSV is for.
 #[derive(clap::ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
@@ -66,14 +64,14 @@ pub fn read_students(path: &Path) -> Result<HashMap<String, Student>, CliError> 
 
 /// The CSV for the class: `submissions` (folder name and path) with their grades, in the
 /// format asked; `students` maps folders to gradebook identifiers (a folder it lacks is its
-/// own identifier); `assignment` names Canvas's column.
+/// own identifier); `assignment` names Canvas's column. The columns are the rubric's lines
+/// as the grades hold them (every grade of a class is on the same rubric).
 pub fn csv(
     format: CsvFormat,
     submissions: &[(String, PathBuf)],
-    grades: &[Grade],
+    grades: &[Sheet],
     students: &HashMap<String, Student>,
     assignment: &str,
-    rubric: &LinePoints,
 ) -> String {
     let who = |folder: &str| {
         students
@@ -83,10 +81,11 @@ pub fn csv(
             })
     };
     let class = submissions.iter().map(|(folder, _)| folder).zip(grades);
+    let rubric = grades.first();
     match format {
         CsvFormat::Plain => by_line(false, class, &who, rubric),
         CsvFormat::Moodle => by_line(true, class, &who, rubric),
-        CsvFormat::Canvas => canvas(class, &who, assignment, rubric.total()),
+        CsvFormat::Canvas => canvas(class, &who, assignment, rubric.map_or(0, |g| g.max)),
     }
 }
 
@@ -97,19 +96,19 @@ type Who<'a> = dyn Fn(&str) -> (String, String) + 'a;
 /// identifier and full name first, each column titled for its import).
 fn by_line<'a>(
     moodle: bool,
-    class: impl Iterator<Item = (&'a String, &'a Grade)>,
+    class: impl Iterator<Item = (&'a String, &'a Sheet)>,
     who: &Who,
-    rubric: &LinePoints,
+    rubric: Option<&Sheet>,
 ) -> String {
     let mut out = String::new();
     let mut header: Vec<String> = match moodle {
         true => vec!["Identifier".into(), "Full name".into()],
         false => vec!["submission".into()],
     };
-    for line in LineId::ALL {
+    for line in rubric.iter().flat_map(|g| &g.lines) {
         header.push(match moodle {
-            true => format!("{} (close2gl)", rubric.title(line)),
-            false => line.id().into(),
+            true => format!("{} (close2gl)", line.title),
+            false => line.id.clone(),
         });
     }
     header.push(if moodle {
@@ -134,7 +133,7 @@ fn by_line<'a>(
 /// Canvas's gradebook import: its five leading columns, the points possible, the total under
 /// the assignment's column.
 fn canvas<'a>(
-    class: impl Iterator<Item = (&'a String, &'a Grade)>,
+    class: impl Iterator<Item = (&'a String, &'a Sheet)>,
     who: &Who,
     assignment: &str,
     possible_points: u32,
@@ -168,7 +167,7 @@ fn canvas<'a>(
     out
 }
 
-pub(super) fn row(out: &mut String, fields: &[String]) {
+fn row(out: &mut String, fields: &[String]) {
     let quoted: Vec<String> = fields.iter().map(|f| field(f)).collect();
     let _ = writeln!(out, "{}", quoted.join(","));
 }

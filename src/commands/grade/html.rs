@@ -7,11 +7,8 @@ use std::fmt::Write;
 use base64::Engine;
 use base64::engine::general_purpose::STANDARD;
 
-use super::graded::Grade;
-use super::report::failure_lines;
 use super::sandboxing::Sandboxing;
-use super::scene_run::SceneResult;
-use super::to_fix;
+use super::sheet::{FailingScene, Sheet};
 
 const STYLE: &str = "body{font:14px/1.4 system-ui,sans-serif;margin:2em;color:#222;max-width:1200px}\
 table{border-collapse:collapse}td,th{padding:.25em .8em;border-bottom:1px solid #ddd;text-align:left;vertical-align:top}\
@@ -22,7 +19,7 @@ img{image-rendering:pixelated;border:1px solid #ccc;max-width:360px}section{bord
 li.lost{color:#b3261e}ul.sandbox{font-size:12px}.legend span{display:inline-block;padding:0 .5em;margin-right:.3em;color:#fff;font-size:12px}";
 
 /// The page for `grade`, of the program run as `command`.
-pub fn page(grade: &Grade, title: &str, command: &str, sandboxing: &Sandboxing) -> String {
+pub fn page(grade: &Sheet, title: &str, command: &str, sandboxing: &Sandboxing) -> String {
     let mut out = String::new();
     let _ = write!(
         out,
@@ -38,23 +35,18 @@ pub fn page(grade: &Grade, title: &str, command: &str, sandboxing: &Sandboxing) 
     let _ = write!(
         out,
         "<h2>To fix</h2><pre>{}</pre>",
-        escape(&to_fix::lines(grade).join("\n"))
+        escape(&grade.to_fix.join("\n"))
     );
     rubric_table(&mut out, grade);
-    let failing: Vec<_> = grade
-        .scenes
-        .iter()
-        .filter(|s| s.verdicts.iter().any(|(_, v)| !v.passed))
-        .collect();
-    if !failing.is_empty() {
+    if !grade.failing.is_empty() {
         let _ = write!(
             out,
             "<h2>Failing scenes ({})</h2>{}",
-            failing.len(),
-            legend()
+            grade.failing.len(),
+            legend(&grade.legend)
         );
     }
-    for scene in failing {
+    for scene in &grade.failing {
         failing_scene(&mut out, scene);
     }
     out.push_str("</body></html>\n");
@@ -63,36 +55,31 @@ pub fn page(grade: &Grade, title: &str, command: &str, sandboxing: &Sandboxing) 
 
 /// A failing scene's section: the lines it failed and why, the pictures, check's report and
 /// the scene file.
-fn failing_scene(out: &mut String, scene: &SceneResult) {
+fn failing_scene(out: &mut String, scene: &FailingScene) {
     let _ = write!(
         out,
         "<section><h3 id=\"{0}\">{0}</h3><ul>",
         escape(&scene.id)
     );
-    for (line, verdict) in scene.verdicts.iter().filter(|(_, v)| !v.passed) {
+    for (line, why) in &scene.lines {
         let _ = write!(
             out,
             "<li><b>{}</b>: <span class=\"why\">{}</span></li>",
-            line.id(),
-            escape(&verdict.detail)
+            escape(line),
+            escape(why)
         );
     }
     out.push_str("</ul>");
-    if let Some(evidence) = &scene.evidence {
-        let captions = [
-            "close2gl (the reference)",
-            "the program's trace",
-            "the difference",
-        ];
-        for (png, caption) in evidence.pictures.iter().zip(captions) {
-            let _ = write!(
-                out,
-                "<figure><img alt=\"{caption}\" src=\"data:image/png;base64,{}\">\
-                 <figcaption>{caption}</figcaption></figure>",
-                STANDARD.encode(png)
-            );
-        }
-        let _ = write!(out, "<h4>check</h4><pre>{}</pre>", escape(&evidence.text));
+    for (caption, png) in &scene.pictures {
+        let _ = write!(
+            out,
+            "<figure><img alt=\"{caption}\" src=\"data:image/png;base64,{}\">\
+             <figcaption>{caption}</figcaption></figure>",
+            STANDARD.encode(png)
+        );
+    }
+    if let Some(check) = &scene.check {
+        let _ = write!(out, "<h4>check</h4><pre>{}</pre>", escape(check));
     }
     let _ = write!(
         out,
@@ -101,15 +88,11 @@ fn failing_scene(out: &mut String, scene: &SceneResult) {
     );
 }
 
-fn rubric_table(out: &mut String, grade: &Grade) {
+fn rubric_table(out: &mut String, grade: &Sheet) {
     out.push_str("<table><tr><th>line</th><th>points</th><th>scenes</th><th></th></tr>");
     for line in &grade.lines {
-        let class = if line.points == line.max {
-            "full"
-        } else {
-            "lost"
-        };
-        let mut why = failure_lines(grade, line).join("\n");
+        let class = if line.full() { "full" } else { "lost" };
+        let mut why = line.evidence.join("\n");
         for note in &line.notes {
             why.push_str(&format!("\naccepted: {note}"));
         }
@@ -149,27 +132,16 @@ fn sandbox_list(out: &mut String, sandboxing: &Sandboxing) {
     out.push_str("</ul>");
 }
 
-/// The difference picture's colours, as check paints them.
-fn legend() -> String {
-    use close2gl_check::Kind;
-    use close2gl_check::picture::kind_color;
-    let kinds = [
-        Kind::DrawnBehindEye,
-        Kind::DrawnOutside,
-        Kind::NotDrawn,
-        Kind::FrontCulled,
-        Kind::BackDrawn,
-        Kind::InsideNotDrawn,
-        Kind::Moved,
-        Kind::Depth,
-    ];
+/// The difference picture's colours, as the sheet names them; nothing when it has none.
+fn legend(colours: &[(&str, [u8; 4])]) -> String {
+    if colours.is_empty() {
+        return String::new();
+    }
     let mut out = String::from("<p class=\"legend\">In the difference: grey agrees; ");
-    for kind in kinds {
-        let [r, g, b, _] = kind_color(kind);
+    for (name, [r, g, b, _]) in colours {
         let _ = write!(
             out,
-            "<span style=\"background:rgb({r},{g},{b})\">{}</span>",
-            kind.name()
+            "<span style=\"background:rgb({r},{g},{b})\">{name}</span>"
         );
     }
     out.push_str("</p>");

@@ -5,20 +5,25 @@
 //! The files follow a grading: `mod.rs` the arguments, the models and the scenes' workers;
 //! `scene_run.rs` one scene through the runner and the judges; `graded.rs` the scenes' results
 //! with the rubric's lines scored on them (the scoring is check's `rubric::score`);
-//! `report.rs` the terminal table and the JSON; `html.rs` the page;
-//! `class.rs` a folder of submissions, with `gradebook.rs` its CSV for a gradebook;
-//! `platforms.rs` one grade as Gradescope and GitHub Classroom read it; `sandboxing.rs` the
-//! sandbox each run is in, and what every report says of it.
+//! `report.rs` the terminal table and the JSON; `raster.rs` the rasterizer assignment's
+//! grade (`--rubric` with its rubric), with its own table and JSON; `sheet.rs` the one shape
+//! both grades take for the teachers' writers (`raster_sheet.rs` fills it for the rasterizer):
+//! `html.rs` the page, `platforms.rs` Gradescope and GitHub Classroom, `deliver.rs` one
+//! program's outputs, `class.rs` a folder of submissions, with `gradebook.rs` its CSV for a
+//! gradebook; `sandboxing.rs` the sandbox each run is in, and what every report says of it.
 
 mod class;
+mod deliver;
 mod gradebook;
 mod graded;
 mod html;
 mod platforms;
 mod raster;
+mod raster_sheet;
 mod report;
 mod sandboxing;
 mod scene_run;
+mod sheet;
 mod to_fix;
 
 use std::panic::AssertUnwindSafe;
@@ -171,24 +176,20 @@ pub fn run(args: GradeArgs) -> Result<(), CliError> {
         None => std::thread::available_parallelism().map_or(1, |n| n.get()),
     };
     let sandboxing = Sandboxing::new(args.unsandboxed, &args.allow_read)?;
+    let rubric_file = read_rubric_file(&args)?;
+    // Before the models: the rasterizer's scenes name their own.
+    if let Some((path, text)) = &rubric_file
+        && rubric::file::assignment(text).as_deref() == Some("rasterizer")
+    {
+        return grade_on_rubric_file(path, &args, &words, limits, sandboxing, jobs);
+    }
     let mut rubric = load_rubric(&args.models)?;
-    if let Some(path) = &args.rubric {
-        let text = std::fs::read_to_string(path)
-            .map_err(|e| CliError::Input(format!("{}: cannot read: {e}", path.display())))?;
-        if rubric::file::assignment(&text).as_deref() == Some("rasterizer") {
-            return grade_on_rubric_file(path, &args, &words, limits, sandboxing, jobs);
-        }
+    if let Some((path, text)) = &rubric_file {
         let file = path.display().to_string();
-        rubric.points = LinePoints::parse(&text, &file).map_err(CliError::Input)?;
+        rubric.points = LinePoints::parse(text, &file).map_err(CliError::Input)?;
     }
     if let Some(id) = &args.line {
-        let line = LineId::ALL.iter().find(|l| l.id() == id).ok_or_else(|| {
-            let ids: Vec<&str> = LineId::ALL.iter().map(|l| l.id()).collect();
-            CliError::Input(format!("--line {id}: expected one of {}", ids.join(", ")))
-        })?;
-        rubric
-            .scenes
-            .retain(|(_, scene)| scene.lines.contains(line));
+        keep_line(&mut rubric, id)?;
     }
     let plan = Plan {
         words: &words,
@@ -206,8 +207,30 @@ pub fn run(args: GradeArgs) -> Result<(), CliError> {
     result
 }
 
-/// `--rubric FILE`: the rasterizer assignment's grade (one program; the class, platform and
-/// page outputs are the first assignment's so far, and say so).
+/// `--rubric FILE` read: the file and its text.
+fn read_rubric_file(args: &GradeArgs) -> Result<Option<(&PathBuf, String)>, CliError> {
+    let Some(path) = &args.rubric else {
+        return Ok(None);
+    };
+    let text = std::fs::read_to_string(path)
+        .map_err(|e| CliError::Input(format!("{}: cannot read: {e}", path.display())))?;
+    Ok(Some((path, text)))
+}
+
+/// `--line ID`: the rubric's scenes for that line alone.
+fn keep_line(rubric: &mut Rubric, id: &str) -> Result<(), CliError> {
+    let line = (LineId::ALL.iter())
+        .find(|l| l.id() == id)
+        .ok_or_else(|| deliver::unknown_line(id, LineId::ALL.iter().map(|l| l.id())))?;
+    rubric
+        .scenes
+        .retain(|(_, scene)| scene.lines.contains(line));
+    Ok(())
+}
+
+/// `--rubric FILE`: the rasterizer assignment's grade, one program or a class, with every
+/// output the first assignment's has; only `--model` means nothing to it (its scenes name
+/// their models).
 fn grade_on_rubric_file(
     path: &Path,
     args: &GradeArgs,
@@ -216,21 +239,10 @@ fn grade_on_rubric_file(
     sandboxing: Sandboxing,
     jobs: usize,
 ) -> Result<(), CliError> {
-    let others = [
-        (
-            args.submissions.is_some() && args.json,
-            "--json with --submissions",
-        ),
-        (args.gradescope.is_some(), "--gradescope"),
-        (args.classroom, "--classroom"),
-        (args.html.is_some(), "--html"),
-        (args.line.is_some(), "--line"),
-        (!args.models.is_empty(), "--model"),
-    ];
-    if let Some((_, option)) = others.iter().find(|(given, _)| *given) {
-        return Err(CliError::Input(format!(
-            "{option}: not available with the rasterizer's rubric yet (it grades one program, as a table or --json, or a class into grades.csv)"
-        )));
+    if !args.models.is_empty() {
+        return Err(CliError::Input(
+            "--model: the rasterizer's rubric grades on the scenes beside it, which name their own models".into(),
+        ));
     }
     let rubric = Rubric {
         models: Vec::new(),
@@ -246,8 +258,8 @@ fn grade_on_rubric_file(
     };
     close2gl_runner::install_interrupt_handler();
     let result = match &args.submissions {
-        Some(dir) => raster::grade_class(path, dir, &plan),
-        None => raster::grade(path, args.json, &plan),
+        Some(dir) => raster::grade_class(path, dir, args, &plan),
+        None => raster::grade(path, args, &plan),
     };
     close2gl_runner::reap_everything();
     result
@@ -259,39 +271,14 @@ fn grade_one(args: &GradeArgs, plan: &Plan) -> Result<(), CliError> {
     let started = std::time::Instant::now();
     let mut results = run_tasks(plan, &[None], label)?;
     let grade = Grade::new(results.remove(0), &plan.rubric.points);
-    let only = args.line.as_deref();
-    if let Some(dir) = &args.gradescope {
-        let results = platforms::gradescope(&grade, only, args.details, started.elapsed());
-        platforms::write_gradescope(dir, &results)?;
-    }
-    if args.classroom {
-        platforms::write_classroom(&platforms::classroom(&grade, only))?;
-    }
-    if let Some(path) = &args.html {
-        let page = html::page(&grade, "close2gl grade", &args.run, &plan.sandboxing);
-        std::fs::write(path, page)
-            .map_err(|e| CliError::Runtime(format!("{}: cannot write: {e}", path.display())))?;
-    }
-    // What the student's log shows (a CI step) holds no scene's numbers.
-    match (only, args.classroom, args.json) {
-        (Some(id), _, _) => return line_only(&grade, id),
-        (None, true, _) => print!("{}", platforms::student_table(&grade, None)),
-        (None, false, true) => println!("{}", report::json(&grade, &plan.sandboxing)),
-        (None, false, false) => print!("{}", report::table(&grade, &args.run, &plan.sandboxing)),
-    }
-    Ok(())
-}
-
-/// `--line`: its one line of summary; exit 1 when it lost points.
-fn line_only(grade: &Grade, id: &str) -> Result<(), CliError> {
-    let Some(line) = grade.lines.iter().find(|l| l.line.id() == id) else {
-        return Ok(());
-    };
-    println!("{}", platforms::summary(line));
-    match line.points == line.max {
-        true => Ok(()),
-        false => Err(CliError::Verdict),
-    }
+    deliver::one(
+        args,
+        &plan.sandboxing,
+        &grade.sheet(),
+        started.elapsed(),
+        || report::json(&grade, &plan.sandboxing),
+        || report::table(&grade, &args.run, &plan.sandboxing),
+    )
 }
 
 /// Runs every scene for every submission (`dirs`: each one's folder for `{dir}`, `None` for a

@@ -13,13 +13,10 @@ use std::time::Duration;
 
 use base64::Engine;
 use base64::engine::general_purpose::STANDARD;
-use close2gl_check::rubric::LineScore;
 use serde_json::{Value, json};
 
 use super::CliError;
-use super::graded::Grade;
-use super::report::failure_lines;
-use super::to_fix;
+use super::sheet::{Sheet, SheetLine};
 
 /// Who sees a part of Gradescope's results: Gradescope's own four words.
 #[derive(clap::ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
@@ -43,26 +40,23 @@ impl Visibility {
 }
 
 /// The lines a platform reports: every line, or the one `--line` names.
-fn reported<'a>(grade: &'a Grade, only: Option<&str>) -> Vec<&'a LineScore> {
-    let chosen = |line: &&LineScore| only.is_none_or(|id| line.line.id() == id);
+fn reported<'a>(grade: &'a Sheet, only: Option<&str>) -> Vec<&'a SheetLine> {
+    let chosen = |line: &&SheetLine| only.is_none_or(|id| line.id == id);
     grade.lines.iter().filter(chosen).collect()
 }
 
 /// What a student may see of a line: its points, the scenes it passed, the first failing
 /// scene's name and the mistakes named; no coordinates, no scene file.
-fn student_output(grade: &Grade, line: &LineScore) -> String {
+fn student_output(line: &SheetLine) -> String {
     let mut out = format!(
         "{}/{} points; {} of {} scenes passed",
         line.points, line.max, line.passed, line.scenes
     );
     if let Some((first, _)) = line.failures.first() {
-        out.push_str(&format!(
-            "\nfirst failing scene: {}",
-            grade.scenes[*first].id
-        ));
+        out.push_str(&format!("\nfirst failing scene: {first}"));
     }
     if !line.mistakes.is_empty() {
-        out.push_str(&format!("\nmistakes named: {}", line.mistakes_in_words()));
+        out.push_str(&format!("\nmistakes named: {}", line.mistakes));
     }
     for note in &line.notes {
         out.push_str(&format!("\naccepted: {note}"));
@@ -72,46 +66,39 @@ fn student_output(grade: &Grade, line: &LineScore) -> String {
 
 /// What only the teacher sees by default: why each scene failed, with check's numbers, and the
 /// first failing scene's file.
-fn details_output(grade: &Grade, line: &LineScore) -> String {
-    let mut out = failure_lines(grade, line).join("\n");
+fn details_output(line: &SheetLine) -> String {
+    let mut out = line.evidence.join("\n");
     for (scene, why) in line.failures.iter().skip(1) {
-        out.push_str(&format!(
-            "\n{}: {}",
-            grade.scenes[*scene].id,
-            why.replace('\n', " / ")
-        ));
+        out.push_str(&format!("\n{scene}: {}", why.replace('\n', " / ")));
     }
-    if let Some((first, _)) = line.failures.first() {
-        out.push_str(&format!(
-            "\n\nthe scene file:\n{}",
-            grade.scenes[*first].scene_text
-        ));
+    if let Some(scene_file) = &line.scene_file {
+        out.push_str(&format!("\n\nthe scene file:\n{scene_file}"));
     }
     out
 }
 
 /// Gradescope's results.json for `grade` (only the line `only` names, with `--line`).
-pub fn gradescope(grade: &Grade, only: Option<&str>, details: Visibility, took: Duration) -> Value {
+pub fn gradescope(grade: &Sheet, only: Option<&str>, details: Visibility, took: Duration) -> Value {
     let lines = reported(grade, only);
     let mut tests = Vec::new();
     for line in &lines {
         let passed = line.failures.is_empty();
         tests.push(json!({
             "name": line.title.as_str(),
-            "number": line.line.id(),
+            "number": line.id,
             "score": line.points,
             "max_score": line.max,
             "status": if passed { "passed" } else { "failed" },
-            "output": student_output(grade, line),
+            "output": student_output(line),
             "visibility": "visible",
         }));
         if !passed {
             tests.push(json!({
                 "name": format!("{}: the scenes' numbers", line.title.as_str()),
-                "number": format!("{}.details", line.line.id()),
+                "number": format!("{}.details", line.id),
                 "score": 0,
                 "max_score": 0,
-                "output": details_output(grade, line),
+                "output": details_output(line),
                 "visibility": details.word(),
             }));
         }
@@ -120,7 +107,7 @@ pub fn gradescope(grade: &Grade, only: Option<&str>, details: Visibility, took: 
     json!({
         "score": score,
         "execution_time": took.as_secs(),
-        "output": to_fix::lines(grade).join("\n"),
+        "output": grade.to_fix.join("\n"),
         "visibility": "visible",
         "stdout_visibility": "hidden",
         "tests": tests,
@@ -138,7 +125,7 @@ pub fn write_gradescope(dir: &Path, results: &Value) -> Result<(), CliError> {
 
 /// The grading reporter's result for `grade`: a test per line, its points its score, so that
 /// one step gives partial credit.
-pub fn classroom(grade: &Grade, only: Option<&str>) -> Value {
+pub fn classroom(grade: &Sheet, only: Option<&str>) -> Value {
     let lines = reported(grade, only);
     let tests: Vec<Value> = lines
         .iter()
@@ -147,10 +134,10 @@ pub fn classroom(grade: &Grade, only: Option<&str>) -> Value {
             json!({
                 "name": line.title.as_str(),
                 "status": if passed { "pass" } else { "fail" },
-                "message": student_output(grade, line),
+                "message": student_output(line),
                 "score": line.points,
                 "line_no": 0,
-                "test_code": format!("close2gl grade --line {}", line.line.id()),
+                "test_code": format!("close2gl grade --line {}", line.id),
             })
         })
         .collect();
@@ -188,13 +175,13 @@ pub fn write_classroom(result: &Value) -> Result<(), CliError> {
 
 /// The grade as a student may see it, for a log the student reads (GitHub Actions): each
 /// line's title and what [`student_output`] says, and what to fix.
-pub fn student_table(grade: &Grade, only: Option<&str>) -> String {
-    let mut out = to_fix::lines(grade).join("\n");
+pub fn student_table(grade: &Sheet, only: Option<&str>) -> String {
+    let mut out = grade.to_fix.join("\n");
     for line in reported(grade, only) {
         out.push_str(&format!(
             "\n{}: {}",
             line.title.as_str(),
-            student_output(grade, line)
+            student_output(line)
         ));
     }
     out.push('\n');
@@ -202,10 +189,10 @@ pub fn student_table(grade: &Grade, only: Option<&str>) -> String {
 }
 
 /// `--line`'s one line: "culling: 8/25 (culling_inverted: 4 of 4 failing scenes)".
-pub fn summary(line: &LineScore) -> String {
-    let mut out = format!("{}: {}/{}", line.line.id(), line.points, line.max);
+pub fn summary(line: &SheetLine) -> String {
+    let mut out = format!("{}: {}/{}", line.id, line.points, line.max);
     if !line.mistakes.is_empty() {
-        out.push_str(&format!(" ({})", line.mistakes_in_words()));
+        out.push_str(&format!(" ({})", line.mistakes));
     } else if !line.failures.is_empty() {
         out.push_str(&format!(
             " ({} of {} scenes passed)",

@@ -15,18 +15,18 @@ use close2gl_trace_format::{RasterFrame, parse_raster_trace, parse_scene};
 use serde_json::json;
 
 use super::scene_run::{Run, RunFailure, read_written, run_in_workspace};
-use super::{CliError, Plan, lock};
+use super::{CliError, GradeArgs, Plan, class, deliver, lock, raster_sheet};
 
 /// A scene of the rubric, ready to hand a program: its text (naming the files beside it) and
 /// those files.
-struct RubricScene {
-    name: String,
-    text: String,
+pub(super) struct RubricScene {
+    pub name: String,
+    pub text: String,
     files: Vec<(String, Vec<u8>)>,
 }
 
 /// What one scene gave: check's report, or why the run failed.
-type SceneOutcome = Result<RasterReport, RunFailure>;
+pub(super) type SceneOutcome = Result<RasterReport, RunFailure>;
 
 /// The rubric at `path` and its scenes (`scenes/NAME.scene` beside it, with the files they name).
 fn load(path: &Path) -> Result<(Rubric, Vec<RubricScene>), CliError> {
@@ -109,11 +109,11 @@ fn run_scene(run: &Run, scene: &RubricScene) -> SceneOutcome {
 }
 
 /// One line scored.
-struct Scored<'a> {
-    line: &'a RubricLine,
-    points: u32,
-    passed: usize,
-    failures: Vec<(String, String)>,
+pub(super) struct Scored<'a> {
+    pub line: &'a RubricLine,
+    pub points: u32,
+    pub passed: usize,
+    pub failures: Vec<(String, String)>,
 }
 
 fn score<'a>(rubric: &'a Rubric, outcomes: &[(String, SceneOutcome)]) -> Vec<Scored<'a>> {
@@ -183,52 +183,55 @@ fn run_all(
         .collect())
 }
 
-/// Grades one program on the rubric at `path`.
-pub fn grade(path: &Path, json_out: bool, plan: &Plan) -> Result<(), CliError> {
-    let (rubric, scenes) = load(path)?;
+/// Grades one program on the rubric at `path` (with `--line`, on that line alone), delivered
+/// as the arguments ask.
+pub fn grade(path: &Path, args: &GradeArgs, plan: &Plan) -> Result<(), CliError> {
+    let (mut rubric, mut scenes) = load(path)?;
+    if let Some(id) = &args.line {
+        let Some(line) = rubric.lines.iter().find(|l| &l.id == id).cloned() else {
+            return Err(deliver::unknown_line(
+                id,
+                rubric.lines.iter().map(|l| l.id.as_str()),
+            ));
+        };
+        scenes.retain(|s| line.scenes.contains(&s.name));
+        rubric.lines = vec![line];
+    }
     eprintln!("{}", plan.sandboxing.banner(plan.words, false));
+    let started = std::time::Instant::now();
     let outcomes = run_all(&scenes, None, plan)?;
     let scored = score(&rubric, &outcomes);
     let total: u32 = scored.iter().map(|s| s.points).sum();
-    match json_out {
-        true => println!("{}", json(&scored, &outcomes, total, rubric.total())),
-        false => print!("{}", table(&scored, &outcomes, total, rubric.total(), path)),
-    }
-    Ok(())
+    let max = rubric.total();
+    let sheet = raster_sheet::sheet(&scored, &outcomes, &scenes, max);
+    deliver::one(
+        args,
+        &plan.sandboxing,
+        &sheet,
+        started.elapsed(),
+        || json(&scored, &outcomes, total, max),
+        || table(&scored, &outcomes, total, max, path),
+    )
 }
 
-/// Grades every folder in `dir` on the rubric at `path` into `dir/grades.csv`: a row per
-/// submission in name order, a column per line (by id) and the total.
-pub fn grade_class(path: &Path, dir: &Path, plan: &Plan) -> Result<(), CliError> {
+/// Grades every folder in `dir` on the rubric at `path`, one submission after another (each
+/// one's scenes sharing the jobs), written as the first assignment's class is.
+pub fn grade_class(path: &Path, dir: &Path, args: &GradeArgs, plan: &Plan) -> Result<(), CliError> {
     let (rubric, scenes) = load(path)?;
-    let submissions = super::class::folders(dir)?;
-    if submissions.is_empty() {
-        return Err(CliError::Input(format!(
-            "{}: expected a folder per submission, found none",
-            dir.display()
-        )));
-    }
+    let class = class::open(dir, args)?;
     eprintln!("{}", plan.sandboxing.banner(plan.words, true));
-    let mut csv = String::new();
-    let mut header = vec!["submission".to_string()];
-    header.extend(rubric.lines.iter().map(|l| l.id.clone()));
-    header.push("total".into());
-    super::gradebook::row(&mut csv, &header);
-    for (name, folder) in &submissions {
+    let mut sheets = Vec::new();
+    for (_, folder) in &class.submissions {
         let outcomes = run_all(&scenes, Some(folder), plan)?;
         let scored = score(&rubric, &outcomes);
-        let total: u32 = scored.iter().map(|s| s.points).sum();
-        let mut fields = vec![name.clone()];
-        fields.extend(scored.iter().map(|s| s.points.to_string()));
-        fields.push(total.to_string());
-        super::gradebook::row(&mut csv, &fields);
-        println!("{name}: {total}/{}", rubric.total());
+        sheets.push(raster_sheet::sheet(
+            &scored,
+            &outcomes,
+            &scenes,
+            rubric.total(),
+        ));
     }
-    let out = dir.join("grades.csv");
-    std::fs::write(&out, csv)
-        .map_err(|e| CliError::Runtime(format!("{}: cannot write: {e}", out.display())))?;
-    println!("wrote {}", out.display());
-    Ok(())
+    class::write(dir, args, &plan.sandboxing, &class, &sheets)
 }
 
 fn table(
@@ -252,7 +255,10 @@ fn table(
         }
     }
     out += &format!("\ntotal {total}/{max}\n");
-    out += &to_fix(outcomes);
+    let bugs = to_fix(outcomes);
+    if !bugs.is_empty() {
+        out += &format!("\n{}\n", bugs.join("\n"));
+    }
     let accepted: Vec<String> = (outcomes.iter())
         .filter_map(|(name, o)| o.as_ref().ok().map(|r| (name, legal_choices(r.rules()))))
         .filter(|(_, rules)| !rules.is_empty())
@@ -266,8 +272,9 @@ fn table(
 }
 
 /// The mistakes check named, each once with the scenes it was named in, most scenes first: one
-/// bug to fix however many scenes show it.
-fn to_fix(outcomes: &[(String, SceneOutcome)]) -> String {
+/// bug to fix however many scenes show it; two lines of text each, under a heading; none when
+/// check named none.
+pub(super) fn to_fix(outcomes: &[(String, SceneOutcome)]) -> Vec<String> {
     let mut bugs: Vec<(&'static str, Vec<&str>)> = Vec::new();
     for (scene, outcome) in outcomes {
         let Ok(report) = outcome else { continue };
@@ -278,19 +285,22 @@ fn to_fix(outcomes: &[(String, SceneOutcome)]) -> String {
             }
         }
     }
-    if bugs.is_empty() {
-        return String::new();
-    }
     bugs.sort_by_key(|(_, scenes)| std::cmp::Reverse(scenes.len()));
-    let mut out = "\nto fix first, the mistakes check named (`close2gl check` a scene's trace for pictures):\n".to_string();
+    if bugs.is_empty() {
+        return Vec::new();
+    }
+    let heading =
+        "to fix first, the mistakes check named (`close2gl check` a scene's trace for pictures):";
+    let mut out = vec![heading.to_string()];
     for (mistake, scenes) in bugs {
         let stage = RasterMistake::from_name(mistake).map_or("", |m| m.stage().name());
         let meaning = RasterMistake::from_name(mistake).map_or("", report::meaning);
-        out += &format!(
-            "  {mistake} ({stage}): {meaning}\n    in {} scenes: {}\n",
+        out.push(format!("  {mistake} ({stage}): {meaning}"));
+        out.push(format!(
+            "    in {} scenes: {}",
             scenes.len(),
             scenes.join(", ")
-        );
+        ));
     }
     out
 }

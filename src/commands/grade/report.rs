@@ -12,6 +12,7 @@ use serde_json::{Value, json};
 use super::graded::Grade;
 use super::sandboxing::Sandboxing;
 use super::scene_run::SceneResult;
+use super::sheet;
 use super::to_fix;
 
 /// The rubric table: each line's points of its points and scenes passed of its scenes; under
@@ -46,27 +47,21 @@ pub fn table(grade: &Grade, command: &str, sandboxing: &Sandboxing) -> String {
     out
 }
 
-/// What the report says under a failing line: its first failing scene, why, check's first
-/// difference when it says more, and the mistakes named.
+/// What the report says under a failing line (`sheet::evidence`), from the line's first
+/// failing scene and check's evidence there.
 pub fn failure_lines(grade: &Grade, line: &LineScore) -> Vec<String> {
-    let Some((first, why)) = line.failures.first() else {
-        return Vec::new();
-    };
-    let scene = &grade.scenes[*first];
-    let mut lines = vec![format!("first failing scene: {}", scene.id)];
-    lines.extend(why.lines().map(|l| format!("  {l}")));
-    if let Some(difference) = scene
-        .evidence
-        .as_ref()
-        .and_then(|e| e.first_difference.as_ref())
-        && !why.contains(difference.as_str())
-    {
-        lines.push(format!("  check's first difference: {difference}"));
-    }
-    if !line.mistakes.is_empty() {
-        lines.push(format!("  mistakes named: {}", line.mistakes_in_words()));
-    }
-    lines
+    let first = line.failures.first();
+    let scene = first.map(|(i, _)| &grade.scenes[*i]);
+    let difference = scene
+        .and_then(|s| s.evidence.as_ref())
+        .and_then(|e| e.first_difference.as_deref());
+    sheet::evidence(
+        scene
+            .zip(first)
+            .map(|(s, (_, why))| (s.id.as_str(), why.as_str())),
+        difference,
+        &line.mistakes_in_words(),
+    )
 }
 
 pub fn json(grade: &Grade, sandboxing: &Sandboxing) -> Value {

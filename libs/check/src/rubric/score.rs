@@ -107,20 +107,25 @@ fn score(line: LineId, scenes: &[Judged], rubric: &LinePoints) -> LineScore {
     score
 }
 
+/// Mistakes named for a line with `failing` failing scenes, `unexplained` of them naming none,
+/// in a report's words (either assignment's): "culling_inverted: 12 of 16 failing scenes;
+/// 4 unexplained"; empty when none is.
+pub fn mistakes_in_words(mistakes: &[NamedMistake], failing: usize, unexplained: usize) -> String {
+    let mut parts: Vec<String> = mistakes
+        .iter()
+        .map(|m| format!("{}: {} of {failing} failing scenes", m.name, m.scenes))
+        .collect();
+    if !parts.is_empty() && unexplained > 0 {
+        parts.push(format!("{unexplained} unexplained"));
+    }
+    parts.join("; ")
+}
+
 impl LineScore {
     /// The mistakes named, in a report's words: "culling_inverted: 12 of 16 failing scenes;
     /// 4 unexplained"; empty when none is.
     pub fn mistakes_in_words(&self) -> String {
-        let failing = self.failures.len();
-        let mut parts: Vec<String> = self
-            .mistakes
-            .iter()
-            .map(|m| format!("{}: {} of {failing} failing scenes", m.name, m.scenes))
-            .collect();
-        if !parts.is_empty() && self.unexplained > 0 {
-            parts.push(format!("{} unexplained", self.unexplained));
-        }
-        parts.join("; ")
+        mistakes_in_words(&self.mistakes, self.failures.len(), self.unexplained)
     }
 
     /// The mistakes that explain the most failing scenes (several when as many), when they
