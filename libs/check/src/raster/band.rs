@@ -1,8 +1,8 @@
 //! A band of the picture to try a drawing on before the whole frame. A set of mistakes that
 //! reproduces every fact reproduces them in any band too, and a drawing of an eighth of the rows
-//! costs about an eighth of a frame; so the pairs search draws each pair in the band and the
-//! whole frame only for those the band cannot rule out. The band is where the program drew the
-//! most (where a mistake has the most pixels to show in).
+//! costs about an eighth of a frame; so the search draws each mistake and pair in the band, and
+//! the whole frame only for those the band cannot rule out. The band is where the program drew
+//! the most (where a mistake has the most pixels to show in).
 
 use std::ops::Range;
 
@@ -35,7 +35,10 @@ impl Band {
                     .count()
             })
             .collect();
-        let rows = (height / 8).max(FEWEST_ROWS).min(height) & !1;
+        let rows = match height <= FEWEST_ROWS {
+            true => height,
+            false => (height / 8).max(FEWEST_ROWS) & !1,
+        };
         let drawn_in = |first: u32| -> usize {
             per_row[first as usize..(first + rows) as usize]
                 .iter()

@@ -60,12 +60,8 @@ impl Judge<'_> {
         }
     }
 
-    /// The attempt, drawn whole only when its band does not already rule it out.
-    fn attempt_if_band_agrees(
-        &self,
-        rules: RasterRules,
-        mistakes: RasterMistakes,
-    ) -> Option<Attempt> {
+    /// The attempt drawn in the band alone: its facts are the band's.
+    fn attempt_in_band(&self, rules: RasterRules, mistakes: RasterMistakes) -> Attempt {
         let rows = &self.band.rows;
         let drawn = self.redraw.draw_band(rules, mistakes, rows);
         let facts = compare(
@@ -75,7 +71,21 @@ impl Judge<'_> {
             &self.background,
             rows.clone(),
         );
-        (self.band.could_agree(&facts, self.allowance)).then(|| self.attempt(rules, mistakes))
+        Attempt {
+            rules,
+            mistakes,
+            facts,
+        }
+    }
+
+    /// Of attempts drawn in the band, those that reproduce every fact when drawn whole (only
+    /// those the band does not rule out are).
+    fn reproducing(&self, in_band: &[Attempt], legal: &Attempt) -> Vec<Attempt> {
+        (in_band.par_iter())
+            .filter(|a| self.band.could_agree(&a.facts, self.allowance))
+            .map(|a| self.attempt(a.rules, a.mistakes))
+            .filter(|a| self.reproduces(a, legal))
+            .collect()
     }
 
     fn agrees(&self, attempt: &Attempt) -> bool {
@@ -118,17 +128,18 @@ impl Judge<'_> {
     }
 
     /// The mistakes that reproduce every fact under `rules`: each alone, else pairs of those
-    /// that come closer alone.
+    /// that come closer alone. Each set is drawn in the band first, which orders them and rules
+    /// most out; only the others are drawn whole.
     fn mistakes(&self, mut diagnosis: Diagnosis, rules: RasterRules) -> Diagnosis {
         let legal = diagnosis.legal;
-        let start = legal.facts.distance();
+        let start = (self
+            .attempt_in_band(legal.rules, RasterMistakes::NONE)
+            .facts)
+            .distance();
         let singles: Vec<Attempt> = (self.candidates().par_iter())
-            .map(|&m| self.attempt(rules, RasterMistakes::one(m)))
+            .map(|&m| self.attempt_in_band(rules, RasterMistakes::one(m)))
             .collect();
-        diagnosis.named = (singles.iter())
-            .filter(|a| self.reproduces(a, &legal))
-            .copied()
-            .collect();
+        diagnosis.named = self.reproducing(&singles, &legal);
         if !diagnosis.named.is_empty() {
             return diagnosis;
         }
@@ -154,14 +165,16 @@ impl Judge<'_> {
             }
         }
         let pairs: Vec<Attempt> = (pairs.par_iter())
-            .filter_map(|&set| self.attempt_if_band_agrees(rules, set))
+            .map(|&set| self.attempt_in_band(rules, set))
             .collect();
-        diagnosis.named = (pairs.into_iter())
-            .filter(|a| self.reproduces(a, &legal))
-            .collect();
+        diagnosis.named = self.reproducing(&pairs, &legal);
         if diagnosis.named.is_empty() && diagnosis.nearest.is_empty() {
-            closer.truncate(3);
-            diagnosis.nearest = closer;
+            // Told with the whole frame's facts.
+            let mut nearest: Vec<Attempt> = (closer[..closer.len().min(3)].par_iter())
+                .map(|a| self.attempt(a.rules, a.mistakes))
+                .collect();
+            nearest.sort_by_key(|a| a.facts.distance());
+            diagnosis.nearest = nearest;
         }
         diagnosis
     }
