@@ -32,6 +32,7 @@ mod gpu;
 mod grow_buffer;
 mod highlight;
 mod id_pass;
+mod image_view;
 mod offscreen;
 pub mod outside;
 mod pass;
@@ -40,7 +41,6 @@ mod readback;
 mod reference;
 mod reference_skew;
 mod reference_texture;
-mod software_view;
 mod uniforms;
 mod uploads;
 mod vertex_pipeline;
@@ -55,7 +55,7 @@ use close2gl_core::{
 use fate_view::record_fates_while_shown;
 use uploads::{
     render_difference, upload_close2gl, upload_fates, upload_highlight, upload_mesh,
-    upload_reference, upload_software, upload_texture,
+    upload_reference, upload_software, upload_texture, upload_view_images,
 };
 
 pub use attachments::DEPTH_FORMAT;
@@ -111,6 +111,7 @@ impl Plugin for GpuPlugin {
                     upload_reference,
                     upload_close2gl,
                     upload_software,
+                    upload_view_images,
                     upload_fates,
                     upload_highlight,
                     render_difference,

@@ -37,6 +37,7 @@ pub fn load_requested_trace(
             }
             *settings = trace_settings(&shown.trace, *settings);
             view.shown = Some(shown);
+            view.raster = None;
             view.path = Some(path);
             view.error = None;
             view.generation += 1;
