@@ -5,13 +5,12 @@
 //! probe answers with check's probe of the pixel.
 
 use std::path::{Path, PathBuf};
-use std::process::Command;
 
 use close2gl_check::raster::{self, report};
 use close2gl_core::{
     App, Camera, CameraRequest, Close2glFrame, RasterMistakes, TraceFindings, ViewImages, Viewport,
 };
-use close2gl_testkit::student::{compile_raster, mistake_flag, repository};
+use close2gl_testkit::student::{self, mistake_flag};
 use close2gl_testkit::{TempDir, cube, world_with};
 use close2gl_trace::view::raster::raster_probe;
 use close2gl_trace::view::{TraceRequest, TraceView};
@@ -19,18 +18,7 @@ use close2gl_trace_format::read_raster_frame;
 
 /// `raster.c` with `mistake` drawing the square scene into `dir/name.raster`.
 fn raster_trace(dir: &Path, name: &str, mistake: &str) -> PathBuf {
-    let flag = mistake_flag(mistake);
-    let program = compile_raster(dir, name, &[&flag]);
-    let trace = dir.join(format!("{name}.raster"));
-    let examples = repository().join("examples/raster");
-    let ran = Command::new(&program)
-        .arg(examples.join("square.scene"))
-        .arg(&trace)
-        .current_dir(&examples)
-        .status()
-        .expect("run raster");
-    assert!(ran.success());
-    trace
+    student::raster_trace(dir, name, &[&mistake_flag(mistake)], "square.scene")
 }
 
 /// The trace plugin on a bare world, asked to show `path`: one frame run.

@@ -2,7 +2,8 @@
 //! uploaded): which view the click (`InputState::probe`) is in, from the views the viewer placed
 //! ([`ViewPlacement`]), and the pixel in that view's coordinates; both views' answers come from
 //! the probe's one home (`close2gl_gpu::ProbedFrame`). While the Close2GL view shows a program's
-//! trace, the answer also says what the trace drew there and what check found of it. The answer
+//! trace, the answer also says what the trace drew there and what check found of it; while both
+//! show a raster trace's fixed frame, check's probe of the trace's pixel alone answers. The answer
 //! goes to the panel ([`ProbeAnswer`]), and its winner becomes the selected triangle.
 
 use bevy_ecs::prelude::*;
@@ -22,8 +23,7 @@ pub fn answer_probe(
     placement: Res<ViewPlacement>,
     gpu: Res<Gpu>,
     frame: ProbedFrame,
-    trace: Option<Res<TraceView>>,
-    camera: Option<Single<&Camera>>,
+    (trace, camera): (Option<Res<TraceView>>, Option<Single<&Camera>>),
     mut selected: ResMut<SelectedTriangle>,
     mut commands: Commands,
 ) {

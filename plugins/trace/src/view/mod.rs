@@ -42,6 +42,18 @@ pub struct TraceView {
     pub generation: u64,
 }
 
+impl TraceView {
+    /// `path` taken in place of what was shown (its caller puts it in `shown` or `raster`),
+    /// the last refusal forgotten.
+    fn taken(&mut self, path: PathBuf) {
+        self.shown = None;
+        self.raster = None;
+        self.path = Some(path);
+        self.error = None;
+        self.generation += 1;
+    }
+}
+
 /// A trace that was read and checked.
 #[derive(Debug)]
 pub struct Shown {

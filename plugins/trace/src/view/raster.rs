@@ -32,11 +32,8 @@ pub fn load_requested_raster_trace(mut request: ResMut<TraceRequest>, mut view: 
     };
     match read(&path) {
         Ok(raster) => {
+            view.taken(path);
             view.raster = Some(raster);
-            view.shown = None;
-            view.path = Some(path);
-            view.error = None;
-            view.generation += 1;
         }
         Err(error) => view.error = Some(error),
     }
