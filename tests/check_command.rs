@@ -165,23 +165,15 @@ fn close2gl_check(args: &[&std::ffi::OsStr]) -> Output {
 #[test]
 fn a_raster_trace_alone_is_checked_probed_and_pictured() {
     let dir = TempDir::new("check-raster");
-    let examples = close2gl_testkit::student::repository().join("examples/raster");
-    let mut traces = Vec::new();
-    for (name, flags) in [
+    let traces: Vec<_> = [
         ("right", vec![]),
         ("swapped", vec!["-DMISTAKE_CHANNELS_SWAPPED"]),
-    ] {
-        let program = close2gl_testkit::student::compile_raster(&dir.0, name, &flags);
-        let trace = dir.0.join(format!("{name}.trace"));
-        let ran = Command::new(&program)
-            .arg(examples.join("square.scene"))
-            .arg(&trace)
-            .current_dir(&examples)
-            .status()
-            .expect("run raster");
-        assert!(ran.success());
-        traces.push(trace);
-    }
+    ]
+    .into_iter()
+    .map(|(name, flags)| {
+        close2gl_testkit::student::raster_trace(&dir.0, name, &flags, "square.scene")
+    })
+    .collect();
     let right = close2gl_check(&[traces[0].as_os_str()]);
     assert_eq!(
         right.status.code(),

@@ -45,7 +45,10 @@ pub struct RunArgs {
     pub replay: Option<PathBuf>,
     /// Show a program's trace (close2gl-trace 1) as the Close2GL view, with its camera and
     /// settings, beside the reference, and check's report on it in the panel (docs/checking.md).
-    /// With --watch, the trace is read again when the program writes it again.
+    /// A raster trace (close2gl-raster 1, told by its first line) shows the program's framebuffer
+    /// as the Close2GL view and close2gl's drawing of its triangles as the reference, a fixed
+    /// frame, with check's raster report (docs/viewer.md). With --watch, the trace is read again
+    /// when the program writes it again.
     #[arg(long, value_name = "FILE")]
     pub trace: Option<PathBuf>,
     /// After --replay, stay open for live input instead of exiting.
@@ -87,8 +90,8 @@ pub fn run(args: RunArgs) -> Result<(), CliError> {
     app.run().map_err(CliError::Runtime)
 }
 
-/// Shows the trace at `path` from the first frame on; a trace that does not read or does not
-/// fit the model is an error here, before anything is shown.
+/// Shows the trace (geometry or raster) at `path` from the first frame on; a trace that does
+/// not read or does not fit the model is an error here, before anything is shown.
 fn open_trace_at_start(
     app: &mut close2gl_core::App,
     path: &std::path::Path,

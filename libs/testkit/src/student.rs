@@ -37,6 +37,22 @@ pub fn compile_raster(dir: &Path, name: &str, flags: &[&str]) -> PathBuf {
     compile_c(&source, &dir.join(name), flags)
 }
 
+/// `raster.c` built with `flags` as `dir/name`, run on `examples/raster/`'s `scene`: the raster
+/// trace it wrote, `dir/name.raster` (its buffers beside it).
+pub fn raster_trace(dir: &Path, name: &str, flags: &[&str], scene: &str) -> PathBuf {
+    let program = compile_raster(dir, name, flags);
+    let trace = dir.join(format!("{name}.raster"));
+    let examples = repository().join("examples/raster");
+    let ran = Command::new(&program)
+        .arg(examples.join(scene))
+        .arg(&trace)
+        .current_dir(&examples)
+        .status()
+        .expect("run raster");
+    assert!(ran.success(), "{} {scene} failed", program.display());
+    trace
+}
+
 /// Compiles the C99 file `source` with `flags` into the program `out` (warnings are errors),
 /// as [`compile_pipeline`] does: for the programs a test writes itself (a hostile one, say).
 pub fn compile_c(source: &Path, out: &Path, flags: &[&str]) -> PathBuf {

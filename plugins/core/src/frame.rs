@@ -91,6 +91,20 @@ pub struct RasterGeometry {
 #[derive(Resource, Clone, Debug, Default, PartialEq)]
 pub struct TraceOutput(pub Option<Vec<[f32; 2]>>);
 
+/// Two images the views show in place of their own drawing while a raster trace is open: its
+/// frame is fixed (a raster trace has no camera), so the Close2GL view shows the program's own
+/// framebuffer and the reference close2gl's drawing of the same triangles, each stretched over
+/// its view. Its one writer is the trace plugin; `None` while no raster trace is shown.
+#[derive(Resource, Clone, Debug, Default, PartialEq)]
+pub struct ViewImages(pub Option<FixedFrame>);
+
+/// A fixed frame's two images, both of the trace's window size.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct FixedFrame {
+    pub reference: Image,
+    pub close2gl: Image,
+}
+
 /// What check found in the shown trace, in the words the panel shows, so that the panel reads
 /// no check types. Its one writer is the trace plugin, whenever it takes or refuses a trace;
 /// empty while none is shown or refused.
@@ -109,6 +123,9 @@ pub struct TraceFindings {
     pub unexplained: Option<String>,
     /// Every stage by name, with its status in a few words (`agrees (12)`).
     pub stages: Vec<(&'static str, String)>,
+    /// A raster trace's report, as check writes it for a person, line by line; `None` for a
+    /// geometry trace. A raster trace's frame is fixed: the camera moves nothing in its views.
+    pub raster_report: Option<Vec<String>>,
 }
 
 /// The Close2GL pipeline's output: 2D positions in window pixels (origin top-left, y down), ready

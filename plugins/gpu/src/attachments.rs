@@ -60,3 +60,15 @@ pub fn color_attachment(
         },
     }
 }
+
+/// The depth state of what draws in a pass with a [`DEPTH_FORMAT`] attachment (the
+/// reference's) without testing or writing depth: drawn over whatever is there.
+pub(crate) fn depth_untouched() -> wgpu::DepthStencilState {
+    wgpu::DepthStencilState {
+        format: DEPTH_FORMAT,
+        depth_write_enabled: Some(false),
+        depth_compare: Some(wgpu::CompareFunction::Always),
+        stencil: Default::default(),
+        bias: Default::default(),
+    }
+}

@@ -5,7 +5,7 @@
 use bytemuck::{Pod, Zeroable};
 use glam::Vec4;
 
-use crate::attachments::DEPTH_FORMAT;
+use crate::attachments::depth_untouched;
 use crate::vertex_pipeline::VertexPipeline;
 
 /// One corner: clip coordinates in wgpu's depth convention (z in 0..w) and a colour.
@@ -34,7 +34,7 @@ pub(crate) fn outline(corners: [Vec4; 3], color: [u8; 4]) -> [Corner; 6] {
 }
 
 /// The fill (triangle list) and outline (line list) pipelines, alpha-blended, for a pass with
-/// a [`DEPTH_FORMAT`] attachment when `with_depth` says so (tested `Always`, never written: drawn over
+/// a [`crate::DEPTH_FORMAT`] attachment when `with_depth` says so (tested `Always`, never written: drawn over
 /// everything) or without one.
 pub(crate) struct CornerPipelines {
     pub(crate) fill: wgpu::RenderPipeline,
@@ -54,13 +54,7 @@ impl CornerPipelines {
             bind_group_layouts: &[],
             immediate_size: 0,
         });
-        let depth_stencil = with_depth.then_some(wgpu::DepthStencilState {
-            format: DEPTH_FORMAT,
-            depth_write_enabled: Some(false),
-            depth_compare: Some(wgpu::CompareFunction::Always),
-            stencil: Default::default(),
-            bias: Default::default(),
-        });
+        let depth_stencil = with_depth.then(depth_untouched);
         let pipeline = |topology| {
             create_pipeline(
                 device,

@@ -38,6 +38,7 @@ impl DifferenceView {
                 fragment,
                 &layout,
                 (color_format, None),
+                false,
             ),
             layout,
             color_format,

@@ -18,13 +18,15 @@ pub(crate) fn texture_entry(binding: u32) -> wgpu::BindGroupLayoutEntry {
 
 /// The pipeline of one image view: `fullscreen.wgsl`'s vertex stage, `fragment`'s `fs_main`
 /// (WGSL that may use `Varyings` and `texel_at`), one bind group of `layout`, writing
-/// `color_format` with `blend` (`None`: replacing what is there).
+/// `color_format` with `blend` (`None`: replacing what is there); `with_depth` for a pass with a
+/// depth attachment (the reference's), which it neither tests nor writes.
 pub(crate) fn pipeline(
     device: &wgpu::Device,
     label: &str,
     fragment: &str,
     layout: &wgpu::BindGroupLayout,
     (color_format, blend): (wgpu::TextureFormat, Option<wgpu::BlendState>),
+    with_depth: bool,
 ) -> wgpu::RenderPipeline {
     let source = format!("{}\n{fragment}", include_str!("fullscreen.wgsl"));
     let shader = device.create_shader_module(wgpu::ShaderModuleDescriptor {
@@ -46,7 +48,7 @@ pub(crate) fn pipeline(
             buffers: &[],
         },
         primitive: Default::default(),
-        depth_stencil: None,
+        depth_stencil: with_depth.then(crate::attachments::depth_untouched),
         multisample: Default::default(),
         fragment: Some(wgpu::FragmentState {
             module: &shader,

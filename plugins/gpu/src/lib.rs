@@ -8,7 +8,8 @@
 //! with the selected triangle's highlight. [`GpuPlugin`] adds
 //! the systems (in `FrameSet::Output`'s `OutputStep::Upload`) that read `Camera`, `Mesh`,
 //! `PipelineSettings` (mode, culling, who rasterizes), `Appearance`, `Overlay`, `Lighting`,
-//! `Texture`, `Close2glFrame`, `SoftwareFrame`, `SelectedTriangle`, `Viewport` and `Fates` (asking
+//! `Texture`, `Close2glFrame`, `SoftwareFrame`, `SelectedTriangle`, `Viewport`, `ViewImages` (a raster
+//! trace's fixed frame, shown in place of both views' drawing) and `Fates` (asking
 //! for it to be recorded while the fate view is shown) and upload what changed into `Views`; whoever
 //! owns the target (a window, or [`render_offscreen`]) records the draws.
 //! Offscreen rendering, reading textures back ([`Readback`]), the texture and attachment
@@ -32,6 +33,7 @@ mod gpu;
 mod grow_buffer;
 mod highlight;
 mod id_pass;
+mod image_view;
 mod offscreen;
 pub mod outside;
 mod pass;
@@ -40,7 +42,6 @@ mod readback;
 mod reference;
 mod reference_skew;
 mod reference_texture;
-mod software_view;
 mod uniforms;
 mod uploads;
 mod vertex_pipeline;
@@ -55,7 +56,7 @@ use close2gl_core::{
 use fate_view::record_fates_while_shown;
 use uploads::{
     render_difference, upload_close2gl, upload_fates, upload_highlight, upload_mesh,
-    upload_reference, upload_software, upload_texture,
+    upload_reference, upload_software, upload_texture, upload_view_images,
 };
 
 pub use attachments::DEPTH_FORMAT;
@@ -76,7 +77,8 @@ pub use wgpu;
 /// Adds the systems that upload what changed, by bevy's change ticks as the pipeline
 /// watches its inputs: the `Mesh` again only when it changed, the `Texture` likewise; the
 /// reference uniforms from `Camera`, `PipelineSettings`, `Appearance` and `Lighting`; the Close2GL 2D buffer
-/// from `Close2glFrame`, or the software rasterizer's image from `SoftwareFrame`; in the fate
+/// from `Close2glFrame`, or the software rasterizer's image from `SoftwareFrame`; a raster
+/// trace's two fixed images from `ViewImages`, shown in place of both views' drawing; in the fate
 /// view (the `Overlay`), each triangle in its colour from `Fates`, which it asks
 /// Close2GL to record (`RecordFates`) while that view is shown; the selected triangle's highlight (`SelectedTriangle`); in the live difference, both
 /// views drawn again into textures of the `Viewport`'s size and compared. They run once
@@ -111,6 +113,7 @@ impl Plugin for GpuPlugin {
                     upload_reference,
                     upload_close2gl,
                     upload_software,
+                    upload_view_images,
                     upload_fates,
                     upload_highlight,
                     render_difference,

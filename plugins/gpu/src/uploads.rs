@@ -5,7 +5,7 @@ use bevy_ecs::prelude::*;
 use bevy_ecs::system::SystemParam;
 use close2gl_core::{
     Appearance, Camera, Close2glFrame, Fates, Lighting, Mesh, Overlay, PipelineSettings,
-    SelectedTriangle, SoftwareFrame, Texture, TraceOutput, Viewport,
+    SelectedTriangle, SoftwareFrame, Texture, TraceOutput, ViewImages, Viewport,
 };
 
 use crate::gpu::Gpu;
@@ -89,6 +89,28 @@ pub(crate) fn upload_software(
         && (image.is_changed() || views.is_added())
     {
         views.software.update(&gpu.device, &gpu.queue, &image.image);
+    }
+}
+
+/// A raster trace's fixed frame, when it came, changed or went: both views show its images in
+/// place of their own drawing meanwhile. Without the trace plugin there is none.
+pub(crate) fn upload_view_images(
+    gpu: Res<Gpu>,
+    images: Option<Res<ViewImages>>,
+    mut views: ResMut<Views>,
+) {
+    let Some(images) = images.filter(|i| i.is_changed() || views.is_added()) else {
+        return;
+    };
+    views.fixed = images.0.is_some();
+    if let Some(frame) = &images.0 {
+        for (view, image) in views
+            .fixed_images
+            .iter_mut()
+            .zip([&frame.reference, &frame.close2gl])
+        {
+            view.update(&gpu.device, &gpu.queue, image);
+        }
     }
 }
 

@@ -12,8 +12,8 @@ use crate::close2gl_view::Close2glView;
 use crate::difference_view::DifferenceView;
 use crate::fate_view::FateView;
 use crate::highlight::Highlight;
+use crate::image_view::ImageView;
 use crate::reference::{Reference, clear_color};
-use crate::software_view::SoftwareView;
 
 /// GPU state for both views (a Resource): the reference renderer and the Close2GL 2D renderer.
 /// The upload systems of [`crate::GpuPlugin`] keep it up to date; the owner of the target
@@ -22,7 +22,11 @@ use crate::software_view::SoftwareView;
 pub struct Views {
     pub(crate) reference: Reference,
     pub(crate) close2gl: Close2glView,
-    pub(crate) software: SoftwareView,
+    pub(crate) software: ImageView,
+    /// A raster trace's fixed frame (`ViewImages`), shown in place of each view's own drawing
+    /// while `fixed` says so: the reference's image, then the Close2GL view's.
+    pub(crate) fixed_images: [ImageView; 2],
+    pub(crate) fixed: bool,
     pub(crate) fates: FateView,
     pub(crate) difference: DifferenceView,
     pub(crate) highlight: Highlight,
@@ -44,7 +48,12 @@ impl Views {
         Views {
             reference: Reference::new(&gpu.device, &gpu.queue, color_format),
             close2gl: Close2glView::new(&gpu.device, color_format),
-            software: SoftwareView::new(&gpu.device, color_format),
+            software: ImageView::new(&gpu.device, color_format, false),
+            fixed_images: [
+                ImageView::new(&gpu.device, color_format, true),
+                ImageView::new(&gpu.device, color_format, false),
+            ],
+            fixed: false,
             fates: FateView::new(&gpu.device, color_format),
             difference: DifferenceView::new(&gpu.device, color_format),
             highlight: Highlight::new(&gpu.device, color_format),
@@ -59,19 +68,33 @@ impl Views {
     /// attachment (cleared to 1.0); the caller sets the pass viewport (the whole target, or the
     /// left half in the split layout). Draws nothing before the first frame's uploads. In the
     /// fate view, the GPU's own facing and depth-test answers are drawn over the model; the
-    /// selected triangle, if any, over everything.
+    /// selected triangle, if any, over everything. A raster trace's fixed frame has no model in
+    /// it: its image alone.
     pub fn draw_reference(&self, pass: &mut wgpu::RenderPass<'_>) {
+        if self.fixed {
+            return self.draw_compared_reference(pass);
+        }
         self.reference.draw(pass, self.overlay == Overlay::FateView);
         self.highlight.draw_reference(pass);
+    }
+
+    /// The reference the Close2GL view is compared with: the GPU's drawing, or a fixed image.
+    fn draw_compared_reference(&self, pass: &mut wgpu::RenderPass<'_>) {
+        match self.fixed {
+            true => self.fixed_images[0].draw(pass),
+            false => self.reference.draw(pass, false),
+        }
     }
 
     /// Records the Close2GL view (2D, no depth attachment needed): its 2D buffer drawn by the
     /// GPU, or the software rasterizer's image. The caller sets the viewport rectangle, which
     /// should have the size of `Viewport`. In the fate view, every triangle in its fate's colour
     /// instead; in the live difference, where the two views differ. The selected triangle, if
-    /// any, over everything.
+    /// any, over everything. A raster trace's fixed frame shows its image, or the difference.
     pub fn draw_close2gl(&self, pass: &mut wgpu::RenderPass<'_>) {
         match self.overlay {
+            Overlay::Difference if self.fixed => return self.difference.draw(pass),
+            _ if self.fixed => return self.draw_compared_close2gl(pass),
             Overlay::FateView => self.fates.draw(pass),
             Overlay::Difference => self.difference.draw(pass),
             Overlay::Off => self.draw_compared_close2gl(pass),
@@ -79,11 +102,13 @@ impl Views {
         self.highlight.draw_close2gl(pass);
     }
 
-    /// The Close2GL view the reference is compared with: drawn by the GPU or rasterized.
+    /// The Close2GL view the reference is compared with: drawn by the GPU, rasterized, or a
+    /// fixed image.
     fn draw_compared_close2gl(&self, pass: &mut wgpu::RenderPass<'_>) {
-        match self.rasterizer {
-            Rasterizer::Gpu => self.close2gl.draw(pass),
-            Rasterizer::Software => self.software.draw(pass),
+        match (self.fixed, self.rasterizer) {
+            (true, _) => self.fixed_images[1].draw(pass),
+            (false, Rasterizer::Gpu) => self.close2gl.draw(pass),
+            (false, Rasterizer::Software) => self.software.draw(pass),
         }
     }
 
@@ -98,7 +123,7 @@ impl Views {
         let depth = Some(&inputs.depth);
         let clear = wgpu::LoadOp::Clear(self.reference_clear_color());
         submit_pass(gpu, &inputs.reference, depth, clear, |pass| {
-            self.reference.draw(pass, false)
+            self.draw_compared_reference(pass)
         });
         let clear = wgpu::LoadOp::Clear(self.clear_color());
         submit_pass(gpu, &inputs.close2gl, None, clear, |pass| {
@@ -122,7 +147,7 @@ impl Views {
 
     /// The background, opaque: for a window, whose alpha the desktop or the web page may blend
     /// with (the software image's uncovered pixels keep a window's alpha; see
-    /// `software_view.rs`).
+    /// `image_view.rs`).
     pub fn opaque_clear_color(&self) -> wgpu::Color {
         wgpu::Color {
             a: 1.0,

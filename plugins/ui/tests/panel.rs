@@ -414,6 +414,7 @@ fn a_probe_opens_its_answer_beside_the_click_until_escape() {
         },
         camera,
         window: true,
+        fixed_frame: false,
     });
     // A new egui window sizes itself unseen in its first frame.
     h.frame(Vec::new());

@@ -2,14 +2,16 @@
 //! uploaded): which view the click (`InputState::probe`) is in, from the views the viewer placed
 //! ([`ViewPlacement`]), and the pixel in that view's coordinates; both views' answers come from
 //! the probe's one home (`close2gl_gpu::ProbedFrame`). While the Close2GL view shows a program's
-//! trace, the answer also says what the trace drew there and what check found of it. The answer
+//! trace, the answer also says what the trace drew there and what check found of it; while both
+//! show a raster trace's fixed frame, check's probe of the trace's pixel alone answers. The answer
 //! goes to the panel ([`ProbeAnswer`]), and its winner becomes the selected triangle.
 
 use bevy_ecs::prelude::*;
-use close2gl_core::{InputState, ProbeClick, SelectedTriangle, View, Viewport};
+use close2gl_core::{Camera, InputState, ProbeClick, SelectedTriangle, View, Viewport};
 use close2gl_gpu::{Gpu, ProbedFrame, ReferenceProbe};
 use close2gl_trace::view::TraceView;
 use close2gl_trace::view::probe::probe as trace_probe;
+use close2gl_trace::view::raster::raster_probe;
 use close2gl_ui::ProbeAnswer;
 
 use crate::placed_views::ViewPlacement;
@@ -21,7 +23,7 @@ pub fn answer_probe(
     placement: Res<ViewPlacement>,
     gpu: Res<Gpu>,
     frame: ProbedFrame,
-    trace: Option<Res<TraceView>>,
+    (trace, camera): (Option<Res<TraceView>>, Option<Single<&Camera>>),
     mut selected: ResMut<SelectedTriangle>,
     mut commands: Commands,
 ) {
@@ -31,6 +33,15 @@ pub fn answer_probe(
     let Some((placed, pixel, viewport)) = clicked_view(&placement.0, &at) else {
         return;
     };
+    let raster = trace
+        .as_deref()
+        .and_then(|v| raster_probe(v, pixel, viewport));
+    if let Some(lines) = raster {
+        let camera = camera.map(|c| **c).unwrap_or_default();
+        let name = view_name(placed.view);
+        commands.insert_resource(ProbeAnswer::fixed_frame(name, pixel, lines, at, camera));
+        return;
+    }
     let Some(answer) = frame.answer(&gpu, viewport, pixel) else {
         return;
     };
@@ -43,21 +54,27 @@ pub fn answer_probe(
     let close2gl = trace_triangle.or(answer.close2gl.triangle);
     let reference = reference_answer(&mut commands, &gpu, answer.reference, close2gl.is_none());
     let answer = ProbeAnswer {
-        view: match placed.view {
-            View::Reference => "reference",
-            View::Close2gl | View::Outside => "Close2GL",
-        },
+        view: view_name(placed.view),
         reference: reference.map(|hit| hit.map(|h| (h.triangle, h.depth))),
         close2gl: answer.close2gl,
         trace: trace.map(|t| t.lines),
         click: at,
         camera: answer.camera,
         window: true,
+        fixed_frame: false,
     };
     if let Some(triangle) = close2gl.or(answer.reference_triangle()) {
         selected.0 = Some(triangle);
     }
     commands.insert_resource(answer);
+}
+
+/// The view's name in the probe's answer.
+fn view_name(view: View) -> &'static str {
+    match view {
+        View::Reference => "reference",
+        View::Close2gl | View::Outside => "Close2GL",
+    }
 }
 
 /// The view the click is in, the pixel in that view's coordinates, and the views' viewport.

@@ -93,7 +93,8 @@ pub fn apply_input(
     true
 }
 
-/// A dropped image becomes the texture, a `.trace` file the trace the Close2GL view shows;
+/// A dropped image becomes the texture, a `.trace` or `.raster` file the trace the views show
+/// (the trace plugin tells a raster trace by its first line);
 /// anything else is taken for a model (whose loader names what it expected when it is not one).
 pub fn drop_file(world: &mut World, path: std::path::PathBuf) {
     let extension = path
@@ -102,7 +103,7 @@ pub fn drop_file(world: &mut World, path: std::path::PathBuf) {
         .map(str::to_ascii_lowercase);
     if matches!(extension.as_deref(), Some("png" | "jpg" | "jpeg")) {
         world.insert_resource(TextureRequest(Some(path)));
-    } else if extension.as_deref() == Some("trace") {
+    } else if matches!(extension.as_deref(), Some("trace" | "raster")) {
         world.insert_resource(TraceRequest(Some(path)));
     } else {
         world.insert_resource(ModelRequest(Some(ModelSource::File(path))));

@@ -4,7 +4,6 @@
 
 use std::path::Path;
 
-use close2gl_check::raster::diagnose::Judge;
 use close2gl_check::raster::{self, pictures, report};
 use close2gl_core::RasterMistakes;
 use close2gl_trace_format::{RasterFrame, is_raster_trace, read_raster_frame};
@@ -64,37 +63,7 @@ pub fn run(args: &CheckArgs) -> Result<(), CliError> {
 /// One pixel: the program's colour and depth, close2gl's, and each mistake that would give
 /// something else there.
 fn probe(frame: &RasterFrame, x: u32, y: u32) -> Result<(), CliError> {
-    let (width, height) = frame.trace.window;
-    if x >= width || y >= height {
-        return Err(CliError::Input(format!(
-            "--pixel {x} {y}: expected a pixel of the {width}×{height} window"
-        )));
-    }
-    let row = if frame.trace.y_up { height - 1 - y } else { y };
-    let at = (row * width + x) as usize;
-    let judge: Judge = raster::judge(frame);
-    let depth = |values: &[f32]| format!("depth {:.6}", values[at]);
-    let colour = |p: [u8; 4]| format!("colour {} {} {}", p[0], p[1], p[2]);
-    let theirs_depth = frame
-        .depth
-        .as_ref()
-        .map(|d| depth(&d.values))
-        .unwrap_or_default();
-    println!(
-        "pixel ({x}, {y}): yours {} {theirs_depth}",
-        colour(frame.framebuffer.pixels[at])
-    );
-    let rules = judge.diagnose().legal.rules;
-    let ours = judge.redraw.draw(rules, RasterMistakes::NONE);
-    let say = |b: &close2gl_raster::textbook::Buffers| {
-        format!("{} {}", colour(b.image.pixels[at]), depth(&b.depth))
-    };
-    println!("close2gl: {}", say(&ours));
-    for m in judge.candidates() {
-        let drawn = judge.redraw.draw(rules, RasterMistakes::one(m));
-        if say(&drawn) != say(&ours) {
-            println!("  {} would give: {}", m.name(), say(&drawn));
-        }
-    }
+    let lines = raster::probe::probe(frame, x, y).map_err(CliError::Input)?;
+    lines.iter().for_each(|line| println!("{line}"));
     Ok(())
 }

@@ -4,7 +4,7 @@
 //! drawing ([`facts`]): coverage, depth, colour, and for Gouraud the lighting at each corner
 //! ([`corners`]). When they differ, [`diagnose`] finds the legal rules the program chose and the
 //! catalogue's mistakes that reproduce every fact; [`report`] writes it for a person and a
-//! script, [`pictures`] as images of the stage that differs.
+//! script, [`pictures`] as images of the stage that differs; [`probe`] answers for one pixel.
 
 pub mod band;
 pub mod corners;
@@ -12,6 +12,7 @@ pub mod diagnose;
 pub mod facts;
 pub mod input;
 pub mod pictures;
+pub mod probe;
 pub mod report;
 pub mod rubric;
 

@@ -36,10 +36,8 @@ pub fn load_requested_trace(
                 camera_request.replacement = Some(trace_camera(&shown.trace, &camera, &mesh));
             }
             *settings = trace_settings(&shown.trace, *settings);
+            view.taken(path);
             view.shown = Some(shown);
-            view.path = Some(path);
-            view.error = None;
-            view.generation += 1;
         }
         Err(error) => view.error = Some(error),
     }

@@ -31,9 +31,40 @@ pub struct ProbeAnswer {
     pub camera: Camera,
     /// The window beside the click shows the answer (Esc and its close button hide it).
     pub window: bool,
+    /// The views show a raster trace's fixed frame: its lines alone answer (the model's
+    /// winners are not what the views show, and the camera moves nothing there).
+    pub fixed_frame: bool,
 }
 
 impl ProbeAnswer {
+    /// The answer while the views show a raster trace's fixed frame: check's probe of the
+    /// trace's pixel under the click, in `lines`, the same in either view (both show that pixel
+    /// of the same frame).
+    pub fn fixed_frame(
+        view: &'static str,
+        pixel: (u32, u32),
+        lines: Vec<String>,
+        click: ProbeClick,
+        camera: Camera,
+    ) -> ProbeAnswer {
+        ProbeAnswer {
+            view,
+            reference: Ok(None),
+            close2gl: PixelProbe {
+                pixel: [pixel.0, pixel.1],
+                triangle: None,
+                depth: 1.0,
+                color: None,
+                candidates: Vec::new(),
+            },
+            trace: Some(lines),
+            click,
+            camera,
+            window: true,
+            fixed_frame: true,
+        }
+    }
+
     pub fn reference_triangle(&self) -> Option<u32> {
         self.reference
             .as_ref()
@@ -89,6 +120,9 @@ fn why(outcome: PixelOutcome) -> &'static str {
 
 /// Each winner with its depth (and Close2GL's colour).
 fn winners(ui: &mut egui::Ui, answer: &ProbeAnswer) {
+    if answer.fixed_frame {
+        return;
+    }
     let winner = |hit: Option<(u32, f32)>| {
         hit.map_or("background".to_string(), |(t, d)| {
             format!("triangle {t}, depth {d:.5}")
@@ -181,7 +215,7 @@ pub fn probe_window(
         .show(ctx, |ui| {
             let [x, y] = answer.close2gl.pixel;
             ui.label(format!("Pixel {x}, {y} of the {} view", answer.view));
-            if camera != Some(&answer.camera) {
+            if camera != Some(&answer.camera) && !answer.fixed_frame {
                 ui.colored_label(
                     ui.visuals().warn_fg_color,
                     "Stale: the camera moved since this probe (Ctrl+click again).",

@@ -1,5 +1,7 @@
-//! The Close2GL view when Close2GL rasterizes: the software rasterizer's image uploaded into a
-//! texture (remade only when its size changes) and drawn as one triangle covering the viewport.
+//! A view that shows an image instead of drawing the scene: the Close2GL view's software
+//! rasterizer image, and both views' fixed images while a raster trace is open (`ViewImages`).
+//! The image is uploaded into a texture (remade only when its size changes) and drawn as one
+//! triangle covering the viewport, stretched to it.
 
 use close2gl_core::Image;
 
@@ -19,27 +21,33 @@ const KEEP_OPAQUE: wgpu::BlendState = wgpu::BlendState {
     },
 };
 
-pub(crate) struct SoftwareView {
+pub(crate) struct ImageView {
     pipeline: wgpu::RenderPipeline,
     layout: wgpu::BindGroupLayout,
     /// The texture, its bind group and its size; none before the first image.
     image: Option<(wgpu::Texture, wgpu::BindGroup)>,
 }
 
-impl SoftwareView {
-    pub(crate) fn new(device: &wgpu::Device, color_format: wgpu::TextureFormat) -> Self {
+impl ImageView {
+    /// `with_depth` for a view drawn in a pass with a depth attachment (the reference's).
+    pub(crate) fn new(
+        device: &wgpu::Device,
+        color_format: wgpu::TextureFormat,
+        with_depth: bool,
+    ) -> Self {
         let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
-            label: Some("software image"),
+            label: Some("image view"),
             entries: &[fullscreen::texture_entry(0)],
         });
-        let fragment = include_str!("software.wgsl");
+        let fragment = include_str!("image.wgsl");
         Self {
             pipeline: fullscreen::pipeline(
                 device,
-                "software image",
+                "image view",
                 fragment,
                 &layout,
                 (color_format, Some(KEEP_OPAQUE)),
+                with_depth,
             ),
             layout,
             image: None,
@@ -59,7 +67,7 @@ impl SoftwareView {
         }
         if self.image.as_ref().is_none_or(|(t, _)| t.size() != size) {
             let texture = device.create_texture(&wgpu::TextureDescriptor {
-                label: Some("software image"),
+                label: Some("image view"),
                 size,
                 mip_level_count: 1,
                 sample_count: 1,
@@ -70,7 +78,7 @@ impl SoftwareView {
             });
             let view = texture.create_view(&Default::default());
             let bind_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
-                label: Some("software image"),
+                label: Some("image view"),
                 layout: &self.layout,
                 entries: &[wgpu::BindGroupEntry {
                     binding: 0,

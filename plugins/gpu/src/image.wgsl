@@ -1,4 +1,4 @@
-// The Close2GL view with the software rasterizer: its image, one texel per pixel. textureLoad,
+// An image in place of a view (the software rasterizer's, a raster trace's), one texel per pixel. textureLoad,
 // not a sampler: no filtering, no rounding, the bytes Close2GL wrote are the bytes on screen.
 
 @group(0) @binding(0) var image: texture_2d<f32>;
