@@ -93,8 +93,8 @@ pub struct TraceOutput(pub Option<Vec<[f32; 2]>>);
 
 /// Two images the views show in place of their own drawing while a raster trace is open: its
 /// frame is fixed (a raster trace has no camera), so the Close2GL view shows the program's own
-/// framebuffer and the reference close2gl's drawing of the same triangles, each stretched over
-/// its view. Its one writer is the trace plugin; `None` while no raster trace is shown.
+/// framebuffer and the reference close2gl's drawing of the same triangles, each letterboxed in
+/// its view ([`Letterbox`]). Its one writer is the trace plugin; `None` while no raster trace is shown.
 #[derive(Resource, Clone, Debug, Default, PartialEq)]
 pub struct ViewImages(pub Option<FixedFrame>);
 
@@ -178,4 +178,98 @@ pub struct Scene<'a> {
     pub camera: &'a crate::Camera,
     pub pipeline: &'a crate::PipelineSettings,
     pub viewport: crate::Viewport,
+}
+
+/// Where a fixed frame sits in a view so that, stretched over the view, it keeps its own shape:
+/// in the middle of a canvas of the view's shape, its pixels from `offset` on, bars beside it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Letterbox {
+    pub canvas: (u32, u32),
+    pub offset: (u32, u32),
+}
+
+impl Letterbox {
+    /// The letterbox of a frame of `size` pixels in `view`.
+    pub fn new(size: (u32, u32), view: Viewport) -> Letterbox {
+        let (width, height) = (u64::from(size.0), u64::from(size.1));
+        let (across, down) = (u64::from(view.width.max(1)), u64::from(view.height.max(1)));
+        // A view wider than the frame: bars left and right; else above and below.
+        let canvas = match across * height >= width * down {
+            true => (((height * across + down / 2) / down).max(width), height),
+            false => (width, ((width * down + across / 2) / across).max(height)),
+        };
+        let canvas = (canvas.0 as u32, canvas.1 as u32);
+        Letterbox {
+            canvas,
+            offset: ((canvas.0 - size.0) / 2, (canvas.1 - size.1) / 2),
+        }
+    }
+
+    /// `image` on its canvas, the bars `fill`.
+    pub fn place(&self, image: &Image, fill: [u8; 4]) -> Image {
+        let mut canvas = Image::filled(self.canvas.0, self.canvas.1, fill);
+        let (width, left) = (image.width as usize, self.offset.0 as usize);
+        for (y, row) in image.pixels.chunks(width.max(1)).enumerate() {
+            let start = (y + self.offset.1 as usize) * self.canvas.0 as usize + left;
+            canvas.pixels[start..start + row.len()].copy_from_slice(row);
+        }
+        canvas
+    }
+
+    /// The frame's pixel (column, row from the top) that view pixel `pixel` shows, the canvas
+    /// stretched over `view`; None on a bar. A frame of `size`.
+    pub fn frame_pixel(
+        &self,
+        pixel: (u32, u32),
+        view: Viewport,
+        size: (u32, u32),
+    ) -> Option<(u32, u32)> {
+        let on_canvas = |p: u32, view: u32, canvas: u32| {
+            let at = (f64::from(p) + 0.5) / f64::from(view.max(1)) * f64::from(canvas);
+            (at as u32).min(canvas.saturating_sub(1))
+        };
+        let x = on_canvas(pixel.0, view.width, self.canvas.0).checked_sub(self.offset.0)?;
+        let y = on_canvas(pixel.1, view.height, self.canvas.1).checked_sub(self.offset.1)?;
+        (x < size.0 && y < size.1).then_some((x, y))
+    }
+}
+
+#[cfg(test)]
+mod letterbox_tests {
+    use super::{Image, Letterbox, Viewport};
+
+    #[test]
+    fn a_frame_keeps_its_shape_in_a_view_of_another() {
+        let tall = Viewport {
+            width: 100,
+            height: 200,
+        };
+        let boxed = Letterbox::new((40, 30), tall);
+        assert_eq!(boxed.canvas, (40, 80));
+        assert_eq!(boxed.offset, (0, 25));
+        let wide = Viewport {
+            width: 300,
+            height: 100,
+        };
+        assert_eq!(Letterbox::new((40, 30), wide).canvas, (90, 30));
+        let same = Letterbox::new((40, 30), Viewport::default());
+        assert_eq!((same.canvas, same.offset), ((40, 30), (0, 0)));
+    }
+
+    #[test]
+    fn a_view_pixel_finds_the_frame_pixel_it_shows_and_none_on_the_bars() {
+        let view = Viewport {
+            width: 80,
+            height: 160,
+        };
+        let boxed = Letterbox::new((40, 30), view);
+        let mut image = Image::filled(40, 30, [1, 2, 3, 255]);
+        image.pixels[3 * 40 + 5] = [9, 9, 9, 255];
+        let canvas = boxed.place(&image, [0; 4]);
+        // View pixel (11, 56) is canvas pixel (5, 28): the frame's (5, 3).
+        assert_eq!(boxed.frame_pixel((11, 56), view, (40, 30)), Some((5, 3)));
+        assert_eq!(canvas.pixel(5, 28), [9, 9, 9, 255]);
+        assert_eq!(boxed.frame_pixel((11, 10), view, (40, 30)), None);
+        assert_eq!(canvas.pixel(5, 5), [0; 4]);
+    }
 }

@@ -46,8 +46,8 @@ pub use fates::{
     ClipPlane, FateCounts, FateKind, Fates, RecordFates, SelectedTriangle, TriangleFate,
 };
 pub use frame::{
-    Close2glFrame, CutVertex, FixedFrame, RasterGeometry, RasterVertex, Scene, SoftwareFrame,
-    StageCounts, Topology, TraceFindings, TraceOutput, ViewImages, Viewport,
+    Close2glFrame, CutVertex, FixedFrame, Letterbox, RasterGeometry, RasterVertex, Scene,
+    SoftwareFrame, StageCounts, Topology, TraceFindings, TraceOutput, ViewImages, Viewport,
 };
 pub use image::Image;
 pub use input::{Action, InputBindings, InputState, ProbeClick};

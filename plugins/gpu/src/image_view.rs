@@ -1,7 +1,8 @@
 //! A view that shows an image instead of drawing the scene: the Close2GL view's software
 //! rasterizer image, and both views' fixed images while a raster trace is open (`ViewImages`).
 //! The image is uploaded into a texture (remade only when its size changes) and drawn as one
-//! triangle covering the viewport, stretched to it.
+//! triangle covering the viewport, stretched to it (a fixed frame comes on a canvas of the
+//! view's shape: `close2gl_core::Letterbox`).
 
 use close2gl_core::Image;
 

@@ -3,6 +3,8 @@
 
 use bevy_ecs::prelude::*;
 use bevy_ecs::system::SystemParam;
+use close2gl_core::Letterbox;
+use close2gl_core::parity::to_rgb8;
 use close2gl_core::{
     Appearance, Camera, Close2glFrame, Fates, Lighting, Mesh, Overlay, PipelineSettings,
     SelectedTriangle, SoftwareFrame, Texture, TraceOutput, ViewImages, Viewport,
@@ -97,19 +99,26 @@ pub(crate) fn upload_software(
 pub(crate) fn upload_view_images(
     gpu: Res<Gpu>,
     images: Option<Res<ViewImages>>,
+    viewport: Res<Viewport>,
     mut views: ResMut<Views>,
 ) {
-    let Some(images) = images.filter(|i| i.is_changed() || views.is_added()) else {
+    let changed = |i: &Res<ViewImages>| i.is_changed() || viewport.is_changed();
+    let Some(images) = images.filter(|i| changed(i) || views.is_added()) else {
         return;
     };
     views.fixed = images.0.is_some();
     if let Some(frame) = &images.0 {
-        for (view, image) in views
-            .fixed_images
-            .iter_mut()
-            .zip([&frame.reference, &frame.close2gl])
+        // Each on a canvas of the view's shape, so that stretched over it the frame keeps its
+        // own; the bars are the view's background, uncovered.
+        let size = (frame.reference.width, frame.reference.height);
+        let letterbox = Letterbox::new(size, *viewport);
+        let [r, g, b] = to_rgb8(views.background);
+        let views = &mut *views;
+        for (view, image) in
+            (views.fixed_images.iter_mut()).zip([&frame.reference, &frame.close2gl])
         {
-            view.update(&gpu.device, &gpu.queue, image);
+            let canvas = letterbox.place(image, [r, g, b, 0]);
+            view.update(&gpu.device, &gpu.queue, &canvas);
         }
     }
 }

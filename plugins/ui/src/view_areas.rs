@@ -1,7 +1,7 @@
 //! Where each view ([`View`]) is in the window, as the panel paints over them.
 
 use bevy_ecs::prelude::*;
-use close2gl_core::{OutsideView, View};
+use close2gl_core::{OutsideView, View, ViewImages};
 
 /// The views' part of the window and whether they share it: what the parts painted over the
 /// views are handed.
@@ -39,18 +39,23 @@ pub fn view_rects(views: ViewArea, outside: bool) -> Vec<(View, egui::Rect)> {
         .collect()
 }
 
-/// Names the views in their top-left corners.
+/// Names the views in their top-left corners: while a raster trace is open they show its frame,
+/// not the model (`ViewImages`), and say whose drawing each is.
 pub fn labels(
     (InRef(ui), In(views)): (InRef<egui::Ui>, In<ViewArea>),
     outside: Option<Res<OutsideView>>,
+    images: Option<Res<ViewImages>>,
 ) {
     let outside = outside.is_some_and(|o| o.show);
+    let fixed = images.is_some_and(|i| i.0.is_some());
     let painter = ui.painter();
     for (view, rect) in view_rects(views, outside) {
-        let text = match view {
-            View::Reference => "Reference (wgpu)",
-            View::Close2gl => "Close2GL",
-            View::Outside => "Outside (drag, scroll)",
+        let text = match (view, fixed) {
+            (View::Reference, false) => "Reference (wgpu)",
+            (View::Reference, true) => "close2gl's textbook rasterizer, the program's triangles",
+            (View::Close2gl, false) => "Close2GL",
+            (View::Close2gl, true) => "The program's framebuffer",
+            (View::Outside, _) => "Outside (drag, scroll)",
         };
         painter.text(
             rect.left_top() + egui::vec2(10.0, 8.0),

@@ -10,7 +10,7 @@ use std::path::Path;
 
 use bevy_ecs::prelude::*;
 use close2gl_check::raster::{self, RasterReport};
-use close2gl_core::{FixedFrame, RasterMistakes, ViewImages, Viewport};
+use close2gl_core::{FixedFrame, Letterbox, RasterMistakes, ViewImages, Viewport};
 use close2gl_trace_format::{RasterFrame, is_raster_trace, read_raster_frame};
 
 use super::{TraceRequest, TraceView};
@@ -84,8 +84,8 @@ pub fn raster_images_system(view: Res<TraceView>, mut images: ResMut<ViewImages>
 }
 
 /// Check's probe of the pixel under `pixel` (a view's pixel, from the top), or None when no
-/// raster trace is shown. The images are stretched over the view as `fullscreen.wgsl` stretches
-/// them, so the trace's pixel is the one drawn there.
+/// raster trace is shown. The frame is letterboxed over the view as the views show it
+/// (`Letterbox`); on a bar, the answer says so.
 pub fn raster_probe(
     view: &TraceView,
     pixel: (u32, u32),
@@ -93,12 +93,10 @@ pub fn raster_probe(
 ) -> Option<Vec<String>> {
     let frame = &view.raster.as_ref()?.frame;
     let (width, height) = frame.trace.window;
-    let texel = |p: u32, view: u32, size: u32| {
-        let at = (f64::from(p) + 0.5) / f64::from(view.max(1)) * f64::from(size);
-        (at as u32).min(size.saturating_sub(1))
+    let letterbox = Letterbox::new((width, height), viewport);
+    let Some((x, row)) = letterbox.frame_pixel(pixel, viewport, (width, height)) else {
+        return Some(vec!["outside the trace's frame".to_string()]);
     };
-    let x = texel(pixel.0, viewport.width, width);
-    let row = texel(pixel.1, viewport.height, height);
     let y = if frame.trace.y_up {
         height.saturating_sub(row + 1)
     } else {
