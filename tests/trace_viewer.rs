@@ -1,13 +1,17 @@
 //! A program's trace in the real windowed app under a real X server: `close2gl MODEL --trace
 //! FILE` shows the trace's 2D output as the Close2GL view, the live difference (V) compares it
 //! with the reference, and a probe (Ctrl+click) on it selects the triangle the trace drew there.
-//! The traces come from the student program of `examples/trace`, compiled with `cc`. Needs Xvfb
+//! A raster trace (the rasterizer assignment's) shows the program's framebuffer beside close2gl's
+//! drawing of its triangles. The traces come from the student programs of `examples/trace` and
+//! `examples/raster`, compiled with `cc`. Needs Xvfb
 //! (`apt-get install xvfb`); without it these tests fail, they never skip.
 
 mod common;
 
+use close2gl_core::{Letterbox, Viewport};
 use close2gl_gpu::Image;
-use close2gl_testkit::student::{asset, compile_pipeline, mistake_flag};
+use close2gl_testkit::student::{asset, compile_pipeline, mistake_flag, raster_trace};
+use close2gl_trace_format::read_raster_frame;
 use common::{TempDir, Xvfb, assert_one_triangle_highlighted, run_app};
 
 /// The window's size: the panel, then the two views side by side.
@@ -132,4 +136,51 @@ fn a_probe_on_the_trace_selects_the_triangle_it_drew_there() {
     {
         assert_one_triangle_highlighted(name, before, after);
     }
+}
+
+#[test]
+fn a_raster_trace_shows_the_programs_framebuffer_beside_close2gls_drawing_of_it() {
+    let dir = TempDir::new("trace_viewer_raster");
+    let xvfb = Xvfb::start();
+    let flags = [mistake_flag("channels_swapped")];
+    let flags: Vec<&str> = flags.iter().map(String::as_str).collect();
+    let path = raster_trace(&dir.0, "swapped", &flags, "square.scene");
+    let frame = read_raster_frame(&path).expect("the program's trace reads");
+    let trace = path.display().to_string();
+    let [reference, close2gl] = views(&xvfb, &dir, "raster", &trace, &recording(false, None));
+    // The views' middles show the square's middle, the frame letterboxed in each view.
+    let (width, height) = frame.trace.window;
+    let view = Viewport {
+        width: close2gl.width,
+        height: close2gl.height,
+    };
+    let middle = (view.width / 2, view.height / 2);
+    let (x, y) = Letterbox::new((width, height), view)
+        .frame_pixel(middle, view, (width, height))
+        .expect("the middle shows the frame");
+    let [r, g, b, _] = frame.framebuffer.pixel(x, y);
+    let theirs = close2gl.pixel(middle.0, middle.1);
+    let ours = reference.pixel(middle.0, middle.1);
+    assert_eq!(
+        theirs[..3],
+        [r, g, b],
+        "the Close2GL view: the program's pixel"
+    );
+    assert_eq!(
+        ours[..3],
+        [b, g, r],
+        "the reference: close2gl's, red and blue the right way"
+    );
+    assert_ne!(r, b, "the square's colour shows the channels swapped");
+    // Outside the frame: bars of the view's background, the same in both views (stretched, the
+    // frame's own backgrounds would be there, red and blue swapped in one).
+    let corner = if view.width * height > width * view.height {
+        (0, middle.1)
+    } else {
+        (middle.0, 0)
+    };
+    assert_eq!(
+        close2gl.pixel(corner.0, corner.1),
+        reference.pixel(corner.0, corner.1)
+    );
 }
