@@ -14,11 +14,13 @@
 
 mod class;
 mod deliver;
+mod geometry_sheet;
 mod gradebook;
 mod graded;
 mod html;
 mod platforms;
 mod raster;
+mod raster_graded;
 mod raster_sheet;
 mod report;
 mod sandboxing;

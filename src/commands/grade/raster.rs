@@ -7,26 +7,15 @@ use std::path::{Path, PathBuf};
 use std::sync::Mutex;
 use std::sync::atomic::{AtomicUsize, Ordering};
 
-use close2gl_check::raster::report::{self, legal_choices};
-use close2gl_check::raster::rubric::{self, Rubric, RubricLine};
-use close2gl_check::raster::{RasterReport, check_raster};
-use close2gl_core::RasterMistake;
+use close2gl_check::raster::check_raster;
+use close2gl_check::raster::report::legal_choices;
+use close2gl_check::raster::rubric::Rubric;
 use close2gl_trace_format::{RasterFrame, parse_raster_trace, parse_scene};
 use serde_json::json;
 
+use super::raster_graded::{RubricScene, SceneOutcome, Scored, score, to_fix};
 use super::scene_run::{Run, RunFailure, read_written, run_in_workspace};
 use super::{CliError, GradeArgs, Plan, class, deliver, lock, raster_sheet};
-
-/// A scene of the rubric, ready to hand a program: its text (naming the files beside it) and
-/// those files.
-pub(super) struct RubricScene {
-    pub name: String,
-    pub text: String,
-    files: Vec<(String, Vec<u8>)>,
-}
-
-/// What one scene gave: check's report, or why the run failed.
-pub(super) type SceneOutcome = Result<RasterReport, RunFailure>;
 
 /// The rubric at `path` and its scenes (`scenes/NAME.scene` beside it, with the files they name).
 fn load(path: &Path) -> Result<(Rubric, Vec<RubricScene>), CliError> {
@@ -106,41 +95,6 @@ fn run_scene(run: &Run, scene: &RubricScene) -> SceneOutcome {
     })
     .map_err(|e| unreadable(e.to_string()))?;
     Ok(check_raster(&frame))
-}
-
-/// One line scored.
-pub(super) struct Scored<'a> {
-    pub line: &'a RubricLine,
-    pub points: u32,
-    pub passed: usize,
-    pub failures: Vec<(String, String)>,
-}
-
-fn score<'a>(rubric: &'a Rubric, outcomes: &[(String, SceneOutcome)]) -> Vec<Scored<'a>> {
-    (rubric.lines.iter())
-        .map(|line| {
-            let mut failures = Vec::new();
-            for name in &line.scenes {
-                let Some((_, outcome)) = outcomes.iter().find(|(n, _)| n == name) else {
-                    continue;
-                };
-                let verdict = match outcome {
-                    Ok(report) => rubric::judge(line, report),
-                    Err(failure) => Err(failure.reason.clone()),
-                };
-                if let Err(why) = verdict {
-                    failures.push((name.clone(), why));
-                }
-            }
-            let passed = line.scenes.len() - failures.len();
-            Scored {
-                line,
-                points: rubric::points(line, passed, line.scenes.len()),
-                passed,
-                failures,
-            }
-        })
-        .collect()
 }
 
 /// Every scene of `scenes` run for the program (in `dir`, `{dir}`, for a class's submission)
@@ -267,40 +221,6 @@ fn table(
     if !accepted.is_empty() {
         out += "\naccepted, the program's choice where the rules leave one:\n";
         out += &(accepted.join("\n") + "\n");
-    }
-    out
-}
-
-/// The mistakes check named, each once with the scenes it was named in, most scenes first: one
-/// bug to fix however many scenes show it; two lines of text each, under a heading; none when
-/// check named none.
-pub(super) fn to_fix(outcomes: &[(String, SceneOutcome)]) -> Vec<String> {
-    let mut bugs: Vec<(&'static str, Vec<&str>)> = Vec::new();
-    for (scene, outcome) in outcomes {
-        let Ok(report) = outcome else { continue };
-        for mistake in report.mistakes() {
-            match bugs.iter_mut().find(|(m, _)| *m == mistake) {
-                Some((_, scenes)) => scenes.push(scene),
-                None => bugs.push((mistake, vec![scene])),
-            }
-        }
-    }
-    bugs.sort_by_key(|(_, scenes)| std::cmp::Reverse(scenes.len()));
-    if bugs.is_empty() {
-        return Vec::new();
-    }
-    let heading =
-        "to fix first, the mistakes check named (`close2gl check` a scene's trace for pictures):";
-    let mut out = vec![heading.to_string()];
-    for (mistake, scenes) in bugs {
-        let stage = RasterMistake::from_name(mistake).map_or("", |m| m.stage().name());
-        let meaning = RasterMistake::from_name(mistake).map_or("", report::meaning);
-        out.push(format!("  {mistake} ({stage}): {meaning}"));
-        out.push(format!(
-            "    in {} scenes: {}",
-            scenes.len(),
-            scenes.join(", ")
-        ));
     }
     out
 }

@@ -7,7 +7,7 @@ use close2gl_check::rubric::NamedMistake;
 use close2gl_check::rubric::score::mistakes_in_words;
 use close2gl_core::RasterMistake;
 
-use super::raster::{RubricScene, SceneOutcome, Scored, to_fix};
+use super::raster_graded::{RubricScene, SceneOutcome, Scored, to_fix};
 use super::sheet::{self, FailingScene, NOTHING_TO_FIX, Sheet, SheetLine};
 
 /// The sheet of a program's scored lines, its scenes' outcomes (by scene name) and the
