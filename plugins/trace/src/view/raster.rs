@@ -48,6 +48,15 @@ fn is_raster_file(path: &Path) -> bool {
 }
 
 fn read(path: &Path) -> Result<RasterShown, String> {
+    // The page reads no files from a folder, and a raster trace's buffers are files beside it:
+    // the browser build leaves check's raster search out (the module's size budget).
+    if cfg!(target_arch = "wasm32") {
+        return Err(format!(
+            "{}: the browser page opens geometry traces only (a raster trace's buffers are \
+             files beside it): open it in the desktop app",
+            path.display()
+        ));
+    }
     let frame = read_raster_frame(path).map_err(|e| e.to_string())?;
     let report = raster::check_raster(&frame);
     let judge = raster::judge(&frame);
@@ -91,6 +100,9 @@ pub fn raster_probe(
     pixel: (u32, u32),
     viewport: Viewport,
 ) -> Option<Vec<String>> {
+    if cfg!(target_arch = "wasm32") {
+        return None;
+    }
     let frame = &view.raster.as_ref()?.frame;
     let (width, height) = frame.trace.window;
     let letterbox = Letterbox::new((width, height), viewport);
