@@ -1,7 +1,7 @@
-//! `--watch`: the model, its texture image, the config file and a shown trace are reloaded when
-//! they change on disk, and the camera stays where it is. A thread polls the files' modification times (no
-//! event loop wakes for a file, and polling a handful of files four times a second costs
-//! nothing) and wakes the viewer when one has changed and then stayed unchanged for one poll, so
+//! `--watch`: the model, its texture image, the config file and a shown trace (with a raster
+//! trace's buffers) are reloaded when they change on disk, and the camera stays where it is. A
+//! thread polls the files' modification times (no event loop wakes for a file, and polling a
+//! handful of files four times a second costs nothing) and wakes the viewer when one has changed and then stayed unchanged for one poll, so
 //! that an editor's save half-written is not read. A save that does not load shows its error
 //! in the panel and the last good model and settings stay.
 
@@ -154,20 +154,16 @@ pub fn reload_changed_files(world: &mut World) {
     let texture = world
         .get_resource::<Texture>()
         .and_then(|t| t.source.clone());
-    let trace = world
-        .get_resource::<TraceView>()
-        .and_then(|view| view.path.clone());
+    let view = world.get_resource::<TraceView>();
+    let trace = view.and_then(|view| view.path.clone());
+    let trace_files = view.map(TraceView::files).unwrap_or_default();
     finish_model_reload(world);
     let watch = world.resource::<Watch>();
-    let paths: BTreeSet<PathBuf> = [
-        model.clone(),
-        texture.clone(),
-        trace.clone(),
-        watch.config_file.clone(),
-    ]
-    .into_iter()
-    .flatten()
-    .collect();
+    let paths: BTreeSet<PathBuf> = [model.clone(), texture.clone(), watch.config_file.clone()]
+        .into_iter()
+        .flatten()
+        .chain(trace_files.iter().cloned())
+        .collect();
     let settled = match watch.files.lock() {
         Ok(mut files) => {
             files.set(paths);
@@ -188,7 +184,7 @@ pub fn reload_changed_files(world: &mut World) {
     if let Some(texture) = texture.filter(|t| settled.contains(t)) {
         world.resource_mut::<TextureRequest>().0 = Some(texture);
     }
-    if let Some(trace) = trace.filter(|t| settled.contains(t)) {
+    if let Some(trace) = trace.filter(|_| trace_files.iter().any(|f| settled.contains(f))) {
         world.resource_mut::<TraceRequest>().0 = Some(trace);
     }
 }

@@ -260,3 +260,39 @@ fn a_shown_trace_is_read_again_when_the_program_writes_it_again() {
         "the last good one stays"
     );
 }
+
+/// A raster trace shown with --watch is read again when the program writes its framebuffer
+/// after the trace: the buffers are watched with it.
+#[test]
+fn a_shown_raster_trace_is_read_again_when_its_framebuffer_is_written_again() {
+    use close2gl_trace::view::{TraceRequest, TraceView};
+    let files = Files::new("raster");
+    let trace = files.model.with_file_name("frame.raster");
+    let framebuffer = files.model.with_file_name("frame.ppm");
+    let write_framebuffer = |red: u8| {
+        let text = format!("P3\n2 1\n255\n{red} 0 0 {red} 0 0\n");
+        std::fs::write(&framebuffer, text).expect("the framebuffer");
+    };
+    write_framebuffer(10);
+    let text = "close2gl-raster 1\nwindow 2 1\nframebuffer frame.ppm\nattributes window\nend\n";
+    std::fs::write(&trace, text).expect("the trace");
+    let mut app = files.app();
+    app.world_mut().resource_mut::<TraceRequest>().0 = Some(trace.clone());
+    app.update();
+    let red = |app: &App| {
+        let view = app.world().resource::<TraceView>();
+        (view.raster.as_ref()).map(|r| r.frame.framebuffer.pixels[0][0])
+    };
+    assert_eq!(
+        red(&app),
+        Some(10),
+        "{:?}",
+        app.world().resource::<TraceView>().error
+    );
+    // The watch takes up the shown trace's files on the frame after it is shown.
+    app.update();
+    write_framebuffer(200);
+    frames_until(&mut app, "the framebuffer written again", |app| {
+        red(app) == Some(200)
+    });
+}

@@ -52,6 +52,25 @@ impl TraceView {
         self.error = None;
         self.generation += 1;
     }
+
+    /// The files the shown trace was read from: the trace, and a raster trace's buffers and
+    /// texture beside it (a program may write them after the trace: `--watch` reads the trace
+    /// again when any of them changes).
+    pub fn files(&self) -> Vec<PathBuf> {
+        let Some(path) = &self.path else {
+            return Vec::new();
+        };
+        let mut files = vec![path.clone()];
+        if let Some(raster) = &self.raster {
+            let trace = &raster.frame.trace;
+            let folder = path.parent().unwrap_or(std::path::Path::new(""));
+            let beside = [Some(&trace.framebuffer), trace.depthbuffer.as_ref()]
+                .into_iter()
+                .chain([trace.texture.as_ref().map(|(name, _)| name)]);
+            files.extend(beside.flatten().map(|name| folder.join(name)));
+        }
+        files
+    }
 }
 
 /// A trace that was read and checked.
