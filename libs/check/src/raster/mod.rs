@@ -75,10 +75,16 @@ pub fn judge(frame: &RasterFrame) -> Judge<'_> {
 
 /// Checks `frame` whole.
 pub fn check_raster(frame: &RasterFrame) -> RasterReport {
-    let judge = judge(frame);
-    RasterReport {
-        diagnosis: judge.diagnose(),
-        corners: corners::judge(frame, &judge.redraw),
-        allowance: judge.allowance,
+    judge(frame).report()
+}
+
+impl Judge<'_> {
+    /// What the judge finds in its frame (for a caller that draws with it afterwards).
+    pub fn report(&self) -> RasterReport {
+        RasterReport {
+            diagnosis: self.diagnose(),
+            corners: corners::judge(self.input, &self.redraw),
+            allowance: self.allowance,
+        }
     }
 }

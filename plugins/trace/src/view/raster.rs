@@ -58,8 +58,8 @@ fn read(path: &Path) -> Result<RasterShown, String> {
         ));
     }
     let frame = read_raster_frame(path).map_err(|e| e.to_string())?;
-    let report = raster::check_raster(&frame);
     let judge = raster::judge(&frame);
+    let report = judge.report();
     let drawn = judge.redraw.draw(report.rules(), RasterMistakes::NONE);
     // The program's pixels are covered where check's coverage says so (not one of the
     // background's colours): the views' coverage is their alpha, which the live difference
